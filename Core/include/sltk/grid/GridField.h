@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file GridField.h
+/// Nodal values on a GridSpec, stored with G ghost layers per side so that
+/// interpolation stencils read memory without branches. Layout: x fastest
+/// (the VTK point order). fillGhosts() applies the per-axis boundary policy:
+/// linear extrapolation or periodic wrap (GUIDE.md: two ghost layers by
+/// linear extrapolation).
+
+#include "sltk/grid/GridSpec.h"
+
+#include <vector>
+
+namespace sltk
+{
+
+template <int D, class T = double>
+class GridField
+{
+public:
+  using Scalar = T;
+  static constexpr int Dim = D;
+
+  GridField() = default;
+  GridField(const GridSpec<D>& spec, int ghost, T value = T(0))
+  {
+    this->resize(spec, ghost, value);
+  }
+
+  void resize(const GridSpec<D>& spec, int ghost, T value = T(0))
+  {
+    this->Spec = spec;
+    this->Ghost = ghost;
+    Index total = 1;
+    for (int a = 0; a < D; ++a)
+    {
+      this->Stride[a] = total;
+      total *= spec.Dims[a] + 2 * ghost;
+    }
+    this->Values.assign(static_cast<size_t>(total), value);
+    this->Base = 0;
+    for (int a = 0; a < D; ++a)
+    {
+      this->Base += ghost * this->Stride[a];
+    }
+  }
+
+  const GridSpec<D>& spec() const { return this->Spec; }
+  int ghost() const { return this->Ghost; }
+  const std::array<Index, D>& strides() const { return this->Stride; }
+
+  /// Storage offset of node i (each i[a] in [-ghost, N + ghost)).
+  Index offset(const std::array<Index, D>& i) const
+  {
+    Index o = this->Base;
+    for (int a = 0; a < D; ++a)
+    {
+      o += i[a] * this->Stride[a];
+    }
+    return o;
+  }
+
+  T& operator()(const std::array<Index, D>& i) { return this->Values[static_cast<size_t>(this->offset(i))]; }
+  const T& operator()(const std::array<Index, D>& i) const { return this->Values[static_cast<size_t>(this->offset(i))]; }
+
+  /// Pointer to node (0,...,0); add offsets/strides to reach any node or ghost.
+  T* origin() { return this->Values.data() + this->Base; }
+  const T* origin() const { return this->Values.data() + this->Base; }
+
+  /// Multi-index of the k-th interior node in x-fastest order, k in [0, nodeCount).
+  std::array<Index, D> nodeIndex(Index k) const
+  {
+    std::array<Index, D> i{};
+    for (int a = 0; a < D; ++a)
+    {
+      i[a] = k % this->Spec.Dims[a];
+      k /= this->Spec.Dims[a];
+    }
+    return i;
+  }
+
+  /// Fills all ghost layers from interior values, axis by axis (so corners
+  /// are consistent): periodic copies, or linear extrapolation from the two
+  /// nearest boundary nodes (u_{-k} = u_0 - k (u_1 - u_0)).
+  void fillGhosts()
+  {
+    for (int a = 0; a < D; ++a)
+    {
+      this->fillGhostsAlong(a);
+    }
+  }
+
+  std::vector<T>& storage() { return this->Values; }
+  const std::vector<T>& storage() const { return this->Values; }
+
+private:
+  void fillGhostsAlong(int axis)
+  {
+    const Index n = this->Spec.Dims[axis];
+    const Index g = this->Ghost;
+    // Iterate over every line along `axis` in the padded box (other axes include ghosts).
+    std::array<Index, D> ext{};
+    Index lines = 1;
+    for (int a = 0; a < D; ++a)
+    {
+      ext[a] = a == axis ? 1 : this->Spec.Dims[a] + 2 * g;
+      lines *= ext[a];
+    }
+    const Index s = this->Stride[axis];
+    for (Index line = 0; line < lines; ++line)
+    {
+      Index rest = line;
+      Index start = 0;
+      for (int a = 0; a < D; ++a)
+      {
+        const Index ia = rest % ext[a];
+        rest /= ext[a];
+        start += (a == axis ? g : ia) * this->Stride[a];
+      }
+      T* p = this->Values.data() + start; // node 0 of this line
+      for (Index k = 1; k <= g; ++k)
+      {
+        if (this->Spec.Bounds[axis] == Boundary::Periodic)
+        {
+          p[-k * s] = p[((n - k % n) % n) * s];
+          p[(n - 1 + k) * s] = p[((k - 1) % n) * s];
+        }
+        else
+        {
+          const T left = p[0] - p[s];
+          const T right = p[(n - 1) * s] - p[(n - 2) * s];
+          p[-k * s] = p[0] + T(k) * left;
+          p[(n - 1 + k) * s] = p[(n - 1) * s] + T(k) * right;
+        }
+      }
+    }
+  }
+
+  GridSpec<D> Spec{};
+  int Ghost = 0;
+  std::array<Index, D> Stride{};
+  Index Base = 0;
+  std::vector<T> Values;
+};
+
+} // namespace sltk

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file GridSpec.h
+/// Geometry of a uniform node-centred grid in D = 1, 2, 3 dimensions
+/// (thesis 3.2: x_i = x_0 + i dx, N nodes per axis including both ends).
+///
+/// Boundary policies per axis (thesis 3.5, GUIDE.md "Definitions"):
+///  - Extrapolate: ghost nodes filled by linear extrapolation; points outside
+///    the domain are projected (clipped) onto it before interpolation;
+///  - Periodic: N distinct nodes, dx = L / N, node N is node 0.
+
+#include "sltk/core/Status.h"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+namespace sltk
+{
+
+using Index = std::int64_t;
+
+enum class Boundary : std::uint8_t
+{
+  Extrapolate = 0,
+  Periodic = 1
+};
+
+template <int D>
+struct GridSpec
+{
+  static_assert(D >= 1 && D <= 3, "SLTK grids are 1D, 2D or 3D");
+  static constexpr int Dim = D;
+
+  std::array<Index, D> Dims{};      ///< nodes per axis (periodic: distinct nodes)
+  std::array<double, D> Origin{};   ///< coordinates of node 0
+  std::array<double, D> Spacing{};  ///< dx per axis, > 0
+  std::array<Boundary, D> Bounds{}; ///< boundary policy per axis
+
+  Index nodeCount() const
+  {
+    Index n = 1;
+    for (int a = 0; a < D; ++a)
+    {
+      n *= this->Dims[a];
+    }
+    return n;
+  }
+
+  double coordinate(int axis, Index i) const { return this->Origin[axis] + static_cast<double>(i) * this->Spacing[axis]; }
+
+  /// Length of the domain along an axis: (N-1) dx, or N dx when periodic.
+  double length(int axis) const
+  {
+    const Index cells = this->Bounds[axis] == Boundary::Periodic ? this->Dims[axis] : this->Dims[axis] - 1;
+    return static_cast<double>(cells) * this->Spacing[axis];
+  }
+
+  /// Checks sizes and spacings; the message names the faulty axis and value.
+  Status validate() const
+  {
+    static const char* names[3] = { "x", "y", "z" };
+    for (int a = 0; a < D; ++a)
+    {
+      const Index minNodes = this->Bounds[a] == Boundary::Periodic ? 3 : 2;
+      if (this->Dims[a] < minNodes)
+      {
+        return Status::invalidArgument("grid has " + std::to_string(this->Dims[a]) + " nodes along " +
+          names[a] + "; at least " + std::to_string(minNodes) + " are needed");
+      }
+      if (!(this->Spacing[a] > 0.0) || !std::isfinite(this->Spacing[a]))
+      {
+        return Status::invalidArgument("grid spacing along " + std::string(names[a]) +
+          " must be a positive finite number, got " + std::to_string(this->Spacing[a]));
+      }
+      if (!std::isfinite(this->Origin[a]))
+      {
+        return Status::invalidArgument(std::string("grid origin along ") + names[a] + " is not finite");
+      }
+    }
+    return Status::ok();
+  }
+};
+
+/// Cell containing a point plus local coordinates in [0, 1] per axis.
+template <int D>
+struct CellLocation
+{
+  std::array<Index, D> Cell{};
+  std::array<double, D> Local{};
+};
+
+/// Locates x in the grid. Extrapolate axes clip x onto [x_0, x_{N-1}]
+/// (feet outside the domain go to the boundary cell, thesis 3.5); periodic
+/// axes wrap x into [x_0, x_0 + N dx). Exact at nodes: a point within
+/// 1e-10 cells of a node gets that node's integer coordinate.
+template <int D>
+inline CellLocation<D> locate(const GridSpec<D>& g, const double* x)
+{
+  CellLocation<D> loc;
+  for (int a = 0; a < D; ++a)
+  {
+    const double n = static_cast<double>(g.Dims[a]);
+    double s = (x[a] - g.Origin[a]) / g.Spacing[a];
+    if (g.Bounds[a] == Boundary::Periodic)
+    {
+      s = s - n * std::floor(s / n);
+      if (s >= n) // rounding of the wrap
+      {
+        s = 0.0;
+      }
+    }
+    else
+    {
+      s = s < 0.0 ? 0.0 : (s > n - 1.0 ? n - 1.0 : s);
+    }
+    const double r = std::nearbyint(s);
+    if (std::fabs(s - r) < 1e-10)
+    {
+      s = r;
+    }
+    const Index lastCell = g.Bounds[a] == Boundary::Periodic ? g.Dims[a] - 1 : g.Dims[a] - 2;
+    Index c = static_cast<Index>(std::floor(s));
+    if (c > lastCell)
+    {
+      c = lastCell;
+    }
+    loc.Cell[a] = c;
+    loc.Local[a] = s - static_cast<double>(c);
+  }
+  return loc;
+}
+
+} // namespace sltk

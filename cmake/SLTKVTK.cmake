@@ -1,0 +1,1 @@
+message(STATUS "VTK part not yet written")
