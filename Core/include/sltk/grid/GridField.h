@@ -63,6 +63,10 @@ public:
   T& operator()(const std::array<Index, D>& i) { return this->Values[static_cast<size_t>(this->offset(i))]; }
   const T& operator()(const std::array<Index, D>& i) const { return this->Values[static_cast<size_t>(this->offset(i))]; }
 
+  /// Pointer to node i (each i[a] in [-ghost, N + ghost)).
+  T* pointer(const std::array<Index, D>& i) { return this->Values.data() + this->offset(i); }
+  const T* pointer(const std::array<Index, D>& i) const { return this->Values.data() + this->offset(i); }
+
   /// Pointer to node (0,...,0); add offsets/strides to reach any node or ghost.
   T* origin() { return this->Values.data() + this->Base; }
   const T* origin() const { return this->Values.data() + this->Base; }

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/interp/Q1.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+template <int D>
+sltk::GridSpec<D> grid(sltk::Index n)
+{
+  sltk::GridSpec<D> g;
+  for (int a = 0; a < D; ++a)
+  {
+    g.Dims[a] = n + a;
+    g.Origin[a] = -1.0;
+    g.Spacing[a] = 2.0 / double(n - 1);
+    g.Bounds[a] = sltk::Boundary::Extrapolate;
+  }
+  return g;
+}
+
+template <int D, class F>
+sltk::GridField<D> sample(const sltk::GridSpec<D>& g, F f)
+{
+  sltk::GridField<D> u(g, 1);
+  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
+  {
+    auto i = u.nodeIndex(k);
+    double x[3] = {};
+    for (int a = 0; a < D; ++a)
+    {
+      x[a] = g.coordinate(a, i[a]);
+    }
+    u(i) = f(x);
+  }
+  u.fillGhosts();
+  return u;
+}
+} // namespace
+
+TEST(Q1, ReproducesMultilinearFunctionsIn3D)
+{
+  auto g = grid<3>(7);
+  auto f = [](const double* x) { return 1.0 + x[0] - 2.0 * x[1] + 0.5 * x[0] * x[1] * x[2] - x[1] * x[2]; };
+  auto u = sample(g, f);
+  sltk::Q1Interpolator<3> q(u);
+  for (int s = 0; s < 200; ++s)
+  {
+    const double x[3] = { std::sin(s * 1.3), std::cos(s * 0.7), std::sin(s * 2.9 + 1.0) };
+    EXPECT_NEAR(sltk::interpolate(q, g, x), f(x), 1e-13);
+  }
+}
+
+TEST(Q1, InterpolatesNodalValuesExactly)
+{
+  auto g = grid<2>(9);
+  auto f = [](const double* x) { return std::exp(x[0]) * std::sin(3 * x[1]); };
+  auto u = sample(g, f);
+  sltk::Q1Interpolator<2> q(u);
+  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
+  {
+    auto i = u.nodeIndex(k);
+    const double x[2] = { g.coordinate(0, i[0]), g.coordinate(1, i[1]) };
+    EXPECT_EQ(sltk::interpolate(q, g, x), u(i));
+  }
+}
+
+TEST(Q1, SecondOrderIn1D)
+{
+  double err[3];
+  for (int level = 0; level < 3; ++level)
+  {
+    auto g = grid<1>(11 << level);
+    auto f = [](const double* x) { return std::sin(2.0 * x[0]); };
+    auto u = sample(g, f);
+    sltk::Q1Interpolator<1> q(u);
+    err[level] = 0.0;
+    for (int s = 0; s < 1000; ++s)
+    {
+      const double x[1] = { -1.0 + 2.0 * (s + 0.5) / 1000.0 };
+      err[level] = std::max(err[level], std::fabs(sltk::interpolate(q, g, x) - f(x)));
+    }
+  }
+  for (int level = 1; level < 3; ++level)
+  {
+    // n = 11, 22, 44 nodes: spacing ratio (n-1) 10, 21, 43
+    const double ratio = std::log(err[level - 1] / err[level]) /
+      std::log(double((11 << level) - 1) / double((11 << (level - 1)) - 1));
+    EXPECT_GE(ratio, 1.8) << "level " << level;
+  }
+}

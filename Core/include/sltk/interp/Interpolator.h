@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file Interpolator.h
+/// The interpolator concept shared by every reconstruction in SLTK
+/// (ARCHITECTURE.md "Numerics"). An interpolator type `I` for dimension D:
+///
+///   static constexpr int Dim = D;
+///   static constexpr int GhostWidth;           // ghost layers it reads (Q1: 1, others: 2)
+///   explicit I(const GridField<D, double>& f); // bind to nodal data (ghosts filled)
+///   void prepare(const std::array<Index, D>& cell); // build what depends on the cell only
+///   double eval(const std::array<double, D>& local) const; // local coords in [0,1]^D
+///
+/// plus the free helper sltk::interpolate(interp, x) below, which locates x,
+/// prepares the cell when it changed and evaluates. An interpolator object
+/// holds per-cell scratch, so use one object per thread. The thesis's point
+/// (Remarks 3.1-3.2) is that CWENO builds one polynomial per cell in prepare()
+/// and evaluates it cheaply many times; WENO3 has point-dependent linear
+/// weights and does all its work in eval().
+
+#include "sltk/grid/GridField.h"
+
+#include <array>
+
+namespace sltk
+{
+
+/// Tracks the prepared cell so that repeated evaluations in one cell skip prepare().
+template <int D>
+struct PreparedCell
+{
+  std::array<Index, D> Cell{};
+  bool Valid = false;
+
+  bool matches(const std::array<Index, D>& c) const { return this->Valid && c == this->Cell; }
+  void set(const std::array<Index, D>& c)
+  {
+    this->Cell = c;
+    this->Valid = true;
+  }
+};
+
+/// Interpolates at a physical point x (clipped or wrapped per the grid's boundary policy).
+template <class Interp>
+inline double interpolate(Interp& interp, const GridSpec<Interp::Dim>& spec, const double* x)
+{
+  const auto loc = locate(spec, x);
+  interp.prepareIfNeeded(loc.Cell);
+  return interp.eval(loc.Local);
+}
+
+} // namespace sltk
