@@ -19,3 +19,5 @@ install(FILES
   "${CMAKE_BINARY_DIR}/SLTKConfig.cmake"
   "${CMAKE_BINARY_DIR}/SLTKConfigVersion.cmake"
   DESTINATION "${SLTK_INSTALL_CMAKEDIR}")
+# Build-tree export, needed because the VTK module's own export refers to SLTK::Core.
+export(EXPORT SLTKCoreTargets NAMESPACE SLTK:: FILE "${CMAKE_BINARY_DIR}/SLTKCoreTargets.cmake")

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/recon/PointCloud.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace
+{
+sltk::PointCloud<3> sphere(int n, double radius = 1.0, double offset = 0.0)
+{
+  sltk::PointCloud<3> c;
+  for (int k = 0; k < n; ++k)
+  {
+    const double z = -1.0 + 2.0 * (k + 0.5) / n;
+    const double phi = 2.399963229728653 * k; // golden angle
+    const double r = std::sqrt(1.0 - z * z);
+    c.Points.push_back({ offset + radius * r * std::cos(phi), offset + radius * r * std::sin(phi), offset + radius * z });
+  }
+  return c;
+}
+
+std::string messageOf(const sltk::PointCloud<3>& c)
+{
+  return sltk::validateCloud(c).message();
+}
+} // namespace
+
+TEST(PointCloud, SphereIsValidAndBoxed)
+{
+  auto c = sphere(500);
+  EXPECT_TRUE(sltk::validateCloud(c).isOk()) << messageOf(c);
+  auto box = sltk::boundingBox(c);
+  EXPECT_NEAR(box.Min[2], -1.0, 0.01);
+  EXPECT_NEAR(box.Max[0], 1.0, 0.01);
+}
+
+TEST(PointCloud, EmptyCloudIsRefused)
+{
+  sltk::PointCloud<3> c;
+  EXPECT_EQ(sltk::validateCloud(c).code(), sltk::StatusCode::InvalidArgument);
+  EXPECT_NE(messageOf(c).find("empty"), std::string::npos);
+}
+
+TEST(PointCloud, TooFewPointsAreRefused)
+{
+  sltk::PointCloud<3> c;
+  c.Points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } };
+  EXPECT_NE(messageOf(c).find("at least 4"), std::string::npos) << messageOf(c);
+}
+
+TEST(PointCloud, NonFiniteCoordinatesAreNamed)
+{
+  auto c = sphere(100);
+  c.Points[42][1] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(messageOf(c).find("point 42"), std::string::npos) << messageOf(c);
+  c = sphere(100);
+  c.Points[7][2] = std::numeric_limits<double>::infinity();
+  EXPECT_NE(messageOf(c).find("point 7"), std::string::npos) << messageOf(c);
+}
+
+TEST(PointCloud, CoincidentPointsAreRefused)
+{
+  sltk::PointCloud<3> c;
+  c.Points.assign(10, { 1.5, 2.5, 3.5 });
+  EXPECT_NE(messageOf(c).find("coincide"), std::string::npos) << messageOf(c);
+}
+
+TEST(PointCloud, CoplanarPointsAreRefusedIn3D)
+{
+  sltk::PointCloud<3> c;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j)
+      c.Points.push_back({ double(i), double(j), 0.5 * i - 0.25 * j + 3.0 });
+  EXPECT_NE(messageOf(c).find("plane"), std::string::npos) << messageOf(c);
+  c.Points.push_back({ 0.0, 0.0, 10.0 });
+  EXPECT_TRUE(sltk::validateCloud(c).isOk());
+}
+
+TEST(PointCloud, CollinearPointsAreRefusedIn2D)
+{
+  sltk::PointCloud<2> c;
+  for (int i = 0; i < 10; ++i)
+    c.Points.push_back({ double(i), 2.0 * i + 1.0 });
+  EXPECT_NE(sltk::validateCloud(c).message().find("line"), std::string::npos);
+  c.Points.push_back({ 0.0, 5.0 });
+  EXPECT_TRUE(sltk::validateCloud(c).isOk());
+}
+
+TEST(PointCloud, HugeOffsetsAreRefusedWithAFix)
+{
+  auto c = sphere(100, 1e-3, 1e9);
+  EXPECT_NE(messageOf(c).find("translate"), std::string::npos) << messageOf(c);
+  auto ok = sphere(100, 1.0, 1e6); // 1e-6 relative extent is fine
+  EXPECT_TRUE(sltk::validateCloud(ok).isOk()) << messageOf(ok);
+}
+
+TEST(PointCloud, DuplicatePointsAreAccepted)
+{
+  auto c = sphere(100);
+  auto copy = c.Points;
+  c.Points.insert(c.Points.end(), copy.begin(), copy.end());
+  EXPECT_TRUE(sltk::validateCloud(c).isOk());
+}

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file PointCloud.h
+/// An unorganised point cloud P = {Q_1, ..., Q_N} (thesis 4.1) in D = 2 or 3
+/// dimensions, stored as N x D doubles, and its validation: the checks every
+/// reconstruction entry point runs before it allocates a grid.
+
+#include "sltk/core/Status.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace sltk
+{
+
+template <int D>
+struct PointCloud
+{
+  static_assert(D == 2 || D == 3, "point clouds are 2D or 3D");
+  std::vector<std::array<double, D>> Points;
+
+  std::int64_t size() const { return static_cast<std::int64_t>(this->Points.size()); }
+};
+
+/// Axis-aligned bounding box.
+template <int D>
+struct Box
+{
+  std::array<double, D> Min{};
+  std::array<double, D> Max{};
+  double extent(int axis) const { return this->Max[axis] - this->Min[axis]; }
+};
+
+/// Bounding box of a non-empty cloud.
+template <int D>
+Box<D> boundingBox(const PointCloud<D>& cloud);
+
+/// Checks a cloud for reconstruction: at least D + 1 points, finite
+/// coordinates, at least D + 1 distinct points, not all on one line (2D) or
+/// one plane (3D), coordinates whose offset from the origin leaves enough
+/// precision for the grid. The message names the first problem and the fix.
+template <int D>
+Status validateCloud(const PointCloud<D>& cloud);
+
+extern template Box<2> boundingBox(const PointCloud<2>&);
+extern template Box<3> boundingBox(const PointCloud<3>&);
+extern template Status validateCloud(const PointCloud<2>&);
+extern template Status validateCloud(const PointCloud<3>&);
+
+} // namespace sltk

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "SLTKBridge.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkLogger.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+
+namespace sltk
+{
+namespace vtkbridge
+{
+
+Status toCloud(vtkPointSet* input, PointCloud<3>& cloud)
+{
+  cloud.Points.clear();
+  if (!input)
+  {
+    return Status::invalidArgument("no input: connect a point set (vtkPolyData, vtkUnstructuredGrid, ...)");
+  }
+  vtkPoints* points = input->GetPoints();
+  const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
+  cloud.Points.resize(static_cast<size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    points->GetPoint(i, cloud.Points[static_cast<size_t>(i)].data());
+  }
+  return Status::ok();
+}
+
+void AlgorithmInterrupter::start(const std::string& phase)
+{
+  this->Algorithm->SetProgressText(phase.c_str());
+  this->Algorithm->UpdateProgress(0.0);
+}
+
+bool AlgorithmInterrupter::wasInterrupted(double fraction)
+{
+  if (fraction >= 0.0)
+  {
+    this->Algorithm->UpdateProgress(fraction);
+  }
+  return this->Algorithm->GetAbortExecute() != 0;
+}
+
+void VTKLogger::log(LogLevel level, const std::string& message)
+{
+  switch (level)
+  {
+    case LogLevel::Error:
+      vtkLogF(ERROR, "%s", message.c_str());
+      break;
+    case LogLevel::Warning:
+      vtkLogF(WARNING, "%s", message.c_str());
+      break;
+    case LogLevel::Info:
+      vtkLogF(INFO, "%s", message.c_str());
+      break;
+    case LogLevel::Debug:
+      vtkLogF(TRACE, "%s", message.c_str());
+      break;
+  }
+}
+
+} // namespace vtkbridge
+} // namespace sltk

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#ifndef SLTKBridge_h
+#define SLTKBridge_h
+/// \file SLTKBridge.h
+/// Core <-> VTK bridge (never installed or wrapped): point sets into Core
+/// clouds, Core services onto vtkAlgorithm progress/abort and vtkLogger.
+
+#include "sltk/exec/Interrupter.h"
+#include "sltk/exec/Logger.h"
+#include "sltk/recon/PointCloud.h"
+
+class vtkAlgorithm;
+class vtkPointSet;
+
+namespace sltk
+{
+namespace vtkbridge
+{
+
+/// Copies the points of a vtkPointSet (cells are ignored) into a 3D cloud.
+/// Fails with a message naming the input when it has no points array.
+Status toCloud(vtkPointSet* input, PointCloud<3>& cloud);
+
+/// Progress and abort of a vtkAlgorithm: UpdateProgress + AbortExecute.
+class AlgorithmInterrupter final : public Interrupter
+{
+public:
+  explicit AlgorithmInterrupter(vtkAlgorithm* algorithm)
+    : Algorithm(algorithm)
+  {
+  }
+  void start(const std::string& phase) override;
+  bool wasInterrupted(double fraction) override;
+
+private:
+  vtkAlgorithm* Algorithm;
+};
+
+/// Forwards Core log messages to vtkLogger.
+class VTKLogger final : public Logger
+{
+public:
+  void log(LogLevel level, const std::string& message) override;
+};
+
+} // namespace vtkbridge
+} // namespace sltk
+
+#endif

@@ -1,0 +1,29 @@
+"""The wrapped SLTK filters import and run in plain VTK Python (ParaView's VTK)."""
+import sys
+
+from vtkmodules.vtkCommonCore import vtkLogger
+from vtkmodules.vtkCommonDataModel import vtkDataObject
+
+import sltk
+
+vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
+
+solver = sltk.vtkCWENOHJBSolver()
+solver.SetDimensions(31, 31, 1)
+solver.Update()
+image = solver.GetOutput()
+assert image.GetDimensions() == (31, 31, 1), image.GetDimensions()
+lo, hi = image.GetPointData().GetArray("ValueFunction").GetRange()
+assert lo == 0.0 and abs(hi - 0.15) < 0.01, (lo, hi)
+
+recon = sltk.vtkSLLevelSetReconstruct()
+recon.SetInterpolator(sltk.vtkSLLevelSetReconstruct.CWENOZ)
+assert recon.GetInterpolator() == 3
+recon.SetCellSizeFactor(1e9)
+assert recon.GetCellSizeFactor() == 100.0, "CellSizeFactor clamps to its documented range"
+assert "NumberOfRuns: 3" in str(recon)
+
+octree = sltk.vtkOctreeSDF()
+assert octree.GetOutputPortInformation(0).Get(vtkDataObject.DATA_TYPE_NAME()) == "vtkHyperTreeGrid"
+print("python wrapping ok")
+sys.exit(0)
