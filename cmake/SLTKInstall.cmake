@@ -16,6 +16,7 @@ write_basic_package_version_file(
   "${CMAKE_BINARY_DIR}/SLTKConfigVersion.cmake"
   COMPATIBILITY SameMajorVersion)
 install(FILES
+  "${CMAKE_CURRENT_LIST_DIR}/FindP4est.cmake"
   "${CMAKE_BINARY_DIR}/SLTKConfig.cmake"
   "${CMAKE_BINARY_DIR}/SLTKConfigVersion.cmake"
   DESTINATION "${SLTK_INSTALL_CMAKEDIR}")

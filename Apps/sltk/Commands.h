@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file Commands.h
+/// Sub-commands of the `sltk` command line. Each returns the process exit
+/// code: 0 success, 1 the job failed (message printed), 2 bad usage.
+
+#include <string>
+#include <vector>
+
+namespace sltkcli
+{
+
+using Args = std::vector<std::string>;
+
+int commandInfo(const Args& args);
+int commandHjb(const Args& args);
+
+/// Prints "sltk: error: <message>" to stderr and returns `code`.
+int fail(const std::string& message, int code = 1);
+
+/// Simple option scanner: `--name value` pairs and flags, positional arguments.
+class Options
+{
+public:
+  Options(const Args& args, const std::vector<std::string>& valued, const std::vector<std::string>& flags);
+  bool ok() const { return this->Error.empty(); }
+  const std::string& error() const { return this->Error; }
+  bool has(const std::string& name) const;
+  std::string value(const std::string& name, const std::string& fallback = "") const;
+  /// Parses a number option; sets error() on malformed text.
+  double number(const std::string& name, double fallback);
+  const std::vector<std::string>& positional() const { return this->Positional; }
+
+private:
+  std::vector<std::pair<std::string, std::string>> Values;
+  std::vector<std::string> Positional;
+  std::string Error;
+};
+
+} // namespace sltkcli

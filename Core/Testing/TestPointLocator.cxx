@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/recon/PointLocator.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace
+{
+template <int D>
+sltk::PointCloud<D> randomCloud(int n, std::uint64_t seed, double stretch = 1.0)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  sltk::PointCloud<D> c;
+  for (int k = 0; k < n; ++k)
+  {
+    std::array<double, D> p;
+    for (int a = 0; a < D; ++a)
+    {
+      p[a] = u(rng) * (a == 0 ? stretch : 1.0);
+    }
+    c.Points.push_back(p);
+  }
+  return c;
+}
+
+template <int D>
+typename sltk::PointLocator<D>::Hit bruteForce(
+  const sltk::PointCloud<D>& c, const std::array<double, D>& x, std::int64_t exclude)
+{
+  typename sltk::PointLocator<D>::Hit best;
+  for (std::int64_t k = 0; k < c.size(); ++k)
+  {
+    if (k == exclude)
+      continue;
+    double d2 = 0.0;
+    for (int a = 0; a < D; ++a)
+      d2 += (c.Points[static_cast<size_t>(k)][a] - x[a]) * (c.Points[static_cast<size_t>(k)][a] - x[a]);
+    if (std::sqrt(d2) < best.Distance)
+    {
+      best.Distance = std::sqrt(d2);
+      best.Index = k;
+    }
+  }
+  return best;
+}
+} // namespace
+
+TEST(PointLocator, MatchesBruteForceIn3DInsideAndOutsideTheBox)
+{
+  auto cloud = randomCloud<3>(2000, 7);
+  sltk::PointLocator<3> locator(cloud);
+  auto queries = randomCloud<3>(300, 8, 1.0);
+  for (auto& q : queries.Points)
+  {
+    q[1] *= 3.0; // many queries outside the cloud's box
+    auto got = locator.nearest(q);
+    auto want = bruteForce<3>(cloud, q, -1);
+    ASSERT_EQ(got.Index, want.Index);
+    ASSERT_DOUBLE_EQ(got.Distance, want.Distance);
+  }
+}
+
+TEST(PointLocator, ExcludesTheQueryPointItself)
+{
+  auto cloud = randomCloud<2>(500, 3, 20.0); // a thin, long box
+  sltk::PointLocator<2> locator(cloud);
+  for (std::int64_t k = 0; k < cloud.size(); k += 7)
+  {
+    auto got = locator.nearest(cloud.Points[static_cast<size_t>(k)], k);
+    auto want = bruteForce<2>(cloud, cloud.Points[static_cast<size_t>(k)], k);
+    ASSERT_NE(got.Index, k);
+    ASSERT_EQ(got.Index, want.Index);
+  }
+}
+
+TEST(PointLocator, SinglePointCloudHasNoNeighbourOfItself)
+{
+  sltk::PointCloud<3> cloud;
+  cloud.Points = { { 1.0, 2.0, 3.0 } };
+  sltk::PointLocator<3> locator(cloud);
+  EXPECT_EQ(locator.nearest({ 1.0, 2.0, 3.0 }, 0).Index, -1);
+  EXPECT_EQ(locator.nearest({ 0.0, 0.0, 0.0 }).Index, 0);
+}

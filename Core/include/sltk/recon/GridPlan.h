@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file GridPlan.h
+/// The uniform grid of each run of Algorithm 1: dx^(r) = C_dx h_P / 2^(r-1)
+/// (4.36) over the cloud's bounding box padded by a number of cells per side
+/// (GUIDE.md: the thesis's grids correspond to roughly 8-12 cells of padding).
+/// Also refuses plans whose finest grid would not fit in memory, naming the
+/// node count and a C_dx that would fit.
+
+#include "sltk/grid/GridSpec.h"
+#include "sltk/recon/PointCloud.h"
+
+#include <vector>
+
+namespace sltk
+{
+
+struct GridPlanOptions
+{
+  int Runs = 3;                 ///< number of runs r = 1..Runs
+  double CellSizeFactor = 1.0;  ///< C_dx of (4.36); the thesis's default is 1
+  int Padding = 10;             ///< empty cells around the bounding box, per side
+  double BytesPerNode = 48.0;   ///< memory a node costs in the solver (estimate)
+  std::uint64_t MemoryBudget = 0; ///< bytes allowed; 0: available memory
+};
+
+template <int D>
+struct GridPlan
+{
+  double CloudSpacing = 0.0;           ///< h_P
+  std::vector<GridSpec<D>> Runs;       ///< one grid per run, coarse to fine
+};
+
+/// Plans the run grids for a validated cloud of spacing h_P.
+template <int D>
+Status planGrids(const Box<D>& bounds, double cloudSpacing, const GridPlanOptions& options, GridPlan<D>& plan);
+
+extern template Status planGrids(const Box<2>&, double, const GridPlanOptions&, GridPlan<2>&);
+extern template Status planGrids(const Box<3>&, double, const GridPlanOptions&, GridPlan<3>&);
+
+} // namespace sltk

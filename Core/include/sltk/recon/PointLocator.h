@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file PointLocator.h
+/// Uniform bucket grid over a point cloud for nearest-neighbour queries: the
+/// search behind h_P (4.36) and the exact distance near the points (4.4.2).
+/// Buckets are stored compressed (CSR): no per-bucket allocation.
+
+#include "sltk/recon/PointCloud.h"
+
+#include <limits>
+
+namespace sltk
+{
+
+template <int D>
+class PointLocator
+{
+public:
+  /// Result of a nearest-point query.
+  struct Hit
+  {
+    std::int64_t Index = -1; ///< -1 when the cloud has no other point
+    double Distance = std::numeric_limits<double>::infinity();
+  };
+
+  /// Buckets the cloud (which must stay alive and unchanged) so that there
+  /// are about `pointsPerBucket` points per non-empty bucket on a surface-like cloud.
+  explicit PointLocator(const PointCloud<D>& cloud, double pointsPerBucket = 2.0);
+
+  /// Nearest cloud point to x, skipping the point with index `exclude` (-1: none).
+  Hit nearest(const std::array<double, D>& x, std::int64_t exclude = -1) const;
+
+  double bucketSize() const { return this->Size; }
+
+private:
+  std::int64_t bucketOf(const std::array<std::int64_t, D>& b) const;
+
+  const PointCloud<D>* Cloud;
+  Box<D> Bounds;
+  double Size = 1.0;
+  std::array<std::int64_t, D> Count{};
+  std::vector<std::int64_t> Start;  ///< CSR offsets, one per bucket + 1
+  std::vector<std::int64_t> Points; ///< point indices grouped by bucket
+};
+
+extern template class PointLocator<2>;
+extern template class PointLocator<3>;
+
+} // namespace sltk

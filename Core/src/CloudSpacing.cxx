@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/recon/CloudSpacing.h"
+
+#include "sltk/recon/PointLocator.h"
+
+#include <algorithm>
+#include <numeric>
+#include <random>
+
+namespace sltk
+{
+
+template <int D>
+Status cloudSpacing(const PointCloud<D>& cloud, const Context& ctx, double& spacing, const CloudSpacingOptions& options)
+{
+  spacing = 0.0;
+  const std::int64_t n = cloud.size();
+  if (n < 2)
+  {
+    return Status::invalidArgument("the cloud spacing h_P needs at least two points");
+  }
+  // Sample without replacement: a partial Fisher-Yates shuffle with a fixed seed.
+  std::int64_t m = static_cast<std::int64_t>(options.SampleFraction * static_cast<double>(n));
+  m = std::min(n, std::max(m, options.MinimumSample));
+  std::vector<std::int64_t> order(static_cast<size_t>(n));
+  std::iota(order.begin(), order.end(), 0);
+  std::mt19937_64 rng(options.Seed);
+  for (std::int64_t i = 0; i < m; ++i)
+  {
+    std::uniform_int_distribution<std::int64_t> pick(i, n - 1);
+    std::swap(order[static_cast<size_t>(i)], order[static_cast<size_t>(pick(rng))]);
+  }
+  const PointLocator<D> locator(cloud);
+  std::vector<double> nearest(static_cast<size_t>(m), 0.0);
+  ctx.parallelFor(0, m, [&](Index b, Index e) {
+    for (Index i = b; i < e; ++i)
+    {
+      const std::int64_t k = order[static_cast<size_t>(i)];
+      nearest[static_cast<size_t>(i)] = locator.nearest(cloud.Points[static_cast<size_t>(k)], k).Distance;
+    }
+  });
+  double sum = 0.0;
+  std::int64_t used = 0;
+  for (double d : nearest)
+  {
+    if (d > 0.0)
+    {
+      sum += d;
+      ++used;
+    }
+  }
+  if (used == 0)
+  {
+    return Status::invalidArgument("every sampled point has a duplicate at distance 0: remove duplicate points");
+  }
+  spacing = sum / static_cast<double>(used);
+  return Status::ok();
+}
+
+template Status cloudSpacing(const PointCloud<2>&, const Context&, double&, const CloudSpacingOptions&);
+template Status cloudSpacing(const PointCloud<3>&, const Context&, double&, const CloudSpacingOptions&);
+
+} // namespace sltk

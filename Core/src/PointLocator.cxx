@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/recon/PointLocator.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sltk
+{
+
+template <int D>
+PointLocator<D>::PointLocator(const PointCloud<D>& cloud, double pointsPerBucket)
+  : Cloud(&cloud)
+  , Bounds(boundingBox(cloud))
+{
+  const double n = std::max<double>(1.0, static_cast<double>(cloud.size()));
+  double diameter = 0.0;
+  for (int a = 0; a < D; ++a)
+  {
+    diameter = std::max(diameter, this->Bounds.extent(a));
+  }
+  if (diameter == 0.0)
+  {
+    diameter = 1.0;
+  }
+  // Clouds sample a (D-1)-dimensional set: about n / pointsPerBucket buckets
+  // of size h are hit when (diameter / h)^(D-1) ~ n / pointsPerBucket.
+  this->Size = diameter / std::max(1.0, std::pow(n / pointsPerBucket, 1.0 / (D - 1)));
+  std::int64_t total = 1;
+  for (int a = 0; a < D; ++a)
+  {
+    this->Count[a] = std::max<std::int64_t>(1, static_cast<std::int64_t>(this->Bounds.extent(a) / this->Size) + 1);
+    total *= this->Count[a];
+  }
+  // Keep the bucket table proportional to the cloud (thin or huge boxes).
+  while (total > 8 * static_cast<std::int64_t>(n) + 64)
+  {
+    this->Size *= 1.5;
+    total = 1;
+    for (int a = 0; a < D; ++a)
+    {
+      this->Count[a] = std::max<std::int64_t>(1, static_cast<std::int64_t>(this->Bounds.extent(a) / this->Size) + 1);
+      total *= this->Count[a];
+    }
+  }
+  std::vector<std::int64_t> bucket(cloud.Points.size());
+  this->Start.assign(static_cast<size_t>(total) + 1, 0);
+  for (size_t k = 0; k < cloud.Points.size(); ++k)
+  {
+    std::array<std::int64_t, D> b;
+    for (int a = 0; a < D; ++a)
+    {
+      b[a] = std::min(this->Count[a] - 1,
+        static_cast<std::int64_t>((cloud.Points[k][a] - this->Bounds.Min[a]) / this->Size));
+    }
+    bucket[k] = this->bucketOf(b);
+    ++this->Start[static_cast<size_t>(bucket[k]) + 1];
+  }
+  for (size_t b = 1; b < this->Start.size(); ++b)
+  {
+    this->Start[b] += this->Start[b - 1];
+  }
+  this->Points.resize(cloud.Points.size());
+  std::vector<std::int64_t> fill(this->Start.begin(), this->Start.end() - 1);
+  for (size_t k = 0; k < cloud.Points.size(); ++k)
+  {
+    this->Points[static_cast<size_t>(fill[static_cast<size_t>(bucket[k])]++)] = static_cast<std::int64_t>(k);
+  }
+}
+
+template <int D>
+std::int64_t PointLocator<D>::bucketOf(const std::array<std::int64_t, D>& b) const
+{
+  std::int64_t id = 0;
+  for (int a = D - 1; a >= 0; --a)
+  {
+    id = id * this->Count[a] + b[a];
+  }
+  return id;
+}
+
+template <int D>
+typename PointLocator<D>::Hit PointLocator<D>::nearest(const std::array<double, D>& x, std::int64_t exclude) const
+{
+  Hit best;
+  std::array<std::int64_t, D> centre;
+  for (int a = 0; a < D; ++a)
+  {
+    const double s = (x[a] - this->Bounds.Min[a]) / this->Size;
+    centre[a] = std::min(this->Count[a] - 1, std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor(s))));
+  }
+  std::int64_t maxRing = 0;
+  for (int a = 0; a < D; ++a)
+  {
+    maxRing = std::max(maxRing, std::max(centre[a], this->Count[a] - 1 - centre[a]));
+  }
+  for (std::int64_t ring = 0; ring <= maxRing; ++ring)
+  {
+    // Points in buckets `ring` steps away (Chebyshev, in bucket units) are at least
+    // (ring - 1) * Size from x, also when x lies outside the box and was clamped.
+    if (best.Index >= 0 && best.Distance <= static_cast<double>(ring - 1) * this->Size)
+    {
+      break;
+    }
+    std::array<std::int64_t, D> lo, hi;
+    for (int a = 0; a < D; ++a)
+    {
+      lo[a] = std::max<std::int64_t>(0, centre[a] - ring);
+      hi[a] = std::min<std::int64_t>(this->Count[a] - 1, centre[a] + ring);
+    }
+    std::array<std::int64_t, D> b = lo;
+    for (;;)
+    {
+      bool onShell = false;
+      for (int a = 0; a < D; ++a)
+      {
+        onShell = onShell || b[a] == centre[a] - ring || b[a] == centre[a] + ring;
+      }
+      if (onShell || ring == 0)
+      {
+        const std::int64_t id = this->bucketOf(b);
+        for (std::int64_t p = this->Start[static_cast<size_t>(id)]; p < this->Start[static_cast<size_t>(id) + 1]; ++p)
+        {
+          const std::int64_t k = this->Points[static_cast<size_t>(p)];
+          if (k == exclude)
+          {
+            continue;
+          }
+          double d2 = 0.0;
+          for (int a = 0; a < D; ++a)
+          {
+            const double d = this->Cloud->Points[static_cast<size_t>(k)][a] - x[a];
+            d2 += d * d;
+          }
+          const double d = std::sqrt(d2);
+          if (d < best.Distance || (d == best.Distance && k < best.Index))
+          {
+            best.Distance = d;
+            best.Index = k;
+          }
+        }
+      }
+      int a = 0;
+      for (; a < D; ++a)
+      {
+        if (++b[a] <= hi[a])
+        {
+          break;
+        }
+        b[a] = lo[a];
+      }
+      if (a == D)
+      {
+        break;
+      }
+    }
+  }
+  return best;
+}
+
+template class PointLocator<2>;
+template class PointLocator<3>;
+
+} // namespace sltk
