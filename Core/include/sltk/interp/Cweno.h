@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file Cweno.h
+/// CWENO and CWENOZ reconstruction from point values, thesis 3.3 (Definition 3.1):
+/// 1D (3.3.1, (3.17)), 2D (3.3.2, (3.23)) and its 3D extension, one class
+/// template for all three. In the cell with lower corner `cell`:
+///  - the optimal polynomial P_opt is the tensor cubic (bicubic, tricubic) on the
+///    4^D stencil t in {-1, 0, 1, 2}^D;
+///  - the 2^D low-degree polynomials P_k are the tensor quadratics on the 3^D
+///    sub-stencils, one per octant (1D: P_L, P_R; 2D: sw, se, nw, ne);
+///  - prepare() computes the indicators (3.18)/(3.24), the nonlinear weights
+///    (3.13)/(3.14) and folds P_0 of (3.11) into ONE polynomial (3.15)/(3.16):
+///      P_rec = (omega_0 / d_0) P_opt + sum_k (omega_k - omega_0 d_k / d_0) P_k,
+///    stored as 4^D monomial coefficients in local coordinates (Remarks 3.1-3.2);
+///  - eval() is a tensor Horner evaluation of that polynomial.
+///
+/// Scaling choices (GUIDE.md; 3D by extension): Delta = cell diameter
+/// sqrt(sum_a h_a^2) in the indicators, epsilon = Delta^2 / D (= dx^2 on the
+/// uniform grids of the thesis), l = 2, d_0 = 3/4, d_k = 1/(4 * 2^D). The diameter
+/// is the reading of (3.24) that reproduces M of (3.25) and Table 3.1; the
+/// Appendix's A_k, A_opt of (3.26) were printed for Delta = dx (TestCweno.cxx).
+/// In 3D, tau = |8 OSC_opt - sum_k OSC_k| = O(h^4) on smooth data, the condition
+/// of (3.28) ([42, Theorem 24]) for the optimal order of CWENOZ.
+
+#include "sltk/interp/CwenoIndicator.h"
+#include "sltk/interp/CwenoPolynomial.h"
+#include "sltk/interp/CwenoWeights.h"
+#include "sltk/interp/Interpolator.h"
+
+#include <cassert>
+#include <cmath>
+
+namespace sltk
+{
+
+template <int D, CwenoVariant V = CwenoVariant::Cweno>
+class CwenoInterpolator
+{
+public:
+  static constexpr int Dim = D;
+  static constexpr int GhostWidth = 2;
+  static constexpr CwenoVariant Variant = V;
+  static constexpr int Size = cweno::ipow(4, D);    ///< coefficients of P_opt and P_rec
+  static constexpr int LowSize = cweno::ipow(3, D); ///< coefficients of each octant polynomial
+  static constexpr int Octants = 1 << D;
+  static constexpr int WeightCount = 1 + Octants;
+  using Weights = std::array<double, WeightCount>;
+
+  explicit CwenoInterpolator(const GridField<D, double>& field)
+    : Field(&field)
+    , OptimalForm(field.spec().Spacing, cellDiameter(field.spec()))
+    , OctantForm(field.spec().Spacing, cellDiameter(field.spec()))
+  {
+    assert(field.ghost() >= GhostWidth);
+    const double delta = cellDiameter(field.spec());
+    this->Epsilon = delta * delta / D;
+    const auto& s = field.strides();
+    for (int p = 0; p < Size; ++p)
+    {
+      Index o = 0;
+      int rest = p;
+      for (int a = 0; a < D; ++a)
+      {
+        o += static_cast<Index>(rest % 4 - 1) * s[a];
+        rest /= 4;
+      }
+      this->StencilOffset[p] = o;
+    }
+  }
+
+  /// Builds the reconstruction polynomial of the cell (lower corner index `cell`).
+  void prepare(const std::array<Index, D>& cell)
+  {
+    const double* p = this->Field->pointer(cell);
+    double u[Size];
+    for (int q = 0; q < Size; ++q)
+    {
+      u[q] = p[this->StencilOffset[q]];
+    }
+    double opt[Size];
+    cweno::optimalCoefficients<D>(u, opt);
+    if constexpr (V == CwenoVariant::Optimal)
+    {
+      this->Omega = cweno::LinearWeights<D>::values();
+      for (int q = 0; q < Size; ++q)
+      {
+        this->Coef[q] = opt[q];
+      }
+    }
+    else
+    {
+      double low[Octants][LowSize];
+      this->Osc[0] = this->OptimalForm(opt); // (3.12)
+      for (int k = 0; k < Octants; ++k)
+      {
+        cweno::octantCoefficients<D>(u, k, low[k]);
+        this->Osc[1 + k] = this->OctantForm(low[k]);
+      }
+      this->Omega = cweno::nonlinearWeights<D, V>(this->Osc, this->Epsilon);
+      // (3.11) + (3.15)/(3.16) folded into one set of coefficients.
+      constexpr double d0 = cweno::LinearWeights<D>::Optimal;
+      constexpr double dk = cweno::LinearWeights<D>::Octant;
+      const double scale = this->Omega[0] / d0;
+      for (int q = 0; q < Size; ++q)
+      {
+        this->Coef[q] = scale * opt[q];
+      }
+      for (int k = 0; k < Octants; ++k)
+      {
+        const double beta = this->Omega[1 + k] - scale * dk;
+        for (int q = 0; q < LowSize; ++q)
+        {
+          this->Coef[cweno::quadraticToCubicIndex<D>(q)] += beta * low[k][q];
+        }
+      }
+    }
+    this->Prepared.set(cell);
+  }
+
+  void prepareIfNeeded(const std::array<Index, D>& cell)
+  {
+    if (!this->Prepared.matches(cell))
+    {
+      this->prepare(cell);
+    }
+  }
+
+  /// P_rec at local coordinates t in [0, 1]^D of the prepared cell.
+  double eval(const std::array<double, D>& t) const { return cweno::evalTensor<D, 4>(this->Coef.data(), t); }
+
+  /// Nonlinear weights of the prepared cell: [0] the optimal polynomial, [1 + k]
+  /// octant k (bit a of k set: the sub-stencil on the high side along axis a).
+  const Weights& weights() const { return this->Omega; }
+  /// Indicators of the prepared cell, same order (zero for CwenoVariant::Optimal).
+  const Weights& indicators() const { return this->Osc; }
+  /// Monomial coefficients of P_rec in local coordinates (CwenoPolynomial.h layout).
+  const std::array<double, Size>& coefficients() const { return this->Coef; }
+  double epsilon() const { return this->Epsilon; }
+  static constexpr Weights linearWeights() { return cweno::LinearWeights<D>::values(); }
+
+  /// Delta of (3.24): the cell diameter.
+  static double cellDiameter(const GridSpec<D>& spec)
+  {
+    double s = 0.0;
+    for (int a = 0; a < D; ++a)
+    {
+      s += spec.Spacing[a] * spec.Spacing[a];
+    }
+    return std::sqrt(s);
+  }
+
+private:
+  const GridField<D, double>* Field;
+  cweno::IndicatorForm<D, 4> OptimalForm;
+  cweno::IndicatorForm<D, 3> OctantForm;
+  double Epsilon = 0.0;
+  std::array<Index, Size> StencilOffset{};
+  std::array<double, Size> Coef{};
+  Weights Omega{};
+  Weights Osc{};
+  PreparedCell<D> Prepared;
+};
+
+template <int D>
+using CwenoZInterpolator = CwenoInterpolator<D, CwenoVariant::CwenoZ>;
+
+} // namespace sltk
