@@ -62,11 +62,7 @@ int vtkOctreeSDF::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   }
   vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
   sltk::PointCloud<3> cloud;
-  sltk::Status status = sltk::vtkbridge::toCloud(input, cloud);
-  if (status.isOk())
-  {
-    status = sltk::validateCloud(cloud);
-  }
+  const sltk::Status status = sltk::vtkbridge::toValidCloud(input, cloud);
   if (!status.isOk())
   {
     vtkErrorMacro("Input point set rejected: " << status.message());

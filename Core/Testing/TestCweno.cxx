@@ -3,6 +3,8 @@
 #include "sltk/interp/Cweno.h"
 #include "sltk/interp/Q1.h"
 
+#include "sltk/grid/SampleField.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -47,27 +49,7 @@ sltk::GridSpec<D> box(Index n)
 template <int D, class F>
 sltk::GridField<D> sampleWithGhosts(const sltk::GridSpec<D>& g, F f)
 {
-  const int ghost = 2;
-  sltk::GridField<D> u(g, ghost);
-  Index total = 1;
-  for (int a = 0; a < D; ++a)
-  {
-    total *= g.Dims[a] + 2 * ghost;
-  }
-  for (Index k = 0; k < total; ++k)
-  {
-    std::array<Index, D> i{};
-    double x[3] = {};
-    Index rest = k;
-    for (int a = 0; a < D; ++a)
-    {
-      i[a] = rest % (g.Dims[a] + 2 * ghost) - ghost;
-      rest /= g.Dims[a] + 2 * ghost;
-      x[a] = g.coordinate(a, i[a]);
-    }
-    u(i) = f(x);
-  }
-  return u;
+  return sltk::sampleField(g, 2, f, sltk::GhostFill::Exact);
 }
 
 /// Deterministic points in the box.

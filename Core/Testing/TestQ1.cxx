@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/interp/Q1.h"
 
+#include "sltk/grid/SampleField.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,19 +26,7 @@ sltk::GridSpec<D> grid(sltk::Index n)
 template <int D, class F>
 sltk::GridField<D> sample(const sltk::GridSpec<D>& g, F f)
 {
-  sltk::GridField<D> u(g, 1);
-  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
-  {
-    auto i = u.nodeIndex(k);
-    double x[3] = {};
-    for (int a = 0; a < D; ++a)
-    {
-      x[a] = g.coordinate(a, i[a]);
-    }
-    u(i) = f(x);
-  }
-  u.fillGhosts();
-  return u;
+  return sltk::sampleField(g, 1, f);
 }
 } // namespace
 

@@ -2,6 +2,8 @@
 #include "sltk/interp/Q1.h"
 #include "sltk/interp/Weno3.h"
 
+#include "sltk/grid/SampleField.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -42,19 +44,7 @@ sltk::GridSpec<1> line(double lo, double hi, sltk::Index n)
 template <int D, class F>
 sltk::GridField<D> sample(const sltk::GridSpec<D>& g, F f)
 {
-  sltk::GridField<D> u(g, sltk::Weno3Interpolator<D>::GhostWidth);
-  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
-  {
-    auto i = u.nodeIndex(k);
-    double x[3] = {};
-    for (int a = 0; a < D; ++a)
-    {
-      x[a] = g.coordinate(a, i[a]);
-    }
-    u(i) = f(x);
-  }
-  u.fillGhosts();
-  return u;
+  return sltk::sampleField(g, sltk::Weno3Interpolator<D>::GhostWidth, f);
 }
 
 /// Cubic Lagrange interpolation on nodes -1, 0, 1, 2: the linear (oscillatory)

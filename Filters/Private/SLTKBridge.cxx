@@ -28,6 +28,12 @@ Status toCloud(vtkPointSet* input, PointCloud<3>& cloud)
   return Status::ok();
 }
 
+Status toValidCloud(vtkPointSet* input, PointCloud<3>& cloud)
+{
+  SLTK_RETURN_IF_ERROR(toCloud(input, cloud));
+  return validateCloud(cloud);
+}
+
 void AlgorithmInterrupter::start(const std::string& phase)
 {
   this->Algorithm->SetProgressText(phase.c_str());

@@ -21,6 +21,10 @@ namespace vtkbridge
 /// Fails with a message naming the input when it has no points array.
 Status toCloud(vtkPointSet* input, PointCloud<3>& cloud);
 
+/// toCloud() followed by validateCloud(): the check every point-cloud filter
+/// runs before it allocates anything.
+Status toValidCloud(vtkPointSet* input, PointCloud<3>& cloud);
+
 /// Progress and abort of a vtkAlgorithm: UpdateProgress + AbortExecute.
 class AlgorithmInterrupter final : public Interrupter
 {

@@ -54,18 +54,7 @@ public:
     assert(field.ghost() >= GhostWidth);
     const double delta = cellDiameter(field.spec());
     this->Epsilon = delta * delta / D;
-    const auto& s = field.strides();
-    for (int p = 0; p < Size; ++p)
-    {
-      Index o = 0;
-      int rest = p;
-      for (int a = 0; a < D; ++a)
-      {
-        o += static_cast<Index>(rest % 4 - 1) * s[a];
-        rest /= 4;
-      }
-      this->StencilOffset[p] = o;
-    }
+    this->StencilOffset = stencilOffsets<D, 4>(field.strides(), -1); // nodes -1..2 per axis
   }
 
   /// Builds the reconstruction polynomial of the cell (lower corner index `cell`).

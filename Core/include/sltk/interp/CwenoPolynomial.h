@@ -11,6 +11,8 @@
 /// The 1D matrices are the inverse Vandermonde matrices printed by
 /// bench/derive/derive_cweno.py; D-dimensional interpolation is their tensor product.
 
+#include "sltk/interp/Interpolator.h"
+
 #include <array>
 
 namespace sltk
@@ -18,10 +20,7 @@ namespace sltk
 namespace cweno
 {
 
-constexpr int ipow(int base, int exponent)
-{
-  return exponent == 0 ? 1 : base * ipow(base, exponent - 1);
-}
+using sltk::ipow;
 
 /// Data -> coefficient matrices of 1D interpolation (rows: coefficient of t^j,
 /// columns: data in increasing t).

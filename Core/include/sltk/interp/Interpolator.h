@@ -24,6 +24,12 @@
 namespace sltk
 {
 
+/// base^exponent for stencil sizes (4^D, 3^D) at compile time.
+constexpr int ipow(int base, int exponent)
+{
+  return exponent == 0 ? 1 : base * ipow(base, exponent - 1);
+}
+
 /// Tracks the prepared cell so that repeated evaluations in one cell skip prepare().
 template <int D>
 struct PreparedCell
@@ -38,6 +44,27 @@ struct PreparedCell
     this->Valid = true;
   }
 };
+
+/// Storage offsets of the W^D stencil nodes of a cell relative to its lower
+/// corner node, for strides `s` (x fastest): stencil digit c along an axis is
+/// node c + first (WENO3/CWENO: W = 4, first = -1, nodes -1..2).
+template <int D, int W>
+inline std::array<Index, ipow(W, D)> stencilOffsets(const std::array<Index, D>& s, int first)
+{
+  std::array<Index, ipow(W, D)> offset{};
+  for (int c = 0; c < ipow(W, D); ++c)
+  {
+    Index o = 0;
+    int rest = c;
+    for (int a = 0; a < D; ++a)
+    {
+      o += static_cast<Index>(rest % W + first) * s[a];
+      rest /= W;
+    }
+    offset[c] = o;
+  }
+  return offset;
+}
 
 /// Interpolates at a physical point x (clipped or wrapped per the grid's boundary policy).
 template <class Interp>

@@ -39,19 +39,8 @@ public:
       const double dx = field.spec().Spacing[a];
       this->Eps[a] = dx * dx; // epsilon = dx^2 (2.67), per axis
     }
-    // Offset of stencil node c (base-4 digits per axis, x fastest) from the cell's node:
-    // digit 0, 1, 2, 3 is node -1, 0, 1, 2 along that axis.
-    for (int c = 0; c < StencilSize; ++c)
-    {
-      Index o = 0;
-      int rest = c;
-      for (int a = 0; a < D; ++a)
-      {
-        o += static_cast<Index>(rest % 4 - 1) * s[a];
-        rest /= 4;
-      }
-      this->Offset[c] = o;
-    }
+    // Stencil node c (base-4 digits per axis, x fastest): digit 0..3 is node -1..2.
+    this->Offset = stencilOffsets<D, 4>(s, -1);
   }
 
   /// Caches the 4^D stencil values of the cell (nodes -1..2 along each axis).
@@ -103,7 +92,7 @@ private:
 
   const GridField<D, double>* Field;
   double Eps[D] = {};
-  Index Offset[StencilSize] = {};
+  std::array<Index, StencilSize> Offset{};
   double Stencil[StencilSize] = {};
   PreparedCell<D> Prepared;
 };
