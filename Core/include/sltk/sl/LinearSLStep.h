@@ -1,0 +1,248 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file LinearSLStep.h
+/// The semi-Lagrangian scheme (2.36) for the linear problem (2.7)
+///     v_t + f(t, x) . grad v = g(t, x),
+///     u_i^{n+1} = I[U^n](y_i^n) + G_i^n,
+/// at any Courant number: y_i^n is the RK foot of (3.8) with dynamics
+/// f_D = -f (see Characteristics.h for the sign), G_i^n the quadrature (3.9)
+/// of g on the RK stage values, I any interpolator of Interpolator.h (Q1,
+/// WENO3, CWENO, ...). Feet outside the domain are clipped onto it or wrapped
+/// by sltk::locate (thesis 3.5.1).
+///
+/// linearSLStep() does one step; linearSLAdvance() runs t0 -> T with
+/// dt = (T - t0) / ceil((T - t0) / maxDt) (GUIDE.md: dt = lambda dx, shortened
+/// so that the span is a whole number of steps), asking the interrupter
+/// between steps.
+
+#include "sltk/core/Status.h"
+#include "sltk/exec/Context.h"
+#include "sltk/grid/GridField.h"
+#include "sltk/interp/Interpolator.h"
+#include "sltk/sl/Characteristics.h"
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+namespace sltk
+{
+
+/// Source term g = 0: the step skips the quadrature.
+struct NoSource
+{
+};
+
+/// Coordinates of node i (each i[a] in [0, N)). D is deduced from the spec only
+/// (std::array's size is a size_t).
+template <int D>
+inline std::array<double, D> nodePoint(const GridSpec<D>& spec, const std::array<Index, std::size_t(D)>& i)
+{
+  std::array<double, D> x{};
+  for (int a = 0; a < D; ++a)
+  {
+    x[a] = spec.coordinate(a, i[a]);
+  }
+  return x;
+}
+
+/// Number of steps N_T = ceil(span / maxDt) (3.2), tolerant to the rounding of
+/// span / maxDt just above an integer.
+inline Index slStepCount(double span, double maxDt)
+{
+  const double r = span / maxDt;
+  const Index n = static_cast<Index>(std::ceil(r * (1.0 - 1e-12)));
+  return n < 1 ? 1 : n;
+}
+
+namespace detail
+{
+
+/// Advances a node multi-index in x-fastest order (the order of GridField::nodeIndex).
+template <int D>
+inline void nextNode(const GridSpec<D>& spec, std::array<Index, std::size_t(D)>& i)
+{
+  for (int a = 0; a < D; ++a)
+  {
+    if (++i[a] < spec.Dims[a] || a == D - 1)
+    {
+      return;
+    }
+    i[a] = 0;
+  }
+}
+
+/// One step (2.36) with a compile-time tableau; returns the number of
+/// non-finite values written to `next`.
+template <class Interp, int S, class Velocity, class Source>
+double linearSLKernel(const Context& ctx, const ButcherTableau<S>& tableau, const GridField<Interp::Dim, double>& current,
+  GridField<Interp::Dim, double>& next, double tNext, double dt, const Velocity& f, const Source& g)
+{
+  constexpr int D = Interp::Dim;
+  const GridSpec<D>& spec = current.spec();
+  // (3.8) with f_D = -f: the thesis's dynamics of the backward characteristic.
+  auto dynamics = [&f](double t, const std::array<double, D>& x, int) {
+    std::array<double, D> v = f(t, x);
+    for (int a = 0; a < D; ++a)
+    {
+      v[a] = -v[a];
+    }
+    return v;
+  };
+  auto body = [&](Index begin, Index end) -> double {
+    Interp interp(current); // one per chunk: interpolators hold per-cell scratch
+    CharacteristicStages<D, S> stages;
+    double nonFinite = 0.0;
+    std::array<Index, D> i = current.nodeIndex(begin); // then advanced x fastest, without divisions
+    for (Index k = begin; k < end; ++k, nextNode(spec, i))
+    {
+      traceCharacteristic(tableau, nodePoint(spec, i), tNext, dt, dynamics, stages);
+      bool finiteFoot = true;
+      for (int a = 0; a < D; ++a)
+      {
+        finiteFoot = finiteFoot && std::isfinite(stages.Foot[a]);
+      }
+      // A non-finite foot cannot be located: report it instead of reading memory.
+      double value = finiteFoot ? interpolate(interp, spec, stages.Foot.data()) : std::numeric_limits<double>::quiet_NaN();
+      if constexpr (!std::is_same_v<Source, NoSource>)
+      {
+        value += stageQuadrature(tableau, stages, dt,
+          [&g](double t, const std::array<double, D>& x, int) { return g(t, x); });
+      }
+      if (!std::isfinite(value))
+      {
+        nonFinite += 1.0;
+      }
+      next(i) = value;
+    }
+    return nonFinite;
+  };
+  return ctx.parallelSum(0, spec.nodeCount(), body);
+}
+
+} // namespace detail
+
+/// One SL step (2.36) from t_n = tNext - dt to tNext for
+/// v_t + f(t, x) . grad v = g(t, x).
+///  - `current` holds U^n; its ghost layers are filled here (it needs at least
+///    Interp::GhostWidth of them);
+///  - `next` receives U^{n+1}; it is resized to current's layout if needed;
+///  - f(double t, const std::array<double, D>& x) -> std::array<double, D>,
+///    g(double t, const std::array<double, D>& x) -> double, or NoSource{}.
+/// Both callables are called concurrently from the executor's threads; pass
+/// lambdas or function objects (a plain function is called indirectly, which
+/// made a Q1 step about 1.7x slower in BenchRotation).
+/// Returns numericalFailure if a value is NaN/Inf (the step is complete).
+template <class Interp, class Velocity, class Source = NoSource>
+Status linearSLStep(const Context& ctx, RkOrder order, GridField<Interp::Dim, double>& current,
+  GridField<Interp::Dim, double>& next, double tNext, double dt, const Velocity& f, const Source& g = Source{})
+{
+  constexpr int D = Interp::Dim;
+  SLTK_RETURN_IF_ERROR(current.spec().validate());
+  if (!isValidRkOrder(static_cast<int>(order)))
+  {
+    return Status::invalidArgument("RK order must be 1, 2 or 3, got " + std::to_string(static_cast<int>(order)));
+  }
+  if (!(dt > 0.0) || !std::isfinite(dt) || !std::isfinite(tNext))
+  {
+    return Status::invalidArgument("the SL time step must be a positive finite number, got " + std::to_string(dt));
+  }
+  if (current.ghost() < Interp::GhostWidth)
+  {
+    return Status::invalidArgument("the field has " + std::to_string(current.ghost()) +
+      " ghost layers, the interpolator reads " + std::to_string(Interp::GhostWidth));
+  }
+  bool sameLayout = next.ghost() == current.ghost() && next.storage().size() == current.storage().size();
+  for (int a = 0; a < D && sameLayout; ++a)
+  {
+    const GridSpec<D>& have = next.spec();
+    const GridSpec<D>& want = current.spec();
+    sameLayout = have.Dims[a] == want.Dims[a] && have.Origin[a] == want.Origin[a] &&
+      have.Spacing[a] == want.Spacing[a] && have.Bounds[a] == want.Bounds[a];
+  }
+  if (!sameLayout)
+  {
+    next.resize(current.spec(), current.ghost());
+  }
+  current.fillGhosts();
+  const double nonFinite = withTableau(order, [&](const auto& tableau) {
+    return detail::linearSLKernel<Interp>(ctx, tableau, current, next, tNext, dt, f, g);
+  });
+  if (nonFinite > 0.0)
+  {
+    return Status::numericalFailure(std::to_string(static_cast<Index>(nonFinite)) +
+      " non-finite values in the SL step ending at t = " + std::to_string(tNext));
+  }
+  return Status::ok();
+}
+
+struct LinearSLOptions
+{
+  RkOrder Order = RkOrder::Kutta3; ///< RK for the feet, and its quadrature (2.43)-(2.45)
+  double StartTime = 0.0;          ///< t_0
+  double FinalTime = 1.0;          ///< T
+  double MaxTimeStep = 0.0;        ///< dt before shortening, e.g. lambda * dx
+};
+
+/// Advances u from StartTime to FinalTime by slStepCount() steps of (2.36).
+/// u must have at least Interp::GhostWidth ghost layers; on return it holds
+/// U^{N_T} (or the last completed step when aborted: *stepsDone tells how many).
+/// Asks ctx.interrupter() before every step (fraction done) and returns
+/// Status::aborted() when it says so.
+template <class Interp, class Velocity, class Source = NoSource>
+Status linearSLAdvance(const Context& ctx, const LinearSLOptions& options, GridField<Interp::Dim, double>& u,
+  const Velocity& f, const Source& g = Source{}, Index* stepsDone = nullptr)
+{
+  if (stepsDone)
+  {
+    *stepsDone = 0;
+  }
+  const double span = options.FinalTime - options.StartTime;
+  if (!(span > 0.0) || !std::isfinite(span))
+  {
+    return Status::invalidArgument("SL advection needs FinalTime > StartTime, got [" +
+      std::to_string(options.StartTime) + ", " + std::to_string(options.FinalTime) + "]");
+  }
+  if (!(options.MaxTimeStep > 0.0) || !std::isfinite(options.MaxTimeStep))
+  {
+    return Status::invalidArgument("SL advection needs a positive MaxTimeStep, got " +
+      std::to_string(options.MaxTimeStep));
+  }
+  const Index steps = slStepCount(span, options.MaxTimeStep);
+  const double dt = span / static_cast<double>(steps);
+  GridField<Interp::Dim, double> next(u.spec(), u.ghost());
+  Interrupter& progress = ctx.interrupter();
+  progress.start("semi-Lagrangian advection");
+  Status status;
+  for (Index n = 0; n < steps; ++n)
+  {
+    if (progress.wasInterrupted(static_cast<double>(n) / static_cast<double>(steps)))
+    {
+      status = Status::aborted();
+      break;
+    }
+    // t_{n+1} = t_0 + (n + 1) dt, not an accumulated sum.
+    const double tNext = options.StartTime + static_cast<double>(n + 1) * dt;
+    status = linearSLStep<Interp>(ctx, options.Order, u, next, tNext, dt, f, g);
+    if (status.isOk() || status.code() == StatusCode::NumericalFailure) // the step was computed
+    {
+      std::swap(u, next);
+      if (stepsDone)
+      {
+        *stepsDone = n + 1;
+      }
+    }
+    if (!status.isOk())
+    {
+      break;
+    }
+  }
+  progress.end();
+  return status;
+}
+
+} // namespace sltk
