@@ -2,6 +2,9 @@
 #include "vtkSLLevelSetReconstruct.h"
 
 #include "SLTKBridge.h"
+#include "SLTKReconstructionOutput.h"
+
+#include "sltk/recon/Reconstruction.h"
 
 #include "vtkDataObject.h"
 #include "vtkImageData.h"
@@ -49,22 +52,103 @@ int vtkSLLevelSetReconstruct::RequestInformation(
   return 1;
 }
 
+namespace
+{
+sltk::ReconstructionOptions optionsOf(vtkSLLevelSetReconstruct* self)
+{
+  sltk::ReconstructionOptions o;
+  o.Runs = self->GetNumberOfRuns();
+  o.CellSizeFactor = self->GetCellSizeFactor();
+  o.OutsideThresholdFactor = self->GetOutsideThresholdFactor();
+  o.Padding = self->GetPadding();
+  o.MaxIterations = self->GetMaximumNumberOfIterations();
+  o.Tolerance = self->GetTolerance();
+  o.Interpolator = static_cast<sltk::InterpolatorKind>(self->GetInterpolator());
+  o.Guess = static_cast<sltk::InitialGuess>(self->GetInitialGuess());
+  return o;
+}
+
+/// The cloud in its plane when it has no z extent (2D reconstruction).
+bool flatten(const sltk::PointCloud<3>& cloud, sltk::PointCloud<2>& flat, double& z)
+{
+  const auto box = sltk::boundingBox(cloud);
+  if (box.extent(2) != 0.0)
+  {
+    return false;
+  }
+  z = box.Min[2];
+  flat.Points.resize(cloud.Points.size());
+  for (size_t k = 0; k < cloud.Points.size(); ++k)
+  {
+    flat.Points[k] = { cloud.Points[k][0], cloud.Points[k][1] };
+  }
+  return true;
+}
+} // namespace
+
 int vtkSLLevelSetReconstruct::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
+  vtkImageData* image = vtkImageData::GetData(outputVector, 0);
+  vtkPolyData* surface = vtkPolyData::GetData(outputVector, 1);
+  vtkTable* history = vtkTable::GetData(outputVector, 2);
+
   sltk::PointCloud<3> cloud;
-  const sltk::Status status = sltk::vtkbridge::toValidCloud(input, cloud);
+  sltk::PointCloud<2> flat;
+  double z = 0.0;
+  sltk::Status status = sltk::vtkbridge::toCloud(input, cloud);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    : 1;
+  if (status.isOk() && cloud.Points.empty() && pieces > 1)
+  {
+    // Under MPI a rank without points (e.g. not the reader's) has nothing to do: the
+    // reconstruction runs where the cloud is (distributed runs are not built yet).
+    return 1;
+  }
+  const bool planar = status.isOk() && !cloud.Points.empty() && flatten(cloud, flat, z);
+  if (status.isOk())
+  {
+    status = planar ? sltk::validateCloud(flat) : sltk::validateCloud(cloud);
+  }
   if (!status.isOk())
   {
     vtkErrorMacro("Input point set rejected: " << status.message());
     return 0;
   }
-  vtkErrorMacro("The input (" << cloud.size()
-                              << " points) is valid, but the level-set reconstruction "
-                                 "(thesis Algorithm 1) is not implemented in this SLTK version; "
-                                 "no output was produced.");
-  return 0;
+
+  sltk::ThreadPool pool(this->NumberOfThreads);
+  sltk::vtkbridge::AlgorithmInterrupter progress(this);
+  sltk::vtkbridge::VTKLogger logger;
+  sltk::Context ctx;
+  ctx.Executor = &pool;
+  ctx.Progress = &progress;
+  ctx.Log = &logger;
+  const sltk::ReconstructionOptions options = optionsOf(this);
+  sltk::ReconstructionResult<2> result2;
+  sltk::ReconstructionResult<3> result3;
+  status = planar ? sltk::reconstruct(flat, options, ctx, result2) : sltk::reconstruct(cloud, options, ctx, result3);
+  if (!status.isOk())
+  {
+    vtkErrorMacro("Reconstruction failed: " << status.message());
+    return 0;
+  }
+  if (planar)
+  {
+    sltk::vtkbridge::toImage(result2, z, image);
+    sltk::vtkbridge::runSummary(result2, image);
+    sltk::vtkbridge::historyTable(result2.History, history);
+  }
+  else
+  {
+    sltk::vtkbridge::toImage(result3, 0.0, image);
+    sltk::vtkbridge::runSummary(result3, image);
+    sltk::vtkbridge::historyTable(result3.History, history);
+  }
+  sltk::vtkbridge::zeroLevelSet(image, surface);
+  return 1;
 }
 
 void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
@@ -78,5 +162,6 @@ void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "Padding: " << this->Padding << "\n";
+  os << indent << "InitialGuess: " << this->InitialGuess << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -7,18 +7,21 @@
  * Input: any vtkPointSet; only its points are used (cells are ignored).
  * Outputs:
  *  - port 0: vtkImageData with the point arrays "SignedDistance" (negative
- *    inside) and "DistanceToCloud";
+ *    inside; cut at +-4 dx away from the surface, (1.49)) and "DistanceToCloud",
+ *    and a per-run summary in its field data (CloudSpacing, RunGridDimensions,
+ *    RunIterations, RunEnergy, RunCloudError, RunSeconds);
  *  - port 1: vtkPolyData, the zero isosurface (3D) or contour (2D);
  *  - port 2: vtkTable, the convergence history (run, iteration, energy E_2,
  *    eps_1, Err_P, band size, time) for ParaView line charts.
  *
  * The grid is derived from the data: dx = CellSizeFactor * h_P / 2^(r-1) in
  * run r, where h_P is the mean nearest-neighbour spacing of the cloud
- * (thesis (4.36)), padded by Padding cells on each side.
+ * (thesis (4.36)), padded by Padding cells on each side. A cloud whose z
+ * extent is zero is reconstructed in 2D (a closed curve in its plane).
  *
- * @warning This version validates the input and the parameters; the level-set
- * evolution (Algorithm 1) is not built yet, and the filter reports so as an
- * error instead of producing output.
+ * The computation runs on every rank that calls it with the points it holds;
+ * under MPI, give the whole cloud to one rank (distributed reconstruction is
+ * not built yet).
  */
 #ifndef vtkSLLevelSetReconstruct_h
 #define vtkSLLevelSetReconstruct_h
@@ -55,7 +58,7 @@ public:
   ///@}
 
   ///@{
-  /// C_dx: grid spacing of the first run in units of h_P (4.36). Default 2, range 0.05-100.
+  /// C_dx: grid spacing of the first run in units of h_P (4.36). Default 1 (the thesis's), range 0.05-100.
   vtkSetClampMacro(CellSizeFactor, double, 0.05, 100.0);
   vtkGetMacro(CellSizeFactor, double);
   ///@}
@@ -84,6 +87,20 @@ public:
   vtkGetMacro(Padding, int);
   ///@}
 
+  /// Initial surface of the first run.
+  enum InitialGuessType
+  {
+    OUTSIDE_MARKING = 0, ///< 4.4.4: marking from the boundary, threshold K_P h_P
+    BOUNDING_SPHERE = 1, ///< a sphere around the cloud (the thesis's knot test)
+    BOUNDING_ELLIPSOID = 2
+  };
+
+  ///@{
+  /// Initial surface of the first run. Default OUTSIDE_MARKING.
+  vtkSetClampMacro(InitialGuess, int, OUTSIDE_MARKING, BOUNDING_ELLIPSOID);
+  vtkGetMacro(InitialGuess, int);
+  ///@}
+
   ///@{
   /// Threads used by the solver; 0 means all hardware threads. Default 0.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
@@ -101,11 +118,12 @@ protected:
 
   int Interpolator = WENO3;
   int NumberOfRuns = 3;
-  double CellSizeFactor = 2.0;
+  double CellSizeFactor = 1.0;
   double OutsideThresholdFactor = 2.0;
   int MaximumNumberOfIterations = 100;
   double Tolerance = 1e-4;
   int Padding = 10;
+  int InitialGuess = OUTSIDE_MARKING;
   int NumberOfThreads = 0;
 
 private:

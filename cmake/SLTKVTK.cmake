@@ -4,7 +4,7 @@
 find_package(ParaView REQUIRED COMPONENTS RemotingCore)
 set(SLTK_VTK_COMPONENTS
   CommonCore CommonDataModel CommonExecutionModel ParallelCore FiltersCore
-  IOXML IOPLY IOGeometry IOLegacy)
+  IOXML IOPLY IOGeometry IOLegacy IOCore)
 find_package(VTK REQUIRED COMPONENTS ${SLTK_VTK_COMPONENTS})
 string(REPLACE ";" " " SLTK_VTK_COMPONENTS "${SLTK_VTK_COMPONENTS}")
 

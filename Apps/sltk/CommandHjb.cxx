@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `sltk hjb`: the HJB solver (vtkCWENOHJBSolver) from a terminal.
 #include "Commands.h"
+#include "ErrorCollector.h"
 #include "Json.h"
 #include "WriteAtomically.h"
 
@@ -51,24 +52,6 @@ int interpolatorCode(const std::string& name)
   return -1;
 }
 
-/// Collects the filter's error messages so the CLI can print them once.
-class ErrorCollector : public vtkCommand
-{
-public:
-  static ErrorCollector* New() { return new ErrorCollector; }
-  void Execute(vtkObject*, unsigned long, void* data) override
-  {
-    // "ERROR: In file, line N\nvtkClass (0x...): text" -> "text"
-    std::string text = static_cast<const char*>(data);
-    const auto cut = text.find("): ");
-    this->Message = cut == std::string::npos ? text : text.substr(cut + 3);
-    while (!this->Message.empty() && (this->Message.back() == '\n' || this->Message.back() == ' '))
-    {
-      this->Message.pop_back();
-    }
-  }
-  std::string Message;
-};
 } // namespace
 
 int commandHjb(const Args& rawArgs)

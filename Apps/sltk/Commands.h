@@ -14,6 +14,7 @@ using Args = std::vector<std::string>;
 
 int commandInfo(const Args& args);
 int commandHjb(const Args& args);
+int commandReconstruct(const Args& args);
 
 /// Prints "sltk: error: <message>" to stderr and returns `code`.
 int fail(const std::string& message, int code = 1);

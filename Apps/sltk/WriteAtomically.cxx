@@ -10,8 +10,13 @@ namespace sltkcli
 
 sltk::Status writeAtomically(const std::string& path, const std::function<bool(const std::string&)>& write)
 {
-  // Keep the extension last: VTK writers do not care, but readers of partial names might.
-  const std::string temporary = path + ".part" + std::to_string(::getpid());
+  // "name.part<pid>.ext": some writers choose their format by the extension.
+  const auto slash = path.find_last_of('/');
+  const auto dot = path.find_last_of('.');
+  const bool hasExtension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  const std::string stem = hasExtension ? path.substr(0, dot) : path;
+  const std::string extension = hasExtension ? path.substr(dot) : "";
+  const std::string temporary = stem + ".part" + std::to_string(::getpid()) + extension;
   if (!write(temporary))
   {
     std::remove(temporary.c_str());

@@ -14,6 +14,7 @@ const char* usage = R"(usage: sltk <command> [options]
 commands:
   info CLOUD        validate a point cloud and print its size, bounds, spacing h_P
                     and the grid of every run of the reconstruction (thesis (4.36))
+  reconstruct CLOUD reconstruct a watertight surface (signed distance + surface)
   hjb               solve a Hamilton-Jacobi-Bellman problem (thesis ch. 3)
 
 Run `sltk <command> --help` for the options of a command.
@@ -41,6 +42,10 @@ int main(int argc, char** argv)
   if (command == "info")
   {
     return sltkcli::commandInfo(args);
+  }
+  if (command == "reconstruct")
+  {
+    return sltkcli::commandReconstruct(args);
   }
   if (command == "hjb")
   {

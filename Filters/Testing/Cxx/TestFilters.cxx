@@ -91,20 +91,58 @@ int main()
     check(solver->GetExecutive()->Update() == 0, "HJB refuses 2 nodes along x");
   }
 
-  // Reconstruction: bad inputs fail cleanly, a valid one reports the missing numerics.
+  // Reconstruction: bad inputs fail cleanly; a sphere cloud gives a signed distance and a surface.
   {
     vtkNew<vtkSLLevelSetReconstruct> recon;
     check(recon->GetNumberOfOutputPorts() == 3, "reconstruction has 3 outputs");
     vtkNew<vtkPolyData> empty;
     recon->SetInputData(empty);
     check(recon->GetExecutive()->Update() == 0, "reconstruction refuses an empty point set");
-    recon->SetInputData(cloud(200, 1.0));
-    check(recon->GetExecutive()->Update() == 0, "reconstruction reports that Algorithm 1 is not built");
-    check(vtkImageData::SafeDownCast(recon->GetOutputDataObject(0)) != nullptr, "output 0 is vtkImageData");
-    check(vtkPolyData::SafeDownCast(recon->GetOutputDataObject(1)) != nullptr, "output 1 is vtkPolyData");
-    check(vtkTable::SafeDownCast(recon->GetOutputDataObject(2)) != nullptr, "output 2 is vtkTable");
+    recon->SetInputData(cloud(800, 1.0));
+    recon->SetNumberOfRuns(2);
+    recon->SetInterpolator(vtkSLLevelSetReconstruct::WENO3);
+    check(recon->GetExecutive()->Update() == 1, "reconstruction of an 800-point sphere succeeds");
+    auto* image = vtkImageData::SafeDownCast(recon->GetOutputDataObject(0));
+    auto* sdf = image ? image->GetPointData()->GetArray("SignedDistance") : nullptr;
+    check(sdf != nullptr && image->GetPointData()->GetArray("DistanceToCloud") != nullptr,
+      "output 0 carries SignedDistance and DistanceToCloud");
+    if (sdf)
+    {
+      const vtkIdType centre = image->FindPoint(0.0, 0.0, 0.0);
+      const vtkIdType outside = image->FindPoint(1.4, 0.0, 0.0);
+      check(sdf->GetTuple1(centre) < 0.0, "the signed distance is negative inside");
+      check(sdf->GetTuple1(outside) > 0.0, "and positive outside");
+    }
+    auto* surface = vtkPolyData::SafeDownCast(recon->GetOutputDataObject(1));
+    double bounds[6] = { 0, 0, 0, 0, 0, 0 };
+    if (surface && surface->GetNumberOfPoints() > 0)
+    {
+      surface->GetBounds(bounds);
+    }
+    check(surface && surface->GetNumberOfPolys() > 100 && std::fabs(bounds[1] - 1.0) < 0.05 &&
+        std::fabs(bounds[4] + 1.0) < 0.05,
+      "output 1 is a closed surface through the unit sphere");
+    auto* table = vtkTable::SafeDownCast(recon->GetOutputDataObject(2));
+    check(table && table->GetNumberOfRows() >= 2 && table->GetColumnByName("CloudError") != nullptr,
+      "output 2 is the convergence history");
     recon->SetNumberOfRuns(99);
     check(recon->GetNumberOfRuns() == 6, "NumberOfRuns is clamped to 6");
+
+    // A planar cloud (a circle at z = 0.5) is reconstructed in 2D.
+    vtkNew<vtkPoints> ring;
+    for (int k = 0; k < 64; ++k)
+    {
+      ring->InsertNextPoint(std::cos(2 * M_PI * k / 64), std::sin(2 * M_PI * k / 64), 0.5);
+    }
+    vtkNew<vtkPolyData> circle;
+    circle->SetPoints(ring);
+    recon->SetInputData(circle);
+    recon->SetNumberOfRuns(3);
+    check(recon->GetExecutive()->Update() == 1, "a 64-point circle is reconstructed");
+    image = vtkImageData::SafeDownCast(recon->GetOutputDataObject(0));
+    check(image->GetDimensions()[2] == 1 && image->GetOrigin()[2] == 0.5, "in 2D: one z layer at the cloud's height");
+    surface = vtkPolyData::SafeDownCast(recon->GetOutputDataObject(1));
+    check(surface->GetNumberOfLines() > 50, "the 2D output 1 is a closed contour");
   }
 
   // Octree: a real vtkHyperTreeGrid output type, never the input type.

@@ -29,11 +29,19 @@ recon = SemiLagrangianLevelSetReconstruction(Input=empty)
 recon.UpdatePipeline()
 assert recon.GetDataInformation().GetNumberOfPoints() == 0
 
-cloud = PointSource(NumberOfPoints=500, Radius=1.0)
+# A real reconstruction: points on a sphere (a sphere source's vertices, cells ignored).
+cloud = Sphere(Radius=1.0, ThetaResolution=40, PhiResolution=40)
 recon.Input = cloud
-recon.Interpolator = "CWENOZ"
+recon.Interpolator = "WENO3"
+recon.NumberOfRuns = 2
 recon.UpdatePipeline()
-assert recon.GetDataInformation().GetNumberOfPoints() == 0  # Algorithm 1 not built yet: no output
+sdf = servermanager.Fetch(recon)
+assert sdf.GetPointData().GetArray("SignedDistance") is not None
+surface = servermanager.Fetch(recon, idx=1)
+bounds = surface.GetBounds()
+assert surface.GetNumberOfPolys() > 100 and abs(bounds[1] - 1.0) < 0.05, (surface.GetNumberOfPolys(), bounds)
+history = servermanager.Fetch(recon, idx=2)
+assert history.GetNumberOfRows() >= 2 and history.GetColumnByName("CloudError") is not None
 
 octree = OctreeSignedDistancefromPoints(Input=cloud)
 octree.UpdatePipeline()

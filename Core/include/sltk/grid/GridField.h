@@ -46,6 +46,13 @@ public:
   }
 
   const GridSpec<D>& spec() const { return this->Spec; }
+
+  /// Moves the grid in space without touching the values (same node counts).
+  void setGeometry(const std::array<double, D>& origin, const std::array<double, D>& spacing)
+  {
+    this->Spec.Origin = origin;
+    this->Spec.Spacing = spacing;
+  }
   int ghost() const { return this->Ghost; }
   const std::array<Index, D>& strides() const { return this->Stride; }
 

@@ -1,0 +1,271 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// `sltk reconstruct CLOUD`: vtkSLLevelSetReconstruct from a terminal.
+#include "Commands.h"
+#include "ErrorCollector.h"
+#include "Json.h"
+#include "ProgressBar.h"
+#include "ReadPointCloud.h"
+#include "WriteAtomically.h"
+#include "WriteSurface.h"
+
+#include "sltk/exec/Memory.h"
+
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkDelimitedTextWriter.h>
+#include <vtkFieldData.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSLLevelSetReconstruct.h>
+#include <vtkTable.h>
+#include <vtkXMLImageDataWriter.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+namespace sltkcli
+{
+
+namespace
+{
+const char* reconstructUsage = R"(usage: sltk reconstruct CLOUD [options]
+
+Reconstructs a watertight surface from an unorganised point cloud with the
+semi-Lagrangian level-set method (Preda 2024, Algorithm 1 with the multi-run
+schedule of Table 4.1). Clouds with no z extent are reconstructed in 2D.
+
+options:
+  -o, --output FILE.vti   signed distance (and distance to the cloud) on the grid
+  --surface FILE          zero level set: .vtp, .ply, .stl (3D) or .vtp (2D)
+  --csv FILE              convergence history (run, iteration, energy, change, cloud error, band, time)
+  --json FILE             summary: points, seconds, peak_memory_mb, runs [grid, iterations, energy, err_cloud]
+  --interpolator NAME     q1 | weno3 | cweno | cwenoz (default weno3)
+  --cdx C                 C_dx of (4.36): first-run cell size in units of h_P (default 1)
+  --kp K                  K_P: initial surface at K h_P from the cloud (default 2; 10 for scans with holes)
+  --runs R                runs, each halving the cell size (default 3)
+  --max-iterations N      iteration cap per run (default 100)
+  --initial NAME          outside | sphere | ellipsoid (default outside)
+  --threads T             threads (default: all)
+  --quiet                 no progress bar
+)";
+
+int interpolatorCode(const std::string& name)
+{
+  const char* names[4] = { "q1", "weno3", "cweno", "cwenoz" };
+  for (int k = 0; k < 4; ++k)
+  {
+    if (name == names[k])
+    {
+      return k;
+    }
+  }
+  return -1;
+}
+
+int initialGuessCode(const std::string& name)
+{
+  const char* names[3] = { "outside", "sphere", "ellipsoid" };
+  for (int k = 0; k < 3; ++k)
+  {
+    if (name == names[k])
+    {
+      return k;
+    }
+  }
+  return -1;
+}
+
+vtkSmartPointer<vtkPolyData> asPolyData(const sltk::PointCloud<3>& cloud)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(cloud.Points.size()));
+  for (size_t k = 0; k < cloud.Points.size(); ++k)
+  {
+    points->SetPoint(static_cast<vtkIdType>(k), cloud.Points[k].data());
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  return poly;
+}
+} // namespace
+
+int commandReconstruct(const Args& rawArgs)
+{
+  Args args = rawArgs;
+  for (auto& a : args)
+  {
+    a = a == "-o" ? "--output" : a;
+  }
+  Options opt(args,
+    { "output", "surface", "csv", "json", "interpolator", "cdx", "kp", "runs", "max-iterations", "initial",
+      "threads" },
+    { "help", "quiet" });
+  if (opt.has("help"))
+  {
+    std::cout << reconstructUsage;
+    return 0;
+  }
+  const double cdx = opt.number("cdx", 1.0);
+  const double kp = opt.number("kp", 2.0);
+  const double runs = opt.number("runs", 3);
+  const double iterations = opt.number("max-iterations", 100);
+  const double threads = opt.number("threads", 0);
+  if (!opt.ok())
+  {
+    return fail(opt.error(), 2);
+  }
+  if (opt.positional().size() != 1)
+  {
+    return fail("give exactly one point cloud file (see sltk reconstruct --help)", 2);
+  }
+  const int interpolator = interpolatorCode(opt.value("interpolator", "weno3"));
+  if (interpolator < 0)
+  {
+    return fail("unknown interpolator '" + opt.value("interpolator") + "': use q1, weno3, cweno or cwenoz", 2);
+  }
+  const int guess = initialGuessCode(opt.value("initial", "outside"));
+  if (guess < 0)
+  {
+    return fail("unknown initial guess '" + opt.value("initial") + "': use outside, sphere or ellipsoid", 2);
+  }
+  if (!(cdx >= 0.05 && cdx <= 100) || !(kp >= 0.1 && kp <= 100) || runs < 1 || runs > 6 || iterations < 1 ||
+    threads < 0)
+  {
+    return fail("out of range: --cdx 0.05..100, --kp 0.1..100, --runs 1..6, --max-iterations >= 1, --threads >= 0",
+      2);
+  }
+  if (opt.has("surface"))
+  {
+    const std::string problem = surfaceFormatProblem(opt.value("surface"));
+    if (!problem.empty())
+    {
+      return fail(problem, 2);
+    }
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  const std::string path = opt.positional()[0];
+  sltk::PointCloud<3> cloud;
+  sltk::Status status = readPointCloud(path, cloud);
+  if (!status.isOk())
+  {
+    return fail(status.message());
+  }
+  vtkNew<vtkSLLevelSetReconstruct> filter;
+  vtkNew<ErrorCollector> errors;
+  filter->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<ProgressBar> bar;
+  if (!opt.has("quiet"))
+  {
+    filter->AddObserver(vtkCommand::ProgressEvent, bar);
+  }
+  filter->SetInputData(asPolyData(cloud));
+  filter->SetInterpolator(interpolator);
+  filter->SetCellSizeFactor(cdx);
+  filter->SetOutsideThresholdFactor(kp);
+  filter->SetNumberOfRuns(static_cast<int>(runs));
+  filter->SetMaximumNumberOfIterations(static_cast<int>(iterations));
+  filter->SetInitialGuess(guess);
+  filter->SetNumberOfThreads(static_cast<int>(threads));
+  filter->Update();
+  bar->finish();
+  if (!errors->Message.empty())
+  {
+    return fail(path + ": " + errors->Message);
+  }
+  auto* image = vtkImageData::SafeDownCast(filter->GetOutputDataObject(0));
+  auto* surface = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1));
+  auto* history = vtkTable::SafeDownCast(filter->GetOutputDataObject(2));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double peakMb = static_cast<double>(sltk::peakResidentBytes()) / 1e6;
+
+  // Summary table.
+  vtkFieldData* fd = image->GetFieldData();
+  auto* grids = fd->GetArray("RunGridDimensions");
+  auto* its = fd->GetArray("RunIterations");
+  auto* energy = fd->GetArray("RunEnergy");
+  auto* cloudError = fd->GetArray("RunCloudError");
+  auto* runSeconds = fd->GetArray("RunSeconds");
+  std::printf("cloud      %s (%zu points, h_P = %.6g)\n", path.c_str(), cloud.Points.size(),
+    fd->GetArray("CloudSpacing")->GetTuple1(0));
+  std::printf("\n run            grid   iterations      energy E_2     Err_P        time\n");
+  std::vector<JsonObject> runRecords;
+  for (vtkIdType r = 0; r < grids->GetNumberOfTuples(); ++r)
+  {
+    const double* g = grids->GetTuple3(r);
+    std::printf("%4lld  %5.0f x %4.0f x %4.0f  %6.0f  %14.6g  %10.4g  %8.2f s\n", static_cast<long long>(r + 1), g[0],
+      g[1], g[2], its->GetTuple1(r), energy->GetTuple1(r), cloudError->GetTuple1(r), runSeconds->GetTuple1(r));
+    runRecords.push_back(JsonObject()
+                           .add("run", static_cast<long long>(r + 1))
+                           .add("grid", std::vector<long long>{ static_cast<long long>(g[0]),
+                                          static_cast<long long>(g[1]), static_cast<long long>(g[2]) })
+                           .add("iterations", static_cast<long long>(its->GetTuple1(r)))
+                           .add("energy", energy->GetTuple1(r))
+                           .add("err_cloud", cloudError->GetTuple1(r))
+                           .add("seconds", runSeconds->GetTuple1(r)));
+  }
+  std::printf("\nsurface    %lld points, %lld cells\n", static_cast<long long>(surface->GetNumberOfPoints()),
+    static_cast<long long>(surface->GetNumberOfCells()));
+  std::printf("total      %.2f s, peak memory %.0f MB\n", seconds, peakMb);
+
+  if (opt.has("output"))
+  {
+    status = writeAtomically(opt.value("output"), [&](const std::string& temporary) {
+      vtkNew<vtkXMLImageDataWriter> writer;
+      writer->SetInputData(image);
+      writer->SetFileName(temporary.c_str());
+      return writer->Write() == 1;
+    });
+    if (!status.isOk())
+    {
+      return fail(status.message());
+    }
+  }
+  if (opt.has("surface"))
+  {
+    status = writeSurface(opt.value("surface"), surface);
+    if (!status.isOk())
+    {
+      return fail(status.message());
+    }
+  }
+  if (opt.has("csv"))
+  {
+    status = writeAtomically(opt.value("csv"), [&](const std::string& temporary) {
+      vtkNew<vtkDelimitedTextWriter> writer;
+      writer->SetInputData(history);
+      writer->SetFileName(temporary.c_str());
+      writer->SetFieldDelimiter(",");
+      writer->SetUseStringDelimiter(false);
+      return writer->Write() == 1;
+    });
+    if (!status.isOk())
+    {
+      return fail(status.message());
+    }
+  }
+  if (opt.has("json"))
+  {
+    JsonObject summary;
+    summary.add("cloud", path)
+      .add("points", static_cast<long long>(cloud.Points.size()))
+      .add("h_P", fd->GetArray("CloudSpacing")->GetTuple1(0))
+      .add("seconds", seconds)
+      .add("peak_memory_mb", peakMb)
+      .add("surface_points", static_cast<long long>(surface->GetNumberOfPoints()))
+      .add("runs", runRecords);
+    status = writeTextFile(opt.value("json"), summary.str() + "\n");
+    if (!status.isOk())
+    {
+      return fail(status.message());
+    }
+  }
+  return 0;
+}
+
+} // namespace sltkcli

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "WriteSurface.h"
+
+#include "WriteAtomically.h"
+
+#include <vtkNew.h>
+#include <vtkPLYWriter.h>
+#include <vtkPolyData.h>
+#include <vtkSTLWriter.h>
+#include <vtkXMLPolyDataWriter.h>
+
+namespace sltkcli
+{
+
+namespace
+{
+std::string extensionOf(const std::string& path)
+{
+  const auto dot = path.find_last_of('.');
+  return dot == std::string::npos ? "" : path.substr(dot + 1);
+}
+
+template <class Writer>
+bool writeWith(vtkPolyData* surface, const std::string& path)
+{
+  vtkNew<Writer> writer;
+  writer->SetInputData(surface);
+  writer->SetFileName(path.c_str());
+  return writer->Write() == 1;
+}
+} // namespace
+
+std::string surfaceFormatProblem(const std::string& path)
+{
+  const std::string ext = extensionOf(path);
+  if (ext == "vtp" || ext == "ply" || ext == "stl")
+  {
+    return "";
+  }
+  return "unsupported surface format '." + ext + "' for " + path + ": use .vtp, .ply or .stl";
+}
+
+sltk::Status writeSurface(const std::string& path, vtkPolyData* surface)
+{
+  const std::string ext = extensionOf(path);
+  return writeAtomically(path, [&](const std::string& temporary) {
+    if (ext == "ply")
+    {
+      return writeWith<vtkPLYWriter>(surface, temporary);
+    }
+    if (ext == "stl")
+    {
+      return writeWith<vtkSTLWriter>(surface, temporary);
+    }
+    return writeWith<vtkXMLPolyDataWriter>(surface, temporary);
+  });
+}
+
+} // namespace sltkcli

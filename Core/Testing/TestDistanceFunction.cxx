@@ -1,0 +1,310 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/levelset/FastSweeping.h"
+#include "sltk/recon/DistanceFunction.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+sltk::PointCloud<2> circleCloud(int n, double r)
+{
+  sltk::PointCloud<2> c;
+  for (int k = 0; k < n; ++k)
+  {
+    const double t = 2.0 * Pi * k / n;
+    c.Points.push_back({ r * std::cos(t), r * std::sin(t) });
+  }
+  return c;
+}
+
+/// Fibonacci points on a sphere (about uniform).
+sltk::PointCloud<3> sphereCloud(int n, double r)
+{
+  sltk::PointCloud<3> c;
+  const double golden = Pi * (3.0 - std::sqrt(5.0));
+  for (int k = 0; k < n; ++k)
+  {
+    const double z = 1.0 - 2.0 * (k + 0.5) / n;
+    const double s = std::sqrt(1.0 - z * z);
+    c.Points.push_back({ r * s * std::cos(golden * k), r * s * std::sin(golden * k), r * z });
+  }
+  return c;
+}
+
+template <int D>
+sltk::GridSpec<D> cube(double half, sltk::Index n)
+{
+  sltk::GridSpec<D> g;
+  for (int a = 0; a < D; ++a)
+  {
+    g.Dims[a] = n;
+    g.Origin[a] = -half;
+    g.Spacing[a] = 2.0 * half / static_cast<double>(n - 1);
+  }
+  return g;
+}
+
+template <int D>
+double bruteDistance(const sltk::PointCloud<D>& c, const double* x)
+{
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& q : c.Points)
+  {
+    double d2 = 0.0;
+    for (int a = 0; a < D; ++a)
+    {
+      d2 += (q[a] - x[a]) * (q[a] - x[a]);
+    }
+    best = std::min(best, std::sqrt(d2));
+  }
+  return best;
+}
+
+template <int D>
+std::array<double, D> nodeCoordinates(const sltk::GridField<D, double>& f, sltk::Index k)
+{
+  const auto i = f.nodeIndex(k);
+  std::array<double, D> x;
+  for (int a = 0; a < D; ++a)
+  {
+    x[a] = f.spec().coordinate(a, i[a]);
+  }
+  return x;
+}
+
+/// Max |d - exact| over all nodes, and the same on the 2^D corners of each point's cell.
+template <int D>
+void errors(const sltk::PointCloud<D>& cloud, const sltk::GridField<D, double>& d, double& swept, double& nearPoints)
+{
+  swept = 0.0;
+  for (sltk::Index k = 0; k < d.spec().nodeCount(); ++k)
+  {
+    swept = std::max(swept, std::fabs(d(d.nodeIndex(k)) - bruteDistance(cloud, nodeCoordinates(d, k).data())));
+  }
+  nearPoints = 0.0;
+  for (const auto& q : cloud.Points)
+  {
+    const auto loc = sltk::locate(d.spec(), q.data());
+    for (int c = 0; c < (1 << D); ++c)
+    {
+      std::array<sltk::Index, D> i;
+      std::array<double, D> x;
+      for (int a = 0; a < D; ++a)
+      {
+        i[a] = loc.Cell[a] + ((c >> a) & 1);
+        x[a] = d.spec().coordinate(a, i[a]);
+      }
+      nearPoints = std::max(nearPoints, std::fabs(d(i) - bruteDistance(cloud, x.data())));
+    }
+  }
+}
+} // namespace
+
+TEST(DistanceFunction, GodunovUpdateSolvesTheDiscreteEikonal)
+{
+  const double h[3] = { 1.0, 1.0, 1.0 };
+  const double inf = std::numeric_limits<double>::infinity();
+  const double one[3] = { 0.0, inf, inf };
+  EXPECT_DOUBLE_EQ(sltk::godunovEikonal(one, h, 3), 1.0);
+  const double two[2] = { 0.0, 0.0 };
+  EXPECT_NEAR(sltk::godunovEikonal(two, h, 2), std::sqrt(0.5), 1e-15);
+  const double three[3] = { 0.0, 0.0, 0.0 };
+  EXPECT_NEAR(sltk::godunovEikonal(three, h, 3), std::sqrt(1.0 / 3.0), 1e-15);
+  // A far neighbour does not enter: the one-axis solution is below it.
+  const double far[2] = { 0.0, 5.0 };
+  EXPECT_DOUBLE_EQ(sltk::godunovEikonal(far, h, 2), 1.0);
+  // Anisotropic spacing: (u/2)^2 + (u/1)^2 = 1 with both axes active.
+  const double h2[2] = { 2.0, 1.0 };
+  EXPECT_NEAR(sltk::godunovEikonal(two, h2, 2), 1.0 / std::sqrt(1.25), 1e-15);
+  const double none[2] = { inf, inf };
+  EXPECT_EQ(sltk::godunovEikonal(none, h, 2), inf);
+}
+
+TEST(DistanceFunction, CircleCloudExactNearPointsAndSweptErrorSmall)
+{
+  const auto cloud = circleCloud(64, 1.0); // the thesis's circle (4.5.3)
+  for (sltk::Index n : { 65, 129 })
+  {
+    const auto g = cube<2>(1.6, n);
+    sltk::GridField<2, double> d;
+    sltk::DistanceReport report;
+    ASSERT_TRUE(sltk::distanceToCloud(cloud, g, sltk::Context{}, d, {}, &report).isOk());
+    double swept = 0.0;
+    double near = 0.0;
+    errors(cloud, d, swept, near);
+    EXPECT_LT(near, 1e-14) << n;
+    EXPECT_GT(report.ExactNodes, 64 * 4);
+    EXPECT_LE(report.SweepCycles, 4);
+    const double dx = g.Spacing[0];
+    EXPECT_LT(swept, 1.0 * dx) << "n " << n << " error " << swept / dx << " dx";
+    // Godunov updates mixing two sources undercut the true distance a little
+    // near the medial axis; elsewhere the swept values are upper bounds.
+    double undercut = 0.0;
+    for (sltk::Index k = 0; k < g.nodeCount(); ++k)
+    {
+      undercut = std::max(undercut, bruteDistance(cloud, nodeCoordinates(d, k).data()) - d(d.nodeIndex(k)));
+    }
+    // Outside the circle (farther from the central medial point) the sweep is closer.
+    double outside = 0.0;
+    for (sltk::Index k = 0; k < g.nodeCount(); ++k)
+    {
+      const auto x = nodeCoordinates(d, k);
+      if (std::hypot(x[0], x[1]) > 1.0)
+      {
+        outside = std::max(outside, std::fabs(bruteDistance(cloud, x.data()) - d(d.nodeIndex(k))));
+      }
+    }
+    EXPECT_LT(outside, 0.6 * dx) << outside / dx << " dx";
+    std::printf("circle n=%lld: max error %.3f dx (undercut %.3f dx), outside the circle %.3f dx\n",
+      static_cast<long long>(n), swept / dx, undercut / dx, outside / dx);
+  }
+}
+
+TEST(DistanceFunction, SphereCloudSweptErrorSmall)
+{
+  const auto cloud = sphereCloud(800, 1.0);
+  const auto g = cube<3>(1.5, 41);
+  sltk::GridField<3, double> d;
+  ASSERT_TRUE(sltk::distanceToCloud(cloud, g, sltk::Context{}, d).isOk());
+  double swept = 0.0;
+  double near = 0.0;
+  errors(cloud, d, swept, near);
+  EXPECT_LT(near, 1e-14);
+  EXPECT_LT(swept, 1.0 * g.Spacing[0]) << swept / g.Spacing[0] << " dx";
+  std::printf("sphere 41^3: max error %.3f dx\n", swept / g.Spacing[0]);
+}
+
+TEST(DistanceFunction, MonotoneAndLipschitz)
+{
+  const auto cloud = circleCloud(64, 1.0);
+  const auto g = cube<2>(1.6, 81);
+  sltk::GridField<2, double> d;
+  ASSERT_TRUE(sltk::distanceToCloud(cloud, g, sltk::Context{}, d).isOk());
+  const double dx = g.Spacing[0];
+  // Along the positive x axis, outwards from the cloud point (1, 0): increasing.
+  const sltk::Index j = 40;
+  const sltk::Index i0 = static_cast<sltk::Index>(std::ceil((1.0 + 1.6) / dx));
+  for (sltk::Index i = i0; i + 1 < g.Dims[0]; ++i)
+  {
+    EXPECT_LT(d({ i, j }), d({ i + 1, j }));
+  }
+  // Discrete 1-Lipschitz along the axes, nonnegative everywhere.
+  for (sltk::Index j2 = 0; j2 < g.Dims[1]; ++j2)
+  {
+    for (sltk::Index i = 0; i < g.Dims[0]; ++i)
+    {
+      EXPECT_GE(d({ i, j2 }), 0.0);
+      if (i + 1 < g.Dims[0])
+      {
+        EXPECT_LE(std::fabs(d({ i + 1, j2 }) - d({ i, j2 })), dx * (1.0 + 1e-12));
+      }
+      if (j2 + 1 < g.Dims[1])
+      {
+        EXPECT_LE(std::fabs(d({ i, j2 + 1 }) - d({ i, j2 })), dx * (1.0 + 1e-12));
+      }
+    }
+  }
+}
+
+TEST(DistanceFunction, IdenticalWithThreadsAndGhostsFilled)
+{
+  const auto cloud = sphereCloud(500, 0.8);
+  const auto g = cube<3>(1.2, 33);
+  sltk::GridField<3, double> serial;
+  sltk::GridField<3, double> threaded;
+  ASSERT_TRUE(sltk::distanceToCloud(cloud, g, sltk::Context{}, serial).isOk());
+  sltk::ThreadPool pool(3);
+  sltk::Context ctx;
+  ctx.Executor = &pool;
+  ASSERT_TRUE(sltk::distanceToCloud(cloud, g, ctx, threaded).isOk());
+  EXPECT_EQ(serial.storage(), threaded.storage());
+  EXPECT_EQ(serial.ghost(), 2);
+  // Ghosts are the linear extrapolation of the boundary values.
+  EXPECT_DOUBLE_EQ(serial({ -1, 5, 5 }), 2.0 * serial({ 0, 5, 5 }) - serial({ 1, 5, 5 }));
+}
+
+TEST(DistanceFunction, PointsOutsideTheGridAndBadInput)
+{
+  sltk::PointCloud<2> cloud;
+  cloud.Points.push_back({ 3.0, 0.0 }); // outside [-1, 1]^2
+  const auto g = cube<2>(1.0, 21);
+  sltk::GridField<2, double> d;
+  ASSERT_TRUE(sltk::distanceToCloud(cloud, g, sltk::Context{}, d).isOk());
+  // The clipped box gives exact values on the right boundary column.
+  EXPECT_NEAR(d({ 20, 10 }), 2.0, 1e-14);
+  EXPECT_NEAR(d({ 20, 11 }), std::sqrt(4.0 + 0.01), 1e-14);
+  EXPECT_NEAR(d({ 19, 9 }), std::sqrt(2.1 * 2.1 + 0.01), 1e-14);
+  // Beyond the box: swept along the boundary column only, an upper bound.
+  EXPECT_GT(d({ 20, 0 }), std::sqrt(5.0) - 1e-12);
+  EXPECT_NEAR(d({ 20, 0 }), std::sqrt(4.01) + 0.9, 1e-12);
+  sltk::PointCloud<2> empty;
+  EXPECT_EQ(sltk::distanceToCloud(empty, g, sltk::Context{}, d).code(), sltk::StatusCode::InvalidArgument);
+  cloud.Points.push_back({ std::nan(""), 0.0 });
+  EXPECT_EQ(sltk::distanceToCloud(cloud, g, sltk::Context{}, d).code(), sltk::StatusCode::InvalidArgument);
+}
+
+TEST(DistanceFunction, LockedSweepingEqualsPlainGaussSeidel)
+{
+  // Random data on an anisotropic grid: the locks must not change a single bit.
+  sltk::GridSpec<2> g;
+  g.Dims = { 37, 29 };
+  g.Spacing = { 0.1, 0.07 };
+  sltk::GridField<2, double> u(g, 1, std::numeric_limits<double>::infinity());
+  std::vector<std::uint8_t> frozen(static_cast<size_t>(g.nodeCount()), 0);
+  std::uint64_t state = 12345;
+  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
+  {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    if ((state >> 33) % 23 == 0)
+    {
+      frozen[static_cast<size_t>(k)] = 1;
+      u(u.nodeIndex(k)) = static_cast<double>((state >> 40) % 1000) * 1e-3;
+    }
+  }
+  sltk::GridField<2, double> plain = u;
+  sltk::FastSweepingOptions options;
+  options.Tolerance = 0.0;
+  sltk::FastSweepingReport report;
+  ASSERT_TRUE(sltk::fastSweep(u, frozen, sltk::Context{}, options, &report).isOk());
+  EXPECT_TRUE(report.Converged);
+  const double inf = std::numeric_limits<double>::infinity();
+  bool changed = true;
+  int cycles = 0;
+  while (changed)
+  {
+    changed = false;
+    ++cycles;
+    for (int order = 0; order < 4; ++order)
+    {
+      for (sltk::Index jj = 0; jj < g.Dims[1]; ++jj)
+      {
+        const sltk::Index j = (order & 2) ? g.Dims[1] - 1 - jj : jj;
+        for (sltk::Index ii = 0; ii < g.Dims[0]; ++ii)
+        {
+          const sltk::Index i = (order & 1) ? g.Dims[0] - 1 - ii : ii;
+          if (frozen[static_cast<size_t>(i + g.Dims[0] * j)])
+          {
+            continue;
+          }
+          const double ax = std::min(i > 0 ? plain({ i - 1, j }) : inf, i + 1 < g.Dims[0] ? plain({ i + 1, j }) : inf);
+          const double ay = std::min(j > 0 ? plain({ i, j - 1 }) : inf, j + 1 < g.Dims[1] ? plain({ i, j + 1 }) : inf);
+          const double a[2] = { ax, ay };
+          const double v = sltk::godunovEikonal(a, g.Spacing.data(), 2);
+          if (v < plain({ i, j }))
+          {
+            plain({ i, j }) = v;
+            changed = true;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(u.storage(), plain.storage());
+  EXPECT_EQ(report.Cycles, cycles);
+}

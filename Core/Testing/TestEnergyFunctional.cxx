@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/recon/EnergyFunctional.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+template <int D>
+sltk::GridSpec<D> cube(double half, sltk::Index n)
+{
+  sltk::GridSpec<D> g;
+  for (int a = 0; a < D; ++a)
+  {
+    g.Dims[a] = n;
+    g.Origin[a] = -half;
+    g.Spacing[a] = 2.0 * half / static_cast<double>(n - 1);
+  }
+  return g;
+}
+
+/// f(x) on every node.
+template <int D, class F>
+sltk::GridField<D, double> sample(const sltk::GridSpec<D>& g, F f)
+{
+  sltk::GridField<D, double> u(g, 1);
+  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
+  {
+    const auto i = u.nodeIndex(k);
+    std::array<double, D> x;
+    for (int a = 0; a < D; ++a)
+    {
+      x[a] = g.coordinate(a, i[a]);
+    }
+    u(i) = f(x);
+  }
+  return u;
+}
+
+// A centre off the grid's symmetry axes.
+const double C[3] = { 0.0131, -0.0207, 0.0173 };
+
+template <int D>
+double radius(const std::array<double, D>& x)
+{
+  double s = 0.0;
+  for (int a = 0; a < D; ++a)
+  {
+    s += (x[a] - C[a]) * (x[a] - C[a]);
+  }
+  return std::sqrt(s);
+}
+} // namespace
+
+TEST(EnergyFunctional, CircleLengthConvergesAtSecondOrder)
+{
+  const double r = 0.7;
+  double previous = 0.0;
+  for (sltk::Index n : { 21, 41, 81, 161 })
+  {
+    const auto g = cube<2>(1.0, n);
+    const auto phi = sample<2>(g, [&](const std::array<double, 2>& x) { return radius<2>(x) - r; });
+    const auto one = sample<2>(g, [](const std::array<double, 2>&) { return 1.0; });
+    sltk::EnergyResult e;
+    sltk::EnergyOptions options;
+    options.P = 1.0;
+    ASSERT_TRUE(sltk::energyFunctional(phi, one, sltk::Context{}, e, options).isOk());
+    const double error = std::fabs(e.Energy - 2.0 * Pi * r);
+    std::printf("circle n=%lld: length %.8f, error %.3e", static_cast<long long>(n), e.Energy, error);
+    if (previous > 0.0)
+    {
+      std::printf(", order %.2f", std::log2(previous / error));
+      EXPECT_GT(std::log2(previous / error), 1.8);
+    }
+    std::printf("\n");
+    previous = error;
+    // The inscribed polygon is shorter than the circle.
+    EXPECT_LT(e.Energy, 2.0 * Pi * r);
+  }
+  EXPECT_LT(previous, 1e-3);
+}
+
+TEST(EnergyFunctional, CircleWithDistanceWeightAndPEqualTwo)
+{
+  // d = |x - C| equals r on the circle: E_p = (2 pi r r^p)^(1/p).
+  const double r = 0.6;
+  const auto g = cube<2>(1.0, 161);
+  const auto phi = sample<2>(g, [&](const std::array<double, 2>& x) { return radius<2>(x) - r; });
+  const auto d = sample<2>(g, [&](const std::array<double, 2>& x) { return radius<2>(x); });
+  const auto one = sample<2>(g, [](const std::array<double, 2>&) { return 1.0; });
+  sltk::EnergyResult e;
+  ASSERT_TRUE(sltk::energyFunctional(phi, one, sltk::Context{}, e).isOk()); // p = 2 by default
+  EXPECT_NEAR(e.Energy, std::sqrt(2.0 * Pi * r), 1e-4);
+  EXPECT_NEAR(e.Integral, 2.0 * Pi * r, 2e-4);
+  ASSERT_TRUE(sltk::energyFunctional(phi, d, sltk::Context{}, e).isOk());
+  EXPECT_NEAR(e.Energy, std::sqrt(2.0 * Pi * r * r * r), 1e-3);
+  sltk::EnergyOptions three;
+  three.P = 3.0;
+  ASSERT_TRUE(sltk::energyFunctional(phi, d, sltk::Context{}, e, three).isOk());
+  EXPECT_NEAR(e.Energy, std::cbrt(2.0 * Pi * std::pow(r, 4.0)), 1e-3);
+  EXPECT_GT(e.FrontCells, 0);
+}
+
+TEST(EnergyFunctional, SaddleCellsGiveTwoSegments)
+{
+  // phi = x y on one cell [-1, 1]^2 with centre value 0 shifted to +0.1: the
+  // zero set is the hyperbola x y = -0.1; the cuts are at (+-0.1, -+1) and (-+1, +-0.1).
+  sltk::GridSpec<2> g;
+  g.Dims = { 2, 2 };
+  g.Origin = { -1.0, -1.0 };
+  g.Spacing = { 2.0, 2.0 };
+  const auto phi = sample<2>(g, [](const std::array<double, 2>& x) { return x[0] * x[1] + 0.1; });
+  const auto one = sample<2>(g, [](const std::array<double, 2>&) { return 1.0; });
+  sltk::EnergyResult e;
+  sltk::EnergyOptions options;
+  options.P = 1.0;
+  ASSERT_TRUE(sltk::energyFunctional(phi, one, sltk::Context{}, e, options).isOk());
+  // Corners (-1,-1), (1,1) are positive (1.1), the centre 0.1 is positive: the two
+  // segments cut off the negative corners (1,-1) and (-1,1): each from (0.1/1.1... ) on the edges.
+  const double t = 1.1 / 2.0; // fraction along an edge from the positive corner: 1.1 / (1.1 + 0.9)
+  const double cutA = -1.0 + 2.0 * t;
+  const double seg = std::hypot(1.0 - cutA, 1.0 - cutA);
+  EXPECT_NEAR(e.Integral, 2.0 * seg, 1e-14);
+  EXPECT_EQ(e.FrontCells, 1);
+}
+
+TEST(EnergyFunctional, SphereAreaWithinAFewPercent)
+{
+  const double r = 0.6;
+  const auto g = cube<3>(1.0, 41);
+  const auto phi = sample<3>(g, [&](const std::array<double, 3>& x) { return radius<3>(x) - r; });
+  const auto one = sample<3>(g, [](const std::array<double, 3>&) { return 1.0; });
+  const auto d = sample<3>(g, [&](const std::array<double, 3>& x) { return radius<3>(x); });
+  const double area = 4.0 * Pi * r * r;
+  sltk::EnergyResult e;
+  sltk::EnergyOptions options;
+  options.P = 1.0;
+  ASSERT_TRUE(sltk::energyFunctional(phi, one, sltk::Context{}, e, options).isOk());
+  std::printf("sphere 41^3: area %.5f vs %.5f (%.2f%%)\n", e.Energy, area, 100.0 * (e.Energy / area - 1.0));
+  EXPECT_NEAR(e.Energy, area, 0.03 * area);
+  // p = 2 with d = |x - C| = r on the sphere: E_2 = sqrt(4 pi r^2 r^2).
+  options.P = 2.0;
+  ASSERT_TRUE(sltk::energyFunctional(phi, d, sltk::Context{}, e, options).isOk());
+  EXPECT_NEAR(e.Energy, std::sqrt(area * r * r), 0.02 * std::sqrt(area * r * r));
+  // The literal (dx')^(n-1) weight of (4.30) gives sqrt(3) times the area.
+  options.P = 1.0;
+  options.Measure = sltk::SubcellMeasure::Thesis;
+  sltk::EnergyResult literal;
+  ASSERT_TRUE(sltk::energyFunctional(phi, one, sltk::Context{}, literal, options).isOk());
+  EXPECT_NEAR(literal.Energy / area, std::sqrt(3.0), 0.03 * std::sqrt(3.0));
+}
+
+TEST(EnergyFunctional, SphereAreaConvergesWithTheGrid)
+{
+  const double r = 0.5;
+  double errors[2];
+  int k = 0;
+  for (sltk::Index n : { 21, 41 })
+  {
+    const auto g = cube<3>(1.0, n);
+    const auto phi = sample<3>(g, [&](const std::array<double, 3>& x) { return radius<3>(x) - r; });
+    const auto one = sample<3>(g, [](const std::array<double, 3>&) { return 1.0; });
+    sltk::EnergyResult e;
+    sltk::EnergyOptions options;
+    options.P = 1.0;
+    ASSERT_TRUE(sltk::energyFunctional(phi, one, sltk::Context{}, e, options).isOk());
+    errors[k++] = std::fabs(e.Energy / (4.0 * Pi * r * r) - 1.0);
+    std::printf("sphere r=0.5 n=%lld: relative area error %.3f%%\n", static_cast<long long>(n), 100.0 * errors[k - 1]);
+  }
+  EXPECT_LT(errors[1], 0.02);
+}
+
+TEST(EnergyFunctional, BandRestrictionAndThreadsAgree)
+{
+  const double r = 0.55;
+  const auto g = cube<3>(1.0, 33);
+  const double dx = g.Spacing[0];
+  const auto phi = sample<3>(g, [&](const std::array<double, 3>& x) { return radius<3>(x) - r; });
+  const auto d = sample<3>(g, [&](const std::array<double, 3>& x) { return 0.2 + x[0] * x[0]; });
+  sltk::EnergyResult full;
+  ASSERT_TRUE(sltk::energyFunctional(phi, d, sltk::Context{}, full).isOk());
+  sltk::NodeList band;
+  sltk::collectBand(phi, 4.0 * dx, sltk::Context{}, band); // (1.48) with gamma = 4 dx
+  sltk::EnergyResult banded;
+  ASSERT_TRUE(sltk::energyFunctional(phi, d, band, sltk::Context{}, banded).isOk());
+  EXPECT_EQ(banded.FrontCells, full.FrontCells);
+  EXPECT_NEAR(banded.Integral, full.Integral, 1e-12 * full.Integral);
+  sltk::ThreadPool pool(3);
+  sltk::Context ctx;
+  ctx.Executor = &pool;
+  sltk::EnergyResult threaded;
+  ASSERT_TRUE(sltk::energyFunctional(phi, d, band, ctx, threaded).isOk());
+  EXPECT_EQ(threaded.Integral, banded.Integral);
+  // Bad input.
+  sltk::EnergyOptions bad;
+  bad.P = 0.5;
+  EXPECT_EQ(sltk::energyFunctional(phi, d, ctx, threaded, bad).code(), sltk::StatusCode::InvalidArgument);
+  const auto other = sample<3>(cube<3>(1.0, 21), [](const std::array<double, 3>&) { return 1.0; });
+  EXPECT_EQ(sltk::energyFunctional(phi, other, ctx, threaded).code(), sltk::StatusCode::InvalidArgument);
+}

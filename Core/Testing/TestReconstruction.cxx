@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/recon/Reconstruction.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+sltk::PointCloud<2> circle(int n, double radius = 1.0)
+{
+  sltk::PointCloud<2> c;
+  for (int k = 0; k < n; ++k)
+  {
+    c.Points.push_back({ radius * std::cos(2 * M_PI * k / n), radius * std::sin(2 * M_PI * k / n) });
+  }
+  return c;
+}
+
+sltk::PointCloud<3> sphere(int n, double radius = 1.0, double offset = 0.0)
+{
+  sltk::PointCloud<3> c;
+  for (int k = 0; k < n; ++k)
+  {
+    const double z = -1.0 + 2.0 * (k + 0.5) / n;
+    const double r = std::sqrt(1.0 - z * z);
+    c.Points.push_back({ offset + radius * r * std::cos(2.399963229728653 * k),
+      offset + radius * r * std::sin(2.399963229728653 * k), offset + radius * z });
+  }
+  return c;
+}
+
+/// L1 error of phi against the exact signed distance |x| - R, over the nodes within gamma of the circle.
+double bandL1Error(const sltk::GridField<2>& phi, double radius)
+{
+  const auto& g = phi.spec();
+  const double gamma = 4.0 * g.Spacing[0];
+  double sum = 0.0;
+  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
+  {
+    const auto i = phi.nodeIndex(k);
+    const double exact = std::hypot(g.coordinate(0, i[0]), g.coordinate(1, i[1])) - radius;
+    if (std::fabs(exact) < gamma)
+    {
+      sum += std::fabs(phi(i) - exact) * g.Spacing[0] * g.Spacing[1];
+    }
+  }
+  return sum;
+}
+} // namespace
+
+TEST(Reconstruction, CircleOf64PointsMatchesTable42)
+{
+  // Thesis Table 4.2, WENO: Err_P 0.012, 0.00386, 0.000505 after runs 1-3 (grids 42, 58, 99).
+  const double thesis[3] = { 0.012, 0.00386, 0.000505 };
+  sltk::ReconstructionOptions options;
+  options.Interpolator = sltk::InterpolatorKind::Weno3;
+  sltk::ReconstructionResult<2> result;
+  sltk::Context ctx;
+  ASSERT_TRUE(sltk::reconstruct(circle(64), options, ctx, result).isOk());
+  ASSERT_EQ(result.Runs.size(), 3u);
+  EXPECT_NEAR(result.CloudSpacing, 2.0 * std::sin(M_PI / 64), 1e-12);
+  for (int r = 0; r < 3; ++r)
+  {
+    const auto& run = result.Runs[static_cast<size_t>(r)];
+    std::cout << "run " << r + 1 << ": grid " << run.Grid.Dims[0] << ", " << run.Iterations
+              << " iterations, Err_P " << run.CloudError << " (thesis " << thesis[r] << "), E_2 " << run.Energy
+              << "\n";
+    EXPECT_LT(run.CloudError, 1.5 * thesis[r]) << "run " << r + 1;
+    EXPECT_GE(run.Iterations, options.MinIterations);
+  }
+  // Zero level set through the cloud, phi a distance near it (thesis: L1 0.00148 on 99x99).
+  const double l1 = bandL1Error(result.SignedDistance, 1.0);
+  std::cout << "L1 error in the band: " << l1 << "\n";
+  EXPECT_LT(l1, 3e-3);
+  EXPECT_LT(result.SignedDistance({ 51, 51 }), 0.0) << "inside is negative";
+}
+
+TEST(Reconstruction, SphereInUserUnitsAndAnyOffset)
+{
+  // The same sphere far from the origin and 100 times smaller: results scale with it.
+  sltk::ReconstructionOptions options;
+  options.Runs = 2;
+  options.Interpolator = sltk::InterpolatorKind::Q1;
+  sltk::ThreadPool pool(2);
+  sltk::Context ctx;
+  ctx.Executor = &pool;
+  sltk::ReconstructionResult<3> unit, moved;
+  ASSERT_TRUE(sltk::reconstruct(sphere(1000), options, ctx, unit).isOk());
+  ASSERT_TRUE(sltk::reconstruct(sphere(1000, 0.01, 50.0), options, ctx, moved).isOk());
+  ASSERT_EQ(unit.Runs.size(), 2u);
+  EXPECT_LT(unit.Runs[1].CloudError, 0.01);
+  EXPECT_NEAR(moved.Runs[1].CloudError, 0.01 * unit.Runs[1].CloudError, 1e-3 * unit.Runs[1].CloudError);
+  const auto& g = moved.SignedDistance.spec();
+  EXPECT_NEAR(g.coordinate(0, (g.Dims[0] - 1) / 2), 50.0, g.Spacing[0]);
+  EXPECT_NEAR(g.Spacing[0], 0.01 * unit.SignedDistance.spec().Spacing[0], 1e-12);
+}
+
+TEST(Reconstruction, SerialAndThreadedAreIdentical)
+{
+  sltk::ReconstructionOptions options;
+  options.Runs = 2;
+  sltk::ThreadPool pool(2);
+  sltk::Context serial, threaded;
+  threaded.Executor = &pool;
+  sltk::ReconstructionResult<3> a, b;
+  ASSERT_TRUE(sltk::reconstruct(sphere(600), options, serial, a).isOk());
+  ASSERT_TRUE(sltk::reconstruct(sphere(600), options, threaded, b).isOk());
+  EXPECT_TRUE(a.SignedDistance.storage() == b.SignedDistance.storage());
+  EXPECT_EQ(a.History.size(), b.History.size());
+}
+
+TEST(Reconstruction, AbortsThroughTheInterrupter)
+{
+  struct StopEarly : sltk::Interrupter
+  {
+    int Calls = 0;
+    bool wasInterrupted(double) override { return ++this->Calls >= 3; }
+  } stop;
+  sltk::Context ctx;
+  ctx.Progress = &stop;
+  sltk::ReconstructionResult<2> result;
+  EXPECT_EQ(sltk::reconstruct(circle(64), {}, ctx, result).code(), sltk::StatusCode::Aborted);
+  EXPECT_LT(result.History.size(), 3u) << "stopped at the first checks, long before the 46 iterations of a full run";
+}
+
+TEST(Reconstruction, RefusesBadInputAndAbsurdGrids)
+{
+  sltk::Context ctx;
+  sltk::ReconstructionResult<3> result;
+  sltk::PointCloud<3> empty;
+  EXPECT_EQ(sltk::reconstruct(empty, {}, ctx, result).code(), sltk::StatusCode::InvalidArgument);
+  sltk::ReconstructionOptions options;
+  options.MemoryBudget = 1000000; // 1 MB
+  const auto s = sltk::reconstruct(sphere(500), options, ctx, result);
+  EXPECT_EQ(s.code(), sltk::StatusCode::OutOfMemory);
+  EXPECT_NE(s.message().find("C_dx"), std::string::npos) << s.message();
+  options = {};
+  options.GammaFactor = 1.0; // gamma < beta
+  EXPECT_EQ(sltk::reconstruct(sphere(500), options, ctx, result).code(), sltk::StatusCode::InvalidArgument);
+}

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file Reinitialise.h
+/// Narrow-band reinitialisation of a level-set function to a signed distance
+/// function (thesis 1.5, Algorithm 1 step (e)): the PDE (1.30) with the sign
+/// (1.31), solved to steady state with Godunov's (1.35) or the upwind (1.32)
+/// scheme, after the constrained explicit step on the nodes next to the front
+/// (1.38)-(1.45) by default (ReinitOptions).
+///
+/// The band is a list of node indices k in [0, nodeCount) in x-fastest order
+/// (GridField::nodeIndex), e.g. the reinitialisation band (1.52)-(1.53), without
+/// duplicates. Only band nodes are written; every other value (nodes outside the
+/// band, ghost layers) is left untouched. Nodes outside the band are read as
+/// boundary data; beyond the grid the boundary policy is applied on the fly
+/// (ReinitStencil), so the ghost layers are not read either: call fillGhosts()
+/// afterwards if they are needed.
+///
+/// Jacobi updates into a buffer make the result bit-identical for any number of
+/// threads. Work and memory (25 bytes per band node) are proportional to the band.
+/// On Aborted (interrupter) phi holds the values of the last completed step.
+
+#include "sltk/exec/Context.h"
+#include "sltk/grid/GridField.h"
+#include "sltk/levelset/ReinitOptions.h"
+
+#include <vector>
+
+namespace sltk
+{
+
+template <int D>
+Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const ReinitOptions& options,
+  const Context& ctx, ReinitReport* report = nullptr);
+
+template <int D>
+Status reinitialise(GridField<D>& phi, const std::vector<Index>& band, const ReinitOptions& options,
+  const Context& ctx, ReinitReport* report = nullptr)
+{
+  return reinitialise<D>(phi, band.data(), static_cast<Index>(band.size()), options, ctx, report);
+}
+
+extern template Status reinitialise(
+  GridField<2>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*);
+extern template Status reinitialise(
+  GridField<3>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*);
+
+} // namespace sltk

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file DistanceFunction.h
+/// The distance d(x) = min_{Q in P} |x - Q| to the cloud on every grid node
+/// (thesis 4.4.2): exact on the nodes of a box of 4^D grid points around each
+/// point Q (the 2^D corners of the cell holding Q and one more layer), then
+/// fast sweeping (FastSweeping.h) for all other nodes.
+///
+/// Exact values come from the PointLocator, i.e. the minimum over the whole
+/// cloud, computed per node in parallel (order-independent, identical for any
+/// number of threads). Memory: the field, one byte per node for the exact
+/// mask, and the locator (O(|P|)); work O(|P| 4^D) + O(nodes) per sweep.
+
+#include "sltk/exec/Context.h"
+#include "sltk/grid/GridField.h"
+#include "sltk/recon/PointCloud.h"
+
+namespace sltk
+{
+
+struct DistanceOptions
+{
+  int ExactHalfWidth = 2;  ///< the exact box is 2 * ExactHalfWidth nodes per axis (4 in the thesis)
+  int Ghost = 2;           ///< ghost layers of the output (filled by linear extrapolation)
+  int MaxSweepCycles = 20; ///< cycles of 2^D sweeps (stops earlier when nothing changes)
+};
+
+struct DistanceReport
+{
+  Index ExactNodes = 0; ///< nodes carrying the exact distance
+  int SweepCycles = 0;  ///< cycles the fast sweeping needed
+};
+
+/// Computes d on `grid` into `distance` (resized). The cloud must be non-empty;
+/// points outside the grid are allowed (their boxes are clipped to it).
+template <int D>
+Status distanceToCloud(const PointCloud<D>& cloud, const GridSpec<D>& grid, const Context& ctx,
+  GridField<D, double>& distance, const DistanceOptions& options = {}, DistanceReport* report = nullptr);
+
+extern template Status distanceToCloud(const PointCloud<2>&, const GridSpec<2>&, const Context&,
+  GridField<2, double>&, const DistanceOptions&, DistanceReport*);
+extern template Status distanceToCloud(const PointCloud<3>&, const GridSpec<3>&, const Context&,
+  GridField<3, double>&, const DistanceOptions&, DistanceReport*);
+
+} // namespace sltk

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file ExactDistanceCache.h
+/// Exact distance to the cloud where the level-set step needs it, computed on
+/// demand. The thesis sweeps d over the whole grid (4.4.2) because its cloud
+/// is distributed; here the whole cloud is at hand, so the nodes the step and
+/// the energy read (band nodes, their face neighbours for grad d, the other
+/// corners of their cells for (4.29)/(4.30)) get the exact nearest-point
+/// distance the first time the band reaches them. Elsewhere d keeps its
+/// approximate value (swept in run 1, interpolated from the previous run
+/// later). Work: O(new nodes) nearest-point queries per iteration.
+
+#include "sltk/exec/Context.h"
+#include "sltk/grid/GridField.h"
+#include "sltk/levelset/NarrowBand.h"
+#include "sltk/recon/PointLocator.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace sltk
+{
+
+template <int D>
+class ExactDistanceCache
+{
+public:
+  /// The cloud and its locator must outlive the cache.
+  ExactDistanceCache(const PointCloud<D>& cloud, const PointLocator<D>& locator)
+    : Cloud(&cloud)
+    , Locator(&locator)
+  {
+  }
+
+  /// Forgets what was computed (a new grid or a new field); dist needs one ghost layer.
+  void reset(const GridField<D>& dist) { this->Exact.assign(dist.storage().size(), 0); }
+
+  /// Makes d exact on the band's stencils; returns how many nodes were computed.
+  Index ensure(const NodeList& band, const Context& ctx, GridField<D>& dist);
+
+private:
+  const PointCloud<D>* Cloud;
+  const PointLocator<D>* Locator;
+  std::vector<std::uint8_t> Exact;   ///< per storage slot: 1 once d is exact there
+  std::vector<Index> Pending;        ///< storage offsets to compute in this call
+};
+
+extern template class ExactDistanceCache<2>;
+extern template class ExactDistanceCache<3>;
+
+} // namespace sltk

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file Reconstruction.h
+/// Algorithm 1 of the thesis with the multi-run schedule (4.5.2): a signed
+/// distance function whose zero level set is a closed curve (2D) or surface
+/// (3D) through an unorganised point cloud.
+///
+/// For each run r = 1..R on the grid dx = C_dx h_P / 2^(r-1) (4.36):
+///  1. the distance d to the cloud (4.4.2);
+///  2. initial data: outside marking (4.4.4) in run 1, the previous run's
+///     result interpolated on the new grid afterwards; cut (1.49);
+///  3. until (4.33) or MaxIterations: band B^n (1.48), energies E_p and E_2
+///     (4.29)/(4.30), the SL step (4.22)/(4.24) on B^n, the reinitialisation
+///     band (1.53), constrained reinitialisation (1.38)-(1.45), cutting (1.49),
+///     the metrics eps_1 (4.34) and Err_P (4.35).
+
+#include "sltk/exec/Context.h"
+#include "sltk/grid/GridField.h"
+#include "sltk/recon/PointCloud.h"
+#include "sltk/recon/ReconstructionOptions.h"
+
+namespace sltk
+{
+
+template <int D>
+struct ReconstructionResult
+{
+  GridField<D> SignedDistance;       ///< phi of the last run (negative inside), cut at +-gamma far away
+  GridField<D> Distance;             ///< d of the last run (4.4.2)
+  double CloudSpacing = 0.0;         ///< h_P
+  std::vector<RunRecord<D>> Runs;
+  std::vector<IterationRecord> History;
+};
+
+/// Runs Algorithm 1. The cloud is validated first; grids beyond the memory
+/// budget are refused before anything is allocated. Progress goes to the
+/// context's interrupter (abort: Status aborted, result holds what was done).
+template <int D>
+Status reconstruct(const PointCloud<D>& cloud, const ReconstructionOptions& options, const Context& ctx,
+  ReconstructionResult<D>& result);
+
+extern template Status reconstruct(
+  const PointCloud<2>&, const ReconstructionOptions&, const Context&, ReconstructionResult<2>&);
+extern template Status reconstruct(
+  const PointCloud<3>&, const ReconstructionOptions&, const Context&, ReconstructionResult<3>&);
+
+} // namespace sltk

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file ReconstructionOptions.h
+/// Parameters of Algorithm 1 (thesis 4.3-4.5) and the records it returns.
+
+#include "sltk/grid/GridSpec.h"
+#include "sltk/levelset/ReinitOptions.h"
+
+#include <vector>
+
+namespace sltk
+{
+
+/// Spatial reconstruction at the feet (4.3.1): Q1 (4.28), WENO3 (2.69), and,
+/// beyond the thesis, CWENO / CWENOZ (3.3).
+enum class InterpolatorKind : std::uint8_t
+{
+  Q1 = 0,
+  Weno3 = 1,
+  Cweno = 2,
+  CwenoZ = 3
+};
+
+/// How the first run's initial data is built.
+enum class InitialGuess : std::uint8_t
+{
+  OutsideMarking = 0, ///< 4.4.4: external marking + fast sweeping
+  BoundingSphere = 1, ///< a sphere around the cloud (the knot test)
+  BoundingEllipsoid = 2
+};
+
+/// p and eta of one run (Table 4.1).
+struct RunParameters
+{
+  double P = 2.0;
+  double Eta = 1.0;
+};
+
+/// Table 4.1: r = 1: (1, 0.05); r = 2: (2, 0.05); r >= 3: (2, 1).
+inline RunParameters table41(int run)
+{
+  if (run <= 1)
+  {
+    return { 1.0, 0.05 };
+  }
+  if (run == 2)
+  {
+    return { 2.0, 0.05 };
+  }
+  return { 2.0, 1.0 };
+}
+
+struct ReconstructionOptions
+{
+  int Runs = 3;                         ///< runs of Algorithm 1, each halving dx (4.36)
+  double CellSizeFactor = 1.0;          ///< C_dx (4.36); 1 unless otherwise specified
+  double OutsideThresholdFactor = 2.0;  ///< K_P: gamma_P = K_P h_P (4.4.4)
+  int Padding = 10;                     ///< empty cells around the cloud per side
+  int MaxIterations = 100;              ///< iteration cap per run (4.33)
+  int MinIterations = 10;               ///< iterations forced before (4.33) may stop a run
+  double Tolerance = 1e-4;              ///< threshold of Delta_E (4.33)
+  int EnergyWindow = 10;                ///< k = min(n, EnergyWindow) of (4.33)
+  InterpolatorKind Interpolator = InterpolatorKind::Weno3;
+  InitialGuess Guess = InitialGuess::OutsideMarking;
+  /// Per-run p and eta; empty: Table 4.1. Run r uses entry min(r, size) - 1.
+  std::vector<RunParameters> Schedule;
+  double BetaFactor = 2.0;              ///< beta = 2 dx (4.4.6)
+  double GammaFactor = 4.0;             ///< gamma = 4 dx (4.4.6)
+  int ReinitDilation = 1;               ///< k of the reinitialisation band (1.53)
+  /// Constrained reinitialisation (4.4.5); 10 pseudo-time steps (dtau = dx/2) carry
+  /// information across the band (gamma + k dx = 5 dx) once, which was enough on the
+  /// bunny (same Err_P to 3 digits as 50 steps, half the time).
+  ReinitOptions Reinit = [] {
+    ReinitOptions r;
+    r.MaxIterations = 10;
+    return r;
+  }();
+  std::uint64_t MemoryBudget = 0;       ///< bytes; 0: the memory available
+
+  RunParameters parameters(int run) const
+  {
+    if (this->Schedule.empty())
+    {
+      return table41(run);
+    }
+    const size_t i = static_cast<size_t>(run) < this->Schedule.size() ? static_cast<size_t>(run) - 1
+                                                                        : this->Schedule.size() - 1;
+    return this->Schedule[i];
+  }
+};
+
+/// One iteration of a run: the convergence history of Algorithm 1.
+struct IterationRecord
+{
+  int Run = 0;
+  int Iteration = 0;
+  double Energy = 0.0;     ///< E_2(phi^n) (4.33)
+  double Change = 0.0;     ///< eps_1^n (4.34), over the band
+  double CloudError = 0.0; ///< Err_P^n (4.35)
+  Index BandSize = 0;      ///< |B^n|
+  double Seconds = 0.0;    ///< wall time since the run started
+};
+
+template <int D>
+struct RunRecord
+{
+  GridSpec<D> Grid;
+  RunParameters Parameters;
+  int Iterations = 0;
+  double Energy = 0.0;
+  double CloudError = 0.0;
+  double Seconds = 0.0;
+  Index MeanBandSize = 0;
+};
+
+} // namespace sltk

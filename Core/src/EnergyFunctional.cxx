@@ -1,0 +1,308 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/recon/EnergyFunctional.h"
+
+#include "sltk/interp/Q1.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sltk
+{
+
+namespace
+{
+inline double powAbs(double v, double p)
+{
+  const double a = std::fabs(v);
+  return p == 1.0 ? a : (p == 2.0 ? a * a : std::pow(a, p));
+}
+
+/// Per-chunk evaluator: Q1 interpolators of phi and d (4.28) and the cell rules.
+template <int D>
+class CellEnergy
+{
+public:
+  CellEnergy(const GridField<D, double>& phi, const GridField<D, double>& distance, const EnergyOptions& options)
+    : Phi(phi)
+    , PhiQ1(phi)
+    , DistanceQ1(distance)
+    , P(options.P)
+    , R(options.Refinement)
+  {
+    const GridSpec<D>& g = phi.spec();
+    double diagonal2 = 0.0;
+    double volume = 1.0;
+    for (int a = 0; a < D; ++a)
+    {
+      const double h = g.Spacing[a] / this->R;
+      diagonal2 += h * h;
+      volume *= h;
+    }
+    // |I[Phi](x_i')| < sqrt(3)/2 dx' (4.30): half the subcell diagonal.
+    this->HalfDiagonal = 0.5 * std::sqrt(diagonal2);
+    this->SubcellWeight = options.Measure == SubcellMeasure::Thesis
+      ? std::pow(volume, static_cast<double>(D - 1) / D) // (dx')^(n-1)
+      : volume / (2.0 * this->HalfDiagonal);              // shell thickness 2h removed
+  }
+
+  /// Contribution of the cell with lowest corner `cell`; `front` tells whether it had any.
+  double operator()(const std::array<Index, D>& cell, bool& front)
+  {
+    front = false;
+    const double* p = this->Phi.pointer(cell);
+    const auto& s = this->Phi.strides();
+    double v[1 << D];
+    bool anyNegative = false;
+    bool anyOther = false;
+    double minAbs = std::fabs(p[0]);
+    for (int c = 0; c < (1 << D); ++c)
+    {
+      Index o = 0;
+      for (int a = 0; a < D; ++a)
+      {
+        o += ((c >> a) & 1) * s[a];
+      }
+      v[c] = p[o];
+      anyNegative = anyNegative || v[c] < 0.0;
+      anyOther = anyOther || !(v[c] < 0.0);
+      minAbs = std::min(minAbs, std::fabs(v[c]));
+    }
+    const bool signChange = anyNegative && anyOther;
+    if constexpr (D == 2)
+    {
+      return signChange ? this->segments(cell, v, front) : 0.0;
+    }
+    else
+    {
+      if (!signChange && minAbs >= this->HalfDiagonal)
+      {
+        return 0.0;
+      }
+      return this->subcells(cell, front);
+    }
+  }
+
+private:
+  /// (4.29) in 2D: segments between the edge cuts, trapezoidal rule of |d|^p.
+  double segments(const std::array<Index, D>& cell, const double* v, bool& front)
+  {
+    // Edges as corner pairs (corner c has local coordinates (c & 1, c >> 1)).
+    static const int edge[4][2] = { { 0, 1 }, { 1, 3 }, { 2, 3 }, { 0, 2 } };
+    std::array<double, D> cut[4];
+    bool has[4] = { false, false, false, false };
+    int count = 0;
+    for (int e = 0; e < 4; ++e)
+    {
+      const int a = edge[e][0];
+      const int b = edge[e][1];
+      if ((v[a] < 0.0) != (v[b] < 0.0))
+      {
+        const double t = v[a] / (v[a] - v[b]); // linear interpolation of phi on the edge
+        for (int k = 0; k < D; ++k)
+        {
+          const double ta = static_cast<double>((a >> k) & 1);
+          const double tb = static_cast<double>((b >> k) & 1);
+          cut[e][k] = ta + t * (tb - ta);
+        }
+        has[e] = true;
+        ++count;
+      }
+    }
+    this->DistanceQ1.prepareIfNeeded(cell);
+    double sum = 0.0;
+    if (count == 2)
+    {
+      int first = -1;
+      int second = -1;
+      for (int e = 0; e < 4; ++e)
+      {
+        if (has[e])
+        {
+          (first < 0 ? first : second) = e;
+        }
+      }
+      sum = this->segment(cut[first], cut[second]);
+    }
+    else if (count == 4)
+    {
+      // Saddle: the sign at the centre decides which corners are cut off.
+      const double centre = 0.25 * (v[0] + v[1] + v[2] + v[3]);
+      if ((centre < 0.0) == (v[0] < 0.0))
+      {
+        sum = this->segment(cut[0], cut[1]) + this->segment(cut[2], cut[3]); // around corners 1 and 2
+      }
+      else
+      {
+        sum = this->segment(cut[0], cut[3]) + this->segment(cut[1], cut[2]); // around corners 0 and 3
+      }
+    }
+    front = count > 0;
+    return sum;
+  }
+
+  double segment(const std::array<double, D>& a, const std::array<double, D>& b)
+  {
+    double length2 = 0.0;
+    for (int k = 0; k < D; ++k)
+    {
+      const double l = (b[k] - a[k]) * this->Phi.spec().Spacing[k];
+      length2 += l * l;
+    }
+    // Trapezoidal rule; d by Q1 in the cell (linear along the edges).
+    const double da = powAbs(this->DistanceQ1.eval(a), this->P);
+    const double db = powAbs(this->DistanceQ1.eval(b), this->P);
+    return std::sqrt(length2) * 0.5 * (da + db);
+  }
+
+  /// (4.30): subcells whose Q1 centre value satisfies |phi| < sqrt(3)/2 dx'.
+  double subcells(const std::array<Index, D>& cell, bool& front)
+  {
+    this->PhiQ1.prepareIfNeeded(cell);
+    this->DistanceQ1.prepareIfNeeded(cell);
+    const double inv = 1.0 / this->R;
+    double sum = 0.0;
+    std::array<int, D> m{};
+    for (;;)
+    {
+      std::array<double, D> t;
+      for (int a = 0; a < D; ++a)
+      {
+        t[a] = (m[a] + 0.5) * inv;
+      }
+      if (std::fabs(this->PhiQ1.eval(t)) < this->HalfDiagonal)
+      {
+        sum += powAbs(this->DistanceQ1.eval(t), this->P);
+        front = true;
+      }
+      int a = 0;
+      for (; a < D; ++a)
+      {
+        if (++m[a] < this->R)
+        {
+          break;
+        }
+        m[a] = 0;
+      }
+      if (a == D)
+      {
+        break;
+      }
+    }
+    return sum * this->SubcellWeight;
+  }
+
+  const GridField<D, double>& Phi;
+  Q1Interpolator<D> PhiQ1;
+  Q1Interpolator<D> DistanceQ1;
+  double P;
+  int R;
+  double HalfDiagonal = 0.0;
+  double SubcellWeight = 0.0;
+};
+
+template <int D>
+Status checkInputs(const GridField<D, double>& phi, const GridField<D, double>& distance, const EnergyOptions& options)
+{
+  if (!(options.P >= 1.0) || !std::isfinite(options.P))
+  {
+    return Status::invalidArgument("the energy exponent p must be finite and >= 1");
+  }
+  if (options.Refinement < 1)
+  {
+    return Status::invalidArgument("the subcell refinement R must be >= 1");
+  }
+  for (int a = 0; a < D; ++a)
+  {
+    if (phi.spec().Dims[a] != distance.spec().Dims[a] || phi.spec().Spacing[a] != distance.spec().Spacing[a] ||
+      phi.spec().Origin[a] != distance.spec().Origin[a])
+    {
+      return Status::invalidArgument("phi and the distance function must live on the same grid");
+    }
+    if (phi.spec().Dims[a] < 2)
+    {
+      return Status::invalidArgument("the energy needs at least two nodes per axis");
+    }
+  }
+  return Status::ok();
+}
+
+/// Sums the cells node(j), j in [0, n), over fixed chunks (deterministic for any thread count).
+template <int D, class NodeOf>
+void sumCells(const GridField<D, double>& phi, const GridField<D, double>& distance, Index n, NodeOf nodeOf,
+  const Context& ctx, const EnergyOptions& options, EnergyResult& result)
+{
+  const Index grain = std::max<Index>(256, (n + 63) / 64);
+  const Index chunks = n > 0 ? (n + grain - 1) / grain : 0;
+  std::vector<double> partial(static_cast<size_t>(chunks), 0.0);
+  std::vector<Index> fronts(static_cast<size_t>(chunks), 0);
+  const GridSpec<D>& g = phi.spec();
+  ctx.parallelFor(0, n, [&](Index b, Index e) {
+    CellEnergy<D> energy(phi, distance, options);
+    double sum = 0.0;
+    Index count = 0;
+    for (Index j = b; j < e; ++j)
+    {
+      const std::array<Index, D> cell = phi.nodeIndex(nodeOf(j));
+      bool inside = true;
+      for (int a = 0; a < D; ++a)
+      {
+        inside = inside && cell[a] + 1 < g.Dims[a];
+      }
+      if (!inside)
+      {
+        continue;
+      }
+      bool front = false;
+      sum += energy(cell, front);
+      count += front ? 1 : 0;
+    }
+    partial[static_cast<size_t>(b / grain)] = sum;
+    fronts[static_cast<size_t>(b / grain)] = count;
+  }, grain);
+  result = EnergyResult{};
+  for (size_t c = 0; c < partial.size(); ++c)
+  {
+    result.Integral += partial[c];
+    result.FrontCells += fronts[c];
+  }
+  result.Energy = std::pow(result.Integral, 1.0 / options.P); // (4.29)/(4.30)
+}
+} // namespace
+
+template <int D>
+Status energyFunctional(const GridField<D, double>& phi, const GridField<D, double>& distance, const Context& ctx,
+  EnergyResult& result, const EnergyOptions& options)
+{
+  SLTK_RETURN_IF_ERROR(checkInputs(phi, distance, options));
+  sumCells(phi, distance, phi.spec().nodeCount(), [](Index k) { return k; }, ctx, options, result);
+  return Status::ok();
+}
+
+template <int D>
+Status energyFunctional(const GridField<D, double>& phi, const GridField<D, double>& distance,
+  const NodeList& cells, const Context& ctx, EnergyResult& result, const EnergyOptions& options)
+{
+  SLTK_RETURN_IF_ERROR(checkInputs(phi, distance, options));
+  const Index nodes = phi.spec().nodeCount();
+  for (const Index k : cells)
+  {
+    if (k < 0 || k >= nodes)
+    {
+      return Status::invalidArgument("a cell index of the band is outside the grid");
+    }
+  }
+  sumCells(phi, distance, static_cast<Index>(cells.size()), [&](Index j) { return cells[static_cast<size_t>(j)]; },
+    ctx, options, result);
+  return Status::ok();
+}
+
+template Status energyFunctional(const GridField<2, double>&, const GridField<2, double>&, const Context&,
+  EnergyResult&, const EnergyOptions&);
+template Status energyFunctional(const GridField<3, double>&, const GridField<3, double>&, const Context&,
+  EnergyResult&, const EnergyOptions&);
+template Status energyFunctional(const GridField<2, double>&, const GridField<2, double>&, const NodeList&,
+  const Context&, EnergyResult&, const EnergyOptions&);
+template Status energyFunctional(const GridField<3, double>&, const GridField<3, double>&, const NodeList&,
+  const Context&, EnergyResult&, const EnergyOptions&);
+
+} // namespace sltk

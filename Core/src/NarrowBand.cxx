@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/levelset/NarrowBand.h"
+
+#include "sltk/levelset/CutOff.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sltk
+{
+
+namespace
+{
+/// Offset of the k-th interior node (x-fastest) from the field's storage().data().
+template <int D>
+Index storageOffset(const GridField<D, double>& f, Index k)
+{
+  return f.offset(f.nodeIndex(k));
+}
+
+/// Deterministic parallel compaction: out = [item(j) for j in [0, n) if keep(j)],
+/// in order. Two passes over fixed chunks (count, then write at prefix offsets).
+template <class Keep, class Item>
+void compact(const Context& ctx, Index n, Keep keep, Item item, NodeList& out)
+{
+  const Index grain = std::max<Index>(4096, (n + 63) / 64);
+  const Index chunks = n > 0 ? (n + grain - 1) / grain : 0;
+  std::vector<Index> start(static_cast<size_t>(chunks) + 1, 0);
+  ctx.parallelFor(0, n, [&](Index b, Index e) {
+    Index c = 0;
+    for (Index j = b; j < e; ++j)
+    {
+      c += keep(j) ? 1 : 0;
+    }
+    start[static_cast<size_t>(b / grain) + 1] = c;
+  }, grain);
+  for (size_t c = 1; c < start.size(); ++c)
+  {
+    start[c] += start[c - 1];
+  }
+  out.resize(static_cast<size_t>(start.back()));
+  ctx.parallelFor(0, n, [&](Index b, Index e) {
+    Index w = start[static_cast<size_t>(b / grain)];
+    for (Index j = b; j < e; ++j)
+    {
+      if (keep(j))
+      {
+        out[static_cast<size_t>(w++)] = item(j);
+      }
+    }
+  }, grain);
+}
+} // namespace
+
+template <int D>
+void collectBand(const GridField<D, double>& phi, double gamma, const Context& ctx, NodeList& band)
+{
+  const double* p = phi.storage().data();
+  NodeList out;
+  compact(
+    ctx, phi.spec().nodeCount(), [&](Index k) { return std::fabs(p[storageOffset(phi, k)]) < gamma; }, // (1.48)
+    [](Index k) { return k; }, out);
+  band.swap(out);
+}
+
+template <int D>
+void filterBand(const GridField<D, double>& phi, const NodeList& candidates, double gamma, const Context& ctx,
+  NodeList& band)
+{
+  const double* p = phi.storage().data();
+  NodeList out;
+  compact(
+    ctx, static_cast<Index>(candidates.size()),
+    [&](Index j) { return std::fabs(p[storageOffset(phi, candidates[static_cast<size_t>(j)])]) < gamma; },
+    [&](Index j) { return candidates[static_cast<size_t>(j)]; }, out);
+  band.swap(out);
+}
+
+template <int D>
+void dilateBand(const GridSpec<D>& grid, const NodeList& band, int k, std::vector<std::uint8_t>& scratch,
+  NodeList& dilated)
+{
+  const Index nodes = grid.nodeCount();
+  if (static_cast<Index>(scratch.size()) != nodes)
+  {
+    scratch.assign(static_cast<size_t>(nodes), 0);
+  }
+  // The ball of radius k cells (1.53), as index offsets.
+  std::vector<std::array<Index, D>> ball;
+  {
+    std::array<Index, D> o;
+    o.fill(-k);
+    for (;;)
+    {
+      Index r2 = 0;
+      for (int a = 0; a < D; ++a)
+      {
+        r2 += o[a] * o[a];
+      }
+      if (r2 <= static_cast<Index>(k) * k)
+      {
+        ball.push_back(o);
+      }
+      int a = 0;
+      for (; a < D; ++a)
+      {
+        if (++o[a] <= k)
+        {
+          break;
+        }
+        o[a] = -k;
+      }
+      if (a == D)
+      {
+        break;
+      }
+    }
+  }
+  std::array<Index, D> stride;
+  Index s = 1;
+  for (int a = 0; a < D; ++a)
+  {
+    stride[a] = s;
+    s *= grid.Dims[a];
+  }
+  dilated.clear();
+  dilated.reserve(band.size() * 2);
+  for (const Index node : band)
+  {
+    if (node < 0 || node >= nodes)
+    {
+      continue; // not a node of this grid
+    }
+    std::array<Index, D> i;
+    Index rest = node;
+    for (int a = 0; a < D; ++a)
+    {
+      i[a] = rest % grid.Dims[a];
+      rest /= grid.Dims[a];
+    }
+    for (const auto& o : ball)
+    {
+      bool inside = true;
+      Index lin = node;
+      for (int a = 0; a < D; ++a)
+      {
+        const Index j = i[a] + o[a];
+        inside = inside && j >= 0 && j < grid.Dims[a];
+        lin += o[a] * stride[a];
+      }
+      if (inside && !scratch[static_cast<size_t>(lin)])
+      {
+        scratch[static_cast<size_t>(lin)] = 1;
+        dilated.push_back(lin);
+      }
+    }
+  }
+  std::sort(dilated.begin(), dilated.end());
+  for (const Index node : dilated)
+  {
+    scratch[static_cast<size_t>(node)] = 0;
+  }
+}
+
+template <int D>
+void cutLevelSet(GridField<D, double>& phi, const NodeList& nodes, double gamma, const Context& ctx)
+{
+  double* p = phi.storage().data();
+  ctx.parallelFor(0, static_cast<Index>(nodes.size()), [&](Index b, Index e) {
+    for (Index j = b; j < e; ++j)
+    {
+      double& v = p[storageOffset(phi, nodes[static_cast<size_t>(j)])];
+      v = cutLevel(v, gamma); // (1.49)
+    }
+  });
+}
+
+template <int D>
+void cutLevelSet(GridField<D, double>& phi, double gamma, const Context& ctx)
+{
+  double* p = phi.storage().data();
+  const Index nx = phi.spec().Dims[0];
+  const Index lines = phi.spec().nodeCount() / nx;
+  ctx.parallelFor(0, lines, [&](Index b, Index e) {
+    for (Index l = b; l < e; ++l)
+    {
+      double* q = p + storageOffset(phi, l * nx);
+      for (Index i = 0; i < nx; ++i)
+      {
+        q[i] = cutLevel(q[i], gamma); // (1.49)
+      }
+    }
+  });
+}
+
+template void collectBand(const GridField<2, double>&, double, const Context&, NodeList&);
+template void collectBand(const GridField<3, double>&, double, const Context&, NodeList&);
+template void filterBand(const GridField<2, double>&, const NodeList&, double, const Context&, NodeList&);
+template void filterBand(const GridField<3, double>&, const NodeList&, double, const Context&, NodeList&);
+template void dilateBand(const GridSpec<2>&, const NodeList&, int, std::vector<std::uint8_t>&, NodeList&);
+template void dilateBand(const GridSpec<3>&, const NodeList&, int, std::vector<std::uint8_t>&, NodeList&);
+template void cutLevelSet(GridField<2, double>&, const NodeList&, double, const Context&);
+template void cutLevelSet(GridField<3, double>&, const NodeList&, double, const Context&);
+template void cutLevelSet(GridField<2, double>&, double, const Context&);
+template void cutLevelSet(GridField<3, double>&, double, const Context&);
+
+} // namespace sltk

@@ -1,0 +1,324 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/levelset/Reinitialise.h"
+
+#include "sltk/exec/ThreadPool.h"
+#include "sltk/levelset/ReinitInterface.h"
+#include "sltk/levelset/ReinitScheme.h"
+#include "sltk/levelset/ReinitStencil.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <new>
+#include <string>
+
+namespace sltk
+{
+
+namespace
+{
+// Role of a band node, set once from the initial data.
+constexpr std::uint8_t RolePde = 0;      // pseudo-time steps of (1.30)
+constexpr std::uint8_t RoleRelax = 1;    // Russo-Smereka (1.36) near the front
+constexpr std::uint8_t RoleFixed = 2;    // constrained value of X, never changed again
+constexpr std::uint8_t RoleKind = 3;     // mask of the three above
+constexpr std::uint8_t RoleBoundary = 4; // the 3^D block leaves the interior: ReinitStencil slow path
+
+// Fixed chunk size: the per-chunk maxima are indexed by chunk.
+constexpr Index Grain = 2048;
+// Band positions between a prefetch and its use in the pseudo-time step.
+constexpr Index PrefetchDistance = 16;
+
+/// max that lets a NaN through (so that a blow-up is reported, not hidden).
+inline double maxOrNaN(double a, double b)
+{
+  return b > a || std::isnan(b) ? b : a;
+}
+
+/// Per-band-node state of one reinitialise() call: 25 bytes per node.
+template <int D>
+class BandSolver
+{
+public:
+  BandSolver(GridField<D>& phi, const Index* band, Index size, const ReinitOptions& options, const Context& ctx)
+    : Phi(phi)
+    , Stencil(phi)
+    , Band(band)
+    , Size(size)
+    , Options(options)
+    , Ctx(ctx)
+  {
+    const GridSpec<D>& g = phi.spec();
+    this->H = g.Spacing[0];
+    for (int a = 0; a < D; ++a)
+    {
+      this->Spacing[a] = g.Spacing[a];
+      this->InverseSpacing[a] = 1.0 / g.Spacing[a];
+      this->H = std::min(this->H, g.Spacing[a]);
+    }
+    this->Dtau = options.Courant * this->H; // (1.34)
+  }
+
+  double spacing() const { return this->H; }
+
+  Status allocate()
+  {
+    try
+    {
+      const size_t n = static_cast<size_t>(this->Size);
+      this->Offset.resize(n);
+      this->Coefficient.resize(n);
+      this->Next.resize(n);
+      this->Role.resize(n);
+      this->ChunkChange.resize(static_cast<size_t>(ThreadPool::chunkCount(0, this->Size, Grain)));
+    }
+    catch (const std::bad_alloc&)
+    {
+      return Status::outOfMemory("reinitialisation of a band of " + std::to_string(this->Size) + " nodes");
+    }
+    return Status::ok();
+  }
+
+  /// Reads the initial data phi0 only: role of each node, the sign (1.31) or,
+  /// next to the front (1.38), the explicit distance (1.37) / (1.44).
+  /// Returns the number of band nodes in X.
+  Index classify()
+  {
+    const double count = this->Ctx.parallelSum(
+      0, this->Size,
+      [&](Index b, Index e) {
+        double block[ReinitStencil<D>::BlockSize];
+        double near = 0.0;
+        for (Index p = b; p < e; ++p)
+        {
+          near += this->classifyNode(p, block) ? 1.0 : 0.0;
+        }
+        return near;
+      },
+      Grain);
+    return static_cast<Index>(count);
+  }
+
+  /// The one step procedure (Fig. 4.5): X takes its constrained values, once.
+  void fixFront()
+  {
+    double* values = this->Phi.storage().data();
+    this->Ctx.parallelFor(
+      0, this->Size,
+      [&](Index b, Index e) {
+        for (Index p = b; p < e; ++p)
+        {
+          if ((this->Role[p] & RoleKind) == RoleFixed)
+          {
+            values[this->Offset[p]] = this->Coefficient[p];
+          }
+        }
+      },
+      Grain);
+  }
+
+  /// One Jacobi pseudo-time step over the band; returns the largest |change|.
+  double step()
+  {
+    // Raw pointers: the loops below then keep them in registers.
+    double* values = this->Phi.storage().data();
+    const Index farStride = this->Phi.strides()[D - 1];
+    const Index* offset = this->Offset.data();
+    const std::uint8_t* role = this->Role.data();
+    const double* coefficient = this->Coefficient.data();
+    double* next = this->Next.data();
+    double* chunkChange = this->ChunkChange.data();
+    this->Ctx.parallelFor(
+      0, this->Size,
+      [&](Index b, Index e) {
+        double u[ReinitStencil<D>::AxisSize];
+        double change = 0.0;
+        for (Index p = b; p < e; ++p)
+        {
+#if defined(__GNUC__)
+          // The upper neighbour along the slowest axis is the first touch of its
+          // cache line: fetch it ahead (the loop is bound by these misses).
+          if (p + PrefetchDistance < e)
+          {
+            __builtin_prefetch(values + offset[p + PrefetchDistance] + farStride);
+          }
+#endif
+          if ((role[p] & RoleKind) == RoleFixed)
+          {
+            continue;
+          }
+          if (role[p] & RoleBoundary)
+          {
+            this->Stencil.axes(this->Stencil.node(this->Band[p]), u);
+          }
+          else
+          {
+            this->Stencil.axesInterior(values + offset[p], u);
+          }
+          const double v = this->update(role[p] & RoleKind, coefficient[p], u);
+          next[p] = v;
+          change = maxOrNaN(change, std::fabs(v - u[0]));
+        }
+        chunkChange[b / Grain] = change;
+      },
+      Grain);
+    this->Ctx.parallelFor(
+      0, this->Size,
+      [&](Index b, Index e) {
+        for (Index p = b; p < e; ++p)
+        {
+          if ((role[p] & RoleKind) != RoleFixed)
+          {
+            values[offset[p]] = next[p];
+          }
+        }
+      },
+      Grain);
+    double change = 0.0;
+    for (double c : this->ChunkChange)
+    {
+      change = maxOrNaN(change, c);
+    }
+    return change;
+  }
+
+private:
+  bool classifyNode(Index p, double* block)
+  {
+    const std::array<Index, D> i = this->Stencil.node(this->Band[p]);
+    this->Stencil.block(i, block);
+    this->Offset[p] = this->Phi.offset(i);
+    const std::uint8_t boundary = this->Stencil.interior(i) ? 0 : RoleBoundary;
+    const bool near = adjacentToInterface<D>(block); // (1.38)
+    if (near && this->Options.Method == ReinitMethod::Constrained)
+    {
+      this->Role[p] = RoleFixed | boundary;
+      this->Coefficient[p] = constrainedDistance<D>(this->Stencil, i, block, this->InverseSpacing, this->Spacing);
+    }
+    else if (near && this->Options.Method == ReinitMethod::RussoSmereka)
+    {
+      this->Role[p] = RoleRelax | boundary;
+      this->Coefficient[p] = interfaceDistance<D>(block, this->InverseSpacing, this->Spacing); // (1.37)
+    }
+    else
+    {
+      this->Role[p] = RolePde | boundary;
+      this->Coefficient[p] = reinitSign(
+        block[ReinitStencil<D>::Centre], centralGradientNorm<D>(block, this->InverseSpacing), this->H); // (1.31)
+    }
+    return near;
+  }
+
+  /// New value of a non-fixed node from its axis neighbourhood u.
+  double update(std::uint8_t kind, double coefficient, const double* u) const
+  {
+    if (kind == RolePde)
+    {
+      return reinitStep<D>(this->Options.Scheme, u, this->InverseSpacing, coefficient, this->Dtau); // (1.32)/(1.35)
+    }
+    // Russo-Smereka (1.36): phi - dtau/dx (S(phi0) |phi| - d), S(phi0) the sign of d (1.37).
+    const double sign = coefficient > 0.0 ? 1.0 : (coefficient < 0.0 ? -1.0 : 0.0);
+    return u[0] - this->Options.Courant * (sign * std::fabs(u[0]) - coefficient);
+  }
+
+  GridField<D>& Phi;
+  const ReinitStencil<D> Stencil;
+  const Index* Band;
+  Index Size;
+  const ReinitOptions& Options;
+  const Context& Ctx;
+  double Spacing[D];
+  double InverseSpacing[D];
+  double H = 0.0;    // smallest spacing: the dx of (1.31), (1.34)
+  double Dtau = 0.0; // pseudo-time step
+
+  std::vector<Index> Offset;         // storage offset of each band node
+  std::vector<double> Coefficient;   // s of (1.31) for RolePde, the target distance otherwise
+  std::vector<double> Next;          // Jacobi buffer
+  std::vector<std::uint8_t> Role;    // Role* flags
+  std::vector<double> ChunkChange;   // per-chunk max |change|
+};
+
+Status validateBand(const Index* band, Index size, Index nodes, const Context& ctx)
+{
+  if (size < 0 || (size > 0 && !band))
+  {
+    return Status::invalidArgument("reinitialisation band: null pointer or negative size");
+  }
+  const double outside = ctx.parallelSum(
+    0, size,
+    [&](Index b, Index e) {
+      double bad = 0.0;
+      for (Index p = b; p < e; ++p)
+      {
+        bad += (band[p] < 0 || band[p] >= nodes) ? 1.0 : 0.0;
+      }
+      return bad;
+    },
+    Grain);
+  if (outside > 0.0)
+  {
+    return Status::invalidArgument("reinitialisation band holds " + std::to_string(static_cast<Index>(outside)) +
+      " indices outside [0, " + std::to_string(nodes) + ")");
+  }
+  return Status::ok();
+}
+} // namespace
+
+template <int D>
+Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const ReinitOptions& options,
+  const Context& ctx, ReinitReport* report)
+{
+  ReinitReport result;
+  auto finish = [&](Status status) {
+    if (report)
+    {
+      *report = result;
+    }
+    return status;
+  };
+  SLTK_RETURN_IF_ERROR(finish(phi.spec().validate()));
+  SLTK_RETURN_IF_ERROR(finish(options.template validate<D>()));
+  SLTK_RETURN_IF_ERROR(finish(validateBand(band, bandSize, phi.spec().nodeCount(), ctx)));
+  if (bandSize == 0)
+  {
+    result.Converged = true;
+    return finish(Status::ok());
+  }
+
+  BandSolver<D> solver(phi, band, bandSize, options, ctx);
+  SLTK_RETURN_IF_ERROR(finish(solver.allocate()));
+  result.InterfaceNodes = solver.classify();
+  if (options.Method == ReinitMethod::Constrained)
+  {
+    solver.fixFront();
+  }
+
+  Interrupter& interrupter = ctx.interrupter();
+  result.Converged = options.MaxIterations == 0;
+  for (int iteration = 1; iteration <= options.MaxIterations; ++iteration)
+  {
+    result.MaxChange = solver.step();
+    result.Iterations = iteration;
+    if (!std::isfinite(result.MaxChange))
+    {
+      return finish(Status::numericalFailure("reinitialisation produced a non-finite value at pseudo-time step " +
+        std::to_string(iteration) + " (is the level-set function finite in and around the band?)"));
+    }
+    if (result.MaxChange < options.Tolerance * solver.spacing())
+    {
+      result.Converged = true;
+      break;
+    }
+    if (interrupter.wasInterrupted(static_cast<double>(iteration) / options.MaxIterations))
+    {
+      return finish(Status::aborted());
+    }
+  }
+  return finish(Status::ok());
+}
+
+template Status reinitialise(GridField<2>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*);
+template Status reinitialise(GridField<3>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*);
+
+} // namespace sltk
