@@ -3,6 +3,7 @@
 
 #include "sltk/exec/Memory.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -57,7 +58,8 @@ Status planGrids(const Box<D>& bounds, double cloudSpacing, const GridPlanOption
   {
     // (4.36): dx^(r) = C_dx h_P / 2^(r-1)
     const double dx = options.CellSizeFactor * cloudSpacing / std::ldexp(1.0, r - 1);
-    plan.Runs.push_back(runGrid(bounds, dx, options.Padding));
+    const int padding = r == 1 ? std::max(options.Padding, options.FirstRunPadding) : options.Padding;
+    plan.Runs.push_back(runGrid(bounds, dx, padding));
   }
   const GridSpec<D>& finest = plan.Runs.back();
   double nodes = 1.0;

@@ -382,10 +382,27 @@ Status reconstructInUnitBox(const PointCloud<D>& cloud, const ReconstructionOpti
   po.Runs = options.Runs;
   po.CellSizeFactor = options.CellSizeFactor;
   po.Padding = options.Padding;
+  // Run 1 must hold the initial surface, K_P h_P outside the cloud (4.4.4) or the
+  // ellipsoid around it, plus the band gamma and two cells, inside the grid.
+  const Box<D> bounds = boundingBox(cloud);
+  const double dx1 = options.CellSizeFactor * spacing;
+  double reach = options.OutsideThresholdFactor * spacing;
+  if (options.Guess != InitialGuess::OutsideMarking)
+  {
+    const double margin = options.OutsideThresholdFactor * spacing;
+    const Ellipsoid<D> e = options.Guess == InitialGuess::BoundingSphere ? boundingSphere(cloud, margin)
+                                                                         : boundingEllipsoid(cloud, margin);
+    for (int a = 0; a < D; ++a)
+    {
+      reach = std::max(reach, e.Centre[a] + e.SemiAxes[a] - bounds.Max[a]);
+      reach = std::max(reach, bounds.Min[a] - (e.Centre[a] - e.SemiAxes[a]));
+    }
+  }
+  po.FirstRunPadding = static_cast<int>(std::ceil(reach / dx1 + options.GammaFactor + 2.0));
   po.BytesPerNode = 40.0; // phi and d with ghosts, band masks, the coarse field during transfer
   po.MemoryBudget = options.MemoryBudget;
   GridPlan<D> plan;
-  SLTK_RETURN_IF_ERROR(planGrids(boundingBox(cloud), spacing, po, plan));
+  SLTK_RETURN_IF_ERROR(planGrids(bounds, spacing, po, plan));
   result.CloudSpacing = spacing;
   switch (options.Interpolator)
   {

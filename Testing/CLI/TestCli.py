@@ -67,6 +67,29 @@ if os.path.exists(bunny):
 else:
     print("skip ../shared/data not present")
 
+# Reconstruction: a 2562-point sphere in 2 runs (Q1 keeps it quick), outputs and JSON.
+out_vti = os.path.join(tmp, "sphere.vti")
+out_ply = os.path.join(tmp, "sphere.ply")
+out_json = os.path.join(tmp, "recon.json")
+out_csv = os.path.join(tmp, "recon.csv")
+rc, out, err = run("reconstruct", sphere, "--runs", "2", "--interpolator", "q1", "-o", out_vti, "--surface", out_ply,
+                   "--json", out_json, "--csv", out_csv, "--quiet")
+expect(rc == 0, "reconstruct a sphere exits 0 (%s)" % err.strip())
+summary = json.load(open(out_json))
+expect(summary["points"] == 2562 and len(summary["runs"]) == 2, "reconstruct JSON: points and runs")
+expect(summary["runs"][1]["err_cloud"] < 0.01, "Err_P of the sphere below 0.01 (got %g)" % summary["runs"][1]["err_cloud"])
+expect(all(k in summary for k in ("seconds", "peak_memory_mb")) and
+       all(k in summary["runs"][0] for k in ("grid", "iterations", "energy", "err_cloud")), "reconstruct JSON fields")
+expect(os.path.getsize(out_vti) > 0 and open(out_ply, "rb").read(3) == b"ply", "signed distance and PLY surface written")
+expect(open(out_csv).readline().startswith("Run,Iteration,Energy"), "convergence CSV written")
+rc, _, err = run("reconstruct", sphere, "--surface", os.path.join(tmp, "x.obj"))
+expect(rc == 2 and ".vtp, .ply or .stl" in err, "an unsupported surface format is refused before computing")
+rc, _, err = run("reconstruct", bad, "-o", os.path.join(tmp, "bad.vti"))
+expect(rc == 1 and "point 17" in err and not os.path.exists(os.path.join(tmp, "bad.vti")),
+       "NaN input: error, no output file")
+rc, _, err = run("reconstruct", sphere, "--interpolator", "rbf")
+expect(rc == 2 and "q1, weno3, cweno or cwenoz" in err, "an unknown interpolator is a usage error")
+
 vti = os.path.join(tmp, "v0.vti")
 rc, out, err = run("hjb", "--n", "41", "-o", vti, "--json", os.path.join(tmp, "hjb.json"))
 expect(rc == 0 and os.path.getsize(vti) > 0, "hjb writes the value function")

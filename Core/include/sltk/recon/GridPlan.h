@@ -20,6 +20,7 @@ struct GridPlanOptions
   int Runs = 3;                 ///< number of runs r = 1..Runs
   double CellSizeFactor = 1.0;  ///< C_dx of (4.36); the thesis's default is 1
   int Padding = 10;             ///< empty cells around the bounding box, per side
+  int FirstRunPadding = 0;      ///< run 1's padding in its cells when larger (room for the initial surface)
   double BytesPerNode = 48.0;   ///< memory a node costs in the solver (estimate)
   std::uint64_t MemoryBudget = 0; ///< bytes allowed; 0: available memory
 };
