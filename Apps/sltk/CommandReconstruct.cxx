@@ -5,6 +5,7 @@
 #include "Json.h"
 #include "ProgressBar.h"
 #include "ReadPointCloud.h"
+#include "SurfaceDistance.h"
 #include "WriteAtomically.h"
 #include "WriteSurface.h"
 
@@ -50,6 +51,8 @@ options:
   --max-iterations N      iteration cap per run (default 100)
   --initial NAME          outside | sphere | ellipsoid (default outside)
   --threads T             threads (default: all)
+  --reference MESH        add Chamfer and Hausdorff distances to a reference surface (.off .ply .obj .stl .vtp)
+                          to the summary: Chamfer = (mean d(result->ref) + mean d(ref->result)) / 2
   --quiet                 no progress bar
 )";
 
@@ -103,7 +106,7 @@ int commandReconstruct(const Args& rawArgs)
   }
   Options opt(args,
     { "output", "surface", "csv", "json", "interpolator", "cdx", "kp", "runs", "max-iterations", "initial",
-      "threads" },
+      "threads", "reference" },
     { "help", "quiet" });
   if (opt.has("help"))
   {
@@ -145,6 +148,16 @@ int commandReconstruct(const Args& rawArgs)
     if (!problem.empty())
     {
       return fail(problem, 2);
+    }
+  }
+
+  vtkNew<vtkPolyData> reference;
+  if (opt.has("reference"))
+  {
+    const sltk::Status read = readMesh(opt.value("reference"), reference);
+    if (!read.isOk())
+    {
+      return fail(read.message());
     }
   }
 
@@ -212,6 +225,17 @@ int commandReconstruct(const Args& rawArgs)
   std::printf("\nsurface    %lld points, %lld cells\n", static_cast<long long>(surface->GetNumberOfPoints()),
     static_cast<long long>(surface->GetNumberOfCells()));
   std::printf("total      %.2f s, peak memory %.0f MB\n", seconds, peakMb);
+  SurfaceDistances distances;
+  if (opt.has("reference"))
+  {
+    status = surfaceDistances(surface, reference, distances);
+    if (!status.isOk())
+    {
+      return fail(status.message());
+    }
+    std::printf("reference  Chamfer %.4g, Hausdorff %.4g (mean to reference %.4g, from reference %.4g)\n",
+      distances.Chamfer, distances.Hausdorff, distances.MeanToReference, distances.MeanFromReference);
+  }
 
   if (opt.has("output"))
   {
@@ -259,6 +283,12 @@ int commandReconstruct(const Args& rawArgs)
       .add("peak_memory_mb", peakMb)
       .add("surface_points", static_cast<long long>(surface->GetNumberOfPoints()))
       .add("runs", runRecords);
+    if (opt.has("reference"))
+    {
+      summary.add("reference", opt.value("reference"))
+        .add("chamfer", distances.Chamfer)
+        .add("hausdorff", distances.Hausdorff);
+    }
     status = writeTextFile(opt.value("json"), summary.str() + "\n");
     if (!status.isOk())
     {

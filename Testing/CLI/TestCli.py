@@ -82,6 +82,33 @@ expect(all(k in summary for k in ("seconds", "peak_memory_mb")) and
        all(k in summary["runs"][0] for k in ("grid", "iterations", "energy", "err_cloud")), "reconstruct JSON fields")
 expect(os.path.getsize(out_vti) > 0 and open(out_ply, "rb").read(3) == b"ply", "signed distance and PLY surface written")
 expect(open(out_csv).readline().startswith("Run,Iteration,Energy"), "convergence CSV written")
+# --reference: Chamfer/Hausdorff against a UV sphere mesh (OFF), radius 1.
+off = os.path.join(tmp, "sphere.off")
+rings, sectors = 40, 80
+verts = [(0.0, 0.0, 1.0)] + [
+    (math.sin(math.pi * i / rings) * math.cos(2 * math.pi * j / sectors),
+     math.sin(math.pi * i / rings) * math.sin(2 * math.pi * j / sectors), math.cos(math.pi * i / rings))
+    for i in range(1, rings) for j in range(sectors)] + [(0.0, 0.0, -1.0)]
+faces = [(0, 1 + j, 1 + (j + 1) % sectors) for j in range(sectors)]
+for i in range(rings - 2):
+    for j in range(sectors):
+        a, b = 1 + i * sectors + j, 1 + i * sectors + (j + 1) % sectors
+        faces += [(a, a + sectors, b), (b, a + sectors, b + sectors)]
+last = len(verts) - 1
+faces += [(last, 1 + (rings - 2) * sectors + (j + 1) % sectors, 1 + (rings - 2) * sectors + j) for j in range(sectors)]
+with open(off, "w") as f:
+    f.write("OFF\n%d %d 0\n" % (len(verts), len(faces)))
+    f.writelines("%r %r %r\n" % v for v in verts)
+    f.writelines("3 %d %d %d\n" % t for t in faces)
+ref_json = os.path.join(tmp, "ref.json")
+rc, out, err = run("reconstruct", sphere, "--runs", "2", "--interpolator", "q1", "--reference", off, "--json", ref_json,
+                   "--quiet")
+ref = json.load(open(ref_json)) if rc == 0 else {}
+expect(rc == 0 and 0 < ref.get("chamfer", 1) < 0.005 and ref.get("hausdorff", 1) < 0.05,
+       "Chamfer/Hausdorff to the exact sphere are small (%s)" % {k: ref.get(k) for k in ("chamfer", "hausdorff")})
+rc, _, err = run("reconstruct", sphere, "--reference", sphere)
+expect(rc == 1 and "unsupported reference mesh" in err, "a point file is not a reference mesh: " + err.strip())
+
 rc, _, err = run("reconstruct", sphere, "--surface", os.path.join(tmp, "x.obj"))
 expect(rc == 2 and ".vtp, .ply or .stl" in err, "an unsupported surface format is refused before computing")
 rc, _, err = run("reconstruct", bad, "-o", os.path.join(tmp, "bad.vti"))
