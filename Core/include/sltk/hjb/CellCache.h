@@ -1,0 +1,170 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file CellCache.h
+/// A per-thread cache of K prepared cells for the HJB minimisation. Remarks
+/// 3.1-3.2: CWENO builds one polynomial per cell and evaluates it cheaply, so
+/// the many feet y_i^n(a) of one node (tabulation + local search, Figures
+/// 3.4-3.6) -- and of the next nodes, whose feet fall in mostly the same
+/// cells -- should reuse it. Two layouts:
+///  - K <= 8: K interpolators, linear search, round-robin replacement (the
+///    most recently hit slot first). K = 1 is plain prepareIfNeeded().
+///  - K >= 16 (a power of two): a direct-mapped table indexed by a
+///    multiplicative hash of the cell. For CWENO/CWENOZ each entry holds only
+///    the 4^D coefficients of the cell's polynomial (3.15)/(3.16), built by one
+///    interpolator and evaluated with the same Horner routine as
+///    CwenoInterpolator::eval(); other interpolators get one object per entry.
+/// Results are bit-identical for every K (prepare() is deterministic).
+/// Counts the cell builds (prepare() calls) and evaluations.
+
+#include "sltk/interp/Cweno.h"
+#include "sltk/interp/Interpolator.h"
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+#include <vector>
+
+namespace sltk
+{
+
+namespace detail
+{
+/// True for the CWENO family, whose prepared state is its polynomial coefficients.
+template <class I>
+struct IsCwenoInterpolator : std::false_type
+{
+};
+template <int D, CwenoVariant V>
+struct IsCwenoInterpolator<CwenoInterpolator<D, V>> : std::true_type
+{
+};
+
+constexpr int log2Exact(int k)
+{
+  int l = 0;
+  while ((1 << l) < k)
+  {
+    ++l;
+  }
+  return l;
+}
+} // namespace detail
+
+template <class Interp, int K>
+class CellCache
+{
+public:
+  static_assert(K >= 1 && (K <= 8 || (K & (K - 1)) == 0), "K is 1..8, or a power of two for the hashed table");
+  static constexpr int Dim = Interp::Dim;
+  static constexpr int Size = K;
+  static constexpr bool Hashed = K > 8;
+  static constexpr bool StoresPolynomials = Hashed && detail::IsCwenoInterpolator<Interp>::value;
+
+  /// K copies of an interpolator bound to the field (copying a prototype avoids
+  /// rebuilding per-grid constants such as the CWENO indicator forms, ~6% of a
+  /// Test 5 run when done per chunk).
+  CellCache(const Interp& prototype, const GridField<Dim, double>& field)
+    : Spec(&field.spec())
+    , Slots(StoresPolynomials ? 1 : K, prototype)
+  {
+    this->Keys.fill(-1);
+    Index stride = 1;
+    for (int a = 0; a < Dim; ++a)
+    {
+      this->KeyStride[a] = stride;
+      stride *= field.spec().Dims[a] + 1;
+    }
+    if constexpr (StoresPolynomials)
+    {
+      this->Coefficients.resize(static_cast<size_t>(K) * Interp::Size);
+    }
+  }
+
+  /// I[U](x) at a physical point (clipped or wrapped by sltk::locate).
+  double operator()(const double* x)
+  {
+    const CellLocation<Dim> loc = locate(*this->Spec, x);
+    ++this->Evaluations;
+    Index key = 0;
+    for (int a = 0; a < Dim; ++a)
+    {
+      key += loc.Cell[a] * this->KeyStride[a];
+    }
+    if constexpr (Hashed)
+    {
+      // Fibonacci hashing: neighbouring cells (also across rows) land in different entries.
+      constexpr int shift = 64 - detail::log2Exact(K);
+      const int s = static_cast<int>((static_cast<std::uint64_t>(key) * 0x9E3779B97F4A7C15ULL) >> shift);
+      if (this->Keys[s] != key)
+      {
+        this->Keys[s] = key;
+        ++this->Builds;
+        if constexpr (StoresPolynomials)
+        {
+          this->Slots[0].prepare(loc.Cell);
+          const auto& c = this->Slots[0].coefficients();
+          std::copy(c.begin(), c.end(), this->Coefficients.begin() + static_cast<std::ptrdiff_t>(s) * Interp::Size);
+        }
+        else
+        {
+          this->Slots[s].prepare(loc.Cell);
+        }
+      }
+      if constexpr (StoresPolynomials)
+      {
+        // CwenoInterpolator::eval() on the stored coefficients.
+        return cweno::evalTensor<Dim, 4>(this->Coefficients.data() + static_cast<size_t>(s) * Interp::Size, loc.Local);
+      }
+      else
+      {
+        return this->Slots[s].eval(loc.Local);
+      }
+    }
+    else
+    {
+      int s = this->Last;
+      if (this->Keys[s] != key)
+      {
+        s = -1;
+        for (int k = 0; k < K; ++k)
+        {
+          if (this->Keys[k] == key)
+          {
+            s = k;
+            break;
+          }
+        }
+        if (s < 0)
+        {
+          s = this->Victim;
+          this->Victim = (this->Victim + 1) % K;
+          this->Slots[s].prepare(loc.Cell);
+          this->Keys[s] = key;
+          ++this->Builds;
+        }
+        this->Last = s;
+      }
+      return this->Slots[s].eval(loc.Local);
+    }
+  }
+
+  /// prepare() calls so far.
+  double builds() const { return this->Builds; }
+  /// Interpolations so far.
+  double evaluations() const { return this->Evaluations; }
+
+private:
+  const GridSpec<Dim>* Spec;
+  std::vector<Interp> Slots;
+  std::vector<double> Coefficients;
+  std::array<Index, K> Keys{};
+  std::array<Index, Dim> KeyStride{};
+  int Last = 0;
+  int Victim = 0;
+  double Builds = 0.0;
+  double Evaluations = 0.0;
+};
+
+} // namespace sltk

@@ -1,0 +1,611 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// \file BenchHjb.cxx
+/// The HJB tests of thesis 3.5 with the scheme (3.7) (sltk/hjb/HjbScheme.h)
+/// and the WENO3, CWENO and CWENOZ interpolators, run side by side:
+///  - Tables 3.1, 3.3, 3.5, 3.7: L1 errors and orders, ours beside the thesis's;
+///  - Table 3.9: min/max of Test 4;
+///  - Tables 3.2, 3.4, 3.6, 3.8, 3.10: run times (median of --repeat runs,
+///    the three interpolators interleaved in each repetition) and the % gain
+///    of CWENO(Z) over WENO measured in the same run, beside the thesis's
+///    (Galileo100 cluster: compare the gains, not the seconds);
+///  - objective evaluations and cell builds (prepare()) per node and step.
+/// The thesis's numbers are read from thesis_tables.json (GUIDE.md).
+///
+/// Usage: sltkBenchHjb [--test 1|2|3|3h|4|5|all] [--min-n N] [--max-n N] [--repeat R]
+///                     [--threads T] [--cache K] [--tables PATH]
+///   --test    which test (3h: Test 3 with T = 0.5, the text's final time); default all
+///   --min-n, --max-n  range of the tables' N to run (default: per-test limits that
+///             keep the whole run within minutes: Test 1 <= 321, 2 <= 2561, 3 <= 1006,
+///             4 <= 81, 5 <= 126)
+///   --repeat  timing repetitions, median reported (default 1)
+///   --threads executor size (default 1: the CPU time of one core)
+///   --cache   cells per thread chunk (HjbOptions::CellCacheSize: 1, 8 or 256, default 256)
+///   --tables  path of thesis_tables.json (default /work/shared/reference/thesis_tables.json)
+
+#include "sltk/hjb/HjbError.h"
+#include "sltk/hjb/HjbScheme.h"
+#include "sltk/hjb/Presets.h"
+#include "sltk/interp/Cweno.h"
+#include "sltk/interp/Weno3.h"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+// --- a tiny JSON reader (objects, arrays, numbers, strings, null/true/false) ---------------------
+
+struct Json
+{
+  enum Type
+  {
+    Null,
+    Number,
+    String,
+    Array,
+    Object,
+    Bool
+  } Kind = Null;
+  double Value = 0.0;
+  std::string Text;
+  std::vector<Json> Items;
+  std::map<std::string, Json> Members;
+
+  const Json* get(const std::string& key) const
+  {
+    const auto it = this->Members.find(key);
+    return it == this->Members.end() ? nullptr : &it->second;
+  }
+};
+
+class JsonParser
+{
+public:
+  explicit JsonParser(const std::string& text)
+    : Src(text)
+  {
+  }
+  bool parse(Json& out)
+  {
+    this->value(out);
+    return this->Ok;
+  }
+
+private:
+  void skip()
+  {
+    while (this->Pos < this->Src.size() && std::isspace(static_cast<unsigned char>(this->Src[this->Pos])))
+    {
+      ++this->Pos;
+    }
+  }
+  void value(Json& out)
+  {
+    this->skip();
+    if (this->Pos >= this->Src.size())
+    {
+      this->Ok = false;
+      return;
+    }
+    const char c = this->Src[this->Pos];
+    if (c == '{')
+    {
+      out.Kind = Json::Object;
+      ++this->Pos;
+      this->skip();
+      if (this->Src[this->Pos] == '}')
+      {
+        ++this->Pos;
+        return;
+      }
+      while (this->Ok)
+      {
+        this->skip();
+        std::string key = this->string();
+        this->skip();
+        if (this->Src[this->Pos++] != ':')
+        {
+          this->Ok = false;
+          return;
+        }
+        this->value(out.Members[key]);
+        this->skip();
+        const char d = this->Src[this->Pos++];
+        if (d == '}')
+        {
+          return;
+        }
+        if (d != ',')
+        {
+          this->Ok = false;
+        }
+      }
+    }
+    else if (c == '[')
+    {
+      out.Kind = Json::Array;
+      ++this->Pos;
+      this->skip();
+      if (this->Src[this->Pos] == ']')
+      {
+        ++this->Pos;
+        return;
+      }
+      while (this->Ok)
+      {
+        out.Items.emplace_back();
+        this->value(out.Items.back());
+        this->skip();
+        const char d = this->Src[this->Pos++];
+        if (d == ']')
+        {
+          return;
+        }
+        if (d != ',')
+        {
+          this->Ok = false;
+        }
+      }
+    }
+    else if (c == '"')
+    {
+      out.Kind = Json::String;
+      out.Text = this->string();
+    }
+    else if (this->Src.compare(this->Pos, 4, "null") == 0)
+    {
+      this->Pos += 4;
+    }
+    else if (this->Src.compare(this->Pos, 4, "true") == 0 || this->Src.compare(this->Pos, 5, "false") == 0)
+    {
+      out.Kind = Json::Bool;
+      out.Value = c == 't' ? 1.0 : 0.0;
+      this->Pos += c == 't' ? 4 : 5;
+    }
+    else
+    {
+      char* end = nullptr;
+      out.Kind = Json::Number;
+      out.Value = std::strtod(this->Src.c_str() + this->Pos, &end);
+      const size_t used = static_cast<size_t>(end - (this->Src.c_str() + this->Pos));
+      this->Ok = this->Ok && used > 0;
+      this->Pos += used;
+    }
+  }
+  std::string string()
+  {
+    std::string s;
+    if (this->Src[this->Pos] != '"')
+    {
+      this->Ok = false;
+      return s;
+    }
+    ++this->Pos;
+    while (this->Pos < this->Src.size() && this->Src[this->Pos] != '"')
+    {
+      if (this->Src[this->Pos] == '\\')
+      {
+        ++this->Pos;
+      }
+      s += this->Src[this->Pos++];
+    }
+    ++this->Pos;
+    return s;
+  }
+
+  const std::string& Src;
+  size_t Pos = 0;
+  bool Ok = true;
+};
+
+/// The entry at `path` ("table/WENO/l1"), or nullptr.
+const Json* lookup(const Json& root, const std::string& path)
+{
+  const Json* node = &root;
+  std::stringstream ss(path);
+  std::string part;
+  while (node && std::getline(ss, part, '/'))
+  {
+    node = node->get(part);
+  }
+  return node;
+}
+
+/// Thesis value at position of `n` in table/N (or table/grid), NaN when absent.
+double thesisValue(const Json& root, const std::string& table, const std::string& field, long long n)
+{
+  const Json* ns = lookup(root, table + "/N");
+  const Json* values = lookup(root, table + "/" + field);
+  if (!ns || !values || values->Kind != Json::Array)
+  {
+    return std::nan("");
+  }
+  for (size_t k = 0; k < ns->Items.size() && k < values->Items.size(); ++k)
+  {
+    if (ns->Items[k].Kind == Json::Number && static_cast<long long>(ns->Items[k].Value) == n)
+    {
+      return values->Items[k].Kind == Json::Number ? values->Items[k].Value : std::nan("");
+    }
+  }
+  return std::nan("");
+}
+
+/// Test 5's table lists grids "126x101": match on the first number.
+double thesisGridValue(const Json& root, const std::string& table, const std::string& field, long long nx)
+{
+  const Json* grids = lookup(root, table + "/grid");
+  const Json* values = lookup(root, table + "/" + field);
+  if (!grids || !values)
+  {
+    return std::nan("");
+  }
+  for (size_t k = 0; k < grids->Items.size() && k < values->Items.size(); ++k)
+  {
+    if (std::atoll(grids->Items[k].Text.c_str()) == nx && values->Items[k].Kind == Json::Number)
+    {
+      return values->Items[k].Value;
+    }
+  }
+  return std::nan("");
+}
+
+std::vector<long long> tableNs(const Json& root, const std::vector<std::string>& tables)
+{
+  std::vector<long long> ns;
+  for (const auto& t : tables)
+  {
+    const Json* list = lookup(root, t + "/N");
+    if (!list)
+    {
+      list = lookup(root, t + "/grid");
+    }
+    if (!list)
+    {
+      continue;
+    }
+    for (const Json& v : list->Items)
+    {
+      ns.push_back(v.Kind == Json::Number ? static_cast<long long>(v.Value) : std::atoll(v.Text.c_str()));
+    }
+  }
+  std::sort(ns.begin(), ns.end());
+  ns.erase(std::unique(ns.begin(), ns.end()), ns.end());
+  return ns;
+}
+
+std::string fmt(double v, const char* f = "%9.3e")
+{
+  char buf[64];
+  if (std::isnan(v)) // "-" right-aligned in the width of the format
+  {
+    const int width = std::snprintf(buf, sizeof buf, f, 0.0);
+    return std::string(static_cast<size_t>(width > 1 ? width - 1 : 0), ' ') + "-";
+  }
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+// --- runs ----------------------------------------------------------------------------------------
+
+struct Measure
+{
+  double Error = std::nan("");
+  double Min = 0.0;
+  double Max = 0.0;
+  double Seconds = 0.0;
+  double EvalsPerNode = 0.0;
+  double BuildsPerNode = 0.0;
+  long long Reached = 0;
+};
+
+template <class Interp, class Problem, int D>
+Measure runOnce(const Problem& problem, const sltk::HjbSetup<D>& setup, const sltk::Context& ctx)
+{
+  sltk::GridField<D> u(setup.Grid, 2);
+  sltk::hjbInitialize(problem, u);
+  sltk::HjbStats stats;
+  sltk::GridField<D> reach;
+  const auto start = std::chrono::steady_clock::now();
+  const sltk::Status status =
+    sltk::hjbAdvance<Interp>(ctx, setup.Options, problem, u, &stats, Problem::HasObstacle ? &reach : nullptr);
+  Measure m;
+  m.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!status.isOk())
+  {
+    std::fprintf(stderr, "run failed: %s\n", status.toString().c_str());
+    std::exit(1);
+  }
+  if constexpr (Problem::HasExact)
+  {
+    const double t = setup.Options.FinalTime;
+    m.Error = sltk::l1Error(u, [&](const std::array<double, D>& x) { return problem.Exact(t, x); });
+  }
+  const auto range = sltk::valueRange(u);
+  m.Min = range.first;
+  m.Max = range.second;
+  m.EvalsPerNode = stats.evaluationsPerNode();
+  m.BuildsPerNode = stats.buildsPerNode();
+  for (double r : reach.storage())
+  {
+    m.Reached += r != sltk::NotReached ? 1 : 0;
+  }
+  return m;
+}
+
+const char* const Names[3] = { "WENO", "CWENO", "CWENOZ" };
+
+/// The three interpolators, interleaved `repeat` times; median seconds.
+template <int D, class Problem>
+std::array<Measure, 3> runAll(const Problem& problem, const sltk::HjbSetup<D>& setup, int repeat,
+  const sltk::Context& ctx)
+{
+  std::array<Measure, 3> out;
+  std::array<std::vector<double>, 3> seconds;
+  // Runs shorter than 0.2 s are repeated and averaged, so that a timing is never a few ms of noise.
+  auto timed = [&](auto run) {
+    Measure m = run();
+    const int loops = m.Seconds < 0.2 ? static_cast<int>(std::ceil(0.2 / std::max(m.Seconds, 1e-6))) : 1;
+    if (loops > 1)
+    {
+      double total = 0.0;
+      for (int l = 0; l < loops; ++l)
+      {
+        total += run().Seconds;
+      }
+      m.Seconds = total / loops;
+    }
+    return m;
+  };
+  for (int r = 0; r < repeat; ++r)
+  {
+    out[0] = timed([&] { return runOnce<sltk::Weno3Interpolator<D>>(problem, setup, ctx); });
+    out[1] = timed([&] { return runOnce<sltk::CwenoInterpolator<D>>(problem, setup, ctx); });
+    out[2] = timed([&] { return runOnce<sltk::CwenoZInterpolator<D>>(problem, setup, ctx); });
+    for (int m = 0; m < 3; ++m)
+    {
+      seconds[m].push_back(out[m].Seconds);
+    }
+  }
+  for (int m = 0; m < 3; ++m)
+  {
+    std::sort(seconds[m].begin(), seconds[m].end());
+    out[m].Seconds = seconds[m][seconds[m].size() / 2];
+  }
+  return out;
+}
+
+struct Config
+{
+  std::string Test = "all";
+  long long MinN = 0;
+  long long MaxN = 0; // 0: per-test default
+  int Repeat = 1;
+  int Threads = 1;
+  int Cache = 256;
+  std::string Tables = "/work/shared/reference/thesis_tables.json";
+};
+
+struct TestSpec
+{
+  const char* Id;
+  const char* Title;
+  std::string ErrTable; // empty: no errors (Test 5)
+  std::string CpuTable;
+  long long DefaultMaxN;
+};
+
+void printHeader(const TestSpec& spec, bool errors)
+{
+  std::printf("\n=== %s ===\n", spec.Title);
+  if (errors)
+  {
+    std::printf("%7s | %-6s | %9s %5s | %9s %5s | %9s %6s | %9s %7s | %9s %7s | %7s %6s\n", "N", "interp", "L1 ours",
+      "ord", "L1 thesis", "ord", "ours/th", "", "time s", "gain%", "thesis s", "gain%", "eval/n", "bld/n");
+  }
+  else
+  {
+    std::printf("%7s | %-6s | %9s %7s | %9s %7s | %7s %6s | %9s\n", "grid", "interp", "time s", "gain%", "thesis s",
+      "gain%", "eval/n", "bld/n", "reached");
+  }
+}
+
+template <int D, class Problem, class SetupFn>
+void runTable(const Json& tables, const TestSpec& spec, const Config& cfg, const sltk::Context& ctx,
+  const Problem& problem, SetupFn&& makeSetup, double nMinusOneFactor, bool minMaxTable = false)
+{
+  std::vector<std::string> names;
+  if (!spec.ErrTable.empty())
+  {
+    names.push_back(spec.ErrTable);
+  }
+  names.push_back(spec.CpuTable);
+  if (minMaxTable)
+  {
+    names.push_back("table_3_9_test4_min_max");
+  }
+  const long long maxN = cfg.MaxN > 0 ? cfg.MaxN : spec.DefaultMaxN;
+  const bool errors = !spec.ErrTable.empty();
+  printHeader(spec, errors);
+  std::array<double, 3> prevErr{ std::nan(""), std::nan(""), std::nan("") };
+  long long prevN = 0;
+  std::vector<std::pair<long long, std::array<Measure, 3>>> all;
+  for (long long n : tableNs(tables, names))
+  {
+    if (n < cfg.MinN || n > maxN)
+    {
+      continue;
+    }
+    auto setup = makeSetup(n);
+    setup.Options.CellCacheSize = cfg.Cache;
+    const auto m = runAll<D>(problem, setup, cfg.Repeat, ctx);
+    all.emplace_back(n, m);
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::string name = Names[k];
+      const double gain = k == 0 ? std::nan("") : 100.0 * (1.0 - m[k].Seconds / m[0].Seconds);
+      double thesisCpu = 0.0, thesisGain = std::nan("");
+      if (errors)
+      {
+        thesisCpu = thesisValue(tables, spec.CpuTable, name, n);
+        thesisGain = k == 0 ? std::nan("") : thesisValue(tables, spec.CpuTable, name + "_gain_pct", n);
+      }
+      else
+      {
+        thesisCpu = thesisGridValue(tables, spec.CpuTable, name, n);
+        thesisGain = k == 0 ? std::nan("") : thesisGridValue(tables, spec.CpuTable, name + "_gain_pct", n);
+      }
+      if (errors)
+      {
+        const double thErr = thesisValue(tables, spec.ErrTable, name + "/l1", n);
+        const double thOrd = thesisValue(tables, spec.ErrTable, name + "/order", n);
+        // Orders in the thesis use N - 1 intervals (N + factor for periodic grids).
+        const double ord = prevN > 0 ? std::log(prevErr[k] / m[k].Error) /
+            std::log((double(n) + nMinusOneFactor) / (double(prevN) + nMinusOneFactor))
+                                     : std::nan("");
+        std::printf("%7lld | %-6s | %s %s | %s %s | %s %6s | %s %s | %s %s | %7.1f %6.2f\n", n, Names[k],
+          fmt(m[k].Error).c_str(), fmt(ord, "%5.2f").c_str(), fmt(thErr).c_str(), fmt(thOrd, "%5.2f").c_str(),
+          fmt(m[k].Error / thErr, "%9.3f").c_str(), "", fmt(m[k].Seconds).c_str(), fmt(gain, "%7.2f").c_str(),
+          fmt(thesisCpu).c_str(), fmt(thesisGain, "%7.2f").c_str(), m[k].EvalsPerNode, m[k].BuildsPerNode);
+      }
+      else
+      {
+        const long long ny = 4 * (n - 1) / 5 + 1;
+        std::printf("%3lldx%-3lld | %-6s | %s %s | %s %s | %7.1f %6.2f | %9lld\n", n, ny, Names[k],
+          fmt(m[k].Seconds).c_str(), fmt(gain, "%7.2f").c_str(), fmt(thesisCpu).c_str(),
+          fmt(thesisGain, "%7.2f").c_str(), m[k].EvalsPerNode, m[k].BuildsPerNode, m[k].Reached);
+      }
+      prevErr[k] = m[k].Error;
+    }
+    prevN = n;
+    std::fflush(stdout);
+  }
+  if (minMaxTable && !all.empty())
+  {
+    std::printf("\n--- Table 3.9: range of the Test 4 solution (exact range [0, 1]) ---\n");
+    std::printf("%7s | %-6s | %10s %10s | %10s %10s\n", "N", "interp", "min ours", "max ours", "min thesis",
+      "max thesis");
+    for (const auto& entry : all)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const std::string base = std::string("table_3_9_test4_min_max");
+        std::printf("%7lld | %-6s | %10.3e %10.4f | %s %s\n", entry.first, Names[k], entry.second[k].Min,
+          entry.second[k].Max, fmt(thesisValue(tables, base, std::string(Names[k]) + "/min", entry.first), "%10.3e").c_str(),
+          fmt(thesisValue(tables, base, std::string(Names[k]) + "/max", entry.first), "%10.4f").c_str());
+      }
+    }
+  }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Config cfg;
+  for (int a = 1; a + 1 < argc; a += 2)
+  {
+    const std::string key = argv[a];
+    const char* value = argv[a + 1];
+    if (key == "--test")
+    {
+      cfg.Test = value;
+    }
+    else if (key == "--min-n")
+    {
+      cfg.MinN = std::atoll(value);
+    }
+    else if (key == "--max-n")
+    {
+      cfg.MaxN = std::atoll(value);
+    }
+    else if (key == "--repeat")
+    {
+      cfg.Repeat = std::max(1, std::atoi(value));
+    }
+    else if (key == "--threads")
+    {
+      cfg.Threads = std::atoi(value);
+    }
+    else if (key == "--cache")
+    {
+      cfg.Cache = std::atoi(value);
+    }
+    else if (key == "--tables")
+    {
+      cfg.Tables = value;
+    }
+    else
+    {
+      std::fprintf(stderr, "unknown option %s (see the header of bench/BenchHjb.cxx)\n", key.c_str());
+      return 2;
+    }
+  }
+  Json tables;
+  {
+    std::ifstream in(cfg.Tables);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const std::string text = ss.str();
+    if (text.empty() || !JsonParser(text).parse(tables))
+    {
+      std::fprintf(stderr, "cannot read %s: thesis columns and the tables' N lists are unavailable\n",
+        cfg.Tables.c_str());
+      return 1;
+    }
+  }
+  sltk::ThreadPool pool(cfg.Threads);
+  sltk::Context ctx;
+  ctx.Executor = &pool;
+  std::printf("SLTK HJB benchmark (thesis 3.5): threads %d, cell cache %d, median of %d run(s)\n", cfg.Threads,
+    cfg.Cache, cfg.Repeat);
+  auto wants = [&](const char* id) { return cfg.Test == "all" || cfg.Test == id; };
+  if (wants("1"))
+  {
+    runTable<2>(tables, { "1", "Test 1 (3.5.1): rotation, RK3, dt = 3 dx, T = 1 -- Tables 3.1, 3.2",
+                          "table_3_1_test1_errors", "table_3_2_test1_cpu_s", 321 },
+      cfg, ctx, sltk::test1Problem(), [](long long n) { return sltk::test1Setup(n); }, -1.0);
+  }
+  if (wants("2"))
+  {
+    runTable<1>(tables, { "2", "Test 2 (3.5.2): 1D semi-concave, RK1, dt = 10 dx, T = 1 -- Tables 3.3, 3.4",
+                          "table_3_3_test2_errors", "table_3_4_test2_cpu_s", 2561 },
+      cfg, ctx, sltk::test2Problem(), [](long long n) { return sltk::test2Setup(n); }, -1.0);
+  }
+  if (wants("3"))
+  {
+    runTable<1>(tables, { "3", "Test 3 (3.5.3): 1D eikonal, periodic, RK3 over A^3, dt = dx, T = 1 -- Tables 3.5, 3.6",
+                          "table_3_5_test3_errors", "table_3_6_test3_cpu_s", 1006 },
+      cfg, ctx, sltk::test3Problem(), [](long long n) { return sltk::test3Setup(n, 1.0); }, 0.0);
+  }
+  if (cfg.Test == "3h" || cfg.Test == "all")
+  {
+    runTable<1>(tables, { "3h", "Test 3 with the text's T = 0.5 (thesis columns are Table 3.5's, T = 1 caption)",
+                          "table_3_5_test3_errors", "table_3_6_test3_cpu_s", 1006 },
+      cfg, ctx, sltk::test3Problem(), [](long long n) { return sltk::test3Setup(n, 0.5); }, 0.0);
+  }
+  if (wants("4"))
+  {
+    runTable<2>(tables, { "4", "Test 4 (3.5.4): 2D semi-convex, disc R = 2.2, RK1, dt = 5/4 dx, T = 0.5 -- Tables 3.7, 3.8",
+                          "table_3_7_test4_errors", "table_3_8_test4_cpu_s", 81 },
+      cfg, ctx, sltk::test4Problem(), [](long long n) { return sltk::test4Setup(n); }, -1.0, true);
+  }
+  if (wants("5"))
+  {
+    runTable<2>(tables, { "5", "Test 5 (3.5.5): Zermelo with obstacles, RK3 over A^3, dt = dx, T = 3 -- Table 3.10", "",
+                          "table_3_10_test5_cpu_s", 126 },
+      cfg, ctx, sltk::test5Problem(), [](long long n) { return sltk::test5Setup(n); }, -1.0);
+  }
+  return 0;
+}
