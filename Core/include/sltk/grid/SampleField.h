@@ -17,7 +17,7 @@ enum class GhostFill
 };
 
 /// A field with `ghost` layers holding f(x) at the nodes; f takes `const double* x`
-/// (D coordinates). Runs serially: initial data, tests and small setups.
+/// (three coordinates, those beyond D are zero, so one f serves 1D, 2D and 3D). Runs serially: initial data, tests and small setups.
 template <int D, class F>
 GridField<D> sampleField(const GridSpec<D>& spec, int ghost, F&& f, GhostFill fill = GhostFill::Boundary)
 {
@@ -33,7 +33,7 @@ GridField<D> sampleField(const GridSpec<D>& spec, int ghost, F&& f, GhostFill fi
   for (Index k = 0; k < total; ++k)
   {
     std::array<Index, D> i{};
-    double x[D];
+    double x[3] = { 0.0, 0.0, 0.0 };
     Index rest = k;
     for (int a = 0; a < D; ++a)
     {
