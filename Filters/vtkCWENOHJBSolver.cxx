@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkCWENOHJBSolver.h"
 
-#include "sltk/hjb/InitialData.h"
+#include "SLTKBridge.h"
+
+#include "sltk/hjb/PresetRun.h"
 
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -11,6 +14,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <cmath>
 
 vtkStandardNewMacro(vtkCWENOHJBSolver);
 
@@ -25,95 +30,42 @@ int vtkCWENOHJBSolver::FillInputPortInformation(int, vtkInformation*)
   return 1;
 }
 
-bool vtkCWENOHJBSolver::ValidateGrid()
-{
-  static const char axis[3] = { 'x', 'y', 'z' };
-  for (int a = 0; a < 3; ++a)
-  {
-    const bool used = this->Dimensions[a] > 1;
-    if (this->Dimensions[a] < 1 || (used && this->Dimensions[a] < 3))
-    {
-      vtkErrorMacro("Dimensions along " << axis[a] << " is " << this->Dimensions[a]
-                                        << ": use 1 for an unused axis or at least 3 nodes.");
-      return false;
-    }
-    if (used && !(this->Bounds[2 * a + 1] > this->Bounds[2 * a]))
-    {
-      vtkErrorMacro("Bounds along " << axis[a] << " are [" << this->Bounds[2 * a] << ", "
-                                    << this->Bounds[2 * a + 1] << "]: the maximum must exceed the minimum.");
-      return false;
-    }
-  }
-  if (this->Preset == Test1Rotation && (this->Dimensions[0] < 3 || this->Dimensions[1] < 3 || this->Dimensions[2] != 1))
-  {
-    vtkErrorMacro("Preset Test1Rotation is a 2D problem: set Dimensions to (N, N, 1).");
-    return false;
-  }
-  const double nodes = double(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
-  if (nodes > 2e9)
-  {
-    vtkErrorMacro("The grid has " << nodes << " nodes, more than SLTK handles on one machine (2e9): "
-                                  << "reduce Dimensions.");
-    return false;
-  }
-  return true;
-}
-
 int vtkCWENOHJBSolver::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  if (!this->ValidateGrid())
+  sltk::PresetGrid grid;
+  const sltk::Status status =
+    sltk::presetGrid(static_cast<sltk::HjbPreset>(this->Preset), this->NumberOfNodes, grid);
+  if (!status.isOk())
   {
+    vtkErrorMacro(<< status.message());
     return 0;
   }
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   int extent[6];
-  double origin[3], spacing[3];
   for (int a = 0; a < 3; ++a)
   {
     extent[2 * a] = 0;
-    extent[2 * a + 1] = this->Dimensions[a] - 1;
-    origin[a] = this->Bounds[2 * a];
-    spacing[a] = this->Dimensions[a] > 1
-      ? (this->Bounds[2 * a + 1] - this->Bounds[2 * a]) / (this->Dimensions[a] - 1)
-      : 1.0;
+    extent[2 * a + 1] = static_cast<int>(grid.Dims[a]) - 1;
   }
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
-  outInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
-  outInfo->Set(vtkDataObject::SPACING(), spacing, 3);
+  outInfo->Set(vtkDataObject::ORIGIN(), grid.Origin.data(), 3);
+  outInfo->Set(vtkDataObject::SPACING(), grid.Spacing.data(), 3);
   outInfo->Set(CAN_PRODUCE_SUB_EXTENT(), 1);
   vtkDataObject::SetPointDataActiveScalarInfo(outInfo, VTK_DOUBLE, 1);
   return 1;
 }
 
-int vtkCWENOHJBSolver::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+namespace
 {
-  if (!this->ValidateGrid())
-  {
-    return 0;
-  }
-  if (this->FinalTime > 0.0)
-  {
-    vtkErrorMacro("FinalTime = " << this->FinalTime
-                                 << ": time stepping of the HJB scheme (3.7) is not implemented in this "
-                                    "SLTK version; set FinalTime to 0 for the initial datum.");
-    return 0;
-  }
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkImageData* output = vtkImageData::GetData(outInfo);
-  int extent[6];
-  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
-  double origin[3], spacing[3];
-  outInfo->Get(vtkDataObject::ORIGIN(), origin);
-  outInfo->Get(vtkDataObject::SPACING(), spacing);
-  output->SetExtent(extent);
-  output->SetOrigin(origin);
-  output->SetSpacing(spacing);
-
-  vtkNew<vtkDoubleArray> value;
-  value->SetName("ValueFunction");
-  value->SetNumberOfTuples(output->GetNumberOfPoints());
+/// The block `extent` of a whole-grid node array (x fastest).
+vtkSmartPointer<vtkDoubleArray> block(
+  const std::vector<double>& values, const sltk::PresetGrid& grid, const int extent[6], const char* name)
+{
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(name);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(extent[1] - extent[0] + 1) * (extent[3] - extent[2] + 1) *
+    (extent[5] - extent[4] + 1));
   vtkIdType id = 0;
   for (int k = extent[4]; k <= extent[5]; ++k)
   {
@@ -121,11 +73,65 @@ int vtkCWENOHJBSolver::RequestData(
     {
       for (int i = extent[0]; i <= extent[1]; ++i, ++id)
       {
-        value->SetValue(id, sltk::rotatingBump(origin[0] + i * spacing[0], origin[1] + j * spacing[1]));
+        const double v = values[static_cast<size_t>(i + grid.Dims[0] * (j + grid.Dims[1] * k))];
+        array->SetValue(id, std::isinf(v) ? -1.0 : v); // never reached: -1 in ReachTime
       }
     }
   }
-  output->GetPointData()->SetScalars(value);
+  return array;
+}
+
+void addScalar(vtkFieldData* fd, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->InsertNextValue(value);
+  fd->AddArray(a);
+}
+} // namespace
+
+int vtkCWENOHJBSolver::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  sltk::PresetRunOptions options;
+  options.Preset = static_cast<sltk::HjbPreset>(this->Preset);
+  options.Nodes = this->NumberOfNodes;
+  options.FinalTime = this->FinalTime;
+  options.CourantNumber = this->CourantNumber;
+  options.Interpolator = static_cast<sltk::InterpolatorKind>(this->Interpolator);
+  sltk::ThreadPool pool(this->NumberOfThreads);
+  sltk::vtkbridge::AlgorithmInterrupter progress(this);
+  sltk::Context ctx;
+  ctx.Executor = &pool;
+  ctx.Progress = &progress;
+  sltk::PresetRunResult result;
+  const sltk::Status status = sltk::runPreset(options, ctx, result);
+  if (!status.isOk())
+  {
+    vtkErrorMacro("HJB solve failed: " << status.message());
+    return 0;
+  }
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkImageData* output = vtkImageData::GetData(outInfo);
+  int extent[6];
+  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+  output->SetExtent(extent);
+  output->SetOrigin(result.Grid.Origin.data());
+  output->SetSpacing(result.Grid.Spacing.data());
+  output->GetPointData()->SetScalars(block(result.Value, result.Grid, extent, "ValueFunction"));
+  if (!result.ReachTime.empty())
+  {
+    output->GetPointData()->AddArray(block(result.ReachTime, result.Grid, extent, "ReachTime"));
+  }
+  vtkFieldData* fd = output->GetFieldData();
+  addScalar(fd, "FinalTime", result.FinalTime);
+  addScalar(fd, "Steps", static_cast<double>(result.Steps));
+  addScalar(fd, "EvaluationsPerNode", result.EvaluationsPerNode);
+  if (!std::isnan(result.L1Error))
+  {
+    addScalar(fd, "L1Error", result.L1Error);
+    addScalar(fd, "LinfError", result.LinfError);
+  }
   return 1;
 }
 
@@ -133,17 +139,9 @@ void vtkCWENOHJBSolver::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Preset: " << this->Preset << "\n";
-  os << indent << "Dimensions: " << this->Dimensions[0] << " " << this->Dimensions[1] << " "
-     << this->Dimensions[2] << "\n";
-  os << indent << "Bounds:";
-  for (double b : this->Bounds)
-  {
-    os << " " << b;
-  }
-  os << "\n";
+  os << indent << "NumberOfNodes: " << this->NumberOfNodes << "\n";
   os << indent << "FinalTime: " << this->FinalTime << "\n";
   os << indent << "CourantNumber: " << this->CourantNumber << "\n";
-  os << indent << "RungeKuttaOrder: " << this->RungeKuttaOrder << "\n";
   os << indent << "Interpolator: " << this->Interpolator << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -5,14 +5,20 @@
  *          equations v_t + H(t, x, Dv) = 0 with CWENO/CWENOZ/WENO3/Q1
  *          reconstructions (thesis ch. 2, 3, scheme (3.7)).
  *
- * Output: vtkImageData over Bounds with Dimensions nodes per axis (node
- * centred, both ends included) carrying the point array "ValueFunction".
- * The filter produces sub-extents: under MPI each rank computes only the
- * block the pipeline requests.
+ * Problems are the thesis's tests (Preset): 1 rotation of a C2 bump (2D,
+ * pure transport), 2 semi-concave data (1D), 3 eikonal with a source (1D,
+ * periodic, one control per RK stage), 4 quadratic Hamiltonian (2D), 5 the
+ * Zermelo swimmer with obstacles and its reachable set (2D). Each uses its
+ * thesis domain, RK order, controls and time step (lambda dx), with
+ * NumberOfNodes nodes per direction.
  *
- * Problems are chosen by Preset (the thesis's tests). This version evaluates
- * the initial datum v0 exactly (FinalTime = 0); time stepping is not built
- * yet and a positive FinalTime is reported as an error.
+ * Output: vtkImageData with the point array "ValueFunction" at FinalTime
+ * (Test 5 also "ReachTime", the first time a node enters the reachable set
+ * (3.40), -1 if never) and, in its field data, "L1Error" and "LinfError"
+ * (when an exact solution is known), "Steps", "EvaluationsPerNode",
+ * "FinalTime". The output advertises sub-extents so that downstream parallel
+ * writers get one block per rank; every rank computes the whole grid
+ * (distributed HJB runs are not built yet).
  */
 #ifndef vtkCWENOHJBSolver_h
 #define vtkCWENOHJBSolver_h
@@ -37,43 +43,37 @@ public:
 
   enum PresetType
   {
-    Test1Rotation = 1 ///< 3.5.1: rigid rotation of a C2 bump on [0,1]^2
+    TEST1_ROTATION = 1,    ///< 3.5.1
+    TEST2_SEMICONCAVE = 2, ///< 3.5.2
+    TEST3_EIKONAL = 3,     ///< 3.5.3
+    TEST4_QUADRATIC = 4,   ///< 3.5.4
+    TEST5_ZERMELO = 5      ///< 3.5.5
   };
 
   ///@{
-  /// The thesis test to solve. Default Test1Rotation.
-  vtkSetClampMacro(Preset, int, Test1Rotation, Test1Rotation);
+  /// The thesis test to solve. Default TEST1_ROTATION.
+  vtkSetClampMacro(Preset, int, TEST1_ROTATION, TEST5_ZERMELO);
   vtkGetMacro(Preset, int);
   ///@}
 
   ///@{
-  /// Nodes per axis, both ends included (thesis: N). Unused axes must be 1. Default 81 81 1.
-  vtkSetVector3Macro(Dimensions, int);
-  vtkGetVector3Macro(Dimensions, int);
+  /// N: nodes per direction, both ends included (Test 3: distinct periodic nodes;
+  /// Test 5: along x, y follows the domain). Default 81, range 5-100000.
+  vtkSetClampMacro(NumberOfNodes, int, 5, 100000);
+  vtkGetMacro(NumberOfNodes, int);
   ///@}
 
   ///@{
-  /// Domain (xmin, xmax, ymin, ymax, zmin, zmax). Default the unit square.
-  vtkSetVector6Macro(Bounds, double);
-  vtkGetVector6Macro(Bounds, double);
-  ///@}
-
-  ///@{
-  /// Final time T >= 0. Default 0 (the initial datum).
-  vtkSetClampMacro(FinalTime, double, 0.0, 1e30);
+  /// Final time T; negative: the preset's (Tests 1, 2, 3: 1; Test 4: 0.5; Test 5: 3). Default -1.
+  vtkSetMacro(FinalTime, double);
   vtkGetMacro(FinalTime, double);
   ///@}
 
   ///@{
-  /// Courant number lambda: dt = lambda * dx. Default 3 (Test 1), range 0.01-100.
-  vtkSetClampMacro(CourantNumber, double, 0.01, 100.0);
+  /// Courant number lambda: dt = lambda dx; 0: the preset's (Test 1: 3, Test 2: 10,
+  /// Test 4: 1.25, Tests 3 and 5: 1). Default 0, range 0-100.
+  vtkSetClampMacro(CourantNumber, double, 0.0, 100.0);
   vtkGetMacro(CourantNumber, double);
-  ///@}
-
-  ///@{
-  /// Runge-Kutta order of the characteristics: 1 (2.43), 2 (2.44), 3 (2.45). Default 3.
-  vtkSetClampMacro(RungeKuttaOrder, int, 1, 3);
-  vtkGetMacro(RungeKuttaOrder, int);
   ///@}
 
   ///@{
@@ -96,15 +96,10 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  /// Checks Dimensions and Bounds; reports the first problem with vtkErrorMacro.
-  bool ValidateGrid();
-
-  int Preset = Test1Rotation;
-  int Dimensions[3] = { 81, 81, 1 };
-  double Bounds[6] = { 0.0, 1.0, 0.0, 1.0, 0.0, 0.0 };
-  double FinalTime = 0.0;
-  double CourantNumber = 3.0;
-  int RungeKuttaOrder = 3;
+  int Preset = TEST1_ROTATION;
+  int NumberOfNodes = 81;
+  double FinalTime = -1.0;
+  double CourantNumber = 0.0;
   int Interpolator = CWENOZ;
   int NumberOfThreads = 0;
 

@@ -10,6 +10,7 @@
 #include <vtkCWENOHJBSolver.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -25,18 +26,20 @@ namespace
 {
 const char* hjbUsage = R"(usage: sltk hjb [options]
 
-Solves a Hamilton-Jacobi-Bellman problem with the semi-Lagrangian scheme (3.7).
-This version evaluates the initial datum (--final-time 0); time stepping is not
-built yet and a positive final time is reported as an error.
+Solves a Hamilton-Jacobi-Bellman problem with the semi-Lagrangian scheme (3.7)
+(Preda 2024, ch. 3): the thesis's Tests 1-5 with their domains, controls, RK
+orders and time steps.
 
 options:
-  --preset NAME          test1 (rotation of a C2 bump, 3.5.1) (default test1)
-  --n N                  nodes per direction, both ends included (default 81)
-  --final-time T         final time (default 0)
+  --preset NAME          test1 (rotation, 2D) | test2 (semi-concave, 1D) | test3 (eikonal, 1D periodic)
+                         | test4 (quadratic, 2D) | test5 (Zermelo with obstacles, 2D)   (default test1)
+  --n N                  nodes per direction (default 81)
+  --final-time T         final time (default: the preset's; 0 gives the initial datum)
+  --courant L            dt = L dx (default: the preset's)
   --interpolator NAME    q1 | weno3 | cweno | cwenoz (default cwenoz)
   --threads T            threads (default: all)
-  -o, --output FILE.vti  write the value function
-  --json FILE            write a summary (min, max, seconds, ...)
+  -o, --output FILE.vti  write the value function (and ReachTime for test5)
+  --json FILE            summary: l1_error, linf_error (when exact), min, max, seconds, steps, evaluations_per_node
 )";
 
 int interpolatorCode(const std::string& name)
@@ -61,14 +64,16 @@ int commandHjb(const Args& rawArgs)
   {
     a = a == "-o" ? "--output" : a;
   }
-  Options opt(args, { "preset", "n", "final-time", "interpolator", "threads", "output", "json" }, { "help" });
+  Options opt(
+    args, { "preset", "n", "final-time", "courant", "interpolator", "threads", "output", "json" }, { "help" });
   if (opt.has("help"))
   {
     std::cout << hjbUsage;
     return 0;
   }
   const double n = opt.number("n", 81);
-  const double finalTime = opt.number("final-time", 0.0);
+  const double finalTime = opt.number("final-time", -1.0);
+  const double courant = opt.number("courant", 0.0);
   const double threads = opt.number("threads", 0);
   if (!opt.ok())
   {
@@ -78,30 +83,42 @@ int commandHjb(const Args& rawArgs)
   {
     return fail("unexpected argument '" + opt.positional()[0] + "' (see sltk hjb --help)", 2);
   }
-  if (opt.value("preset", "test1") != "test1")
+  const std::string presetName = opt.value("preset", "test1");
+  int preset = 0;
+  for (int k = 1; k <= 5; ++k)
   {
-    return fail("unknown preset '" + opt.value("preset") + "': available: test1", 2);
+    preset = presetName == "test" + std::to_string(k) ? k : preset;
+  }
+  if (preset == 0)
+  {
+    return fail("unknown preset '" + presetName + "': use test1, test2, test3, test4 or test5", 2);
   }
   const int interpolator = interpolatorCode(opt.value("interpolator", "cwenoz"));
   if (interpolator < 0)
   {
     return fail("unknown interpolator '" + opt.value("interpolator") + "': use q1, weno3, cweno or cwenoz", 2);
   }
-  if (n < 3 || n > 100000 || n != static_cast<int>(n))
+  if (n < 5 || n > 100000 || n != static_cast<int>(n))
   {
-    return fail("--n must be a whole number of nodes from 3 to 100000", 2);
+    return fail("--n must be a whole number of nodes from 5 to 100000", 2);
   }
-  if (finalTime < 0.0)
+  if (opt.has("final-time") && finalTime < 0.0)
   {
     return fail("--final-time must be >= 0", 2);
+  }
+  if (opt.has("courant") && !(courant > 0.0 && courant <= 100.0))
+  {
+    return fail("--courant must be in (0, 100]", 2);
   }
 
   const auto start = std::chrono::steady_clock::now();
   vtkNew<vtkCWENOHJBSolver> solver;
   vtkNew<ErrorCollector> errors;
   solver->AddObserver(vtkCommand::ErrorEvent, errors);
-  solver->SetDimensions(static_cast<int>(n), static_cast<int>(n), 1);
+  solver->SetPreset(preset);
+  solver->SetNumberOfNodes(static_cast<int>(n));
   solver->SetFinalTime(finalTime);
+  solver->SetCourantNumber(courant);
   solver->SetInterpolator(interpolator);
   solver->SetNumberOfThreads(static_cast<int>(threads));
   solver->Update();
@@ -113,8 +130,21 @@ int commandHjb(const Args& rawArgs)
   double range[2];
   image->GetPointData()->GetScalars()->GetRange(range);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("preset test1, %d x %d nodes, T = %g: value in [%.6g, %.6g], %.3f s\n", static_cast<int>(n),
-    static_cast<int>(n), finalTime, range[0], range[1], seconds);
+  vtkFieldData* fd = image->GetFieldData();
+  const double t = fd->GetArray("FinalTime")->GetTuple1(0);
+  const double steps = fd->GetArray("Steps")->GetTuple1(0);
+  const double evaluations = fd->GetArray("EvaluationsPerNode")->GetTuple1(0);
+  const int* dims = image->GetDimensions();
+  std::printf("%s, %d x %d nodes, T = %g, %.0f steps, %.1f evaluations per node and step\n", presetName.c_str(),
+    dims[0], dims[1], t, steps, evaluations);
+  std::printf("value in [%.6g, %.6g], %.3f s", range[0], range[1], seconds);
+  const bool exact = fd->GetArray("L1Error") != nullptr;
+  if (exact)
+  {
+    std::printf(", L1 error %.4g, Linf error %.4g", fd->GetArray("L1Error")->GetTuple1(0),
+      fd->GetArray("LinfError")->GetTuple1(0));
+  }
+  std::printf("\n");
 
   if (opt.has("output"))
   {
@@ -133,14 +163,20 @@ int commandHjb(const Args& rawArgs)
   if (opt.has("json"))
   {
     JsonObject summary;
-    summary.add("preset", std::string("test1"))
+    summary.add("preset", presetName)
       .add("n", static_cast<long long>(n))
-      .add("final_time", finalTime)
+      .add("final_time", t)
       .add("min", range[0])
       .add("max", range[1])
       .add("seconds", seconds)
-      .add("steps", 0LL)
+      .add("steps", static_cast<long long>(steps))
+      .add("evaluations_per_node", evaluations)
       .add("peak_memory_mb", static_cast<double>(sltk::peakResidentBytes()) / 1e6);
+    if (exact)
+    {
+      summary.add("l1_error", fd->GetArray("L1Error")->GetTuple1(0))
+        .add("linf_error", fd->GetArray("LinfError")->GetTuple1(0));
+    }
     auto status = writeTextFile(opt.value("json"), summary.str() + "\n");
     if (!status.isOk())
     {

@@ -118,13 +118,22 @@ rc, _, err = run("reconstruct", sphere, "--interpolator", "rbf")
 expect(rc == 2 and "q1, weno3, cweno or cwenoz" in err, "an unknown interpolator is a usage error")
 
 vti = os.path.join(tmp, "v0.vti")
-rc, out, err = run("hjb", "--n", "41", "-o", vti, "--json", os.path.join(tmp, "hjb.json"))
+rc, out, err = run("hjb", "--n", "41", "--final-time", "0", "-o", vti, "--json", os.path.join(tmp, "hjb.json"))
 expect(rc == 0 and os.path.getsize(vti) > 0, "hjb writes the value function")
 hjb = json.load(open(os.path.join(tmp, "hjb.json")))
-expect(abs(hjb["max"] - 0.15) < 1e-12 and hjb["min"] == 0.0, "hjb JSON has the range of v0")
+expect(abs(hjb["max"] - 0.15) < 1e-12 and hjb["min"] == 0.0 and hjb["steps"] == 0, "hjb at T = 0 is the initial datum")
+# Test 2 at N = 81 against Table 3.3 (WENO 3.56e-6, CWENO 2.24e-6, CWENOZ 1.78e-6).
+for name, thesis in (("weno3", 3.56e-6), ("cweno", 2.24e-6), ("cwenoz", 1.78e-6)):
+    rc, out, err = run("hjb", "--preset", "test2", "--n", "81", "--interpolator", name, "--json",
+                       os.path.join(tmp, "t2.json"))
+    t2 = json.load(open(os.path.join(tmp, "t2.json"))) if rc == 0 else {}
+    expect(rc == 0 and abs(t2.get("l1_error", 1) / thesis - 1) < 0.1 and t2.get("evaluations_per_node", 0) > 50,
+           "test2 %s L1 within 10%% of Table 3.3 (%s)" % (name, t2.get("l1_error")))
 partial = os.path.join(tmp, "never.vti")
-rc, _, err = run("hjb", "--final-time", "1", "-o", partial)
-expect(rc == 1 and not os.path.exists(partial), "a failed solve leaves no output file")
+rc, _, err = run("hjb", "--preset", "test9", "-o", partial)
+expect(rc == 2 and "test1, test2" in err and not os.path.exists(partial), "an unknown preset is a usage error, no file")
+rc, _, err = run("hjb", "--n", "3")
+expect(rc == 2 and "--n" in err, "too few nodes is a usage error")
 expect(not [f for f in os.listdir(tmp) if ".part" in f], "no temporary files are left behind")
 
 sys.exit(1 if failures else 0)

@@ -16,7 +16,7 @@ ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
 assert ranks == 2, "run me under mpirun -np 2 pvbatch (got %d ranks)" % ranks
 
 N = 33
-solver = CWENOHamiltonJacobiBellmanSolver(Dimensions=[N, N, 1])
+solver = CWENOHamiltonJacobiBellmanSolver(NumberOfNodes=N, FinalTime=0.0)
 target = os.path.join(outdir, "rank_extents.pvti")
 writer = XMLPImageDataWriter(Input=solver, FileName=target)
 writer.UpdatePipeline()

@@ -14,7 +14,8 @@
 int main()
 {
   vtkNew<vtkCWENOHJBSolver> solver;
-  solver->SetDimensions(41, 41, 1);
+  solver->SetNumberOfNodes(41);
+  solver->SetFinalTime(0.0); // the initial datum of Test 1
   solver->Update();
   double range[2];
   solver->GetOutput()->GetPointData()->GetArray("ValueFunction")->GetRange(range);

@@ -4,7 +4,9 @@
 #include "vtkOctreeSDF.h"
 #include "vtkSLLevelSetReconstruct.h"
 
+#include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkHyperTreeGrid.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -51,23 +53,24 @@ int main()
 {
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // expected errors stay quiet
 
-  // HJB solver: whole extent, spacing and a sub-extent request.
+  // HJB solver: whole extent, spacing, a sub-extent request, T = 0 and a real solve.
   {
     vtkNew<vtkCWENOHJBSolver> solver;
-    solver->SetDimensions(21, 41, 1);
+    solver->SetNumberOfNodes(41);
+    solver->SetFinalTime(0.0);
     solver->UpdateInformation();
     int whole[6];
     solver->GetOutputInformation(0)->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
-    check(whole[1] == 20 && whole[3] == 40 && whole[5] == 0, "HJB whole extent is 0..20 x 0..40");
+    check(whole[1] == 40 && whole[3] == 40 && whole[5] == 0, "HJB Test 1 whole extent is 0..40 x 0..40");
     check(solver->GetOutputInformation(0)->Get(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT()) == 1,
       "HJB advertises sub-extents");
-    int sub[6] = { 0, 20, 10, 19, 0, 0 };
+    int sub[6] = { 0, 40, 10, 19, 0, 0 };
     solver->UpdateExtent(sub);
     vtkImageData* image = solver->GetOutput();
     int got[6];
     image->GetExtent(got);
     check(got[2] == 10 && got[3] == 19, "HJB produces exactly the requested sub-extent");
-    check(std::fabs(image->GetSpacing()[1] - 1.0 / 40) < 1e-15, "HJB spacing is (max-min)/(N-1)");
+    check(std::fabs(image->GetSpacing()[1] - 1.0 / 40) < 1e-15, "HJB spacing is 1/(N-1) on [0,1]");
     auto* values = vtkDoubleArray::SafeDownCast(image->GetPointData()->GetArray("ValueFunction"));
     bool exact = values != nullptr;
     for (vtkIdType id = 0; exact && id < image->GetNumberOfPoints(); ++id)
@@ -80,15 +83,26 @@ int main()
       exact = std::fabs(values->GetValue(id) - expected) < 1e-14;
     }
     check(exact, "HJB T=0 output equals the Test 1 initial datum");
+
+    // One full revolution at N = 41: the thesis's Table 3.1 gives L1 4.84e-4 for CWENOZ.
+    solver->SetFinalTime(-1.0);
+    solver->SetNumberOfThreads(2);
+    solver->UpdateWholeExtent();
+    image = solver->GetOutput();
+    auto* l1 = image->GetFieldData()->GetArray("L1Error");
+    check(l1 && std::fabs(l1->GetTuple1(0) / 4.84e-4 - 1.0) < 0.05, "HJB Test 1 N=41 CWENOZ L1 within 5% of Table 3.1");
     std::ostringstream os;
     solver->Print(os);
-    check(os.str().find("CourantNumber: 3") != std::string::npos, "HJB PrintSelf lists properties");
+    check(os.str().find("NumberOfNodes: 41") != std::string::npos, "HJB PrintSelf lists properties");
 
-    solver->SetFinalTime(1.0);
-    check(solver->GetExecutive()->Update() == 0, "HJB refuses a positive FinalTime (not built yet)");
-    solver->SetFinalTime(0.0);
-    solver->SetDimensions(2, 41, 1);
-    check(solver->GetExecutive()->Update() == 0, "HJB refuses 2 nodes along x");
+    // Test 5 has a reachable-set field.
+    solver->SetPreset(vtkCWENOHJBSolver::TEST5_ZERMELO);
+    solver->SetNumberOfNodes(26);
+    solver->SetFinalTime(0.5);
+    solver->UpdateWholeExtent();
+    check(solver->GetOutput()->GetPointData()->GetArray("ReachTime") != nullptr, "HJB Test 5 outputs ReachTime");
+    solver->SetNumberOfNodes(1000000);
+    check(solver->GetNumberOfNodes() == 100000, "NumberOfNodes is clamped");
   }
 
   // Reconstruction: bad inputs fail cleanly; a sphere cloud gives a signed distance and a surface.

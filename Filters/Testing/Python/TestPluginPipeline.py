@@ -8,8 +8,8 @@ from paraview import servermanager
 plugin = sys.argv[1]
 LoadPlugin(plugin, ns=globals())
 
-# The HJB solver through the proxy pipeline (initial datum of Test 1).
-solver = CWENOHamiltonJacobiBellmanSolver(Dimensions=[41, 41, 1])
+# The HJB solver through the proxy pipeline (initial datum of Test 1, then a Test 2 solve).
+solver = CWENOHamiltonJacobiBellmanSolver(NumberOfNodes=41, FinalTime=0.0)
 solver.UpdatePipeline()
 image = servermanager.Fetch(solver)
 assert image.GetDimensions() == (41, 41, 1), image.GetDimensions()
@@ -22,6 +22,12 @@ for node in (0, 41 * 28 + 12, 41 * 30 + 14):  # a corner, the bump's centre (0.3
     assert abs(values.GetValue(node) - exact) < 1e-14, (node, values.GetValue(node), exact)
 info = solver.GetDataInformation()
 assert info.GetNumberOfPoints() == 41 * 41
+solver.Preset = "Test 2: semi-concave data (1D)"
+solver.NumberOfNodes = 81
+solver.FinalTime = -1.0
+solver.UpdatePipeline()
+l1 = servermanager.Fetch(solver).GetFieldData().GetArray("L1Error").GetValue(0)
+assert abs(l1 / 1.78e-6 - 1.0) < 0.05, l1  # Table 3.3, CWENOZ, N = 81
 
 # Bad input: an empty point set and a degenerate one must fail with an error, not crash.
 empty = servermanager.sources.PointSource(NumberOfPoints=1, Radius=0.0)

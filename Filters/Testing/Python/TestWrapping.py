@@ -9,7 +9,8 @@ import sltk
 vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
 
 solver = sltk.vtkCWENOHJBSolver()
-solver.SetDimensions(31, 31, 1)
+solver.SetNumberOfNodes(31)
+solver.SetFinalTime(0.0)
 solver.Update()
 image = solver.GetOutput()
 assert image.GetDimensions() == (31, 31, 1), image.GetDimensions()
