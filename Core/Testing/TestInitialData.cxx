@@ -4,6 +4,8 @@
 #include "sltk/recon/CloudSpacing.h"
 #include "sltk/recon/DistanceFunction.h"
 
+#include "sltk/recon/SyntheticClouds.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,31 +15,9 @@
 
 namespace
 {
+using sltk::circleCloud;
+using sltk::sphereCloud;
 constexpr double Pi = 3.14159265358979323846;
-
-sltk::PointCloud<2> circleCloud(int n, double r)
-{
-  sltk::PointCloud<2> c;
-  for (int k = 0; k < n; ++k)
-  {
-    const double t = 2.0 * Pi * k / n;
-    c.Points.push_back({ r * std::cos(t), r * std::sin(t) });
-  }
-  return c;
-}
-
-sltk::PointCloud<3> sphereCloud(int n, double r)
-{
-  sltk::PointCloud<3> c;
-  const double golden = Pi * (3.0 - std::sqrt(5.0));
-  for (int k = 0; k < n; ++k)
-  {
-    const double z = 1.0 - 2.0 * (k + 0.5) / n;
-    const double s = std::sqrt(1.0 - z * z);
-    c.Points.push_back({ r * s * std::cos(golden * k), r * s * std::sin(golden * k), r * z });
-  }
-  return c;
-}
 
 template <int D>
 sltk::GridSpec<D> cube(double half, sltk::Index n)

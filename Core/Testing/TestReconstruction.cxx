@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/recon/Reconstruction.h"
 
+#include "sltk/recon/SyntheticClouds.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,25 +11,12 @@ namespace
 {
 sltk::PointCloud<2> circle(int n, double radius = 1.0)
 {
-  sltk::PointCloud<2> c;
-  for (int k = 0; k < n; ++k)
-  {
-    c.Points.push_back({ radius * std::cos(2 * M_PI * k / n), radius * std::sin(2 * M_PI * k / n) });
-  }
-  return c;
+  return sltk::circleCloud(n, radius);
 }
 
 sltk::PointCloud<3> sphere(int n, double radius = 1.0, double offset = 0.0)
 {
-  sltk::PointCloud<3> c;
-  for (int k = 0; k < n; ++k)
-  {
-    const double z = -1.0 + 2.0 * (k + 0.5) / n;
-    const double r = std::sqrt(1.0 - z * z);
-    c.Points.push_back({ offset + radius * r * std::cos(2.399963229728653 * k),
-      offset + radius * r * std::sin(2.399963229728653 * k), offset + radius * z });
-  }
-  return c;
+  return sltk::sphereCloud(n, radius, { offset, offset, offset });
 }
 
 /// L1 error of phi against the exact signed distance |x| - R, over the nodes within gamma of the circle.
