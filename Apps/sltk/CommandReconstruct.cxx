@@ -222,6 +222,15 @@ int commandReconstruct(const Args& rawArgs)
                            .add("err_cloud", cloudError->GetTuple1(r))
                            .add("seconds", runSeconds->GetTuple1(r)));
   }
+  const double hP = fd->GetArray("CloudSpacing")->GetTuple1(0);
+  const double finalError = cloudError->GetNumberOfTuples() ? cloudError->GetTuple1(cloudError->GetNumberOfTuples() - 1) : 0.0;
+  if (finalError > 2.0 * hP)
+  {
+    std::fprintf(stderr,
+      "sltk: warning: the surface ends %.1f h_P from the cloud on average: it did not reach the points; try a "
+      "larger --kp (scans with holes), a smaller --cdx or --initial sphere\n",
+      finalError / hP);
+  }
   std::printf("\nsurface    %lld points, %lld cells\n", static_cast<long long>(surface->GetNumberOfPoints()),
     static_cast<long long>(surface->GetNumberOfCells()));
   std::printf("total      %.2f s, peak memory %.0f MB\n", seconds, peakMb);

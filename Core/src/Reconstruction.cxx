@@ -188,6 +188,14 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     phi.fillGhosts();
     record.CloudError = cloudError<D, Interp>(phi, cloud, ctx);
   }
+  const double spacing = options.CellSizeFactor > 0.0 ? dx * std::ldexp(1.0, run - 1) / options.CellSizeFactor : dx;
+  if (record.CloudError > 2.0 * spacing)
+  {
+    std::ostringstream warning;
+    warning << "run " << run << " ended with Err_P = " << record.CloudError / spacing
+            << " h_P: the surface did not reach the cloud; try a larger K_P (holes), a larger eta or a smaller C_dx";
+    ctx.logger().log(LogLevel::Warning, warning.str());
+  }
   std::ostringstream log;
   log << "run " << run << ": " << record.Iterations << " iterations, E_2 = " << record.Energy
       << ", Err_P = " << record.CloudError << ", " << record.Seconds << " s (energy " << phase[0] << " s, SL step "
