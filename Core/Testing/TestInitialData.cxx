@@ -22,14 +22,7 @@ constexpr double Pi = 3.14159265358979323846;
 template <int D>
 sltk::GridSpec<D> cube(double half, sltk::Index n)
 {
-  sltk::GridSpec<D> g;
-  for (int a = 0; a < D; ++a)
-  {
-    g.Dims[a] = n;
-    g.Origin[a] = -half;
-    g.Spacing[a] = 2.0 * half / static_cast<double>(n - 1);
-  }
-  return g;
+  return sltk::uniformBox<D>(n, -half, half);
 }
 
 /// Points every `step` along the segment from a to b.

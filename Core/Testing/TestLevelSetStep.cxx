@@ -14,15 +14,7 @@ namespace
 template <int D>
 sltk::GridSpec<D> cube(sltk::Index n)
 {
-  sltk::GridSpec<D> g;
-  for (int a = 0; a < D; ++a)
-  {
-    g.Dims[a] = n;
-    g.Origin[a] = -1.0;
-    g.Spacing[a] = 2.0 / double(n - 1);
-    g.Bounds[a] = sltk::Boundary::Extrapolate;
-  }
-  return g;
+  return sltk::uniformBox<D>(n, -1.0, 1.0);
 }
 
 template <int D>

@@ -11,14 +11,7 @@ namespace
 template <int D>
 sltk::GridSpec<D> cube(double half, sltk::Index n)
 {
-  sltk::GridSpec<D> g;
-  for (int a = 0; a < D; ++a)
-  {
-    g.Dims[a] = n;
-    g.Origin[a] = -half;
-    g.Spacing[a] = 2.0 * half / static_cast<double>(n - 1);
-  }
-  return g;
+  return sltk::uniformBox<D>(n, -half, half);
 }
 
 /// Signed distance to the sphere of radius r centred at c.

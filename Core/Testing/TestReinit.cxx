@@ -31,15 +31,7 @@ constexpr double BandCells = 5.0; // gamma + dx with gamma = 4 dx (4.4.6, (1.52)
 template <int D>
 GridSpec<D> grid(Index n)
 {
-  GridSpec<D> g;
-  for (int a = 0; a < D; ++a)
-  {
-    g.Dims[a] = n;
-    g.Origin[a] = -1.0;
-    g.Spacing[a] = 2.0 / double(n - 1);
-    g.Bounds[a] = sltk::Boundary::Extrapolate;
-  }
-  return g;
+  return sltk::uniformBox<D>(n, -1.0, 1.0);
 }
 
 /// Signed distance to the circle / sphere of radius Radius centred slightly off the grid nodes.

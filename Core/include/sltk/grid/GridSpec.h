@@ -83,6 +83,21 @@ struct GridSpec
   }
 };
 
+/// n nodes per axis on [lo, hi]^D (both ends included), one boundary policy.
+template <int D>
+inline GridSpec<D> uniformBox(Index n, double lo, double hi, Boundary boundary = Boundary::Extrapolate)
+{
+  GridSpec<D> g;
+  for (int a = 0; a < D; ++a)
+  {
+    g.Dims[a] = n;
+    g.Origin[a] = lo;
+    g.Spacing[a] = (hi - lo) / static_cast<double>(n - 1);
+    g.Bounds[a] = boundary;
+  }
+  return g;
+}
+
 /// Cell containing a point plus local coordinates in [0, 1] per axis.
 template <int D>
 struct CellLocation

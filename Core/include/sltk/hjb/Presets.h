@@ -42,15 +42,7 @@ namespace hjbpreset
 template <int D>
 inline GridSpec<D> boxGrid(Index n, double lo, double hi)
 {
-  GridSpec<D> g;
-  for (int a = 0; a < D; ++a)
-  {
-    g.Dims[a] = n;
-    g.Origin[a] = lo;
-    g.Spacing[a] = (hi - lo) / static_cast<double>(n - 1);
-    g.Bounds[a] = Boundary::Extrapolate;
-  }
-  return g;
+  return uniformBox<D>(n, lo, hi);
 }
 
 } // namespace hjbpreset
