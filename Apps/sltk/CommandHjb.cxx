@@ -4,6 +4,7 @@
 #include "ErrorCollector.h"
 #include "Json.h"
 #include "WriteAtomically.h"
+#include "WriteSurface.h"
 
 #include "sltk/exec/Memory.h"
 
@@ -14,7 +15,6 @@
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkXMLImageDataWriter.h>
 
 #include <chrono>
 #include <iostream>
@@ -148,13 +148,7 @@ int commandHjb(const Args& rawArgs)
 
   if (opt.has("output"))
   {
-    const std::string path = opt.value("output");
-    auto status = writeAtomically(path, [&](const std::string& temporary) {
-      vtkNew<vtkXMLImageDataWriter> writer;
-      writer->SetInputData(image);
-      writer->SetFileName(temporary.c_str());
-      return writer->Write() == 1;
-    });
+    const auto status = writeImage(opt.value("output"), image);
     if (!status.isOk())
     {
       return fail(status.message());

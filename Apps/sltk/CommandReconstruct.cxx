@@ -22,7 +22,6 @@
 #include <vtkPolyData.h>
 #include <vtkSLLevelSetReconstruct.h>
 #include <vtkTable.h>
-#include <vtkXMLImageDataWriter.h>
 
 #include <chrono>
 #include <cstdio>
@@ -248,12 +247,7 @@ int commandReconstruct(const Args& rawArgs)
 
   if (opt.has("output"))
   {
-    status = writeAtomically(opt.value("output"), [&](const std::string& temporary) {
-      vtkNew<vtkXMLImageDataWriter> writer;
-      writer->SetInputData(image);
-      writer->SetFileName(temporary.c_str());
-      return writer->Write() == 1;
-    });
+    status = writeImage(opt.value("output"), image);
     if (!status.isOk())
     {
       return fail(status.message());

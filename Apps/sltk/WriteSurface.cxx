@@ -3,10 +3,12 @@
 
 #include "WriteAtomically.h"
 
+#include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPLYWriter.h>
 #include <vtkPolyData.h>
 #include <vtkSTLWriter.h>
+#include <vtkXMLImageDataWriter.h>
 #include <vtkXMLPolyDataWriter.h>
 
 namespace sltkcli
@@ -21,10 +23,10 @@ std::string extensionOf(const std::string& path)
 }
 
 template <class Writer>
-bool writeWith(vtkPolyData* surface, const std::string& path)
+bool writeWith(vtkDataObject* data, const std::string& path)
 {
   vtkNew<Writer> writer;
-  writer->SetInputData(surface);
+  writer->SetInputData(data);
   writer->SetFileName(path.c_str());
   return writer->Write() == 1;
 }
@@ -54,6 +56,12 @@ sltk::Status writeSurface(const std::string& path, vtkPolyData* surface)
     }
     return writeWith<vtkXMLPolyDataWriter>(surface, temporary);
   });
+}
+
+sltk::Status writeImage(const std::string& path, vtkImageData* image)
+{
+  return writeAtomically(
+    path, [&](const std::string& temporary) { return writeWith<vtkXMLImageDataWriter>(image, temporary); });
 }
 
 } // namespace sltkcli

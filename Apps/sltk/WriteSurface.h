@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file WriteSurface.h
-/// Writes a surface by its file extension: .vtp, .ply, .stl (atomically).
+/// Writes the CLI's VTK outputs atomically: a surface by its file extension
+/// (.vtp, .ply, .stl) and an image as .vti.
 
 #include "sltk/core/Status.h"
 
 #include <string>
 
+class vtkImageData;
 class vtkPolyData;
 
 namespace sltkcli
@@ -16,5 +18,8 @@ namespace sltkcli
 std::string surfaceFormatProblem(const std::string& path);
 
 sltk::Status writeSurface(const std::string& path, vtkPolyData* surface);
+
+/// XML image data (.vti).
+sltk::Status writeImage(const std::string& path, vtkImageData* image);
 
 } // namespace sltkcli

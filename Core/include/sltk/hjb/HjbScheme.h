@@ -279,19 +279,10 @@ Status hjbAdvance(const Context& ctx, const HjbOptions& options, const Problem& 
     *stepsDone = 0;
   }
   SLTK_RETURN_IF_ERROR(hjbValidate<Interp>(options, problem, u));
-  const double span = options.FinalTime - options.StartTime;
-  if (!(span > 0.0) || !std::isfinite(span))
-  {
-    return Status::invalidArgument("the HJB solver needs FinalTime > StartTime, got [" +
-      std::to_string(options.StartTime) + ", " + std::to_string(options.FinalTime) + "]");
-  }
-  if (!(options.MaxTimeStep > 0.0) || !std::isfinite(options.MaxTimeStep))
-  {
-    return Status::invalidArgument("the HJB solver needs a positive MaxTimeStep, got " +
-      std::to_string(options.MaxTimeStep));
-  }
-  const Index steps = slStepCount(span, options.MaxTimeStep);
-  const double dt = span / static_cast<double>(steps);
+  Index steps = 0;
+  double dt = 0.0;
+  SLTK_RETURN_IF_ERROR(
+    planTimeSteps("the HJB solver", options.StartTime, options.FinalTime, options.MaxTimeStep, steps, dt));
   const GridSpec<D>& spec = u.spec();
   auto markReached = [&](double t) {
     for (Index k = 0; k < spec.nodeCount(); ++k)

@@ -59,6 +59,27 @@ inline Index slStepCount(double span, double maxDt)
   return n < 1 ? 1 : n;
 }
 
+/// The uniform time steps from `start` to `final` (3.2): checks the interval
+/// and the largest step, then dt = span / slStepCount(span, maxDt). `solver`
+/// names the caller in the messages (e.g. "SL advection").
+inline Status planTimeSteps(
+  const char* solver, double start, double final, double maxDt, Index& steps, double& dt)
+{
+  const double span = final - start;
+  if (!(span > 0.0) || !std::isfinite(span))
+  {
+    return Status::invalidArgument(std::string(solver) + " needs FinalTime > StartTime, got [" +
+      std::to_string(start) + ", " + std::to_string(final) + "]");
+  }
+  if (!(maxDt > 0.0) || !std::isfinite(maxDt))
+  {
+    return Status::invalidArgument(std::string(solver) + " needs a positive MaxTimeStep, got " + std::to_string(maxDt));
+  }
+  steps = slStepCount(span, maxDt);
+  dt = span / static_cast<double>(steps);
+  return Status::ok();
+}
+
 namespace detail
 {
 
@@ -201,19 +222,10 @@ Status linearSLAdvance(const Context& ctx, const LinearSLOptions& options, GridF
   {
     *stepsDone = 0;
   }
-  const double span = options.FinalTime - options.StartTime;
-  if (!(span > 0.0) || !std::isfinite(span))
-  {
-    return Status::invalidArgument("SL advection needs FinalTime > StartTime, got [" +
-      std::to_string(options.StartTime) + ", " + std::to_string(options.FinalTime) + "]");
-  }
-  if (!(options.MaxTimeStep > 0.0) || !std::isfinite(options.MaxTimeStep))
-  {
-    return Status::invalidArgument("SL advection needs a positive MaxTimeStep, got " +
-      std::to_string(options.MaxTimeStep));
-  }
-  const Index steps = slStepCount(span, options.MaxTimeStep);
-  const double dt = span / static_cast<double>(steps);
+  Index steps = 0;
+  double dt = 0.0;
+  SLTK_RETURN_IF_ERROR(
+    planTimeSteps("SL advection", options.StartTime, options.FinalTime, options.MaxTimeStep, steps, dt));
   GridField<Interp::Dim, double> next(u.spec(), u.ghost());
   Interrupter& progress = ctx.interrupter();
   progress.start("semi-Lagrangian advection");
