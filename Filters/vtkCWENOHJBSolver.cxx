@@ -3,8 +3,9 @@
 
 #include "SLTKBridge.h"
 
-#include "sltk/hjb/PresetRun.h"
+#include "sltk/hjb/HjbSolver.h"
 
+#include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
@@ -15,52 +16,100 @@
 #include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 vtkStandardNewMacro(vtkCWENOHJBSolver);
 
 vtkCWENOHJBSolver::vtkCWENOHJBSolver()
 {
-  this->SetNumberOfInputPorts(0);
+  this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(1);
+  this->SetDynamicsX("-2*pi*y");
+  this->SetDynamicsY("2*pi*x");
+  this->SetDynamicsZ("0");
+  this->SetInitialValue("max(0.25 - hypot(x - 0.5, y), 0)");
 }
 
-int vtkCWENOHJBSolver::FillInputPortInformation(int, vtkInformation*)
+vtkCWENOHJBSolver::~vtkCWENOHJBSolver()
 {
-  return 1;
+  for (char** text : { &this->DynamicsX, &this->DynamicsY, &this->DynamicsZ, &this->RunningCost,
+         &this->InitialValue, &this->Obstacle, &this->ExactSolution })
+  {
+    delete[] * text;
+    *text = nullptr;
+  }
 }
 
-int vtkCWENOHJBSolver::RequestInformation(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int vtkCWENOHJBSolver::FillInputPortInformation(int, vtkInformation* info)
 {
-  sltk::PresetGrid grid;
-  const sltk::Status status =
-    sltk::presetGrid(static_cast<sltk::HjbPreset>(this->Preset), this->NumberOfNodes, grid);
-  if (!status.isOk())
-  {
-    vtkErrorMacro(<< status.message());
-    return 0;
-  }
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  int extent[6];
-  for (int a = 0; a < 3; ++a)
-  {
-    extent[2 * a] = 0;
-    extent[2 * a + 1] = static_cast<int>(grid.Dims[a]) - 1;
-  }
-  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
-  outInfo->Set(vtkDataObject::ORIGIN(), grid.Origin.data(), 3);
-  outInfo->Set(vtkDataObject::SPACING(), grid.Spacing.data(), 3);
-  outInfo->Set(CAN_PRODUCE_SUB_EXTENT(), 1);
-  vtkDataObject::SetPointDataActiveScalarInfo(outInfo, VTK_DOUBLE, 1);
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   return 1;
 }
 
 namespace
 {
-/// The block `extent` of a whole-grid node array (x fastest).
+std::string text(const char* s)
+{
+  return s ? std::string(s) : std::string();
+}
+
+/// The custom problem's grid from the input image's information (v_0 on its nodes).
+sltk::Status gridFromImage(vtkInformation* inInfo, sltk::HjbExpressionSpec& spec)
+{
+  int extent[6];
+  double origin[3], spacing[3];
+  inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
+  inInfo->Get(vtkDataObject::ORIGIN(), origin);
+  inInfo->Get(vtkDataObject::SPACING(), spacing);
+  spec.Dimension = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    const int n = extent[2 * a + 1] - extent[2 * a] + 1;
+    if (n > 1 && spec.Dimension != a)
+    {
+      return sltk::Status::invalidArgument("the input image must span x, then y, then z (its extent has one node along an earlier axis)");
+    }
+    spec.Dimension += n > 1 ? 1 : 0;
+    spec.Nodes[a] = n;
+    spec.Lower[a] = origin[a] + extent[2 * a] * spacing[a];
+    const bool periodic = spec.Bounds[a] == sltk::Boundary::Periodic;
+    spec.Upper[a] = spec.Lower[a] + (periodic ? n : n - 1) * spacing[a];
+  }
+  if (spec.Dimension == 0)
+  {
+    return sltk::Status::invalidArgument("the input image has a single node: give it at least 5 nodes along x");
+  }
+  return sltk::Status::ok();
+}
+
+/// v_0 from the image's active point scalars (else its first point array), x fastest.
+sltk::Status valuesFromImage(vtkImageData* image, sltk::HjbExpressionSpec& spec)
+{
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  if (!scalars && image->GetPointData()->GetNumberOfArrays() > 0)
+  {
+    scalars = image->GetPointData()->GetArray(0);
+  }
+  if (!scalars || scalars->GetNumberOfComponents() != 1)
+  {
+    return sltk::Status::invalidArgument("the input image needs a one-component point array (v0) as active scalars");
+  }
+  const vtkIdType n = scalars->GetNumberOfTuples();
+  spec.InitialValues.resize(static_cast<size_t>(n));
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    spec.InitialValues[static_cast<size_t>(k)] = scalars->GetTuple1(k);
+  }
+  spec.Initial.clear();
+  return sltk::Status::ok();
+}
+
+/// The block `extent` of a whole-grid node array (x fastest); +inf (never reached) becomes -1.
 vtkSmartPointer<vtkDoubleArray> block(
-  const std::vector<double>& values, const sltk::PresetGrid& grid, const int extent[6], const char* name)
+  const std::vector<double>& values, const sltk::HjbGrid& grid, const int extent[6], const char* name)
 {
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
   array->SetName(name);
@@ -74,7 +123,7 @@ vtkSmartPointer<vtkDoubleArray> block(
       for (int i = extent[0]; i <= extent[1]; ++i, ++id)
       {
         const double v = values[static_cast<size_t>(i + grid.Dims[0] * (j + grid.Dims[1] * k))];
-        array->SetValue(id, std::isinf(v) ? -1.0 : v); // never reached: -1 in ReachTime
+        array->SetValue(id, std::isinf(v) ? -1.0 : v);
       }
     }
   }
@@ -90,28 +139,164 @@ void addScalar(vtkFieldData* fd, const char* name, double value)
 }
 } // namespace
 
-int vtkCWENOHJBSolver::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int vtkCWENOHJBSolver::BuildSolver(vtkInformation* inInfo, vtkImageData* values, std::unique_ptr<sltk::HjbSolver>& solver)
 {
-  sltk::PresetRunOptions options;
-  options.Preset = static_cast<sltk::HjbPreset>(this->Preset);
-  options.Nodes = this->NumberOfNodes;
-  options.FinalTime = this->FinalTime;
-  options.CourantNumber = this->CourantNumber;
-  options.Interpolator = static_cast<sltk::InterpolatorKind>(this->Interpolator);
+  sltk::Status status;
+  if (this->Preset != CUSTOM)
+  {
+    sltk::PresetRunOptions options;
+    options.Preset = static_cast<sltk::HjbPreset>(this->Preset);
+    options.Nodes = this->NumberOfNodes;
+    options.FinalTime = this->FinalTime;
+    options.CourantNumber = this->CourantNumber;
+    options.Interpolator = static_cast<sltk::InterpolatorKind>(this->Interpolator);
+    status = sltk::makePresetSolver(options, solver);
+  }
+  else
+  {
+    sltk::HjbExpressionSpec spec;
+    spec.Dynamics = { text(this->DynamicsX), text(this->DynamicsY), text(this->DynamicsZ) };
+    spec.Cost = text(this->RunningCost);
+    spec.Initial = text(this->InitialValue);
+    spec.Obstacle = text(this->Obstacle);
+    spec.Exact = text(this->ExactSolution);
+    spec.ReachableSet = this->ComputeReachableSet != 0;
+    spec.Dimension = 0;
+    for (int a = 0; a < 3; ++a)
+    {
+      spec.Bounds[a] = this->PeriodicAxes[a] ? sltk::Boundary::Periodic : sltk::Boundary::Extrapolate;
+      spec.Nodes[a] = this->Dimensions[a];
+      spec.Lower[a] = this->DomainBounds[2 * a];
+      spec.Upper[a] = this->DomainBounds[2 * a + 1];
+      spec.Dimension += this->Dimensions[a] > 1 ? 1 : 0;
+      spec.ControlLower[a] = this->ControlLowerBound[a];
+      spec.ControlUpper[a] = this->ControlUpperBound[a];
+      spec.ControlCenter[a] = this->ControlCenter[a];
+    }
+    if (spec.Dimension == 0 || this->Dimensions[0] <= 1 || (this->Dimensions[1] <= 1 && this->Dimensions[2] > 1))
+    {
+      vtkErrorMacro("Dimensions (" << this->Dimensions[0] << ", " << this->Dimensions[1] << ", " << this->Dimensions[2]
+                                   << ") must use x, then y, then z: e.g. {201, 1, 1} in 1D, {81, 81, 1} in 2D");
+      return 0;
+    }
+    spec.Controls = static_cast<sltk::ControlKind>(this->ControlSet);
+    spec.ControlDimension = this->ControlDimension;
+    spec.ControlRadius = this->ControlRadius;
+    spec.Order = static_cast<sltk::RkOrder>(this->RKOrder);
+    spec.FinalTime = this->FinalTime >= 0.0 ? this->FinalTime : 1.0;
+    spec.CourantNumber = this->CourantNumber > 0.0 ? this->CourantNumber : 1.0;
+    spec.Minimizer.TabulationPoints = this->TabulationPoints;
+    spec.Minimizer.Tolerance = this->MinimizerTolerance;
+    spec.Minimizer.PerStageControls = this->PerStageControls != 0;
+    spec.Interpolator = static_cast<sltk::InterpolatorKind>(this->Interpolator);
+    if (inInfo)
+    {
+      status = gridFromImage(inInfo, spec);
+      if (status.isOk() && values)
+      {
+        status = valuesFromImage(values, spec);
+      }
+      else if (status.isOk())
+      {
+        spec.Initial = "0"; // RequestInformation: only the grid and the times are needed
+      }
+    }
+    if (status.isOk())
+    {
+      status = sltk::makeExpressionSolver(spec, solver);
+    }
+  }
+  if (!status.isOk())
+  {
+    vtkErrorMacro("HJB problem: " << status.message());
+    return 0;
+  }
+  return 1;
+}
+
+int vtkCWENOHJBSolver::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* inInfo = inputVector[0]->GetNumberOfInformationObjects() > 0 ? inputVector[0]->GetInformationObject(0) : nullptr;
+  std::unique_ptr<sltk::HjbSolver> plan;
+  if (!this->BuildSolver(this->Preset == CUSTOM ? inInfo : nullptr, nullptr, plan))
+  {
+    return 0;
+  }
+  const sltk::HjbGrid& grid = plan->grid();
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  int extent[6];
+  for (int a = 0; a < 3; ++a)
+  {
+    extent[2 * a] = 0;
+    extent[2 * a + 1] = static_cast<int>(grid.Dims[a]) - 1;
+  }
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  outInfo->Set(vtkDataObject::ORIGIN(), grid.Origin.data(), 3);
+  outInfo->Set(vtkDataObject::SPACING(), grid.Spacing.data(), 3);
+  outInfo->Set(CAN_PRODUCE_SUB_EXTENT(), 1);
+  const std::vector<double> times = plan->stepTimes();
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), static_cast<int>(times.size()));
+  const double range[2] = { times.front(), times.back() };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  vtkDataObject::SetPointDataActiveScalarInfo(outInfo, VTK_DOUBLE, 1);
+  return 1;
+}
+
+int vtkCWENOHJBSolver::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  if (inputVector[0]->GetNumberOfInformationObjects() > 0)
+  {
+    // v_0 is needed on the whole grid, whatever piece is asked for.
+    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+    int whole[6];
+    inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), whole, 6);
+    inInfo->Remove(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+  }
+  return 1;
+}
+
+int vtkCWENOHJBSolver::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* inInfo = inputVector[0]->GetNumberOfInformationObjects() > 0 ? inputVector[0]->GetInformationObject(0) : nullptr;
+  vtkImageData* input = inInfo ? vtkImageData::GetData(inInfo) : nullptr;
+  const bool custom = this->Preset == CUSTOM;
+  vtkMTimeType key = this->GetMTime();
+  if (custom && input)
+  {
+    key = std::max(key, input->GetMTime());
+  }
+  if (!this->Solver || key != this->SolverKey)
+  {
+    this->Solver.reset();
+    if (!this->BuildSolver(custom ? inInfo : nullptr, custom ? input : nullptr, this->Solver))
+    {
+      return 0;
+    }
+    this->SolverKey = key;
+  }
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  double t = this->Solver->finalTime();
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+  {
+    t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+  }
   sltk::ThreadPool pool(this->NumberOfThreads);
   sltk::vtkbridge::AlgorithmInterrupter progress(this);
   sltk::Context ctx;
   ctx.Executor = &pool;
   ctx.Progress = &progress;
-  sltk::PresetRunResult result;
-  const sltk::Status status = sltk::runPreset(options, ctx, result);
+  const sltk::Status status = this->Solver->advanceTo(t, ctx);
   if (!status.isOk())
   {
-    vtkErrorMacro("HJB solve failed: " << status.message());
+    vtkErrorMacro("HJB solve failed at t = " << this->Solver->time() << ": " << status.message());
     return 0;
   }
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  sltk::HjbRunResult result;
+  this->Solver->result(result);
   vtkImageData* output = vtkImageData::GetData(outInfo);
   int extent[6];
   outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
@@ -123,8 +308,9 @@ int vtkCWENOHJBSolver::RequestData(
   {
     output->GetPointData()->AddArray(block(result.ReachTime, result.Grid, extent, "ReachTime"));
   }
+  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), result.FinalTime);
   vtkFieldData* fd = output->GetFieldData();
-  addScalar(fd, "FinalTime", result.FinalTime);
+  addScalar(fd, "Time", result.FinalTime);
   addScalar(fd, "Steps", static_cast<double>(result.Steps));
   addScalar(fd, "EvaluationsPerNode", result.EvaluationsPerNode);
   if (!std::isnan(result.L1Error))
@@ -144,4 +330,15 @@ void vtkCWENOHJBSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CourantNumber: " << this->CourantNumber << "\n";
   os << indent << "Interpolator: " << this->Interpolator << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "DynamicsX: " << text(this->DynamicsX) << "\n";
+  os << indent << "DynamicsY: " << text(this->DynamicsY) << "\n";
+  os << indent << "DynamicsZ: " << text(this->DynamicsZ) << "\n";
+  os << indent << "RunningCost: " << text(this->RunningCost) << "\n";
+  os << indent << "InitialValue: " << text(this->InitialValue) << "\n";
+  os << indent << "Obstacle: " << text(this->Obstacle) << "\n";
+  os << indent << "ExactSolution: " << text(this->ExactSolution) << "\n";
+  os << indent << "Dimensions: " << this->Dimensions[0] << " " << this->Dimensions[1] << " " << this->Dimensions[2] << "\n";
+  os << indent << "ControlSet: " << this->ControlSet << " (dimension " << this->ControlDimension << ")\n";
+  os << indent << "RKOrder: " << this->RKOrder << "\n";
+  os << indent << "TabulationPoints: " << this->TabulationPoints << "\n";
 }

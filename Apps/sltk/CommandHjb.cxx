@@ -2,6 +2,7 @@
 // `sltk hjb`: the HJB solver (vtkCWENOHJBSolver) from a terminal.
 #include "Commands.h"
 #include "ErrorCollector.h"
+#include "HjbCustomProblem.h"
 #include "Json.h"
 #include "WriteAtomically.h"
 #include "WriteSurface.h"
@@ -28,14 +29,14 @@ const char* hjbUsage = R"(usage: sltk hjb [options]
 
 Solves a Hamilton-Jacobi-Bellman problem with the semi-Lagrangian scheme (3.7)
 (Preda 2024, ch. 3): the thesis's Tests 1-5 with their domains, controls, RK
-orders and time steps.
+orders and time steps, or a problem given by formulas (below).
 
 options:
   --preset NAME          test1 (rotation, 2D) | test2 (semi-concave, 1D) | test3 (eikonal, 1D periodic)
                          | test4 (quadratic, 2D) | test5 (Zermelo with obstacles, 2D)   (default test1)
-  --n N                  nodes per direction (default 81)
+  --n N                  preset: nodes per direction (default 81)
   --final-time T         final time (default: the preset's; 0 gives the initial datum)
-  --courant L            dt = L dx (default: the preset's)
+  --courant L            dt = L dx (default: the preset's; custom: 1, dx the smallest spacing)
   --interpolator NAME    q1 | weno3 | cweno | cwenoz (default cwenoz)
   --threads T            threads (default: all)
   -o, --output FILE.vti  write the value function (and ReachTime for test5)
@@ -64,13 +65,16 @@ int commandHjb(const Args& rawArgs)
   {
     a = a == "-o" ? "--output" : a;
   }
-  Options opt(
-    args, { "preset", "n", "final-time", "courant", "interpolator", "threads", "output", "json" }, { "help" });
+  std::vector<std::string> valued = { "preset", "n", "final-time", "courant", "interpolator", "threads", "output",
+    "json" };
+  valued.insert(valued.end(), hjbCustomOptionNames().begin(), hjbCustomOptionNames().end());
+  Options opt(args, valued, { "help", "reach" });
   if (opt.has("help"))
   {
-    std::cout << hjbUsage;
+    std::cout << hjbUsage << hjbCustomUsage;
     return 0;
   }
+  const bool custom = hasHjbCustomProblem(opt);
   const double n = opt.number("n", 81);
   const double finalTime = opt.number("final-time", -1.0);
   const double courant = opt.number("courant", 0.0);
@@ -83,13 +87,27 @@ int commandHjb(const Args& rawArgs)
   {
     return fail("unexpected argument '" + opt.positional()[0] + "' (see sltk hjb --help)", 2);
   }
-  const std::string presetName = opt.value("preset", "test1");
-  int preset = 0;
+  if (custom && (opt.has("preset") || opt.has("n")))
+  {
+    return fail("--preset and --n are for the thesis's tests; a custom problem (--fx ...) uses --nodes", 2);
+  }
+  if (!custom)
+  {
+    for (const std::string& name : hjbCustomOptionNames())
+    {
+      if (opt.has(name))
+      {
+        return fail("--" + name + " belongs to a custom problem: give its dynamics with --fx (see --help)", 2);
+      }
+    }
+  }
+  const std::string presetName = custom ? "custom" : opt.value("preset", "test1");
+  int preset = custom ? vtkCWENOHJBSolver::CUSTOM : 0;
   for (int k = 1; k <= 5; ++k)
   {
     preset = presetName == "test" + std::to_string(k) ? k : preset;
   }
-  if (preset == 0)
+  if (preset == 0 && !custom)
   {
     return fail("unknown preset '" + presetName + "': use test1, test2, test3, test4 or test5", 2);
   }
@@ -117,6 +135,14 @@ int commandHjb(const Args& rawArgs)
   solver->AddObserver(vtkCommand::ErrorEvent, errors);
   solver->SetPreset(preset);
   solver->SetNumberOfNodes(static_cast<int>(n));
+  if (custom)
+  {
+    const std::string error = setHjbCustomProblem(opt, solver);
+    if (!error.empty())
+    {
+      return fail(error, 2);
+    }
+  }
   solver->SetFinalTime(finalTime);
   solver->SetCourantNumber(courant);
   solver->SetInterpolator(interpolator);
@@ -131,12 +157,12 @@ int commandHjb(const Args& rawArgs)
   image->GetPointData()->GetScalars()->GetRange(range);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   vtkFieldData* fd = image->GetFieldData();
-  const double t = fd->GetArray("FinalTime")->GetTuple1(0);
+  const double t = fd->GetArray("Time")->GetTuple1(0);
   const double steps = fd->GetArray("Steps")->GetTuple1(0);
   const double evaluations = fd->GetArray("EvaluationsPerNode")->GetTuple1(0);
   const int* dims = image->GetDimensions();
-  std::printf("%s, %d x %d nodes, T = %g, %.0f steps, %.1f evaluations per node and step\n", presetName.c_str(),
-    dims[0], dims[1], t, steps, evaluations);
+  std::printf("%s, %d x %d x %d nodes, T = %g, %.0f steps, %.1f evaluations per node and step\n",
+    presetName.c_str(), dims[0], dims[1], dims[2], t, steps, evaluations);
   std::printf("value in [%.6g, %.6g], %.3f s", range[0], range[1], seconds);
   const bool exact = fd->GetArray("L1Error") != nullptr;
   if (exact)
@@ -158,7 +184,7 @@ int commandHjb(const Args& rawArgs)
   {
     JsonObject summary;
     summary.add("preset", presetName)
-      .add("n", static_cast<long long>(n))
+      .add("n", static_cast<long long>(dims[0]))
       .add("final_time", t)
       .add("min", range[0])
       .add("max", range[1])

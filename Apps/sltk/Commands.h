@@ -30,6 +30,9 @@ public:
   std::string value(const std::string& name, const std::string& fallback = "") const;
   /// Parses a number option; sets error() on malformed text.
   double number(const std::string& name, double fallback);
+  /// Parses "v1,v2,..." with minCount to maxCount numbers; sets error() otherwise.
+  std::vector<double> numbers(
+    const std::string& name, size_t minCount, size_t maxCount, const std::vector<double>& fallback);
   const std::vector<std::string>& positional() const { return this->Positional; }
 
 private:

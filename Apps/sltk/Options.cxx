@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <stdexcept>
+#include <string>
 
 namespace sltkcli
 {
@@ -24,8 +26,13 @@ Options::Options(const Args& args, const std::vector<std::string>& valued, const
       this->Positional.push_back(a);
       continue;
     }
-    const std::string name = a.substr(2);
-    if (std::find(flags.begin(), flags.end(), name) != flags.end())
+    const size_t equals = a.find('=');
+    const std::string name = a.substr(2, equals == std::string::npos ? std::string::npos : equals - 2);
+    if (equals != std::string::npos && std::find(valued.begin(), valued.end(), name) != valued.end())
+    {
+      this->Values.emplace_back(name, a.substr(equals + 1)); // --name=value
+    }
+    else if (std::find(flags.begin(), flags.end(), name) != flags.end())
     {
       this->Values.emplace_back(name, "");
     }
@@ -63,6 +70,24 @@ std::string Options::value(const std::string& name, const std::string& fallback)
   return fallback;
 }
 
+namespace
+{
+/// The whole of `text` as a finite number.
+bool parseNumber(const std::string& text, double& v)
+{
+  try
+  {
+    size_t used = 0;
+    v = std::stod(text, &used);
+    return used == text.size() && std::isfinite(v);
+  }
+  catch (const std::exception&)
+  {
+    return false;
+  }
+}
+} // namespace
+
 double Options::number(const std::string& name, double fallback)
 {
   if (!this->has(name))
@@ -70,17 +95,8 @@ double Options::number(const std::string& name, double fallback)
     return fallback;
   }
   const std::string text = this->value(name);
-  try
-  {
-    size_t used = 0;
-    const double v = std::stod(text, &used);
-    if (used != text.size() || !std::isfinite(v))
-    {
-      throw std::invalid_argument(text);
-    }
-    return v;
-  }
-  catch (const std::exception&)
+  double v = 0.0;
+  if (!parseNumber(text, v))
   {
     if (this->Error.empty())
     {
@@ -88,6 +104,43 @@ double Options::number(const std::string& name, double fallback)
     }
     return fallback;
   }
+  return v;
+}
+
+std::vector<double> Options::numbers(
+  const std::string& name, size_t minCount, size_t maxCount, const std::vector<double>& fallback)
+{
+  if (!this->has(name))
+  {
+    return fallback;
+  }
+  const std::string text = this->value(name);
+  std::vector<double> values;
+  size_t begin = 0;
+  bool good = true;
+  while (good)
+  {
+    const size_t comma = text.find(',', begin);
+    double v = 0.0;
+    good = parseNumber(text.substr(begin, comma == std::string::npos ? std::string::npos : comma - begin), v);
+    values.push_back(v);
+    if (comma == std::string::npos)
+    {
+      break;
+    }
+    begin = comma + 1;
+  }
+  if (!good || values.size() < minCount || values.size() > maxCount)
+  {
+    if (this->Error.empty())
+    {
+      this->Error = "option --" + name + " expects " + std::to_string(minCount) +
+        (maxCount > minCount ? " to " + std::to_string(maxCount) : std::string()) +
+        " comma-separated numbers, got '" + text + "'";
+    }
+    return fallback;
+  }
+  return values;
 }
 
 } // namespace sltkcli

@@ -134,6 +134,27 @@ rc, _, err = run("hjb", "--preset", "test9", "-o", partial)
 expect(rc == 2 and "test1, test2" in err and not os.path.exists(partial), "an unknown preset is a usage error, no file")
 rc, _, err = run("hjb", "--n", "3")
 expect(rc == 2 and "--n" in err, "too few nodes is a usage error")
+# A custom problem by formulas: thesis Test 4 (3.37) equals the compiled preset.
+rc, _, _ = run("hjb", "--preset", "test4", "--n", "21", "--json", os.path.join(tmp, "t4.json"))
+t4 = json.load(open(os.path.join(tmp, "t4.json"))) if rc == 0 else {}
+custom = ["hjb", "--fx=-a1", "--fy", "-a2", "--cost", "(a1^2 + a2^2)/2", "--v0", "max(1 - (x^2 + y^2), 0)",
+          "--exact", "hypot(x, y) <= 1 ? (hypot(x, y) - 1)^2 / (2*t) : 0", "--nodes", "21,21", "--domain", "-2,2,-2,2",
+          "--controls", "ball", "--control-dim", "2", "--control-radius", "2.2", "--rk", "1", "--courant", "1.25",
+          "--final-time", "0.5"]
+rc, out, err = run(*custom, "--json", os.path.join(tmp, "c4.json"))
+c4 = json.load(open(os.path.join(tmp, "c4.json"))) if rc == 0 else {}
+expect(rc == 0 and abs(c4.get("l1_error", 1) - t4.get("l1_error", 0)) < 1e-12 and c4.get("steps") == 2,
+       "custom Test 4 formulas reproduce the preset (L1 %s vs %s) %s" % (c4.get("l1_error"), t4.get("l1_error"), err))
+bad = os.path.join(tmp, "bad-formula.vti")
+rc, _, err = run(*custom[:-2], "--final-time", "0.5", "--cost", "(a1^2 + a2^2/2", "-o", bad)
+expect(rc == 1 and "running cost f_C" in err and "column" in err and not os.path.exists(bad),
+       "a malformed formula names the formula and the column, no file: " + err.strip())
+rc, _, err = run("hjb", "--fx", "y", "--v0", "x", "--nodes", "21,21", "--controls", "cone")
+expect(rc == 2 and "none, box, ball or sphere" in err, "an unknown control set is a usage error")
+rc, _, err = run("hjb", "--preset", "test1", "--cost", "1")
+expect(rc == 2 and "--fx" in err, "custom options without --fx are a usage error")
+rc, _, err = run("hjb", "--fx", "y", "--v0", "x", "--nodes", "21,abc")
+expect(rc == 2 and "--nodes" in err, "a malformed number list is a usage error")
 expect(not [f for f in os.listdir(tmp) if ".part" in f], "no temporary files are left behind")
 
 sys.exit(1 if failures else 0)

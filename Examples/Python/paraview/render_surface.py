@@ -6,19 +6,13 @@ SURFACE: .vtp / .ply / .stl; CLOUD: .ply / .vtp (points shown as small dots).
 """
 import sys
 
-from paraview.simple import GetActiveViewOrCreate, OpenDataFile, Render, ResetCamera, SaveScreenshot, Show
+from paraview.simple import OpenDataFile, Render, ResetCamera, SaveScreenshot, Show
+from sltk_view import white_view
 
 surface_file, png = sys.argv[1], sys.argv[2]
 cloud_file = sys.argv[3] if len(sys.argv) > 3 else None
 
-view = GetActiveViewOrCreate("RenderView")
-view.ViewSize = [900, 700]
-view.OrientationAxesVisibility = 0
-view.Background = [1.0, 1.0, 1.0]
-try:  # ParaView >= 5.10 keeps the background in a palette unless told otherwise
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
+view = white_view(900, 700)
 
 surface = OpenDataFile(surface_file)
 display = Show(surface, view)

@@ -31,6 +31,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -167,11 +168,31 @@ void hjbKernel(const Context& ctx, const ButcherTableau<S>& tableau, const Minim
   }
 }
 
+/// Problems may fix the cell-cache size at compile time (static constexpr int
+/// CellCacheSize), which instantiates one kernel instead of three.
+template <class Problem, class = void>
+struct FixedCellCache : std::integral_constant<int, 0>
+{
+};
+template <class Problem>
+struct FixedCellCache<Problem, std::void_t<decltype(Problem::CellCacheSize)>>
+  : std::integral_constant<int, Problem::CellCacheSize>
+{
+};
+
 template <class Interp, int S, class Problem>
 Status hjbDispatchCache(const Context& ctx, const HjbOptions& options, const ButcherTableau<S>& tableau,
   const Problem& problem, const GridField<Interp::Dim, double>& current, GridField<Interp::Dim, double>& next,
   double tNext, double dt, std::array<double, 3>& work)
 {
+  if constexpr (FixedCellCache<Problem>::value > 0)
+  {
+    (void)options;
+    hjbKernel<Interp, FixedCellCache<Problem>::value>(ctx, tableau, options.Minimizer, problem, current, next, tNext, dt, work);
+    return Status::ok();
+  }
+  else
+  {
   switch (options.CellCacheSize)
   {
     case 1:
@@ -185,6 +206,7 @@ Status hjbDispatchCache(const Context& ctx, const HjbOptions& options, const But
       return Status::ok();
     default:
       return Status::invalidArgument("CellCacheSize must be 1, 8 or 256, got " + std::to_string(options.CellCacheSize));
+  }
   }
 }
 
@@ -263,6 +285,27 @@ Status hjbStep(const Context& ctx, const HjbOptions& options, const Problem& pro
 /// Value marking a node not (yet) in the reachable set (3.40).
 constexpr double NotReached = std::numeric_limits<double>::infinity();
 
+/// Adds the nodes with u_i <= 0 not reached before to the reachable set (3.40)
+/// at time t. With the previous state `before` (u at tBefore) the first time is
+/// refined by linear interpolation of u in time, t* in (tBefore, t]: the sets
+/// R[0, t_k] = { reach <= t_k } of (3.40) are unchanged, and the level sets of
+/// the field between step times are smooth instead of staircases of dt.
+template <int D>
+void hjbMarkReached(const GridField<D, double>* before, double tBefore, const GridField<D, double>& u,
+  GridField<D, double>& reach, double t)
+{
+  for (Index k = 0; k < u.spec().nodeCount(); ++k)
+  {
+    const auto i = u.nodeIndex(k);
+    const double now = u(i);
+    if (now <= 0.0 && reach(i) == NotReached)
+    {
+      const double was = before ? (*before)(i) : 0.0;
+      reach(i) = was > 0.0 ? tBefore + (t - tBefore) * was / (was - now) : t;
+    }
+  }
+}
+
 /// Advances u (holding u^0, e.g. from hjbInitialize()) from StartTime to
 /// FinalTime with (3.7). When `reach` is given it receives (3.40): the first
 /// t_k at which u_i^k <= 0, NotReached otherwise (same grid, no ghosts).
@@ -284,20 +327,10 @@ Status hjbAdvance(const Context& ctx, const HjbOptions& options, const Problem& 
   SLTK_RETURN_IF_ERROR(
     planTimeSteps("the HJB solver", options.StartTime, options.FinalTime, options.MaxTimeStep, steps, dt));
   const GridSpec<D>& spec = u.spec();
-  auto markReached = [&](double t) {
-    for (Index k = 0; k < spec.nodeCount(); ++k)
-    {
-      const auto i = u.nodeIndex(k);
-      if (u(i) <= 0.0 && (*reach)(i) == NotReached)
-      {
-        (*reach)(i) = t;
-      }
-    }
-  };
   if (reach)
   {
     reach->resize(spec, 0, NotReached);
-    markReached(options.StartTime);
+    hjbMarkReached<D>(nullptr, options.StartTime, u, *reach, options.StartTime);
   }
   GridField<D, double> next(spec, u.ghost());
   Interrupter& progress = ctx.interrupter();
@@ -321,7 +354,7 @@ Status hjbAdvance(const Context& ctx, const HjbOptions& options, const Problem& 
       }
       if (reach)
       {
-        markReached(tNext);
+        hjbMarkReached<D>(&next, tNext - dt, u, *reach, tNext); // next: u^n after the swap
       }
     }
     if (!status.isOk())

@@ -26,7 +26,7 @@ enum class HjbPreset : int
 };
 
 /// Grid of a preset as three axes (unused axes: one node).
-struct PresetGrid
+struct HjbGrid
 {
   int Dimension = 2;
   std::array<long long, 3> Dims{ 1, 1, 1 };
@@ -43,9 +43,9 @@ struct PresetRunOptions
   InterpolatorKind Interpolator = InterpolatorKind::CwenoZ;
 };
 
-struct PresetRunResult
+struct HjbRunResult
 {
-  PresetGrid Grid;
+  HjbGrid Grid;
   std::vector<double> Value;              ///< u at T, x fastest
   std::vector<double> ReachTime;          ///< Test 5: first t_k with u <= 0 (+inf: never); else empty
   double FinalTime = 0.0;
@@ -56,9 +56,9 @@ struct PresetRunResult
 };
 
 /// The grid a preset uses for N nodes (checks N).
-Status presetGrid(HjbPreset preset, Index nodes, PresetGrid& grid);
+Status presetGrid(HjbPreset preset, Index nodes, HjbGrid& grid);
 
 /// Solves the preset to its final time (0: the initial datum).
-Status runPreset(const PresetRunOptions& options, const Context& ctx, PresetRunResult& result);
+Status runPreset(const PresetRunOptions& options, const Context& ctx, HjbRunResult& result);
 
 } // namespace sltk

@@ -1,0 +1,331 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// HjbSolver.h: problems given as formulas reproduce the compiled presets of
+// Tests 1, 4 and 5 (3.5.1, 3.5.4, 3.5.5), transport has the sign of (3.3),
+// stepping is resumable, and bad problems are refused with clear messages.
+#include "sltk/hjb/HjbSolver.h"
+#include "sltk/hjb/InitialData.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+namespace
+{
+using sltk::Index;
+
+sltk::HjbRunResult solveToEnd(std::unique_ptr<sltk::HjbSolver>& solver)
+{
+  const sltk::Status s = solver->advanceTo(solver->finalTime(), sltk::Context{});
+  EXPECT_TRUE(s.isOk()) << s.message();
+  sltk::HjbRunResult r;
+  solver->result(r);
+  return r;
+}
+
+sltk::HjbRunResult preset(sltk::HjbPreset which, Index n, double finalTime = -1.0)
+{
+  sltk::PresetRunOptions o;
+  o.Preset = which;
+  o.Nodes = n;
+  o.FinalTime = finalTime;
+  std::unique_ptr<sltk::HjbSolver> solver;
+  EXPECT_TRUE(sltk::makePresetSolver(o, solver).isOk());
+  return solveToEnd(solver);
+}
+
+sltk::HjbRunResult expressions(const sltk::HjbExpressionSpec& spec)
+{
+  std::unique_ptr<sltk::HjbSolver> solver;
+  const sltk::Status s = sltk::makeExpressionSolver(spec, solver);
+  EXPECT_TRUE(s.isOk()) << s.message();
+  if (!solver)
+  {
+    return {};
+  }
+  return solveToEnd(solver);
+}
+
+/// Test 1 (3.5.1) as formulas; v0 given as node values (the C2 bump).
+sltk::HjbExpressionSpec rotation(Index n)
+{
+  sltk::HjbExpressionSpec s;
+  s.Dimension = 2;
+  s.Nodes = { n, n, 1 };
+  s.Lower = { 0.0, 0.0, 0.0 };
+  s.Upper = { 1.0, 1.0, 1.0 };
+  s.Dynamics = { "-2*pi*(y - 0.5)", "2*pi*(x - 0.5)", "" };
+  const double dx = 1.0 / static_cast<double>(n - 1);
+  for (Index j = 0; j < n; ++j)
+  {
+    for (Index i = 0; i < n; ++i)
+    {
+      s.InitialValues.push_back(sltk::rotatingBump(static_cast<double>(i) * dx, static_cast<double>(j) * dx));
+    }
+  }
+  s.Order = sltk::RkOrder::Kutta3;
+  s.FinalTime = 1.0;
+  s.CourantNumber = 3.0;
+  return s;
+}
+
+void expectSameValues(const sltk::HjbRunResult& a, const sltk::HjbRunResult& b, double tolerance)
+{
+  ASSERT_EQ(a.Value.size(), b.Value.size());
+  double worst = 0.0;
+  for (size_t k = 0; k < a.Value.size(); ++k)
+  {
+    worst = std::max(worst, std::fabs(a.Value[k] - b.Value[k]));
+  }
+  EXPECT_LE(worst, tolerance);
+}
+} // namespace
+
+TEST(HjbExpressionSolver, RotationMatchesTest1Preset)
+{
+  const sltk::HjbRunResult p = preset(sltk::HjbPreset::Test1Rotation, 41);
+  const sltk::HjbRunResult e = expressions(rotation(41));
+  EXPECT_EQ(e.Steps, p.Steps);
+  expectSameValues(e, p, 1e-14);
+  EXPECT_TRUE(std::isnan(e.L1Error)); // no exact solution given
+}
+
+TEST(HjbExpressionSolver, QuadraticHamiltonianMatchesTest4Preset)
+{
+  sltk::HjbExpressionSpec s;
+  s.Nodes = { 21, 21, 1 };
+  s.Lower = { -2.0, -2.0, 0.0 };
+  s.Upper = { 2.0, 2.0, 0.0 };
+  s.Dynamics = { "-a1", "-a2", "" };
+  s.Cost = "(a1^2 + a2^2)/2";
+  s.Initial = "max(1 - (x^2 + y^2), 0)";
+  s.Exact = "hypot(x, y) <= 1 ? (hypot(x, y) - 1)^2 / (2*t) : 0";
+  s.Controls = sltk::ControlKind::Ball;
+  s.ControlDimension = 2;
+  s.ControlRadius = 2.2;
+  s.Order = sltk::RkOrder::Euler;
+  s.FinalTime = 0.5;
+  s.CourantNumber = 1.25;
+  s.Minimizer.TabulationPoints = 33;
+  s.Minimizer.Search = sltk::LocalSearch::NelderMead;
+  s.Minimizer.Tolerance = 1e-8;
+  const sltk::HjbRunResult p = preset(sltk::HjbPreset::Test4Quadratic, 21);
+  const sltk::HjbRunResult e = expressions(s);
+  expectSameValues(e, p, 1e-14);
+  EXPECT_NEAR(e.L1Error, p.L1Error, 1e-12 * p.L1Error);
+  EXPECT_NEAR(e.LinfError, p.LinfError, 1e-12);
+  EXPECT_EQ(e.EvaluationsPerNode, p.EvaluationsPerNode);
+}
+
+TEST(HjbExpressionSolver, ZermeloMatchesTest5PresetWithObstaclesAndReachableSet)
+{
+  sltk::HjbExpressionSpec s;
+  s.Nodes = { 51, 41, 1 };
+  s.Lower = { -3.0, -2.0, 0.0 };
+  s.Upper = { 2.0, 2.0, 0.0 };
+  s.Dynamics = { "2 - y^2/2 + a1", "a2", "" };
+  s.Initial = "20 * min(hypot(x - 1, y) - 0.25, 0.25)";
+  s.Obstacle = "max(-0.2, max(20*(0.2 - max(abs(x - 0.3), abs(y - 0.4))), 20*(0.2 - max(abs(x + 1), abs(y + 1.5)))))";
+  s.Controls = sltk::ControlKind::Sphere;
+  s.ControlDimension = 2;
+  s.ControlRadius = 1.0;
+  s.Order = sltk::RkOrder::Kutta3;
+  s.FinalTime = 0.5;
+  s.CourantNumber = 1.0;
+  s.Minimizer.TabulationPoints = 32;
+  s.Minimizer.PerStageControls = true;
+  s.Minimizer.Search = sltk::LocalSearch::NelderMead;
+  s.Minimizer.Tolerance = 1e-8;
+  const sltk::HjbRunResult p = preset(sltk::HjbPreset::Test5Zermelo, 51, 0.5);
+  const sltk::HjbRunResult e = expressions(s);
+  expectSameValues(e, p, 1e-12);
+  ASSERT_EQ(e.ReachTime.size(), p.ReachTime.size());
+  int reached = 0;
+  for (size_t k = 0; k < e.ReachTime.size(); ++k)
+  {
+    EXPECT_EQ(e.ReachTime[k], p.ReachTime[k]);
+    reached += std::isfinite(e.ReachTime[k]) ? 1 : 0;
+  }
+  EXPECT_GT(reached, 20); // the target plus what the swimmer reaches by t = 0.5
+}
+
+TEST(HjbExpressionSolver, TransportFollowsTheSignOfTheHamiltonian)
+{
+  // f_D = 1: H = -p, v_t - v_x = 0, v = v0(x + t) (1D, periodic).
+  sltk::HjbExpressionSpec s;
+  s.Dimension = 1;
+  s.Nodes = { 64, 1, 1 };
+  s.Lower = { 0.0, 0.0, 0.0 };
+  s.Upper = { 2.0 * M_PI, 0.0, 0.0 };
+  s.Bounds[0] = sltk::Boundary::Periodic;
+  s.Dynamics = { "1", "", "" };
+  s.Initial = "sin(x)";
+  s.Exact = "sin(x + t)";
+  s.FinalTime = 1.0;
+  s.CourantNumber = 2.5;
+  const sltk::HjbRunResult r = expressions(s);
+  EXPECT_LT(r.LinfError, 1e-5);
+  EXPECT_GT(r.Steps, 0);
+}
+
+TEST(HjbExpressionSolver, ThreeDimensionalTransportWithControls)
+{
+  // f_D = a in the box [0, 1] x [0, 0] x [0, 0], f_C = 0: v = min over a1 of v0(x + a1 t) on a
+  // periodic cube; with v0 = cos(x) the minimiser walks towards x = pi (exact for x + t <= pi).
+  sltk::HjbExpressionSpec s;
+  s.Dimension = 3;
+  s.Nodes = { 24, 8, 8 };
+  s.Lower = { 0.0, 0.0, 0.0 };
+  s.Upper = { 2.0 * M_PI, 1.0, 1.0 };
+  s.Bounds = { sltk::Boundary::Periodic, sltk::Boundary::Periodic, sltk::Boundary::Periodic };
+  s.Dynamics = { "a1", "a2", "a3" };
+  s.Initial = "cos(x)";
+  s.Exact = "x <= pi - t ? cos(x + t) : (x <= pi ? -1 : cos(x))";
+  s.Controls = sltk::ControlKind::Box;
+  s.ControlDimension = 3;
+  s.ControlLower = { 0.0, 0.0, 0.0 };
+  s.ControlUpper = { 1.0, 0.0, 0.0 };
+  s.Order = sltk::RkOrder::Euler;
+  s.FinalTime = 0.5;
+  s.CourantNumber = 1.0;
+  s.Minimizer.TabulationPoints = 9;
+  const sltk::HjbRunResult r = expressions(s);
+  EXPECT_LT(r.LinfError, 2e-2) << "L1 " << r.L1Error;
+}
+
+TEST(HjbExpressionSolver, AdvancesStepByStepAndRestartsForEarlierTimes)
+{
+  sltk::HjbExpressionSpec s = rotation(21);
+  s.FinalTime = 0.5;
+  std::unique_ptr<sltk::HjbSolver> stepping;
+  ASSERT_TRUE(sltk::makeExpressionSolver(s, stepping).isOk());
+  const std::vector<double> times = stepping->stepTimes();
+  ASSERT_EQ(static_cast<Index>(times.size()), stepping->stepCount() + 1);
+  EXPECT_NEAR(times.back(), 0.5, 1e-15);
+  for (double t : times)
+  {
+    ASSERT_TRUE(stepping->advanceTo(t, sltk::Context{}).isOk());
+  }
+  EXPECT_EQ(stepping->stepsDone(), stepping->stepCount());
+  sltk::HjbRunResult a;
+  stepping->result(a);
+  std::unique_ptr<sltk::HjbSolver> direct;
+  ASSERT_TRUE(sltk::makeExpressionSolver(s, direct).isOk());
+  const sltk::HjbRunResult b = solveToEnd(direct);
+  EXPECT_EQ(a.Value, b.Value);
+
+  ASSERT_TRUE(stepping->advanceTo(times[1] + 0.1 * stepping->timeStep(), sltk::Context{}).isOk()); // between steps
+  EXPECT_EQ(stepping->stepsDone(), 1);
+  ASSERT_TRUE(stepping->advanceTo(0.0, sltk::Context{}).isOk());
+  sltk::HjbRunResult initial;
+  stepping->result(initial);
+  EXPECT_EQ(initial.Value, s.InitialValues);
+}
+
+TEST(HjbExpressionSolver, RefusesBadProblemsWithClearMessages)
+{
+  auto message = [](const sltk::HjbExpressionSpec& s) {
+    std::unique_ptr<sltk::HjbSolver> solver;
+    const sltk::Status st = sltk::makeExpressionSolver(s, solver);
+    EXPECT_FALSE(st.isOk());
+    EXPECT_FALSE(solver);
+    return st.message();
+  };
+  sltk::HjbExpressionSpec good;
+  good.Nodes = { 11, 11, 1 };
+  good.Dynamics = { "y", "-x", "" };
+  good.Initial = "x^2 + y^2";
+
+  auto s = good;
+  s.Dynamics[1] = "-x +* 2";
+  std::string m = message(s);
+  EXPECT_NE(m.find("the dynamics f_D component y"), std::string::npos) << m;
+  EXPECT_NE(m.find("column"), std::string::npos) << m;
+
+  s = good;
+  s.Dynamics[0] = "y + a1"; // no control set: no a1
+  EXPECT_NE(message(s).find("unknown variable 'a1'"), std::string::npos);
+  s = good;
+  s.Initial = "x + z"; // 2D: no z
+  EXPECT_NE(message(s).find("unknown variable 'z'"), std::string::npos);
+  s = good;
+  s.Initial = "x + t"; // v0 has no t
+  EXPECT_NE(message(s).find("the initial datum v0"), std::string::npos);
+  s = good;
+  s.Initial.clear();
+  EXPECT_NE(message(s).find("v0 is empty"), std::string::npos);
+  s = good;
+  s.Dynamics[1].clear();
+  EXPECT_NE(message(s).find("component y is empty"), std::string::npos);
+  s = good;
+  s.Dimension = 4;
+  EXPECT_NE(message(s).find("dimension must be 1, 2 or 3"), std::string::npos);
+  s = good;
+  s.Nodes[0] = 2;
+  EXPECT_NE(message(s).find("use 5 to 100000"), std::string::npos);
+  s = good;
+  s.Lower[1] = 3.0;
+  EXPECT_NE(message(s).find("lower < upper"), std::string::npos);
+  s = good;
+  s.FinalTime = -1.0;
+  EXPECT_NE(message(s).find("final time"), std::string::npos);
+  s = good;
+  s.CourantNumber = 0.0;
+  EXPECT_NE(message(s).find("Courant number"), std::string::npos);
+  s = good;
+  s.Controls = sltk::ControlKind::Finite;
+  s.Cost = "1";
+  EXPECT_NE(message(s).find("at least one control"), std::string::npos);
+  s = good;
+  s.Controls = sltk::ControlKind::Ball;
+  s.ControlRadius = -1.0;
+  EXPECT_NE(message(s).find("radius must be positive"), std::string::npos);
+  s = good;
+  s.Initial.clear();
+  s.InitialValues.assign(121, 0.0);
+  s.InitialValues[7] = std::nan("");
+  EXPECT_NE(message(s).find("not finite at node 7"), std::string::npos);
+  s.InitialValues.resize(5);
+  EXPECT_NE(message(s).find("5 values for a grid of 121 nodes"), std::string::npos);
+  s = good;
+  s.Dimension = 3;
+  s.Dynamics[2] = "0";
+  s.Nodes = { 100000, 100000, 100000 };
+  std::unique_ptr<sltk::HjbSolver> solver;
+  const sltk::Status huge = sltk::makeExpressionSolver(s, solver);
+  EXPECT_EQ(huge.code(), sltk::StatusCode::OutOfMemory);
+  EXPECT_NE(huge.message().find("use fewer nodes"), std::string::npos) << huge.message();
+}
+
+TEST(HjbExpressionSolver, ReachTimesAreInterpolatedBetweenSteps)
+{
+  // v0 = 0.5 - x, f_D = 1: v(t, x) = 0.5 - x - t, so x is reached at T(x) = max(0.5 - x, 0), which
+  // the linear interpolation of u in time (3.40) recovers exactly between the steps.
+  sltk::HjbExpressionSpec s;
+  s.Dimension = 1;
+  s.Nodes = { 41, 1, 1 };
+  s.Lower = { 0.0, 0.0, 0.0 };
+  s.Upper = { 1.0, 0.0, 0.0 };
+  s.Dynamics = { "1", "", "" };
+  s.Initial = "0.5 - x";
+  s.ReachableSet = true;
+  s.FinalTime = 0.3;
+  s.CourantNumber = 2.3; // dt = 0.0575 is not a multiple of dx
+  s.Interpolator = sltk::InterpolatorKind::Q1;
+  const sltk::HjbRunResult r = expressions(s);
+  ASSERT_EQ(r.ReachTime.size(), 41u);
+  for (size_t i = 0; i < 41; ++i)
+  {
+    const double x = static_cast<double>(i) / 40.0;
+    const double expected = std::max(0.5 - x, 0.0);
+    if (expected <= r.FinalTime)
+    {
+      EXPECT_NEAR(r.ReachTime[i], expected, 1e-12) << "x = " << x;
+    }
+    else
+    {
+      EXPECT_TRUE(std::isinf(r.ReachTime[i])) << "x = " << x;
+    }
+  }
+}

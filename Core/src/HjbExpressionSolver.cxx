@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// makeExpressionSolver(): checks an expression-defined HJB problem
+// (ExpressionProblem.h), compiles its formulas and builds its grid.
+#include "HjbExpressionProblem.h"
+#include "sltk/exec/Memory.h"
+
+#include <cmath>
+#include <string>
+
+namespace sltk
+{
+
+std::vector<double> HjbSolver::stepTimes() const
+{
+  std::vector<double> times(static_cast<size_t>(this->stepCount() + 1));
+  for (size_t k = 0; k < times.size(); ++k)
+  {
+    times[k] = this->startTime() + static_cast<double>(k) * this->timeStep();
+  }
+  return times;
+}
+
+namespace
+{
+const char* const axisNames[3] = { "x", "y", "z" };
+
+/// Names of the slots {x, y, z, t, a1, a2, a3} a formula may read ("" = refused).
+std::vector<std::string> slotNames(int dimension, int controls, bool time)
+{
+  std::vector<std::string> names(SlotCount);
+  for (int d = 0; d < dimension; ++d)
+  {
+    names[static_cast<size_t>(SlotX + d)] = axisNames[d];
+  }
+  if (time)
+  {
+    names[SlotT] = "t";
+  }
+  for (int m = 0; m < controls; ++m)
+  {
+    names[static_cast<size_t>(SlotA + m)] = "a" + std::to_string(m + 1);
+  }
+  return names;
+}
+
+Status compileAll(const HjbExpressionSpec& spec, CompiledHjbExpressions& out)
+{
+  const int controls = spec.Controls == ControlKind::None ? 0 : spec.ControlDimension;
+  const std::vector<std::string> all = slotNames(spec.Dimension, controls, true);
+  const std::vector<std::string> state = slotNames(spec.Dimension, 0, false);
+  for (int d = 0; d < spec.Dimension; ++d)
+  {
+    const std::string what = std::string("the dynamics f_D component ") + axisNames[d];
+    if (spec.Dynamics[static_cast<size_t>(d)].empty())
+    {
+      return Status::invalidArgument(what + " is empty: give one formula per axis (\"0\" for none)");
+    }
+    SLTK_RETURN_IF_ERROR(Expression::compile(what, spec.Dynamics[static_cast<size_t>(d)], all, out.Dynamics[static_cast<size_t>(d)]));
+  }
+  SLTK_RETURN_IF_ERROR(Expression::compile("the running cost f_C", spec.Cost.empty() ? "0" : spec.Cost, all, out.Cost));
+  if (spec.InitialValues.empty())
+  {
+    if (spec.Initial.empty())
+    {
+      return Status::invalidArgument("the initial datum v0 is empty: give a formula in x, y, z or an input field");
+    }
+    SLTK_RETURN_IF_ERROR(Expression::compile("the initial datum v0", spec.Initial, state, out.Initial));
+  }
+  out.HasObstacle = !spec.Obstacle.empty();
+  if (out.HasObstacle)
+  {
+    SLTK_RETURN_IF_ERROR(Expression::compile("the obstacle g", spec.Obstacle, state, out.Obstacle));
+  }
+  out.HasExact = !spec.Exact.empty();
+  if (out.HasExact)
+  {
+    SLTK_RETURN_IF_ERROR(
+      Expression::compile("the exact solution", spec.Exact, slotNames(spec.Dimension, 0, true), out.Exact));
+  }
+  return Status::ok();
+}
+
+template <int D>
+Status buildGrid(const HjbExpressionSpec& spec, GridSpec<D>& grid)
+{
+  for (int a = 0; a < D; ++a)
+  {
+    const Index n = spec.Nodes[static_cast<size_t>(a)];
+    const double lo = spec.Lower[static_cast<size_t>(a)];
+    const double hi = spec.Upper[static_cast<size_t>(a)];
+    if (n < 5 || n > 100000)
+    {
+      return Status::invalidArgument(std::string("the grid has ") + std::to_string(n) + " nodes along " + axisNames[a] +
+        ": use 5 to 100000");
+    }
+    if (!std::isfinite(lo) || !std::isfinite(hi) || !(hi > lo))
+    {
+      return Status::invalidArgument(std::string("the domain along ") + axisNames[a] + " is [" + std::to_string(lo) +
+        ", " + std::to_string(hi) + "]: give finite bounds with lower < upper");
+    }
+    const bool periodic = spec.Bounds[static_cast<size_t>(a)] == Boundary::Periodic;
+    grid.Dims[a] = n;
+    grid.Origin[a] = lo;
+    grid.Spacing[a] = (hi - lo) / static_cast<double>(periodic ? n : n - 1);
+    grid.Bounds[a] = spec.Bounds[static_cast<size_t>(a)];
+  }
+  return grid.validate();
+}
+
+Status checkSizesAndTimes(const HjbExpressionSpec& spec, Index nodes)
+{
+  // u^n, u^{n+1} with ghost layers, the reachable set and the output copies: about 48 bytes a node.
+  const double bytes = 48.0 * static_cast<double>(nodes);
+  const double available = static_cast<double>(availableMemoryBytes());
+  if (available > 0.0 && bytes > available)
+  {
+    return Status::outOfMemory("the grid has " + std::to_string(nodes) + " nodes and needs about " +
+      std::to_string(bytes / 1e9) + " GB, more than the " + std::to_string(available / 1e9) +
+      " GB available: use fewer nodes");
+  }
+  if (!spec.InitialValues.empty())
+  {
+    if (static_cast<Index>(spec.InitialValues.size()) != nodes)
+    {
+      return Status::invalidArgument("the initial field has " + std::to_string(spec.InitialValues.size()) +
+        " values for a grid of " + std::to_string(nodes) + " nodes");
+    }
+    for (size_t k = 0; k < spec.InitialValues.size(); ++k)
+    {
+      if (!std::isfinite(spec.InitialValues[k]))
+      {
+        return Status::invalidArgument("the initial field is not finite at node " + std::to_string(k) +
+          ": fill or crop the NaN/Inf values first");
+      }
+    }
+  }
+  if (!std::isfinite(spec.FinalTime) || spec.FinalTime < 0.0)
+  {
+    return Status::invalidArgument("the final time must be a finite number >= 0, got " + std::to_string(spec.FinalTime));
+  }
+  if (!std::isfinite(spec.CourantNumber) || !(spec.CourantNumber > 0.0))
+  {
+    return Status::invalidArgument(
+      "the Courant number (dt = lambda dx) must be a positive finite number, got " + std::to_string(spec.CourantNumber));
+  }
+  if (!isValidRkOrder(static_cast<int>(spec.Order)))
+  {
+    return Status::invalidArgument("the RK order must be 1, 2 or 3, got " + std::to_string(static_cast<int>(spec.Order)));
+  }
+  const MinimizerOptions& m = spec.Minimizer;
+  if (m.TabulationPoints < 1 || !(m.Tolerance >= 0.0) || m.MaxIterations < 0)
+  {
+    return Status::invalidArgument("minimiser options: tabulation points >= 1, tolerance >= 0 and iterations >= 0 are needed");
+  }
+  return Status::ok();
+}
+
+template <int D>
+Status makeForDimension(const HjbExpressionSpec& spec, SharedHjbExpressions expressions, std::unique_ptr<HjbSolver>& solver)
+{
+  ExpressionSolverInput<D> in;
+  SLTK_RETURN_IF_ERROR(buildGrid<D>(spec, in.Grid));
+  SLTK_RETURN_IF_ERROR(checkSizesAndTimes(spec, in.Grid.nodeCount()));
+  double dx = in.Grid.Spacing[0];
+  for (int a = 1; a < D; ++a)
+  {
+    dx = std::min(dx, in.Grid.Spacing[a]);
+  }
+  in.Options.Order = spec.Order;
+  in.Options.StartTime = 0.0;
+  in.Options.FinalTime = spec.FinalTime;
+  in.Options.MaxTimeStep = spec.CourantNumber * dx;
+  in.Options.Minimizer = spec.Minimizer;
+  in.Dt = in.Options.MaxTimeStep;
+  if (spec.FinalTime > 0.0)
+  {
+    SLTK_RETURN_IF_ERROR(planTimeSteps("the HJB solver", 0.0, spec.FinalTime, in.Options.MaxTimeStep, in.Steps, in.Dt));
+  }
+  in.Reachable = spec.ReachableSet || expressions->HasObstacle;
+  // Pure transport: no minimisation, one unused control slot.
+  in.ControlDimension = spec.Controls == ControlKind::None ? 1 : spec.ControlDimension;
+  in.Expressions = std::move(expressions);
+  return makeExpressionSolverOf<D>(spec, in, solver);
+}
+} // namespace
+
+Status makeExpressionSolver(const HjbExpressionSpec& spec, std::unique_ptr<HjbSolver>& solver)
+{
+  solver.reset();
+  if (spec.Dimension < 1 || spec.Dimension > 3)
+  {
+    return Status::invalidArgument("the dimension must be 1, 2 or 3, got " + std::to_string(spec.Dimension));
+  }
+  if (spec.Controls != ControlKind::None && (spec.ControlDimension < 1 || spec.ControlDimension > 3))
+  {
+    return Status::invalidArgument(
+      "the control dimension must be 1, 2 or 3, got " + std::to_string(spec.ControlDimension));
+  }
+  auto compiled = std::make_shared<CompiledHjbExpressions>();
+  SLTK_RETURN_IF_ERROR(compileAll(spec, *compiled));
+  switch (spec.Dimension)
+  {
+    case 1:
+      return makeForDimension<1>(spec, std::move(compiled), solver);
+    case 2:
+      return makeForDimension<2>(spec, std::move(compiled), solver);
+    default:
+      return makeForDimension<3>(spec, std::move(compiled), solver);
+  }
+}
+
+} // namespace sltk

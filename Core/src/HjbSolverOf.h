@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file HjbSolverOf.h (private)
+/// HjbSolver for one compile-time problem type and interpolator: holds u^k,
+/// the reachable set (3.40) and the work counters, and steps (3.7) with
+/// hjbStep() from u^k to the requested time.
+
+#include "sltk/hjb/HjbError.h"
+#include "sltk/hjb/HjbScheme.h"
+#include "sltk/hjb/HjbSolver.h"
+#include "sltk/interp/Cweno.h"
+#include "sltk/interp/Q1.h"
+#include "sltk/interp/Weno3.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace sltk
+{
+
+template <int D>
+HjbGrid toHjbGrid(const GridSpec<D>& g)
+{
+  HjbGrid p;
+  p.Dimension = D;
+  for (int a = 0; a < D; ++a)
+  {
+    p.Dims[a] = g.Dims[a];
+    p.Origin[a] = g.Origin[a];
+    p.Spacing[a] = g.Spacing[a];
+  }
+  for (int a = D; a < 3; ++a)
+  {
+    p.Spacing[a] = g.Spacing[0];
+  }
+  return p;
+}
+
+template <class Interp, class Problem>
+class HjbSolverOf final : public HjbSolver
+{
+public:
+  static constexpr int D = Problem::Dim;
+
+  /// `initialValues` (x fastest) replaces v_0 when not empty; `exactKnown`
+  /// says whether Problem::Exact may be called.
+  HjbSolverOf(Problem problem, const GridSpec<D>& spec, const HjbOptions& options, Index steps, double dt,
+    bool reachable, bool exactKnown, std::vector<double> initialValues = {})
+    : P(std::move(problem))
+    , Spec(spec)
+    , Options(options)
+    , Grid(toHjbGrid(spec))
+    , Dt(dt)
+    , Steps(steps)
+    , Reachable(reachable)
+    , ExactKnown(exactKnown)
+    , InitialValues(std::move(initialValues))
+  {
+  }
+
+  const HjbGrid& grid() const override { return this->Grid; }
+  double timeStep() const override { return this->Dt; }
+  Index stepCount() const override { return this->Steps; }
+  double startTime() const override { return this->Options.StartTime; }
+  Index stepsDone() const override { return std::max<Index>(this->Done, 0); }
+
+  Status advanceTo(double t, const Context& ctx) override
+  {
+    if (this->Done < 0 || t < this->time() - 1e-9 * this->Dt)
+    {
+      this->reset();
+    }
+    Index target = this->Done;
+    while (target < this->Steps && this->startTime() + static_cast<double>(target + 1) * this->Dt <= t + 1e-9 * this->Dt)
+    {
+      ++target;
+    }
+    if (target == this->Done)
+    {
+      return Status::ok();
+    }
+    Interrupter& progress = ctx.interrupter();
+    progress.start("HJB semi-Lagrangian scheme (3.7)");
+    const Index first = this->Done;
+    Status status;
+    while (this->Done < target)
+    {
+      if (progress.wasInterrupted(static_cast<double>(this->Done - first) / static_cast<double>(target - first)))
+      {
+        status = Status::aborted();
+        break;
+      }
+      const double tNext = this->startTime() + static_cast<double>(this->Done + 1) * this->Dt;
+      status = hjbStep<Interp>(ctx, this->Options, this->P, this->U, this->Next, tNext, this->Dt, &this->Stats);
+      if (status.isOk() || status.code() == StatusCode::NumericalFailure)
+      {
+        std::swap(this->U, this->Next);
+        ++this->Done;
+        if (this->Reachable)
+        {
+          hjbMarkReached<D>(&this->Next, tNext - this->Dt, this->U, this->Reach, tNext); // Next: u^k after the swap
+        }
+      }
+      if (!status.isOk())
+      {
+        break;
+      }
+    }
+    progress.end();
+    return status;
+  }
+
+  void result(HjbRunResult& out) const override
+  {
+    out = HjbRunResult{};
+    out.Grid = this->Grid;
+    out.FinalTime = this->time();
+    out.Steps = this->stepsDone();
+    out.EvaluationsPerNode = this->Stats.evaluationsPerNode();
+    const Index n = this->Spec.nodeCount();
+    out.Value.resize(static_cast<size_t>(n));
+    for (Index k = 0; k < n; ++k)
+    {
+      out.Value[static_cast<size_t>(k)] = this->U(this->U.nodeIndex(k));
+    }
+    if (this->Reachable)
+    {
+      out.ReachTime.resize(static_cast<size_t>(n));
+      for (Index k = 0; k < n; ++k)
+      {
+        out.ReachTime[static_cast<size_t>(k)] = this->Reach(this->Reach.nodeIndex(k));
+      }
+    }
+    if constexpr (Problem::HasExact)
+    {
+      if (this->ExactKnown)
+      {
+        this->errors(out);
+      }
+    }
+  }
+
+private:
+  void reset()
+  {
+    this->U.resize(this->Spec, Interp::GhostWidth);
+    if (this->InitialValues.empty())
+    {
+      hjbInitialize(this->P, this->U);
+    }
+    else
+    {
+      for (Index k = 0; k < this->Spec.nodeCount(); ++k)
+      {
+        const auto i = this->U.nodeIndex(k);
+        double v = this->InitialValues[static_cast<size_t>(k)];
+        if constexpr (Problem::HasObstacle)
+        {
+          v = std::max(v, this->P.Obstacle(nodePoint(this->Spec, i))); // (3.39) at t = 0
+        }
+        this->U(i) = v;
+      }
+    }
+    this->Stats = HjbStats{};
+    this->Done = 0;
+    if (this->Reachable)
+    {
+      this->Reach.resize(this->Spec, 0, NotReached);
+      hjbMarkReached<D>(nullptr, this->startTime(), this->U, this->Reach, this->startTime());
+    }
+  }
+
+  /// L1 (sum |e| dx^D) and max errors against Problem::Exact at the current time.
+  void errors(HjbRunResult& out) const
+  {
+    const double t = this->time();
+    out.L1Error = l1Error(this->U, [&](const std::array<double, D>& x) { return this->P.Exact(t, x); });
+    double worst = 0.0;
+    for (Index k = 0; k < this->Spec.nodeCount(); ++k)
+    {
+      const auto i = this->U.nodeIndex(k);
+      worst = std::max(worst, std::fabs(this->U(i) - this->P.Exact(t, nodePoint(this->Spec, i))));
+    }
+    out.LinfError = worst;
+  }
+
+  Problem P;
+  GridSpec<D> Spec;
+  HjbOptions Options;
+  HjbGrid Grid;
+  double Dt;
+  Index Steps;
+  bool Reachable;
+  bool ExactKnown;
+  std::vector<double> InitialValues;
+  Index Done = -1; ///< -1: u^0 not built yet
+  GridField<D, double> U;
+  GridField<D, double> Next;
+  GridField<D, double> Reach;
+  HjbStats Stats;
+};
+
+/// Builds the solver for the interpolator chosen at run time.
+template <class Problem, class... Args>
+std::unique_ptr<HjbSolver> makeHjbSolverOf(InterpolatorKind kind, Args&&... args)
+{
+  constexpr int D = Problem::Dim;
+  switch (kind)
+  {
+    case InterpolatorKind::Q1:
+      return std::make_unique<HjbSolverOf<Q1Interpolator<D>, Problem>>(std::forward<Args>(args)...);
+    case InterpolatorKind::Weno3:
+      return std::make_unique<HjbSolverOf<Weno3Interpolator<D>, Problem>>(std::forward<Args>(args)...);
+    case InterpolatorKind::Cweno:
+      return std::make_unique<HjbSolverOf<CwenoInterpolator<D>, Problem>>(std::forward<Args>(args)...);
+    case InterpolatorKind::CwenoZ:
+      return std::make_unique<HjbSolverOf<CwenoZInterpolator<D>, Problem>>(std::forward<Args>(args)...);
+  }
+  return nullptr;
+}
+
+} // namespace sltk
