@@ -4,7 +4,8 @@
 find_package(ParaView REQUIRED COMPONENTS RemotingCore)
 set(SLTK_VTK_COMPONENTS
   CommonCore CommonDataModel CommonExecutionModel ParallelCore FiltersCore
-  IOXML IOPLY IOGeometry IOLegacy IOCore)
+  IOXML IOPLY IOGeometry IOLegacy IOCore
+  RenderingCore RenderingOpenGL2 IOImage FiltersGeneral) # the last line: sltk reconstruct --png
 find_package(VTK REQUIRED COMPONENTS ${SLTK_VTK_COMPONENTS})
 string(REPLACE ";" " " SLTK_VTK_COMPONENTS "${SLTK_VTK_COMPONENTS}")
 

@@ -15,21 +15,16 @@ mkdir -p "$out"
 "$repo/Data/fetch-bunny.sh" "$build/data"
 
 echo
-echo "== sltk reconstruct: the Stanford bunny (npm bunny@1.0.1) =="
-"$build/bin/sltk" reconstruct "$build/data/bunny.ply" --kp 10 --cdx 0.5 --runs 2 \
-  -o "$out/bunny-sdf.vti" --surface "$out/bunny-surface.ply" --csv "$out/bunny-convergence.csv" \
-  --json "$out/bunny-summary.json"
-
-echo
-echo "== picture (pvpython under a virtual X server) =="
-# One retry: a virtual X server occasionally fails to start (../shared/TOOLCHAIN.md).
+echo "== sltk reconstruct: the Stanford bunny (npm bunny@1.0.1), with a picture =="
+# The picture renders through X: under a virtual X server, with one retry because one
+# occasionally fails to start (../shared/TOOLCHAIN.md).
 for attempt in 1 2; do
-  if xvfb-run -a -s "-screen 0 1024x768x24" pvpython --force-offscreen-rendering \
-    "$repo/Examples/Python/paraview/render_surface.py" "$out/bunny-surface.ply" "$out/bunny.png" \
-    "$build/data/bunny.ply"; then
+  if xvfb-run -a -s "-screen 0 1024x768x24" "$build/bin/sltk" reconstruct "$build/data/bunny.ply" --kp 10 \
+    --cdx 0.5 --runs 2 -o "$out/bunny-sdf.vti" --surface "$out/bunny-surface.ply" --png "$out/bunny.png" \
+    --csv "$out/bunny-convergence.csv" --json "$out/bunny-summary.json"; then
     break
   fi
-  [ "$attempt" = 2 ] && { echo "run-default: rendering the picture failed" >&2; exit 1; }
+  [ "$attempt" = 2 ] && { echo "run-default: the reconstruction failed" >&2; exit 1; }
 done
 echo
 echo "outputs in $out: bunny-sdf.vti bunny-surface.ply bunny.png bunny-convergence.csv bunny-summary.json"

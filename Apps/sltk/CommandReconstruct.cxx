@@ -5,6 +5,7 @@
 #include "Json.h"
 #include "ProgressBar.h"
 #include "ReadPointCloud.h"
+#include "RenderPng.h"
 #include "SurfaceDistance.h"
 #include "WriteAtomically.h"
 #include "WriteSurface.h"
@@ -41,6 +42,7 @@ schedule of Table 4.1). Clouds with no z extent are reconstructed in 2D.
 options:
   -o, --output FILE.vti   signed distance (and distance to the cloud) on the grid
   --surface FILE          zero level set: .vtp, .ply, .stl (3D) or .vtp (2D)
+  --png FILE              a picture of the surface and the cloud (renders through X: xvfb-run -a without a display)
   --csv FILE              convergence history (run, iteration, energy, change, cloud error, band, time)
   --json FILE             summary: points, seconds, peak_memory_mb, runs [grid, iterations, energy, err_cloud]
   --interpolator NAME     q1 | weno3 | cweno | cwenoz (default weno3)
@@ -105,7 +107,7 @@ int commandReconstruct(const Args& rawArgs)
   }
   Options opt(args,
     { "output", "surface", "csv", "json", "interpolator", "cdx", "kp", "runs", "max-iterations", "initial",
-      "threads", "reference" },
+      "threads", "reference", "png" },
     { "help", "quiet" });
   if (opt.has("help"))
   {
@@ -144,6 +146,15 @@ int commandReconstruct(const Args& rawArgs)
   if (opt.has("surface"))
   {
     const std::string problem = surfaceFormatProblem(opt.value("surface"));
+    if (!problem.empty())
+    {
+      return fail(problem, 2);
+    }
+  }
+
+  if (opt.has("png"))
+  {
+    const std::string problem = pngProblem(opt.value("png"));
     if (!problem.empty())
     {
       return fail(problem, 2);
@@ -256,6 +267,14 @@ int commandReconstruct(const Args& rawArgs)
   if (opt.has("surface"))
   {
     status = writeSurface(opt.value("surface"), surface);
+    if (!status.isOk())
+    {
+      return fail(status.message());
+    }
+  }
+  if (opt.has("png"))
+  {
+    status = renderPng(opt.value("png"), surface, asPolyData(cloud));
     if (!status.isOk())
     {
       return fail(status.message());

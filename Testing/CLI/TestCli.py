@@ -12,8 +12,8 @@ tmp = tempfile.mkdtemp(prefix="sltk-cli-")
 failures = []
 
 
-def run(*args):
-    p = subprocess.run([sltk, *args], capture_output=True, text=True, timeout=300)
+def run(*args, env=None):
+    p = subprocess.run([sltk, *args], capture_output=True, text=True, timeout=300, env=env)
     return p.returncode, p.stdout, p.stderr
 
 
@@ -72,8 +72,16 @@ out_vti = os.path.join(tmp, "sphere.vti")
 out_ply = os.path.join(tmp, "sphere.ply")
 out_json = os.path.join(tmp, "recon.json")
 out_csv = os.path.join(tmp, "recon.csv")
+out_png = os.path.join(tmp, "sphere.png")
+no_display = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
+rc, _, err = run("reconstruct", sphere, "--png", out_png, "-o", out_vti, env=no_display)
+expect(rc == 2 and "xvfb-run" in err and not os.path.exists(out_vti), "--png without a display: usage error first")
+png_args = ["--png", out_png] if os.environ.get("DISPLAY") else []  # scripts/test.sh runs ctest under xvfb-run
 rc, out, err = run("reconstruct", sphere, "--runs", "2", "--interpolator", "q1", "-o", out_vti, "--surface", out_ply,
-                   "--json", out_json, "--csv", out_csv, "--quiet")
+                   "--json", out_json, "--csv", out_csv, "--quiet", *png_args)
+if png_args:
+    expect(rc == 0 and open(out_png, "rb").read(8) == b"\x89PNG\r\n\x1a\n" and os.path.getsize(out_png) > 10000,
+           "--png writes a picture")
 expect(rc == 0, "reconstruct a sphere exits 0 (%s)" % err.strip())
 summary = json.load(open(out_json))
 expect(summary["points"] == 2562 and len(summary["runs"]) == 2, "reconstruct JSON: points and runs")
