@@ -103,6 +103,11 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
   step.Eta = model.Eta;
   step.TimeStep = dx; // (4.36): dt = dx
   step.Widths = BandWidths::forSpacing(dx, options.BetaFactor, options.GammaFactor);
+  // h_P in the unit box: dx = C_dx h_P / 2^(run-1) (4.36).
+  const double cloudSpacing = options.CellSizeFactor > 0.0 ? dx * std::ldexp(1.0, run - 1) / options.CellSizeFactor : dx;
+  step.DetectTunnels = options.DetectTunnels;
+  step.TunnelDistance = 2.0 * dx; // 4.5.6
+  step.TunnelMinDistance = 0.6 * cloudSpacing;
   const double gamma = step.Widths.Gamma;
 
   RunRecord<D> record;
@@ -188,7 +193,7 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     phi.fillGhosts();
     record.CloudError = cloudError<D, Interp>(phi, cloud, ctx);
   }
-  const double spacing = options.CellSizeFactor > 0.0 ? dx * std::ldexp(1.0, run - 1) / options.CellSizeFactor : dx;
+  const double spacing = cloudSpacing;
   if (record.CloudError > 2.0 * spacing)
   {
     std::ostringstream warning;

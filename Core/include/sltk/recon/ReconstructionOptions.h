@@ -76,6 +76,7 @@ struct ReconstructionOptions
     return r;
   }();
   std::uint64_t MemoryBudget = 0;       ///< bytes; 0: the memory available
+  bool DetectTunnels = false;           ///< 4.5.6: follow grad phi where d < 2 dx and |grad d| < 0.5
 
   RunParameters parameters(int run) const
   {
