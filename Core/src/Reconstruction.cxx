@@ -433,8 +433,17 @@ Status reconstruct(const PointCloud<D>& userCloud, const ReconstructionOptions& 
 {
   result = ReconstructionResult<D>{};
   SLTK_RETURN_IF_ERROR(validateCloud(userCloud));
-  const UnitBox<D> box(boundingBox(userCloud));
-  const PointCloud<D> cloud = box.toUnit(userCloud);
+  // Cleaning comes before the unit box (4.5): an outlier would otherwise set its scale.
+  PointCloud<D> cleaned;
+  SLTK_RETURN_IF_ERROR(cleanCloud(userCloud, options.Cleaning, ctx, cleaned, result.Cleaning));
+  const Status valid = validateCloud(cleaned);
+  if (!valid.isOk())
+  {
+    return Status::invalidArgument("after cleaning: " + valid.message() + "; relax outlier removal or thinning");
+  }
+  const UnitBox<D> box(boundingBox(cleaned));
+  const PointCloud<D> cloud = box.toUnit(cleaned);
+  cleaned = PointCloud<D>();
   const Status status = reconstructInUnitBox(cloud, options, ctx, result);
   recordsToUser(box, result);
   return status;

@@ -5,6 +5,7 @@
 
 #include "sltk/grid/GridSpec.h"
 #include "sltk/levelset/ReinitOptions.h"
+#include "sltk/recon/CloudCleaning.h"
 
 #include <vector>
 
@@ -76,6 +77,9 @@ struct ReconstructionOptions
     return r;
   }();
   std::uint64_t MemoryBudget = 0;       ///< bytes; 0: the memory available
+  /// Pre-processing of merged, noisy scans (CloudCleaning.h): off by default, so
+  /// the thesis's clouds are reconstructed as given.
+  CloudCleaningOptions Cleaning;
 
   RunParameters parameters(int run) const
   {
