@@ -2,10 +2,14 @@
 #include "SurfacePieces.h"
 
 #include <vtkCellArray.h>
-#include <vtkExtractEdges.h>
+#include <vtkCellArrayIterator.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataConnectivityFilter.h>
+
+#include <algorithm>
+#include <utility>
+#include <vector>
 
 namespace sltkcli
 {
@@ -22,11 +26,23 @@ SurfaceTopology surfaceTopology(vtkPolyData* surface)
   connectivity->SetExtractionModeToAllRegions();
   connectivity->Update();
   t.Pieces = connectivity->GetNumberOfExtractedRegions();
-  vtkNew<vtkExtractEdges> edges;
-  edges->SetInputData(surface);
-  edges->Update();
-  t.Euler = static_cast<long long>(surface->GetNumberOfPoints()) -
-    static_cast<long long>(edges->GetOutput()->GetNumberOfLines()) +
+  // Undirected polygon edges, counted once each (sorted pairs: cheaper than vtkExtractEdges).
+  std::vector<std::pair<vtkIdType, vtkIdType>> edges;
+  const auto polys = vtk::TakeSmartPointer(surface->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    polys->GetCurrentCell(n, ids);
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const vtkIdType a = ids[k], b = ids[(k + 1) % n];
+      edges.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  const auto unique = std::unique(edges.begin(), edges.end()) - edges.begin();
+  t.Euler = static_cast<long long>(surface->GetNumberOfPoints()) - static_cast<long long>(unique) +
     static_cast<long long>(surface->GetNumberOfPolys());
   return t;
 }

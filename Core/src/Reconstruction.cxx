@@ -248,7 +248,11 @@ template <int D, class Interp>
 Status runAll(const PointCloud<D>& cloud, const ReconstructionOptions& options, const GridPlan<D>& plan,
   const Context& ctx, ReconstructionResult<D>& result)
 {
-  const PointLocator<D> locator(cloud);
+  // Coarser buckets than the locator's default (2 points): the first bands of run 1
+  // lie K_P h_P (4.4.4) from the cloud, where a fine bucket grid makes every
+  // nearest-point query scan thousands of empty buckets (K_P = 16 on merged
+  // scans: run 1 took 40% less time); the distances are the same exact ones.
+  const PointLocator<D> locator(cloud, 16.0);
   ExactDistanceCache<D> exact(cloud, locator);
   GridField<D> phi, previous, dist, previousDist;
   for (int run = 1; run <= options.Runs; ++run)

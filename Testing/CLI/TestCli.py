@@ -119,6 +119,8 @@ clean = json.load(open(clean_json)) if rc == 0 else {}
 expect(rc == 0 and clean.get("outliers_removed") == 1 and 0 < clean.get("points_reconstructed", 0) < 2562 and
        clean.get("thinning_cell", 0) > 0 and clean.get("surface_pieces") == 1 and "outliers removed" in out,
        "--remove-outliers --thin: counts in the summary (%s)" % err.strip())
+rc, out, err = run("info", stray, "--remove-outliers", "--thin", "1.5")
+expect(rc == 0 and "1 outliers removed" in out and "density" in out, "info reports the cleaned cloud: " + err.strip())
 rc, _, err = run("reconstruct", sphere, "--thin", "-1")
 expect(rc == 2 and "--thin" in err, "a negative --thin is a usage error")
 rc, _, err = run("reconstruct", sphere, "--outlier-sigma", "2")
