@@ -65,6 +65,15 @@ sltk::ReconstructionOptions optionsOf(vtkSLLevelSetReconstruct* self)
   o.Tolerance = self->GetTolerance();
   o.Interpolator = static_cast<sltk::InterpolatorKind>(self->GetInterpolator());
   o.Guess = static_cast<sltk::InitialGuess>(self->GetInitialGuess());
+  if (self->GetFinalEta() != sltk::table41(3).Eta)
+  {
+    // Table 4.1 with eta of runs >= 3 replaced (noisy data: Fig. 4.8, 4.11).
+    o.Schedule = { sltk::table41(1), sltk::table41(2), { sltk::table41(3).P, self->GetFinalEta() } };
+  }
+  o.Cleaning.RemoveOutliers = self->GetRemoveOutliers();
+  o.Cleaning.Outliers.Deviations = self->GetOutlierDeviations();
+  o.Cleaning.ThinningFactor = self->GetThinningFactor();
+  o.DetectTunnels = self->GetDetectTunnels();
   return o;
 }
 
@@ -164,4 +173,9 @@ void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Padding: " << this->Padding << "\n";
   os << indent << "InitialGuess: " << this->InitialGuess << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "FinalEta: " << this->FinalEta << "\n";
+  os << indent << "RemoveOutliers: " << this->RemoveOutliers << "\n";
+  os << indent << "DetectTunnels: " << this->DetectTunnels << "\n";
+  os << indent << "OutlierDeviations: " << this->OutlierDeviations << "\n";
+  os << indent << "ThinningFactor: " << this->ThinningFactor << "\n";
 }

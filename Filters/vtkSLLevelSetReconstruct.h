@@ -102,6 +102,39 @@ public:
   ///@}
 
   ///@{
+  /// eta of the runs r >= 3 (Table 4.1: 1). Larger values smooth noisy data
+  /// (thesis Fig. 4.8, 4.11). Default 1, range 0-100.
+  vtkSetClampMacro(FinalEta, double, 0.0, 100.0);
+  vtkGetMacro(FinalEta, double);
+  ///@}
+
+  ///@{
+  /// Pre-processing of merged range scans (sltk/recon/CloudCleaning.h), off by
+  /// default. RemoveOutliers drops points whose mean distance to their 8 nearest
+  /// neighbours exceeds the mean by OutlierDeviations standard deviations
+  /// (default 3, range 0.5-100). ThinningFactor > 0 replaces the points of each
+  /// voxel (edge ThinningFactor times the density spacing) by their mean
+  /// (default 0: no thinning, range 0-100). The field data of port 0 report
+  /// InputPoints, OutliersRemoved, ThinningCell and ReconstructedPoints.
+  vtkSetMacro(RemoveOutliers, bool);
+  vtkGetMacro(RemoveOutliers, bool);
+  vtkBooleanMacro(RemoveOutliers, bool);
+  vtkSetClampMacro(OutlierDeviations, double, 0.5, 100.0);
+  vtkGetMacro(OutlierDeviations, double);
+  vtkSetClampMacro(ThinningFactor, double, 0.0, 100.0);
+  vtkGetMacro(ThinningFactor, double);
+  ///@}
+
+  ///@{
+  /// Tunnel detection (thesis 4.5.6): where 0.6 h_P < d < 2 dx and |grad d| < 0.5,
+  /// follow grad phi instead of grad d, so that the front goes down long narrow
+  /// holes (two close sheets of points) instead of stopping at their mouth. Default off.
+  vtkSetMacro(DetectTunnels, bool);
+  vtkGetMacro(DetectTunnels, bool);
+  vtkBooleanMacro(DetectTunnels, bool);
+  ///@}
+
+  ///@{
   /// Threads used by the solver; 0 means all hardware threads. Default 0.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
@@ -125,6 +158,11 @@ protected:
   int Padding = 10;
   int InitialGuess = OUTSIDE_MARKING;
   int NumberOfThreads = 0;
+  double FinalEta = 1.0;
+  bool RemoveOutliers = false;
+  double OutlierDeviations = 3.0;
+  double ThinningFactor = 0.0;
+  bool DetectTunnels = false;
 
 private:
   vtkSLLevelSetReconstruct(const vtkSLLevelSetReconstruct&) = delete;

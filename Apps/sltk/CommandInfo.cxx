@@ -7,6 +7,7 @@
 
 #include "sltk/exec/Context.h"
 #include "sltk/exec/Memory.h"
+#include "sltk/recon/CloudCleaning.h"
 #include "sltk/recon/CloudSpacing.h"
 #include "sltk/recon/GridPlan.h"
 
@@ -24,12 +25,16 @@ const char* infoUsage = R"(usage: sltk info CLOUD [options]
 Reads a point cloud, checks it (empty, NaN/Inf, coincident, flat, huge offsets),
 and prints its size, bounding box, resolution h_P (mean nearest-neighbour
 distance of a 10% sample, thesis 4.5.2) and the grid of each reconstruction run,
-dx = C_dx h_P / 2^(r-1) (4.36), with its memory estimate.
+dx = C_dx h_P / 2^(r-1) (4.36), with its memory estimate. Also prints the density
+spacing (r_16 sqrt(pi/16)): well below it, h_P suggests merged, overlapping scans
+(see --thin). With the cleaning options, all of it is for the cleaned cloud, as
+`sltk reconstruct` with the same options would use it.
 
 options:
   --runs R        number of runs (default 3)
   --cdx C         C_dx of (4.36) (default 1, the thesis's)
   --padding P     empty cells around the cloud per side (default 10)
+  --remove-outliers, --outlier-sigma S, --thin F   as for sltk reconstruct
   --threads T     threads (default: all)
   --json FILE     also write the summary as JSON
 )";
@@ -37,7 +42,8 @@ options:
 
 int commandInfo(const Args& args)
 {
-  Options opt(args, { "runs", "cdx", "padding", "threads", "json" }, { "help" });
+  Options opt(args, { "runs", "cdx", "padding", "threads", "json", "outlier-sigma", "thin" },
+    { "help", "remove-outliers" });
   if (opt.has("help"))
   {
     std::cout << infoUsage;
@@ -48,6 +54,10 @@ int commandInfo(const Args& args)
   plan.CellSizeFactor = opt.number("cdx", 1.0);
   plan.Padding = static_cast<int>(opt.number("padding", 10));
   const int threads = static_cast<int>(opt.number("threads", 0));
+  sltk::CloudCleaningOptions cleaning;
+  cleaning.RemoveOutliers = opt.has("remove-outliers");
+  cleaning.Outliers.Deviations = opt.number("outlier-sigma", 3.0);
+  cleaning.ThinningFactor = opt.number("thin", 0.0);
   if (!opt.ok())
   {
     return fail(opt.error(), 2);
@@ -72,8 +82,24 @@ int commandInfo(const Args& args)
   sltk::ThreadPool pool(threads);
   sltk::Context ctx;
   ctx.Executor = &pool;
-  double spacing = 0.0;
-  status = sltk::cloudSpacing(cloud, ctx, spacing);
+  const std::int64_t read = cloud.size();
+  sltk::CloudCleaningReport cleaned;
+  status = sltk::cleanCloud(cloud, cleaning, ctx, cloud, cleaned);
+  if (status.isOk())
+  {
+    status = sltk::validateCloud(cloud);
+  }
+  double spacing = 0.0, density = 0.0;
+  sltk::CloudSpacingOptions densityOptions;
+  densityOptions.DensityNeighbours = cleaning.DensityNeighbours;
+  if (status.isOk())
+  {
+    status = sltk::cloudSpacing(cloud, ctx, spacing);
+  }
+  if (status.isOk() && cloud.size() > densityOptions.DensityNeighbours)
+  {
+    status = sltk::cloudSpacing(cloud, ctx, density, densityOptions);
+  }
   const auto box = sltk::boundingBox(cloud);
   sltk::GridPlan<3> grids;
   if (status.isOk())
@@ -87,10 +113,16 @@ int commandInfo(const Args& args)
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::printf("cloud        %s\n", path.c_str());
-  std::printf("points       %lld\n", static_cast<long long>(cloud.size()));
+  std::printf("points       %lld\n", static_cast<long long>(read));
+  if (cleaning.RemoveOutliers || cleaning.ThinningFactor > 0.0)
+  {
+    std::printf("cleaned      %lld points (%lld outliers removed, thinning cell %.4g)\n",
+      static_cast<long long>(cloud.size()), static_cast<long long>(cleaned.OutliersRemoved), cleaned.ThinningCell);
+  }
   std::printf("bounds       [%.6g, %.6g] x [%.6g, %.6g] x [%.6g, %.6g]\n", box.Min[0], box.Max[0], box.Min[1],
     box.Max[1], box.Min[2], box.Max[2]);
   std::printf("h_P          %.6g   (C_dx = %g, padding %d cells)\n", spacing, plan.CellSizeFactor, plan.Padding);
+  std::printf("density      %.6g   (spacing from the 16-neighbour radius)\n", density);
   std::printf("\n run        dx          grid            nodes    memory (est.)\n");
   std::vector<JsonObject> runs;
   for (size_t r = 0; r < grids.Runs.size(); ++r)
@@ -111,8 +143,11 @@ int commandInfo(const Args& args)
   {
     JsonObject summary;
     summary.add("cloud", path)
-      .add("points", static_cast<long long>(cloud.size()))
+      .add("points", static_cast<long long>(read))
+      .add("points_cleaned", static_cast<long long>(cloud.size()))
+      .add("outliers_removed", static_cast<long long>(cleaned.OutliersRemoved))
       .add("h_P", spacing)
+      .add("density_spacing", density)
       .add("seconds", seconds)
       .add("peak_memory_mb", static_cast<double>(sltk::peakResidentBytes()) / 1e6)
       .add("runs", runs);

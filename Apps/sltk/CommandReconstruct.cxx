@@ -7,6 +7,7 @@
 #include "ReadPointCloud.h"
 #include "RenderPng.h"
 #include "SurfaceDistance.h"
+#include "SurfacePieces.h"
 #include "WriteAtomically.h"
 #include "WriteSurface.h"
 
@@ -17,6 +18,7 @@
 #include <vtkDelimitedTextWriter.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
+#include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -44,17 +46,25 @@ options:
   --surface FILE          zero level set: .vtp, .ply, .stl (3D) or .vtp (2D)
   --png FILE              a picture of the surface and the cloud (renders through X: xvfb-run -a without a display)
   --csv FILE              convergence history (run, iteration, energy, change, cloud error, band, time)
-  --json FILE             summary: points, seconds, peak_memory_mb, runs [grid, iterations, energy, err_cloud]
+  --json FILE             summary: points, points_reconstructed, outliers_removed, seconds, peak_memory_mb,
+                          surface_pieces, euler_characteristic, runs [grid, iterations, energy, err_cloud]
   --interpolator NAME     q1 | weno3 | cweno | cwenoz (default weno3)
   --cdx C                 C_dx of (4.36): first-run cell size in units of h_P (default 1)
   --kp K                  K_P: initial surface at K h_P from the cloud (default 2; 10 for scans with holes)
   --runs R                runs, each halving the cell size (default 3)
   --max-iterations N      iteration cap per run (default 100)
   --initial NAME          outside | sphere | ellipsoid (default outside)
+  --eta E                 eta of runs >= 3 (Table 4.1: 1); larger smooths noisy scans (thesis Fig. 4.8)
+  --detect-tunnels        follow grad phi through long narrow holes instead of plugging them (4.5.6)
+  --remove-outliers       drop points whose mean distance to 8 neighbours is above mean + S sigma
+  --outlier-sigma S       the S of --remove-outliers (default 3)
+  --thin F                average the points in voxels of F x the density spacing (merged, overlapping
+                          scans: h_P (4.36) is then taken on the thinned cloud); 0 = off (default)
   --threads T             threads (default: all)
   --reference MESH        add Chamfer and Hausdorff distances to a reference surface (.off .ply .obj .stl .vtp)
                           to the summary: Chamfer = (mean d(result->ref) + mean d(ref->result)) / 2
   --quiet                 no progress bar
+  --verbose               the solver's log (cleaning counts, grids, per-run phase times) on stderr
 )";
 
 int interpolatorCode(const std::string& name)
@@ -107,8 +117,8 @@ int commandReconstruct(const Args& rawArgs)
   }
   Options opt(args,
     { "output", "surface", "csv", "json", "interpolator", "cdx", "kp", "runs", "max-iterations", "initial",
-      "threads", "reference", "png" },
-    { "help", "quiet" });
+      "threads", "reference", "png", "eta", "outlier-sigma", "thin" },
+    { "help", "quiet", "remove-outliers", "verbose", "detect-tunnels" });
   if (opt.has("help"))
   {
     std::cout << reconstructUsage;
@@ -119,6 +129,9 @@ int commandReconstruct(const Args& rawArgs)
   const double runs = opt.number("runs", 3);
   const double iterations = opt.number("max-iterations", 100);
   const double threads = opt.number("threads", 0);
+  const double eta = opt.number("eta", 1.0);
+  const double sigma = opt.number("outlier-sigma", 3.0);
+  const double thin = opt.number("thin", 0.0);
   if (!opt.ok())
   {
     return fail(opt.error(), 2);
@@ -142,6 +155,14 @@ int commandReconstruct(const Args& rawArgs)
   {
     return fail("out of range: --cdx 0.05..100, --kp 0.1..100, --runs 1..6, --max-iterations >= 1, --threads >= 0",
       2);
+  }
+  if (!(eta >= 0 && eta <= 100) || !(sigma >= 0.5 && sigma <= 100) || !(thin >= 0 && thin <= 100))
+  {
+    return fail("out of range: --eta 0..100, --outlier-sigma 0.5..100, --thin 0..100", 2);
+  }
+  if (opt.has("outlier-sigma") && !opt.has("remove-outliers"))
+  {
+    return fail("--outlier-sigma needs --remove-outliers", 2);
   }
   if (opt.has("surface"))
   {
@@ -179,6 +200,10 @@ int commandReconstruct(const Args& rawArgs)
   {
     return fail(status.message());
   }
+  if (opt.has("verbose"))
+  {
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_INFO);
+  }
   vtkNew<vtkSLLevelSetReconstruct> filter;
   vtkNew<ErrorCollector> errors;
   filter->AddObserver(vtkCommand::ErrorEvent, errors);
@@ -195,6 +220,11 @@ int commandReconstruct(const Args& rawArgs)
   filter->SetMaximumNumberOfIterations(static_cast<int>(iterations));
   filter->SetInitialGuess(guess);
   filter->SetNumberOfThreads(static_cast<int>(threads));
+  filter->SetFinalEta(eta);
+  filter->SetRemoveOutliers(opt.has("remove-outliers"));
+  filter->SetOutlierDeviations(sigma);
+  filter->SetThinningFactor(thin);
+  filter->SetDetectTunnels(opt.has("detect-tunnels"));
   filter->Update();
   bar->finish();
   if (!errors->Message.empty())
@@ -216,6 +246,14 @@ int commandReconstruct(const Args& rawArgs)
   auto* runSeconds = fd->GetArray("RunSeconds");
   std::printf("cloud      %s (%zu points, h_P = %.6g)\n", path.c_str(), cloud.Points.size(),
     fd->GetArray("CloudSpacing")->GetTuple1(0));
+  const auto fieldValue = [fd](const char* name) { return fd->GetArray(name)->GetTuple1(0); };
+  const long long reconstructed = static_cast<long long>(fieldValue("ReconstructedPoints"));
+  const long long outliers = static_cast<long long>(fieldValue("OutliersRemoved"));
+  if (opt.has("remove-outliers") || thin > 0.0)
+  {
+    std::printf("cleaning   %lld outliers removed, thinning cell %.4g: %lld points reconstructed\n", outliers,
+      fieldValue("ThinningCell"), reconstructed);
+  }
   std::printf("\n run            grid   iterations      energy E_2     Err_P        time\n");
   std::vector<JsonObject> runRecords;
   for (vtkIdType r = 0; r < grids->GetNumberOfTuples(); ++r)
@@ -241,8 +279,10 @@ int commandReconstruct(const Args& rawArgs)
       "larger --kp (scans with holes), a smaller --cdx or --initial sphere\n",
       finalError / hP);
   }
-  std::printf("\nsurface    %lld points, %lld cells\n", static_cast<long long>(surface->GetNumberOfPoints()),
-    static_cast<long long>(surface->GetNumberOfCells()));
+  const SurfaceTopology topology = surfaceTopology(surface);
+  std::printf("\nsurface    %lld points, %lld cells, %lld piece(s), Euler characteristic %lld\n",
+    static_cast<long long>(surface->GetNumberOfPoints()), static_cast<long long>(surface->GetNumberOfCells()),
+    topology.Pieces, topology.Euler);
   std::printf("total      %.2f s, peak memory %.0f MB\n", seconds, peakMb);
   SurfaceDistances distances;
   if (opt.has("reference"))
@@ -300,10 +340,15 @@ int commandReconstruct(const Args& rawArgs)
     JsonObject summary;
     summary.add("cloud", path)
       .add("points", static_cast<long long>(cloud.Points.size()))
+      .add("outliers_removed", outliers)
+      .add("thinning_cell", fieldValue("ThinningCell"))
+      .add("points_reconstructed", reconstructed)
       .add("h_P", fd->GetArray("CloudSpacing")->GetTuple1(0))
       .add("seconds", seconds)
       .add("peak_memory_mb", peakMb)
       .add("surface_points", static_cast<long long>(surface->GetNumberOfPoints()))
+      .add("surface_pieces", topology.Pieces)
+      .add("euler_characteristic", topology.Euler)
       .add("runs", runRecords);
     if (opt.has("reference"))
     {

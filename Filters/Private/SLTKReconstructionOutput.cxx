@@ -13,6 +13,8 @@
 #include "vtkPolyData.h"
 #include "vtkTable.h"
 
+#include <utility>
+
 namespace sltk
 {
 namespace vtkbridge
@@ -88,6 +90,20 @@ void runSummary(const ReconstructionResult<D>& result, vtkImageData* image)
     seconds->InsertNextValue(run.Seconds);
   }
   vtkFieldData* fd = image->GetFieldData();
+  // The pre-processing (CloudCleaning.h): counts as doubles (exact below 2^53).
+  const std::pair<const char*, double> cleaning[4] = {
+    { "InputPoints", static_cast<double>(result.Cleaning.InputPoints) },
+    { "OutliersRemoved", static_cast<double>(result.Cleaning.OutliersRemoved) },
+    { "ThinningCell", result.Cleaning.ThinningCell },
+    { "ReconstructedPoints", static_cast<double>(result.Cleaning.OutputPoints) },
+  };
+  for (const auto& entry : cleaning)
+  {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(entry.first);
+    a->InsertNextValue(entry.second);
+    fd->AddArray(a);
+  }
   fd->AddArray(spacing);
   fd->AddArray(grids);
   fd->AddArray(iterations);

@@ -114,6 +114,27 @@ rc, out, err = run("reconstruct", sphere, "--runs", "2", "--interpolator", "q1",
 ref = json.load(open(ref_json)) if rc == 0 else {}
 expect(rc == 0 and 0 < ref.get("chamfer", 1) < 0.005 and ref.get("hausdorff", 1) < 0.05,
        "Chamfer/Hausdorff to the exact sphere are small (%s)" % {k: ref.get(k) for k in ("chamfer", "hausdorff")})
+expect(ref.get("surface_pieces") == 1 and ref.get("euler_characteristic") == 2 and ref.get("outliers_removed") == 0,
+       "JSON: one closed piece (%s)" % {k: ref.get(k) for k in ("surface_pieces", "euler_characteristic")})
+# Cleaning: a stray point far from the sphere is removed, thinning merges points.
+stray = os.path.join(tmp, "stray.xyz")
+with open(stray, "w") as f:
+    f.write(open(sphere).read() + "3.0 0.5 -0.2\n")
+clean_json = os.path.join(tmp, "clean.json")
+rc, out, err = run("reconstruct", stray, "--runs", "1", "--interpolator", "q1", "--remove-outliers", "--thin", "1.5",
+                   "--json", clean_json, "--quiet")
+clean = json.load(open(clean_json)) if rc == 0 else {}
+expect(rc == 0 and clean.get("outliers_removed") == 1 and 0 < clean.get("points_reconstructed", 0) < 2562 and
+       clean.get("thinning_cell", 0) > 0 and clean.get("surface_pieces") == 1 and "outliers removed" in out,
+       "--remove-outliers --thin: counts in the summary (%s)" % err.strip())
+rc, out, err = run("info", stray, "--remove-outliers", "--thin", "1.5")
+expect(rc == 0 and "1 outliers removed" in out and "density" in out, "info reports the cleaned cloud: " + err.strip())
+rc, _, err = run("reconstruct", sphere, "--thin", "-1")
+expect(rc == 2 and "--thin" in err, "a negative --thin is a usage error")
+rc, _, err = run("reconstruct", sphere, "--outlier-sigma", "2")
+expect(rc == 2 and "--remove-outliers" in err, "--outlier-sigma alone is a usage error")
+rc, _, err = run("reconstruct", sphere, "--thin", "100", "--quiet")
+expect(rc == 1 and "after cleaning" in err, "thinning to a handful of points is a clear error: " + err.strip())
 rc, _, err = run("reconstruct", sphere, "--reference", sphere)
 expect(rc == 1 and "unsupported reference mesh" in err, "a point file is not a reference mesh: " + err.strip())
 

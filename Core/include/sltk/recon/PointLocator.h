@@ -30,10 +30,20 @@ public:
   /// Nearest cloud point to x, skipping the point with index `exclude` (-1: none).
   Hit nearest(const std::array<double, D>& x, std::int64_t exclude = -1) const;
 
+  /// The k nearest cloud points to x, nearest first (ties by index), skipping
+  /// `exclude`; fewer when the cloud has fewer other points. `hits` is reused.
+  void nearest(const std::array<double, D>& x, int k, std::int64_t exclude, std::vector<Hit>& hits) const;
+
   double bucketSize() const { return this->Size; }
 
 private:
   std::int64_t bucketOf(const std::array<std::int64_t, D>& b) const;
+
+  /// Ring search around x: visit(q, d) for every point q != exclude in rings of
+  /// buckets until reach() (the current search radius, +inf while unknown) is
+  /// no farther than the next ring.
+  template <class Visit, class Reach>
+  void search(const std::array<double, D>& x, std::int64_t exclude, Visit&& visit, Reach&& reach) const;
 
   const PointCloud<D>* Cloud;
   Box<D> Bounds;

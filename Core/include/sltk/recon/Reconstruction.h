@@ -27,12 +27,15 @@ struct ReconstructionResult
 {
   GridField<D> SignedDistance;       ///< phi of the last run (negative inside), cut at +-gamma far away
   GridField<D> Distance;             ///< d of the last run (4.4.2)
-  double CloudSpacing = 0.0;         ///< h_P
+  double CloudSpacing = 0.0;         ///< h_P (of the cleaned cloud)
+  CloudCleaningReport Cleaning;      ///< what the pre-processing removed and merged
   std::vector<RunRecord<D>> Runs;
   std::vector<IterationRecord> History;
 };
 
-/// Runs Algorithm 1. The cloud is validated first; grids beyond the memory
+/// Runs Algorithm 1. The cloud is validated first, then cleaned when
+/// options.Cleaning asks for it (CloudCleaning.h; Err_P (4.35) is measured on
+/// the cleaned cloud) and validated again; grids beyond the memory
 /// budget are refused before anything is allocated. Progress goes to the
 /// context's interrupter (abort: Status aborted, result holds what was done).
 template <int D>

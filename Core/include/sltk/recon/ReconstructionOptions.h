@@ -5,6 +5,7 @@
 
 #include "sltk/grid/GridSpec.h"
 #include "sltk/levelset/ReinitOptions.h"
+#include "sltk/recon/CloudCleaning.h"
 
 #include <vector>
 
@@ -76,7 +77,10 @@ struct ReconstructionOptions
     return r;
   }();
   std::uint64_t MemoryBudget = 0;       ///< bytes; 0: the memory available
-  bool DetectTunnels = false;           ///< 4.5.6: follow grad phi where d < 2 dx and |grad d| < 0.5
+  bool DetectTunnels = false;           ///< 4.5.6: follow grad phi where 0.6 h_P < d < 2 dx and |grad d| < 0.5
+  /// Pre-processing of merged, noisy scans (CloudCleaning.h): off by default, so
+  /// the thesis's clouds are reconstructed as given.
+  CloudCleaningOptions Cleaning;
 
   RunParameters parameters(int run) const
   {

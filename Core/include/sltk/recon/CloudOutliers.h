@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file CloudOutliers.h
+/// Statistical outlier removal, a pre-processing step before Algorithm 1 for
+/// real scans: the model (4.9) attracts the surface to every point of P, so a
+/// stray point far from the object pulls a spike (or a separate piece) out of
+/// the surface, and it inflates the bounding box that fixes the unit-box
+/// rescaling (4.5) and the grids (4.36).
+///
+/// For every point Q, m(Q) is the mean distance to its k nearest neighbours;
+/// Q is an outlier when m(Q) > mean(m) + s * std(m) over the cloud.
+
+#include "sltk/exec/Context.h"
+#include "sltk/recon/PointCloud.h"
+
+namespace sltk
+{
+
+struct OutlierOptions
+{
+  int Neighbours = 8;        ///< k
+  double Deviations = 3.0;   ///< s: the threshold in standard deviations above the mean
+};
+
+struct OutlierReport
+{
+  std::int64_t Removed = 0;
+  double MeanNeighbourDistance = 0.0; ///< mean of m(Q) over the cloud
+  double Threshold = 0.0;             ///< mean + s std
+};
+
+/// Copies the points of `cloud` that are not outliers into `kept`, in their
+/// order. Deterministic (independent of the number of threads). Clouds with
+/// at most k points are copied unchanged.
+template <int D>
+Status removeOutliers(const PointCloud<D>& cloud, const OutlierOptions& options, const Context& ctx,
+  PointCloud<D>& kept, OutlierReport& report);
+
+extern template Status removeOutliers(
+  const PointCloud<2>&, const OutlierOptions&, const Context&, PointCloud<2>&, OutlierReport&);
+extern template Status removeOutliers(
+  const PointCloud<3>&, const OutlierOptions&, const Context&, PointCloud<3>&, OutlierReport&);
+
+} // namespace sltk
