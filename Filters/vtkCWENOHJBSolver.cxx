@@ -34,8 +34,13 @@ vtkCWENOHJBSolver::vtkCWENOHJBSolver()
 
 vtkCWENOHJBSolver::~vtkCWENOHJBSolver()
 {
-  for (char** text : { &this->DynamicsX, &this->DynamicsY, &this->DynamicsZ, &this->RunningCost,
-         &this->InitialValue, &this->Obstacle, &this->ExactSolution })
+  for (char** text : { &this->DynamicsX,
+         &this->DynamicsY,
+         &this->DynamicsZ,
+         &this->RunningCost,
+         &this->InitialValue,
+         &this->Obstacle,
+         &this->ExactSolution })
   {
     delete[] * text;
     *text = nullptr;
@@ -70,7 +75,8 @@ sltk::Status gridFromImage(vtkInformation* inInfo, sltk::HjbExpressionSpec& spec
     const int n = extent[2 * a + 1] - extent[2 * a] + 1;
     if (n > 1 && spec.Dimension != a)
     {
-      return sltk::Status::invalidArgument("the input image must span x, then y, then z (its extent has one node along an earlier axis)");
+      return sltk::Status::invalidArgument(
+        "the input image must span x, then y, then z (its extent has one node along an earlier axis)");
     }
     spec.Dimension += n > 1 ? 1 : 0;
     spec.Nodes[a] = n;
@@ -108,13 +114,15 @@ sltk::Status valuesFromImage(vtkImageData* image, sltk::HjbExpressionSpec& spec)
 }
 
 /// The block `extent` of a whole-grid node array (x fastest); +inf (never reached) becomes -1.
-vtkSmartPointer<vtkDoubleArray> block(
-  const std::vector<double>& values, const sltk::HjbGrid& grid, const int extent[6], const char* name)
+vtkSmartPointer<vtkDoubleArray> block(const std::vector<double>& values,
+  const sltk::HjbGrid& grid,
+  const int extent[6],
+  const char* name)
 {
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
   array->SetName(name);
-  array->SetNumberOfTuples(static_cast<vtkIdType>(extent[1] - extent[0] + 1) * (extent[3] - extent[2] + 1) *
-    (extent[5] - extent[4] + 1));
+  array->SetNumberOfTuples(
+    static_cast<vtkIdType>(extent[1] - extent[0] + 1) * (extent[3] - extent[2] + 1) * (extent[5] - extent[4] + 1));
   vtkIdType id = 0;
   for (int k = extent[4]; k <= extent[5]; ++k)
   {
@@ -139,7 +147,9 @@ void addScalar(vtkFieldData* fd, const char* name, double value)
 }
 } // namespace
 
-int vtkCWENOHJBSolver::BuildSolver(vtkInformation* inInfo, vtkImageData* values, std::unique_ptr<sltk::HjbSolver>& solver)
+int vtkCWENOHJBSolver::BuildSolver(vtkInformation* inInfo,
+  vtkImageData* values,
+  std::unique_ptr<sltk::HjbSolver>& solver)
 {
   sltk::Status status;
   if (this->Preset != CUSTOM)
@@ -214,10 +224,12 @@ int vtkCWENOHJBSolver::BuildSolver(vtkInformation* inInfo, vtkImageData* values,
   return 1;
 }
 
-int vtkCWENOHJBSolver::RequestInformation(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkCWENOHJBSolver::RequestInformation(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
-  vtkInformation* inInfo = inputVector[0]->GetNumberOfInformationObjects() > 0 ? inputVector[0]->GetInformationObject(0) : nullptr;
+  vtkInformation* inInfo =
+    inputVector[0]->GetNumberOfInformationObjects() > 0 ? inputVector[0]->GetInformationObject(0) : nullptr;
   std::unique_ptr<sltk::HjbSolver> plan;
   if (!this->BuildSolver(this->Preset == CUSTOM ? inInfo : nullptr, nullptr, plan))
   {
@@ -243,8 +255,7 @@ int vtkCWENOHJBSolver::RequestInformation(
   return 1;
 }
 
-int vtkCWENOHJBSolver::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+int vtkCWENOHJBSolver::RequestUpdateExtent(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   if (inputVector[0]->GetNumberOfInformationObjects() > 0)
   {
@@ -258,10 +269,12 @@ int vtkCWENOHJBSolver::RequestUpdateExtent(
   return 1;
 }
 
-int vtkCWENOHJBSolver::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkCWENOHJBSolver::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
-  vtkInformation* inInfo = inputVector[0]->GetNumberOfInformationObjects() > 0 ? inputVector[0]->GetInformationObject(0) : nullptr;
+  vtkInformation* inInfo =
+    inputVector[0]->GetNumberOfInformationObjects() > 0 ? inputVector[0]->GetInformationObject(0) : nullptr;
   vtkImageData* input = inInfo ? vtkImageData::GetData(inInfo) : nullptr;
   const bool custom = this->Preset == CUSTOM;
   vtkMTimeType key = this->GetMTime();
@@ -337,7 +350,8 @@ void vtkCWENOHJBSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InitialValue: " << text(this->InitialValue) << "\n";
   os << indent << "Obstacle: " << text(this->Obstacle) << "\n";
   os << indent << "ExactSolution: " << text(this->ExactSolution) << "\n";
-  os << indent << "Dimensions: " << this->Dimensions[0] << " " << this->Dimensions[1] << " " << this->Dimensions[2] << "\n";
+  os << indent << "Dimensions: " << this->Dimensions[0] << " " << this->Dimensions[1] << " " << this->Dimensions[2]
+     << "\n";
   os << indent << "ControlSet: " << this->ControlSet << " (dimension " << this->ControlDimension << ")\n";
   os << indent << "RKOrder: " << this->RKOrder << "\n";
   os << indent << "TabulationPoints: " << this->TabulationPoints << "\n";

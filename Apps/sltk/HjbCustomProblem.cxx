@@ -33,9 +33,25 @@ example (thesis Test 4): sltk hjb --fx=-a1 --fy=-a2 --cost "(a1^2+a2^2)/2" --v0 
 
 const std::vector<std::string>& hjbCustomOptionNames()
 {
-  static const std::vector<std::string> names = { "fx", "fy", "fz", "cost", "v0", "obstacle", "exact", "nodes",
-    "domain", "periodic", "controls", "control-dim", "control-lower", "control-upper", "control-center",
-    "control-radius", "rk", "tabulation", "tolerance" };
+  static const std::vector<std::string> names = { "fx",
+    "fy",
+    "fz",
+    "cost",
+    "v0",
+    "obstacle",
+    "exact",
+    "nodes",
+    "domain",
+    "periodic",
+    "controls",
+    "control-dim",
+    "control-lower",
+    "control-upper",
+    "control-center",
+    "control-radius",
+    "rk",
+    "tabulation",
+    "tolerance" };
   return names;
 }
 

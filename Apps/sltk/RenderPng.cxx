@@ -82,13 +82,15 @@ sltk::Status renderPng(const std::string& path, vtkPolyData* surface, vtkPolyDat
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->Update();
-  return writeAtomically(path, [&](const std::string& temporary) {
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetInputConnection(grab->GetOutputPort());
-    writer->SetFileName(temporary.c_str());
-    writer->Write();
-    return writer->GetErrorCode() == 0;
-  });
+  return writeAtomically(path,
+    [&](const std::string& temporary)
+    {
+      vtkNew<vtkPNGWriter> writer;
+      writer->SetInputConnection(grab->GetOutputPort());
+      writer->SetFileName(temporary.c_str());
+      writer->Write();
+      return writer->GetErrorCode() == 0;
+    });
 }
 
 } // namespace sltkcli

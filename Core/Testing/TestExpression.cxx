@@ -36,8 +36,8 @@ TEST(Expression, ArithmeticAndPrecedence)
 {
   EXPECT_EQ(eval("1 + 2 * 3"), 7.0);
   EXPECT_EQ(eval("(1 + 2) * 3"), 9.0);
-  EXPECT_EQ(eval("-2^2"), -4.0);      // power binds tighter than unary minus
-  EXPECT_EQ(eval("2^3^2"), 512.0);    // right-associative
+  EXPECT_EQ(eval("-2^2"), -4.0);   // power binds tighter than unary minus
+  EXPECT_EQ(eval("2^3^2"), 512.0); // right-associative
   EXPECT_EQ(eval("2**3"), 8.0);
   EXPECT_EQ(eval("2^-1"), 0.5);
   EXPECT_EQ(eval("7 % 3"), 1.0);
@@ -61,7 +61,8 @@ TEST(Expression, VariablesFunctionsAndConstants)
   EXPECT_EQ(eval("clamp(5, 0, 2)"), 2.0);
   EXPECT_EQ(eval("clamp(-1, 0, 2)"), 0.0);
   EXPECT_EQ(eval("clamp(x, 0, 2)", 1.5), 1.5);
-  EXPECT_DOUBLE_EQ(eval("log10(1000) + log2(8) + tanh(0) + asin(0) + acos(1) + sinh(0) + cosh(0) + tan(0) + atan(0)"), 7.0);
+  EXPECT_DOUBLE_EQ(
+    eval("log10(1000) + log2(8) + tanh(0) + asin(0) + acos(1) + sinh(0) + cosh(0) + tan(0) + atan(0)"), 7.0);
 }
 
 TEST(Expression, LogicAndConditionals)
@@ -99,13 +100,15 @@ TEST(Expression, EvaluatesConcurrently)
   std::vector<std::thread> threads;
   for (int k = 0; k < 4; ++k)
   {
-    threads.emplace_back([&, k] {
-      for (int i = 0; i < 10000; ++i)
+    threads.emplace_back(
+      [&, k]
       {
-        const double v[3] = { 0.001 * i, 0.002 * i, 0.5 };
-        sums[static_cast<size_t>(k)] += e.evaluate(v);
-      }
-    });
+        for (int i = 0; i < 10000; ++i)
+        {
+          const double v[3] = { 0.001 * i, 0.002 * i, 0.5 };
+          sums[static_cast<size_t>(k)] += e.evaluate(v);
+        }
+      });
   }
   for (auto& t : threads)
   {

@@ -225,7 +225,8 @@ TEST(HjbExpressionSolver, AdvancesStepByStepAndRestartsForEarlierTimes)
 
 TEST(HjbExpressionSolver, RefusesBadProblemsWithClearMessages)
 {
-  auto message = [](const sltk::HjbExpressionSpec& s) {
+  auto message = [](const sltk::HjbExpressionSpec& s)
+  {
     std::unique_ptr<sltk::HjbSolver> solver;
     const sltk::Status st = sltk::makeExpressionSolver(s, solver);
     EXPECT_FALSE(st.isOk());

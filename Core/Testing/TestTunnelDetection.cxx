@@ -37,8 +37,14 @@ sltk::PointCloud<2> polygonCloud(const std::vector<std::array<double, 2>>& corne
 /// The square [-1, 1]^2 with a slot of width 2w from the top edge down to y = bottom.
 sltk::PointCloud<2> slottedSquare(double w, double bottom, double h)
 {
-  return polygonCloud({ { -1.0, -1.0 }, { 1.0, -1.0 }, { 1.0, 1.0 }, { w, 1.0 }, { w, bottom }, { -w, bottom },
-                        { -w, 1.0 }, { -1.0, 1.0 } },
+  return polygonCloud({ { -1.0, -1.0 },
+                        { 1.0, -1.0 },
+                        { 1.0, 1.0 },
+                        { w, 1.0 },
+                        { w, bottom },
+                        { -w, bottom },
+                        { -w, 1.0 },
+                        { -1.0, 1.0 } },
     h);
 }
 

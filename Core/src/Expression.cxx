@@ -115,22 +115,53 @@ double run(const Instruction* code, size_t size, const double* values)
         double& a = s[top];
         switch (in.Code)
         {
-          case Op::Add: a += b; break;
-          case Op::Subtract: a -= b; break;
-          case Op::Multiply: a *= b; break;
-          case Op::Divide: a /= b; break;
-          case Op::Modulo: a = std::fmod(a, b); break;
-          case Op::Power: a = b == 2.0 ? a * a : std::pow(a, b); break;
-          case Op::Less: a = a < b ? 1.0 : 0.0; break;
-          case Op::LessEqual: a = a <= b ? 1.0 : 0.0; break;
-          case Op::Greater: a = a > b ? 1.0 : 0.0; break;
-          case Op::GreaterEqual: a = a >= b ? 1.0 : 0.0; break;
-          case Op::Equal: a = a == b ? 1.0 : 0.0; break;
-          case Op::NotEqual: a = a != b ? 1.0 : 0.0; break;
-          case Op::And: a = (a != 0.0 && b != 0.0) ? 1.0 : 0.0; break;
-          case Op::Or: a = (a != 0.0 || b != 0.0) ? 1.0 : 0.0; break;
-          case Op::Function2: a = binaryFunctions[in.Function].Apply(a, b); break;
-          default: break;
+          case Op::Add:
+            a += b;
+            break;
+          case Op::Subtract:
+            a -= b;
+            break;
+          case Op::Multiply:
+            a *= b;
+            break;
+          case Op::Divide:
+            a /= b;
+            break;
+          case Op::Modulo:
+            a = std::fmod(a, b);
+            break;
+          case Op::Power:
+            a = b == 2.0 ? a * a : std::pow(a, b);
+            break;
+          case Op::Less:
+            a = a < b ? 1.0 : 0.0;
+            break;
+          case Op::LessEqual:
+            a = a <= b ? 1.0 : 0.0;
+            break;
+          case Op::Greater:
+            a = a > b ? 1.0 : 0.0;
+            break;
+          case Op::GreaterEqual:
+            a = a >= b ? 1.0 : 0.0;
+            break;
+          case Op::Equal:
+            a = a == b ? 1.0 : 0.0;
+            break;
+          case Op::NotEqual:
+            a = a != b ? 1.0 : 0.0;
+            break;
+          case Op::And:
+            a = (a != 0.0 && b != 0.0) ? 1.0 : 0.0;
+            break;
+          case Op::Or:
+            a = (a != 0.0 || b != 0.0) ? 1.0 : 0.0;
+            break;
+          case Op::Function2:
+            a = binaryFunctions[in.Function].Apply(a, b);
+            break;
+          default:
+            break;
         }
       }
     }
@@ -203,7 +234,8 @@ private:
     {
       throw SyntaxError{ this->Pos,
         std::string("expected '") + token + "' " + context +
-          (this->Pos < this->Text.size() ? ", found '" + std::string(1, this->Text[this->Pos]) + "'" : ", found the end") };
+          (this->Pos < this->Text.size() ? ", found '" + std::string(1, this->Text[this->Pos]) + "'"
+                                         : ", found the end") };
     }
   }
 
@@ -223,7 +255,8 @@ private:
     {
       // A postfix run ending in `arity` constants is exactly the operands: fold.
       this->Code.push_back(in);
-      const double value = run(this->Code.data() + (n - static_cast<size_t>(arity)), static_cast<size_t>(arity) + 1, nullptr);
+      const double value =
+        run(this->Code.data() + (n - static_cast<size_t>(arity)), static_cast<size_t>(arity) + 1, nullptr);
       this->Code.resize(n - static_cast<size_t>(arity));
       this->constant(value);
       return;
@@ -270,8 +303,12 @@ private:
   void comparison()
   {
     this->additive();
-    static const std::pair<const char*, Op> ops[] = { { "<=", Op::LessEqual }, { ">=", Op::GreaterEqual },
-      { "==", Op::Equal }, { "!=", Op::NotEqual }, { "<", Op::Less }, { ">", Op::Greater } };
+    static const std::pair<const char*, Op> ops[] = { { "<=", Op::LessEqual },
+      { ">=", Op::GreaterEqual },
+      { "==", Op::Equal },
+      { "!=", Op::NotEqual },
+      { "<", Op::Less },
+      { ">", Op::Greater } };
     for (const auto& [token, op] : ops)
     {
       if (this->accept(token))
@@ -465,11 +502,13 @@ private:
   }
   void call(const std::string& id, size_t start)
   {
-    auto arity = [&](int got, int want) {
+    auto arity = [&](int got, int want)
+    {
       if (got != want)
       {
-        throw SyntaxError{ start, id + "() takes " + std::to_string(want) + " argument" + (want > 1 ? "s" : "") +
-            ", got " + std::to_string(got) };
+        throw SyntaxError{ start,
+          id + "() takes " + std::to_string(want) + " argument" + (want > 1 ? "s" : "") + ", got " +
+            std::to_string(got) };
       }
     };
     if (id == "if")
@@ -523,11 +562,14 @@ private:
   }
 };
 
-Status Expression::compile(
-  const std::string& what, const std::string& text, const std::vector<std::string>& variables, Expression& out)
+Status Expression::compile(const std::string& what,
+  const std::string& text,
+  const std::vector<std::string>& variables,
+  Expression& out)
 {
   out = Expression{};
-  auto failure = [&](size_t column, const std::string& problem) {
+  auto failure = [&](size_t column, const std::string& problem)
+  {
     std::string names;
     for (const std::string& v : variables)
     {

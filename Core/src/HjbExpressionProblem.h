@@ -39,7 +39,7 @@ struct CompiledHjbExpressions
 };
 using SharedHjbExpressions = std::shared_ptr<const CompiledHjbExpressions>;
 
-template <int D, int M>
+template<int D, int M>
 void fillSlots(double (&v)[SlotCount], double t, const std::array<double, D>& x, const std::array<double, M>& a)
 {
   for (int k = 0; k < SlotCount; ++k)
@@ -57,7 +57,7 @@ void fillSlots(double (&v)[SlotCount], double t, const std::array<double, D>& x,
   }
 }
 
-template <int D, int M>
+template<int D, int M>
 struct ExpressionDynamics
 {
   SharedHjbExpressions E;
@@ -74,7 +74,7 @@ struct ExpressionDynamics
   }
 };
 
-template <int D, int M>
+template<int D, int M>
 struct ExpressionCost
 {
   SharedHjbExpressions E;
@@ -87,7 +87,7 @@ struct ExpressionCost
 };
 
 /// v_0(x), g(x) (-inf when there is no obstacle, so that max(u, g) = u) and v(t, x).
-template <int D>
+template<int D>
 struct ExpressionOfState
 {
   SharedHjbExpressions E;
@@ -110,16 +110,21 @@ struct ExpressionOfState
 /// One problem type per (D, M): cost, obstacle and exact solution are always
 /// present (constant or disabled at run time), and the cell cache is fixed,
 /// so that each (D, M, interpolator) compiles one kernel per RK order.
-template <int D, int M>
+template<int D, int M>
 struct ExpressionHjbProblem
-  : HjbProblem<D, M, ExpressionDynamics<D, M>, ExpressionCost<D, M>, ExpressionOfState<D>, ExpressionOfState<D>,
+  : HjbProblem<D,
+      M,
+      ExpressionDynamics<D, M>,
+      ExpressionCost<D, M>,
+      ExpressionOfState<D>,
+      ExpressionOfState<D>,
       ExpressionOfState<D>>
 {
   static constexpr int CellCacheSize = 256;
 };
 
 /// Everything makeExpressionSolver() checked and built, for the per-dimension part.
-template <int D>
+template<int D>
 struct ExpressionSolverInput
 {
   SharedHjbExpressions Expressions;
@@ -132,13 +137,15 @@ struct ExpressionSolverInput
 };
 
 /// Per dimension (HjbExpressionSolver{1,2,3}D.cxx): the solver for spec.ControlDimension and spec.Interpolator.
-template <int D>
-Status makeExpressionSolverOf(
-  const HjbExpressionSpec& spec, const ExpressionSolverInput<D>& in, std::unique_ptr<HjbSolver>& solver);
+template<int D>
+Status makeExpressionSolverOf(const HjbExpressionSpec& spec,
+  const ExpressionSolverInput<D>& in,
+  std::unique_ptr<HjbSolver>& solver);
 
-template <int D, int M>
-Status makeExpressionSolverOfControls(
-  const HjbExpressionSpec& spec, const ExpressionSolverInput<D>& in, std::unique_ptr<HjbSolver>& solver)
+template<int D, int M>
+Status makeExpressionSolverOfControls(const HjbExpressionSpec& spec,
+  const ExpressionSolverInput<D>& in,
+  std::unique_ptr<HjbSolver>& solver)
 {
   using Problem = ExpressionHjbProblem<D, M>;
   Problem problem;
@@ -167,15 +174,23 @@ Status makeExpressionSolverOfControls(
   problem.Initial = ExpressionOfState<D>{ in.Expressions, &CompiledHjbExpressions::Initial };
   problem.Obstacle = ExpressionOfState<D>{ in.Expressions, &CompiledHjbExpressions::Obstacle };
   problem.Exact = ExpressionOfState<D>{ in.Expressions, &CompiledHjbExpressions::Exact };
-  solver = makeHjbSolverOf<Problem>(spec.Interpolator, problem, in.Grid, in.Options, in.Steps, in.Dt, in.Reachable,
-    in.Expressions->HasExact, spec.InitialValues);
+  solver = makeHjbSolverOf<Problem>(spec.Interpolator,
+    problem,
+    in.Grid,
+    in.Options,
+    in.Steps,
+    in.Dt,
+    in.Reachable,
+    in.Expressions->HasExact,
+    spec.InitialValues);
   return solver ? Status::ok() : Status::invalidArgument("unknown interpolator");
 }
 
 /// The body of makeExpressionSolverOf<D>: dispatch on the control dimension.
-template <int D>
-Status makeExpressionSolverForDim(
-  const HjbExpressionSpec& spec, const ExpressionSolverInput<D>& in, std::unique_ptr<HjbSolver>& solver)
+template<int D>
+Status makeExpressionSolverForDim(const HjbExpressionSpec& spec,
+  const ExpressionSolverInput<D>& in,
+  std::unique_ptr<HjbSolver>& solver)
 {
   switch (in.ControlDimension)
   {

@@ -55,7 +55,8 @@ Status compileAll(const HjbExpressionSpec& spec, CompiledHjbExpressions& out)
     {
       return Status::invalidArgument(what + " is empty: give one formula per axis (\"0\" for none)");
     }
-    SLTK_RETURN_IF_ERROR(Expression::compile(what, spec.Dynamics[static_cast<size_t>(d)], all, out.Dynamics[static_cast<size_t>(d)]));
+    SLTK_RETURN_IF_ERROR(
+      Expression::compile(what, spec.Dynamics[static_cast<size_t>(d)], all, out.Dynamics[static_cast<size_t>(d)]));
   }
   SLTK_RETURN_IF_ERROR(Expression::compile("the running cost f_C", spec.Cost.empty() ? "0" : spec.Cost, all, out.Cost));
   if (spec.InitialValues.empty())
@@ -80,7 +81,7 @@ Status compileAll(const HjbExpressionSpec& spec, CompiledHjbExpressions& out)
   return Status::ok();
 }
 
-template <int D>
+template<int D>
 Status buildGrid(const HjbExpressionSpec& spec, GridSpec<D>& grid)
 {
   for (int a = 0; a < D; ++a)
@@ -90,8 +91,8 @@ Status buildGrid(const HjbExpressionSpec& spec, GridSpec<D>& grid)
     const double hi = spec.Upper[static_cast<size_t>(a)];
     if (n < 5 || n > 100000)
     {
-      return Status::invalidArgument(std::string("the grid has ") + std::to_string(n) + " nodes along " + axisNames[a] +
-        ": use 5 to 100000");
+      return Status::invalidArgument(
+        std::string("the grid has ") + std::to_string(n) + " nodes along " + axisNames[a] + ": use 5 to 100000");
     }
     if (!std::isfinite(lo) || !std::isfinite(hi) || !(hi > lo))
     {
@@ -129,34 +130,39 @@ Status checkSizesAndTimes(const HjbExpressionSpec& spec, Index nodes)
     {
       if (!std::isfinite(spec.InitialValues[k]))
       {
-        return Status::invalidArgument("the initial field is not finite at node " + std::to_string(k) +
-          ": fill or crop the NaN/Inf values first");
+        return Status::invalidArgument(
+          "the initial field is not finite at node " + std::to_string(k) + ": fill or crop the NaN/Inf values first");
       }
     }
   }
   if (!std::isfinite(spec.FinalTime) || spec.FinalTime < 0.0)
   {
-    return Status::invalidArgument("the final time must be a finite number >= 0, got " + std::to_string(spec.FinalTime));
+    return Status::invalidArgument(
+      "the final time must be a finite number >= 0, got " + std::to_string(spec.FinalTime));
   }
   if (!std::isfinite(spec.CourantNumber) || !(spec.CourantNumber > 0.0))
   {
-    return Status::invalidArgument(
-      "the Courant number (dt = lambda dx) must be a positive finite number, got " + std::to_string(spec.CourantNumber));
+    return Status::invalidArgument("the Courant number (dt = lambda dx) must be a positive finite number, got " +
+      std::to_string(spec.CourantNumber));
   }
   if (!isValidRkOrder(static_cast<int>(spec.Order)))
   {
-    return Status::invalidArgument("the RK order must be 1, 2 or 3, got " + std::to_string(static_cast<int>(spec.Order)));
+    return Status::invalidArgument(
+      "the RK order must be 1, 2 or 3, got " + std::to_string(static_cast<int>(spec.Order)));
   }
   const MinimizerOptions& m = spec.Minimizer;
   if (m.TabulationPoints < 1 || !(m.Tolerance >= 0.0) || m.MaxIterations < 0)
   {
-    return Status::invalidArgument("minimiser options: tabulation points >= 1, tolerance >= 0 and iterations >= 0 are needed");
+    return Status::invalidArgument(
+      "minimiser options: tabulation points >= 1, tolerance >= 0 and iterations >= 0 are needed");
   }
   return Status::ok();
 }
 
-template <int D>
-Status makeForDimension(const HjbExpressionSpec& spec, SharedHjbExpressions expressions, std::unique_ptr<HjbSolver>& solver)
+template<int D>
+Status makeForDimension(const HjbExpressionSpec& spec,
+  SharedHjbExpressions expressions,
+  std::unique_ptr<HjbSolver>& solver)
 {
   ExpressionSolverInput<D> in;
   SLTK_RETURN_IF_ERROR(buildGrid<D>(spec, in.Grid));

@@ -21,7 +21,7 @@
 namespace sltk
 {
 
-template <int D>
+template<int D>
 HjbGrid toHjbGrid(const GridSpec<D>& g)
 {
   HjbGrid p;
@@ -39,7 +39,7 @@ HjbGrid toHjbGrid(const GridSpec<D>& g)
   return p;
 }
 
-template <class Interp, class Problem>
+template<class Interp, class Problem>
 class HjbSolverOf final : public HjbSolver
 {
 public:
@@ -47,8 +47,14 @@ public:
 
   /// `initialValues` (x fastest) replaces v_0 when not empty; `exactKnown`
   /// says whether Problem::Exact may be called.
-  HjbSolverOf(Problem problem, const GridSpec<D>& spec, const HjbOptions& options, Index steps, double dt,
-    bool reachable, bool exactKnown, std::vector<double> initialValues = {})
+  HjbSolverOf(Problem problem,
+    const GridSpec<D>& spec,
+    const HjbOptions& options,
+    Index steps,
+    double dt,
+    bool reachable,
+    bool exactKnown,
+    std::vector<double> initialValues = {})
     : P(std::move(problem))
     , Spec(spec)
     , Options(options)
@@ -74,7 +80,8 @@ public:
       this->reset();
     }
     Index target = this->Done;
-    while (target < this->Steps && this->startTime() + static_cast<double>(target + 1) * this->Dt <= t + 1e-9 * this->Dt)
+    while (
+      target < this->Steps && this->startTime() + static_cast<double>(target + 1) * this->Dt <= t + 1e-9 * this->Dt)
     {
       ++target;
     }
@@ -204,7 +211,7 @@ private:
 };
 
 /// Builds the solver for the interpolator chosen at run time.
-template <class Problem, class... Args>
+template<class Problem, class... Args>
 std::unique_ptr<HjbSolver> makeHjbSolverOf(InterpolatorKind kind, Args&&... args)
 {
   constexpr int D = Problem::Dim;

@@ -10,10 +10,10 @@
 ///   c ? a : b      conditional          a || b, a && b, !a    logic (non-zero is true, results 0/1)
 ///   < <= > >= == !=                     comparisons (0/1)
 ///   + -            * / %                arithmetic (% is fmod)
-///   -a, +a         unary                a ^ b, a ** b  power (right-associative, binds tighter than unary minus: -x^2 = -(x^2))
-///   numbers 1, 2.5, 1e-3, constants pi and e, the caller's variables, and functions
-///   sin cos tan asin acos atan sinh cosh tanh exp log log10 log2 sqrt cbrt abs floor ceil round sign
-///   atan2(y, x) pow(a, b) hypot(a, b) fmod(a, b) min(a, b, ...) max(a, b, ...) clamp(v, lo, hi) if(c, a, b)
+///   -a, +a         unary                a ^ b, a ** b  power (right-associative, binds tighter than unary minus: -x^2
+///   = -(x^2)) numbers 1, 2.5, 1e-3, constants pi and e, the caller's variables, and functions sin cos tan asin acos
+///   atan sinh cosh tanh exp log log10 log2 sqrt cbrt abs floor ceil round sign atan2(y, x) pow(a, b) hypot(a, b)
+///   fmod(a, b) min(a, b, ...) max(a, b, ...) clamp(v, lo, hi) if(c, a, b)
 /// Sub-expressions without variables are folded to constants when compiled.
 ///
 /// Why not ExprTk (vtk_exprtk.h): Core stays VTK-free (ARCHITECTURE.md), the
@@ -35,7 +35,9 @@ public:
   /// Compiles `text`. `variables` are the names evaluate() reads, in order;
   /// `what` names the expression in messages (e.g. "the dynamics f_D[2]").
   /// An error names `what`, the column and the problem, and lists the variables.
-  static Status compile(const std::string& what, const std::string& text, const std::vector<std::string>& variables,
+  static Status compile(const std::string& what,
+    const std::string& text,
+    const std::vector<std::string>& variables,
     Expression& out);
 
   /// The value for values[k] = variable k. Non-finite results are returned as they are.

@@ -28,31 +28,31 @@ namespace sltk
 
 struct HjbExpressionSpec
 {
-  int Dimension = 2;                                  ///< 1, 2 or 3
-  std::array<Index, 3> Nodes{ 81, 81, 81 };           ///< per axis (periodic axes: distinct nodes)
-  std::array<double, 3> Lower{ -1.0, -1.0, -1.0 };    ///< domain [Lower, Upper] per axis
+  int Dimension = 2;                               ///< 1, 2 or 3
+  std::array<Index, 3> Nodes{ 81, 81, 81 };        ///< per axis (periodic axes: distinct nodes)
+  std::array<double, 3> Lower{ -1.0, -1.0, -1.0 }; ///< domain [Lower, Upper] per axis
   std::array<double, 3> Upper{ 1.0, 1.0, 1.0 };
   std::array<Boundary, 3> Bounds{ Boundary::Extrapolate, Boundary::Extrapolate, Boundary::Extrapolate };
 
-  std::array<std::string, 3> Dynamics;                ///< f_D components ("" on unused axes)
-  std::string Cost;                                   ///< f_C; empty: 0 (no quadrature)
-  std::string Initial;                                ///< v_0; ignored when InitialValues is given
-  std::vector<double> InitialValues;                  ///< v_0 at the nodes, x fastest (e.g. from an image)
-  std::string Obstacle;                               ///< g of (3.39); empty: unconstrained
-  std::string Exact;                                  ///< exact v(t, x); empty: unknown
-  bool ReachableSet = false;                          ///< keep (3.40); also when an obstacle is given
+  std::array<std::string, 3> Dynamics; ///< f_D components ("" on unused axes)
+  std::string Cost;                    ///< f_C; empty: 0 (no quadrature)
+  std::string Initial;                 ///< v_0; ignored when InitialValues is given
+  std::vector<double> InitialValues;   ///< v_0 at the nodes, x fastest (e.g. from an image)
+  std::string Obstacle;                ///< g of (3.39); empty: unconstrained
+  std::string Exact;                   ///< exact v(t, x); empty: unknown
+  bool ReachableSet = false;           ///< keep (3.40); also when an obstacle is given
 
   ControlKind Controls = ControlKind::None;
-  int ControlDimension = 1;                           ///< m of A in R^m (1-3)
+  int ControlDimension = 1;                               ///< m of A in R^m (1-3)
   std::array<double, 3> ControlLower{ -1.0, -1.0, -1.0 }; ///< Box
   std::array<double, 3> ControlUpper{ 1.0, 1.0, 1.0 };
   std::array<double, 3> ControlCenter{ 0.0, 0.0, 0.0 }; ///< Ball, Sphere
   double ControlRadius = 1.0;
-  std::vector<std::array<double, 3>> ControlPoints;   ///< Finite
+  std::vector<std::array<double, 3>> ControlPoints; ///< Finite
 
-  RkOrder Order = RkOrder::Kutta3;                    ///< feet (3.8) and quadrature (3.9)
+  RkOrder Order = RkOrder::Kutta3; ///< feet (3.8) and quadrature (3.9)
   double FinalTime = 1.0;
-  double CourantNumber = 1.0;                         ///< dt = lambda min_j dx_j
+  double CourantNumber = 1.0; ///< dt = lambda min_j dx_j
   MinimizerOptions Minimizer;
   InterpolatorKind Interpolator = InterpolatorKind::CwenoZ;
 };
