@@ -195,3 +195,36 @@ TEST(EnergyFunctional, BandRestrictionAndThreadsAgree)
   const auto other = sample<3>(cube<3>(1.0, 21), [](const std::array<double, 3>&) { return 1.0; });
   EXPECT_EQ(sltk::energyFunctional(phi, other, ctx, threaded).code(), sltk::StatusCode::InvalidArgument);
 }
+
+TEST(EnergyFunctional, SecondExponentInTheSamePassEqualsASeparatePass)
+{
+  // Algorithm 1 needs E_p for the scale factor (4.32) and E_2 for the stopping rule (4.33):
+  // one traversal gives both, bit for bit the values of two separate passes (2D and 3D).
+  auto check = [](const auto& phi, const auto& d) {
+    sltk::EnergyOptions both;
+    both.P = 1.0;
+    both.SecondP = 2.0;
+    sltk::EnergyOptions two;
+    two.P = 2.0;
+    sltk::EnergyResult merged, first, second;
+    ASSERT_TRUE(sltk::energyFunctional(phi, d, sltk::Context{}, merged, both).isOk());
+    ASSERT_TRUE(sltk::energyFunctional(phi, d, sltk::Context{}, first, sltk::EnergyOptions{ 1.0 }).isOk());
+    ASSERT_TRUE(sltk::energyFunctional(phi, d, sltk::Context{}, second, two).isOk());
+    EXPECT_EQ(merged.Energy, first.Energy);
+    EXPECT_EQ(merged.SecondIntegral, second.Integral);
+    EXPECT_EQ(merged.SecondEnergy, second.Energy);
+    EXPECT_GT(merged.SecondEnergy, 0.0);
+  };
+  const auto g2 = cube<2>(1.0, 81);
+  check(sample<2>(g2, [](const std::array<double, 2>& x) { return radius<2>(x) - 0.6; }),
+    sample<2>(g2, [](const std::array<double, 2>& x) { return 0.1 + x[0] * x[0]; }));
+  const auto g3 = cube<3>(1.0, 31);
+  check(sample<3>(g3, [](const std::array<double, 3>& x) { return radius<3>(x) - 0.6; }),
+    sample<3>(g3, [](const std::array<double, 3>& x) { return 0.1 + x[1] * x[1]; }));
+  sltk::EnergyOptions bad;
+  bad.SecondP = 0.5;
+  sltk::EnergyResult r;
+  EXPECT_FALSE(sltk::energyFunctional(sample<2>(g2, [](const std::array<double, 2>& x) { return x[0]; }),
+    sample<2>(g2, [](const std::array<double, 2>&) { return 1.0; }), sltk::Context{}, r, bad)
+                 .isOk());
+}

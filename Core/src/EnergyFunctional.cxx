@@ -17,6 +17,21 @@ inline double powAbs(double v, double p)
   return p == 1.0 ? a : (p == 2.0 ? a * a : std::pow(a, p));
 }
 
+/// The sums of |d|^p and |d|^q over the front, accumulated in one traversal.
+struct PowerSums
+{
+  double First = 0.0;  ///< |d|^P
+  double Second = 0.0; ///< |d|^Q (Q = 0: not wanted)
+
+  PowerSums& operator+=(const PowerSums& o)
+  {
+    this->First += o.First;
+    this->Second += o.Second;
+    return *this;
+  }
+  PowerSums scaled(double w) const { return { this->First * w, this->Second * w }; }
+};
+
 /// Per-chunk evaluator: Q1 interpolators of phi and d (4.28) and the cell rules.
 template <int D>
 class CellEnergy
@@ -27,6 +42,7 @@ public:
     , PhiQ1(phi)
     , DistanceQ1(distance)
     , P(options.P)
+    , Q(options.SecondP)
     , R(options.Refinement)
   {
     const GridSpec<D>& g = phi.spec();
@@ -46,7 +62,7 @@ public:
   }
 
   /// Contribution of the cell with lowest corner `cell`; `front` tells whether it had any.
-  double operator()(const std::array<Index, D>& cell, bool& front)
+  PowerSums operator()(const std::array<Index, D>& cell, bool& front)
   {
     front = false;
     const double* p = this->Phi.pointer(cell);
@@ -70,13 +86,13 @@ public:
     const bool signChange = anyNegative && anyOther;
     if constexpr (D == 2)
     {
-      return signChange ? this->segments(cell, v, front) : 0.0;
+      return signChange ? this->segments(cell, v, front) : PowerSums{};
     }
     else
     {
       if (!signChange && minAbs >= this->HalfDiagonal)
       {
-        return 0.0;
+        return PowerSums{};
       }
       return this->subcells(cell, front);
     }
@@ -84,7 +100,7 @@ public:
 
 private:
   /// (4.29) in 2D: segments between the edge cuts, trapezoidal rule of |d|^p.
-  double segments(const std::array<Index, D>& cell, const double* v, bool& front)
+  PowerSums segments(const std::array<Index, D>& cell, const double* v, bool& front)
   {
     // Edges as corner pairs (corner c has local coordinates (c & 1, c >> 1)).
     static const int edge[4][2] = { { 0, 1 }, { 1, 3 }, { 2, 3 }, { 0, 2 } };
@@ -109,7 +125,7 @@ private:
       }
     }
     this->DistanceQ1.prepareIfNeeded(cell);
-    double sum = 0.0;
+    PowerSums sum;
     if (count == 2)
     {
       int first = -1;
@@ -129,18 +145,20 @@ private:
       const double centre = 0.25 * (v[0] + v[1] + v[2] + v[3]);
       if ((centre < 0.0) == (v[0] < 0.0))
       {
-        sum = this->segment(cut[0], cut[1]) + this->segment(cut[2], cut[3]); // around corners 1 and 2
+        sum = this->segment(cut[0], cut[1]);
+        sum += this->segment(cut[2], cut[3]); // around corners 1 and 2
       }
       else
       {
-        sum = this->segment(cut[0], cut[3]) + this->segment(cut[1], cut[2]); // around corners 0 and 3
+        sum = this->segment(cut[0], cut[3]);
+        sum += this->segment(cut[1], cut[2]); // around corners 0 and 3
       }
     }
     front = count > 0;
     return sum;
   }
 
-  double segment(const std::array<double, D>& a, const std::array<double, D>& b)
+  PowerSums segment(const std::array<double, D>& a, const std::array<double, D>& b)
   {
     double length2 = 0.0;
     for (int k = 0; k < D; ++k)
@@ -149,18 +167,20 @@ private:
       length2 += l * l;
     }
     // Trapezoidal rule; d by Q1 in the cell (linear along the edges).
-    const double da = powAbs(this->DistanceQ1.eval(a), this->P);
-    const double db = powAbs(this->DistanceQ1.eval(b), this->P);
-    return std::sqrt(length2) * 0.5 * (da + db);
+    const double da = this->DistanceQ1.eval(a);
+    const double db = this->DistanceQ1.eval(b);
+    const double half = std::sqrt(length2) * 0.5;
+    return { half * (powAbs(da, this->P) + powAbs(db, this->P)),
+      this->Q > 0.0 ? half * (powAbs(da, this->Q) + powAbs(db, this->Q)) : 0.0 };
   }
 
   /// (4.30): subcells whose Q1 centre value satisfies |phi| < sqrt(3)/2 dx'.
-  double subcells(const std::array<Index, D>& cell, bool& front)
+  PowerSums subcells(const std::array<Index, D>& cell, bool& front)
   {
     this->PhiQ1.prepareIfNeeded(cell);
     this->DistanceQ1.prepareIfNeeded(cell);
     const double inv = 1.0 / this->R;
-    double sum = 0.0;
+    PowerSums sum;
     std::array<int, D> m{};
     for (;;)
     {
@@ -171,7 +191,9 @@ private:
       }
       if (std::fabs(this->PhiQ1.eval(t)) < this->HalfDiagonal)
       {
-        sum += powAbs(this->DistanceQ1.eval(t), this->P);
+        const double d = this->DistanceQ1.eval(t);
+        sum.First += powAbs(d, this->P);
+        sum.Second += this->Q > 0.0 ? powAbs(d, this->Q) : 0.0;
         front = true;
       }
       int a = 0;
@@ -188,13 +210,14 @@ private:
         break;
       }
     }
-    return sum * this->SubcellWeight;
+    return sum.scaled(this->SubcellWeight);
   }
 
   const GridField<D, double>& Phi;
   Q1Interpolator<D> PhiQ1;
   Q1Interpolator<D> DistanceQ1;
   double P;
+  double Q;
   int R;
   double HalfDiagonal = 0.0;
   double SubcellWeight = 0.0;
@@ -206,6 +229,10 @@ Status checkInputs(const GridField<D, double>& phi, const GridField<D, double>& 
   if (!(options.P >= 1.0) || !std::isfinite(options.P))
   {
     return Status::invalidArgument("the energy exponent p must be finite and >= 1");
+  }
+  if (options.SecondP != 0.0 && (!(options.SecondP >= 1.0) || !std::isfinite(options.SecondP)))
+  {
+    return Status::invalidArgument("the second energy exponent must be 0 (none) or finite and >= 1");
   }
   if (options.Refinement < 1)
   {
@@ -233,12 +260,12 @@ void sumCells(const GridField<D, double>& phi, const GridField<D, double>& dista
 {
   const Index grain = std::max<Index>(256, (n + 63) / 64);
   const Index chunks = n > 0 ? (n + grain - 1) / grain : 0;
-  std::vector<double> partial(static_cast<size_t>(chunks), 0.0);
+  std::vector<PowerSums> partial(static_cast<size_t>(chunks));
   std::vector<Index> fronts(static_cast<size_t>(chunks), 0);
   const GridSpec<D>& g = phi.spec();
   ctx.parallelFor(0, n, [&](Index b, Index e) {
     CellEnergy<D> energy(phi, distance, options);
-    double sum = 0.0;
+    PowerSums sum;
     Index count = 0;
     for (Index j = b; j < e; ++j)
     {
@@ -262,10 +289,15 @@ void sumCells(const GridField<D, double>& phi, const GridField<D, double>& dista
   result = EnergyResult{};
   for (size_t c = 0; c < partial.size(); ++c)
   {
-    result.Integral += partial[c];
+    result.Integral += partial[c].First;
+    result.SecondIntegral += partial[c].Second;
     result.FrontCells += fronts[c];
   }
   result.Energy = std::pow(result.Integral, 1.0 / options.P); // (4.29)/(4.30)
+  if (options.SecondP > 0.0)
+  {
+    result.SecondEnergy = std::pow(result.SecondIntegral, 1.0 / options.SecondP);
+  }
 }
 } // namespace
 

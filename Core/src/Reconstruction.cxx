@@ -127,11 +127,15 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     // (4.29)/(4.30) on the cells of the band: E_p for the scale factor, E_2 for (4.33).
     auto clock = std::chrono::steady_clock::now();
     EnergyResult ep;
-    SLTK_RETURN_IF_ERROR(energyFunctional(phi, dist, band, ctx, ep, EnergyOptions{ model.P }));
+    EnergyOptions energyOptions;
+    energyOptions.P = model.P;
+    energyOptions.SecondP = model.P != 2.0 ? 2.0 : 0.0; // E_2 in the same pass
+    SLTK_RETURN_IF_ERROR(energyFunctional(phi, dist, band, ctx, ep, energyOptions));
     EnergyResult e2 = ep;
     if (model.P != 2.0)
     {
-      SLTK_RETURN_IF_ERROR(energyFunctional(phi, dist, band, ctx, e2, EnergyOptions{ 2.0 }));
+      e2.Integral = ep.SecondIntegral;
+      e2.Energy = ep.SecondEnergy;
     }
     if (ep.FrontCells == 0)
     {

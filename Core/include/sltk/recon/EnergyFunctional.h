@@ -44,6 +44,7 @@ enum class SubcellMeasure : std::uint8_t
 struct EnergyOptions
 {
   double P = 2.0;        ///< p >= 1 of (4.1)
+  double SecondP = 0.0;  ///< a second exponent summed in the same traversal (0: none), e.g. E_2 for (4.33) when p = 1
   int Refinement = 5;    ///< R of (4.30) (3D only)
   SubcellMeasure Measure = SubcellMeasure::Consistent;
 };
@@ -52,6 +53,8 @@ struct EnergyResult
 {
   double Integral = 0.0; ///< sum of |d|^p over the front (before the 1/p power)
   double Energy = 0.0;   ///< E_p = Integral^(1/p)
+  double SecondIntegral = 0.0; ///< with EnergyOptions::SecondP = q: sum of |d|^q
+  double SecondEnergy = 0.0;   ///< E_q
   Index FrontCells = 0;  ///< cells that contributed
 };
 
