@@ -48,6 +48,32 @@ double cloudError(const GridField<D>& phi, const PointCloud<D>& cloud, const Con
   return sum / static_cast<double>(cloud.size());
 }
 
+/// phi at `nodes`, in order: phi^n where an iteration may change it (for eps_1).
+template <int D>
+void gatherValues(const GridField<D>& phi, const NodeList& nodes, std::vector<double>& values)
+{
+  values.resize(nodes.size());
+  for (size_t k = 0; k < nodes.size(); ++k)
+  {
+    values[k] = phi(phi.nodeIndex(nodes[k]));
+  }
+}
+
+/// eps_1^n of (4.34) restricted to `nodes`: sum |phi^{n+1} - phi^n| / sum |phi^n|,
+/// with phi^{n+1} the iterate after reinitialisation and cut and `before` = phi^n
+/// at the same nodes (gatherValues). Nodes outside the set did not change.
+template <int D>
+double updateNorm(const GridField<D>& phi, const NodeList& nodes, const std::vector<double>& before)
+{
+  double moved = 0.0, size = 0.0;
+  for (size_t k = 0; k < nodes.size(); ++k)
+  {
+    moved += std::fabs(phi(phi.nodeIndex(nodes[k])) - before[k]);
+    size += std::fabs(before[k]);
+  }
+  return size > 0.0 ? moved / size : 0.0;
+}
+
 /// The previous run's phi (ghosts filled) interpolated at the nodes of `grid` (Q1: monotone).
 template <int D>
 void transfer(const GridField<D>& from, const GridSpec<D>& grid, const Context& ctx, GridField<D>& to)
@@ -115,7 +141,7 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
   record.Parameters = model;
   NodeList band, reinitBand;
   std::vector<std::uint8_t> dilationScratch;
-  std::vector<double> stepScratch;
+  std::vector<double> stepScratch, previousValues;
   std::vector<double> energies;
   double bandSizes = 0.0;
   double phase[4] = { 0.0, 0.0, 0.0, 0.0 }; // energy, step, reinitialisation, metrics (seconds)
@@ -150,16 +176,12 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     step.Energy = ep.Energy;
     phase[0] += secondsSince(clock);
     clock = std::chrono::steady_clock::now();
-    double before = 0.0;
-    for (Index k : band)
-    {
-      before += std::fabs(phi(phi.nodeIndex(k)));
-    }
-    double change = 0.0;
-    SLTK_RETURN_IF_ERROR((levelSetStep<Interp, D>(ctx, phi, dist, band, step, stepScratch, &change))); // (4.22)/(4.24)
+    // The step writes the band, the reinitialisation its dilation (1.53): phi^n there for eps_1 (4.34).
+    dilateBand(grid, band, options.ReinitDilation, dilationScratch, reinitBand);
+    gatherValues(phi, reinitBand, previousValues);
+    SLTK_RETURN_IF_ERROR((levelSetStep<Interp, D>(ctx, phi, dist, band, step, stepScratch))); // (4.22)/(4.24)
     phase[1] += secondsSince(clock);
     clock = std::chrono::steady_clock::now();
-    dilateBand(grid, band, options.ReinitDilation, dilationScratch, reinitBand); // (1.53)
     SLTK_RETURN_IF_ERROR(reinitialise<D>(phi, reinitBand, options.Reinit, ctx));
     cutLevelSet(phi, reinitBand, gamma, ctx); // (1.49)
     phi.fillGhosts();
@@ -171,7 +193,7 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     it.Run = run;
     it.Iteration = n + 1;
     it.Energy = e2.Energy;
-    it.Change = before > 0.0 ? change / before : 0.0;
+    it.Change = updateNorm(phi, reinitBand, previousValues); // (4.34) between successive iterates
     it.CloudError = cloudError<D, Interp>(phi, cloud, ctx);
     it.BandSize = static_cast<Index>(band.size());
     it.Seconds = secondsSince(start);

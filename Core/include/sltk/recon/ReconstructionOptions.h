@@ -100,7 +100,8 @@ struct IterationRecord
   int Run = 0;
   int Iteration = 0;
   double Energy = 0.0;     ///< E_2(phi^n) (4.33)
-  double Change = 0.0;     ///< eps_1^n (4.34), over the band
+  double Change = 0.0;     ///< eps_1^n (4.34) between successive (reinitialised) iterates, over the
+                           ///< nodes an iteration can change (the reinitialisation band)
   double CloudError = 0.0; ///< Err_P^n (4.35)
   Index BandSize = 0;      ///< |B^n|
   double Seconds = 0.0;    ///< wall time since the run started
