@@ -196,6 +196,7 @@ int vtkCWENOHJBSolver::BuildSolver(vtkInformation* inInfo,
     spec.FinalTime = this->FinalTime >= 0.0 ? this->FinalTime : 1.0;
     spec.CourantNumber = this->CourantNumber > 0.0 ? this->CourantNumber : 1.0;
     spec.Minimizer.TabulationPoints = this->TabulationPoints;
+    spec.Minimizer.WarmTabulationPoints = this->WarmStartPoints;
     spec.Minimizer.Tolerance = this->MinimizerTolerance;
     spec.Minimizer.PerStageControls = this->PerStageControls != 0;
     spec.Interpolator = static_cast<sltk::InterpolatorKind>(this->Interpolator);
@@ -355,4 +356,5 @@ void vtkCWENOHJBSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ControlSet: " << this->ControlSet << " (dimension " << this->ControlDimension << ")\n";
   os << indent << "RKOrder: " << this->RKOrder << "\n";
   os << indent << "TabulationPoints: " << this->TabulationPoints << "\n";
+  os << indent << "WarmStartPoints: " << this->WarmStartPoints << "\n";
 }

@@ -12,14 +12,16 @@
 /// The thesis's numbers are read from thesis_tables.json (GUIDE.md).
 ///
 /// Usage: sltkBenchHjb [--test 1|2|3|3h|4|5|all] [--min-n N] [--max-n N] [--repeat R]
-///                     [--threads T] [--cache K] [--tables PATH]
+///                     [--threads T] [--cache K] [--warm W] [--interp LIST] [--tables PATH]
 ///   --test    which test (3h: Test 3 with T = 0.5, the text's final time); default all
 ///   --min-n, --max-n  range of the tables' N to run (default: per-test limits that
 ///             keep the whole run within minutes: Test 1 <= 321, 2 <= 2561, 3 <= 1006,
 ///             4 <= 81, 5 <= 126)
 ///   --repeat  timing repetitions, median reported (default 1)
 ///   --threads executor size (default 1: the CPU time of one core)
-///   --cache   cells per thread chunk (HjbOptions::CellCacheSize: 1, 8 or 256, default 256)
+///   --cache   cells per thread chunk (HjbOptions::CellCacheSize: 0 automatic (default), 1, 8, 256, 4096)
+///   --warm    MinimizerOptions::WarmTabulationPoints (default -1: the preset's, 5 for Test 4; 0: off)
+///   --interp  comma list of weno,cweno,cwenoz (default all three; gains need weno)
 ///   --tables  path of thesis_tables.json (default /work/shared/reference/thesis_tables.json)
 
 #include "sltk/hjb/HjbError.h"
@@ -349,12 +351,13 @@ const char* const Names[3] = { "WENO", "CWENO", "CWENOZ" };
 /// The three interpolators, interleaved `repeat` times; median seconds.
 template <int D, class Problem>
 std::array<Measure, 3> runAll(const Problem& problem, const sltk::HjbSetup<D>& setup, int repeat,
-  const sltk::Context& ctx)
+  const std::array<bool, 3>& enabled, const sltk::Context& ctx)
 {
   std::array<Measure, 3> out;
   std::array<std::vector<double>, 3> seconds;
   // Runs shorter than 0.2 s are repeated and averaged, so that a timing is never a few ms of noise.
-  auto timed = [&](auto run) {
+  auto timed = [&](auto run)
+  {
     Measure m = run();
     const int loops = m.Seconds < 0.2 ? static_cast<int>(std::ceil(0.2 / std::max(m.Seconds, 1e-6))) : 1;
     if (loops > 1)
@@ -370,12 +373,21 @@ std::array<Measure, 3> runAll(const Problem& problem, const sltk::HjbSetup<D>& s
   };
   for (int r = 0; r < repeat; ++r)
   {
-    out[0] = timed([&] { return runOnce<sltk::Weno3Interpolator<D>>(problem, setup, ctx); });
-    out[1] = timed([&] { return runOnce<sltk::CwenoInterpolator<D>>(problem, setup, ctx); });
-    out[2] = timed([&] { return runOnce<sltk::CwenoZInterpolator<D>>(problem, setup, ctx); });
+    if (enabled[0])
+    {
+      out[0] = timed([&] { return runOnce<sltk::Weno3Interpolator<D>>(problem, setup, ctx); });
+    }
+    if (enabled[1])
+    {
+      out[1] = timed([&] { return runOnce<sltk::CwenoInterpolator<D>>(problem, setup, ctx); });
+    }
+    if (enabled[2])
+    {
+      out[2] = timed([&] { return runOnce<sltk::CwenoZInterpolator<D>>(problem, setup, ctx); });
+    }
     for (int m = 0; m < 3; ++m)
     {
-      seconds[m].push_back(out[m].Seconds);
+      seconds[m].push_back(enabled[m] ? out[m].Seconds : std::nan(""));
     }
   }
   for (int m = 0; m < 3; ++m)
@@ -393,7 +405,9 @@ struct Config
   long long MaxN = 0; // 0: per-test default
   int Repeat = 1;
   int Threads = 1;
-  int Cache = 256;
+  int Cache = 0;
+  int Warm = -1;
+  std::array<bool, 3> Interps{ true, true, true }; // WENO, CWENO, CWENOZ
   std::string Tables = "/work/shared/reference/thesis_tables.json";
 };
 
@@ -449,10 +463,18 @@ void runTable(const Json& tables, const TestSpec& spec, const Config& cfg, const
     }
     auto setup = makeSetup(n);
     setup.Options.CellCacheSize = cfg.Cache;
-    const auto m = runAll<D>(problem, setup, cfg.Repeat, ctx);
+    if (cfg.Warm >= 0)
+    {
+      setup.Options.Minimizer.WarmTabulationPoints = cfg.Warm;
+    }
+    const auto m = runAll<D>(problem, setup, cfg.Repeat, cfg.Interps, ctx);
     all.emplace_back(n, m);
     for (int k = 0; k < 3; ++k)
     {
+      if (!cfg.Interps[k])
+      {
+        continue;
+      }
       const std::string name = Names[k];
       const double gain = k == 0 ? std::nan("") : 100.0 * (1.0 - m[k].Seconds / m[0].Seconds);
       double thesisCpu = 0.0, thesisGain = std::nan("");
@@ -494,15 +516,20 @@ void runTable(const Json& tables, const TestSpec& spec, const Config& cfg, const
   if (minMaxTable && !all.empty())
   {
     std::printf("\n--- Table 3.9: range of the Test 4 solution (exact range [0, 1]) ---\n");
-    std::printf("%7s | %-6s | %10s %10s | %10s %10s\n", "N", "interp", "min ours", "max ours", "min thesis",
-      "max thesis");
+    std::printf(
+      "%7s | %-6s | %10s %10s | %10s %10s\n", "N", "interp", "min ours", "max ours", "min thesis", "max thesis");
     for (const auto& entry : all)
     {
       for (int k = 0; k < 3; ++k)
       {
+        if (!cfg.Interps[k])
+        {
+          continue;
+        }
         const std::string base = std::string("table_3_9_test4_min_max");
         std::printf("%7lld | %-6s | %10.3e %10.4f | %s %s\n", entry.first, Names[k], entry.second[k].Min,
-          entry.second[k].Max, fmt(thesisValue(tables, base, std::string(Names[k]) + "/min", entry.first), "%10.3e").c_str(),
+          entry.second[k].Max,
+          fmt(thesisValue(tables, base, std::string(Names[k]) + "/min", entry.first), "%10.3e").c_str(),
           fmt(thesisValue(tables, base, std::string(Names[k]) + "/max", entry.first), "%10.4f").c_str());
       }
     }
@@ -542,6 +569,16 @@ int main(int argc, char** argv)
     {
       cfg.Cache = std::atoi(value);
     }
+    else if (key == "--warm")
+    {
+      cfg.Warm = std::atoi(value);
+    }
+    else if (key == "--interp")
+    {
+      const std::string list = std::string(",") + value + ",";
+      cfg.Interps = { list.find(",weno,") != std::string::npos, list.find(",cweno,") != std::string::npos,
+        list.find(",cwenoz,") != std::string::npos };
+    }
     else if (key == "--tables")
     {
       cfg.Tables = value;
@@ -560,51 +597,64 @@ int main(int argc, char** argv)
     const std::string text = ss.str();
     if (text.empty() || !JsonParser(text).parse(tables))
     {
-      std::fprintf(stderr, "cannot read %s: thesis columns and the tables' N lists are unavailable\n",
-        cfg.Tables.c_str());
+      std::fprintf(
+        stderr, "cannot read %s: thesis columns and the tables' N lists are unavailable\n", cfg.Tables.c_str());
       return 1;
     }
   }
   sltk::ThreadPool pool(cfg.Threads);
   sltk::Context ctx;
   ctx.Executor = &pool;
-  std::printf("SLTK HJB benchmark (thesis 3.5): threads %d, cell cache %d, median of %d run(s)\n", cfg.Threads,
-    cfg.Cache, cfg.Repeat);
+  std::printf("SLTK HJB benchmark (thesis 3.5): threads %d, cell cache %d (0: automatic), warm start %d (-1: "
+              "preset), median of %d run(s)\n",
+    cfg.Threads, cfg.Cache, cfg.Warm, cfg.Repeat);
   auto wants = [&](const char* id) { return cfg.Test == "all" || cfg.Test == id; };
   if (wants("1"))
   {
-    runTable<2>(tables, { "1", "Test 1 (3.5.1): rotation, RK3, dt = 3 dx, T = 1 -- Tables 3.1, 3.2",
-                          "table_3_1_test1_errors", "table_3_2_test1_cpu_s", 321 },
+    runTable<2>(
+      tables,
+      { "1", "Test 1 (3.5.1): rotation, RK3, dt = 3 dx, T = 1 -- Tables 3.1, 3.2", "table_3_1_test1_errors",
+        "table_3_2_test1_cpu_s", 321 },
       cfg, ctx, sltk::test1Problem(), [](long long n) { return sltk::test1Setup(n); }, -1.0);
   }
   if (wants("2"))
   {
-    runTable<1>(tables, { "2", "Test 2 (3.5.2): 1D semi-concave, RK1, dt = 10 dx, T = 1 -- Tables 3.3, 3.4",
-                          "table_3_3_test2_errors", "table_3_4_test2_cpu_s", 2561 },
+    runTable<1>(
+      tables,
+      { "2", "Test 2 (3.5.2): 1D semi-concave, RK1, dt = 10 dx, T = 1 -- Tables 3.3, 3.4", "table_3_3_test2_errors",
+        "table_3_4_test2_cpu_s", 2561 },
       cfg, ctx, sltk::test2Problem(), [](long long n) { return sltk::test2Setup(n); }, -1.0);
   }
   if (wants("3"))
   {
-    runTable<1>(tables, { "3", "Test 3 (3.5.3): 1D eikonal, periodic, RK3 over A^3, dt = dx, T = 1 -- Tables 3.5, 3.6",
-                          "table_3_5_test3_errors", "table_3_6_test3_cpu_s", 1006 },
+    runTable<1>(
+      tables,
+      { "3", "Test 3 (3.5.3): 1D eikonal, periodic, RK3 over A^3, dt = dx, T = 1 -- Tables 3.5, 3.6",
+        "table_3_5_test3_errors", "table_3_6_test3_cpu_s", 1006 },
       cfg, ctx, sltk::test3Problem(), [](long long n) { return sltk::test3Setup(n, 1.0); }, 0.0);
   }
   if (cfg.Test == "3h" || cfg.Test == "all")
   {
-    runTable<1>(tables, { "3h", "Test 3 with the text's T = 0.5 (thesis columns are Table 3.5's, T = 1 caption)",
-                          "table_3_5_test3_errors", "table_3_6_test3_cpu_s", 1006 },
+    runTable<1>(
+      tables,
+      { "3h", "Test 3 with the text's T = 0.5 (thesis columns are Table 3.5's, T = 1 caption)",
+        "table_3_5_test3_errors", "table_3_6_test3_cpu_s", 1006 },
       cfg, ctx, sltk::test3Problem(), [](long long n) { return sltk::test3Setup(n, 0.5); }, 0.0);
   }
   if (wants("4"))
   {
-    runTable<2>(tables, { "4", "Test 4 (3.5.4): 2D semi-convex, disc R = 2.2, RK1, dt = 5/4 dx, T = 0.5 -- Tables 3.7, 3.8",
-                          "table_3_7_test4_errors", "table_3_8_test4_cpu_s", 81 },
+    runTable<2>(
+      tables,
+      { "4", "Test 4 (3.5.4): 2D semi-convex, disc R = 2.2, RK1, dt = 5/4 dx, T = 0.5 -- Tables 3.7, 3.8",
+        "table_3_7_test4_errors", "table_3_8_test4_cpu_s", 81 },
       cfg, ctx, sltk::test4Problem(), [](long long n) { return sltk::test4Setup(n); }, -1.0, true);
   }
   if (wants("5"))
   {
-    runTable<2>(tables, { "5", "Test 5 (3.5.5): Zermelo with obstacles, RK3 over A^3, dt = dx, T = 3 -- Table 3.10", "",
-                          "table_3_10_test5_cpu_s", 126 },
+    runTable<2>(
+      tables,
+      { "5", "Test 5 (3.5.5): Zermelo with obstacles, RK3 over A^3, dt = dx, T = 3 -- Table 3.10", "",
+        "table_3_10_test5_cpu_s", 126 },
       cfg, ctx, sltk::test5Problem(), [](long long n) { return sltk::test5Setup(n); }, -1.0);
   }
   return 0;

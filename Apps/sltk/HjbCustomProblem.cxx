@@ -24,6 +24,8 @@ clamp if, pi, e); --fx starts one:
   --control-center A,... --control-radius R       ball / sphere (default 0 and 1)
   --rk 1|2|3             RK order of the characteristics (default 3)
   --tabulation N         tabulated controls per axis of A before the local search (default 33)
+  --warm-start N         after the first step, search an N^q grid around each node's previous
+                         argmin instead of tabulating A (default 0: off; 5 suits Test 4)
   --tolerance TOL        local search tolerance (default 1e-8)
   --reach                write ReachTime also without an obstacle
 example (thesis Test 4): sltk hjb --fx=-a1 --fy=-a2 --cost "(a1^2+a2^2)/2" --v0 "max(1-x^2-y^2,0)"
@@ -33,25 +35,9 @@ example (thesis Test 4): sltk hjb --fx=-a1 --fy=-a2 --cost "(a1^2+a2^2)/2" --v0 
 
 const std::vector<std::string>& hjbCustomOptionNames()
 {
-  static const std::vector<std::string> names = { "fx",
-    "fy",
-    "fz",
-    "cost",
-    "v0",
-    "obstacle",
-    "exact",
-    "nodes",
-    "domain",
-    "periodic",
-    "controls",
-    "control-dim",
-    "control-lower",
-    "control-upper",
-    "control-center",
-    "control-radius",
-    "rk",
-    "tabulation",
-    "tolerance" };
+  static const std::vector<std::string> names = { "fx", "fy", "fz", "cost", "v0", "obstacle", "exact", "nodes",
+    "domain", "periodic", "controls", "control-dim", "control-lower", "control-upper", "control-center",
+    "control-radius", "rk", "tabulation", "warm-start", "tolerance" };
   return names;
 }
 
@@ -84,6 +70,7 @@ std::string setHjbCustomProblem(Options& opt, vtkCWENOHJBSolver* solver)
   const double rk = opt.number("rk", 3.0);
   const double tabulation = opt.number("tabulation", 33.0);
   const double tolerance = opt.number("tolerance", 1e-8);
+  const double warmStart = opt.number("warm-start", 0.0);
   if (!opt.ok())
   {
     return opt.error();
@@ -143,6 +130,10 @@ std::string setHjbCustomProblem(Options& opt, vtkCWENOHJBSolver* solver)
   {
     return "--tabulation must be a whole number from 1 to 1000";
   }
+  if (warmStart < 0 || warmStart > 15 || warmStart != static_cast<int>(warmStart))
+  {
+    return "--warm-start must be a whole number from 0 (off) to 15";
+  }
   if (!(tolerance >= 0.0 && tolerance <= 1.0))
   {
     return "--tolerance must be in [0, 1]";
@@ -170,6 +161,7 @@ std::string setHjbCustomProblem(Options& opt, vtkCWENOHJBSolver* solver)
   solver->SetControlRadius(radius);
   solver->SetRKOrder(static_cast<int>(rk));
   solver->SetTabulationPoints(static_cast<int>(tabulation));
+  solver->SetWarmStartPoints(static_cast<int>(warmStart));
   solver->SetMinimizerTolerance(tolerance);
   solver->SetComputeReachableSet(opt.has("reach") ? 1 : 0);
   return "";

@@ -131,6 +131,55 @@ TEST(HjbMinimizer, NelderMeadInteriorMinimumInADisc)
   EXPECT_NEAR(r.Value, 0.0, 1e-12);
 }
 
+TEST(HjbMinimizer, WarmStartFindsTheMinimumWithFewerEvaluations)
+{
+  const auto disc = ControlSet<2>::ball({ 0.0, 0.0 }, 2.2);
+  MinimizerOptions opt;
+  opt.TabulationPoints = 33;
+  opt.Search = LocalSearch::NelderMead;
+  opt.Tolerance = 1e-10;
+  opt.WarmTabulationPoints = 5;
+  const ControlMinimizer<2, 1> m(disc, opt);
+  ASSERT_TRUE(m.warmStarts());
+  int outside = 0;
+  auto f = [&](const sltk::ControlSequence<2, 1>& a)
+  {
+    outside += disc.contains(a[0], 1e-12) ? 0 : 1;
+    const double x = a[0][0] - 0.7, y = a[0][1] + 1.1;
+    return x * x + 3.0 * y * y + x * y;
+  };
+  const auto cold = m.minimize(f);
+  const auto warm = m.minimizeFrom(f, { 0.6, -1.2 }); // the previous step's argmin, nearby
+  EXPECT_EQ(outside, 0);
+  EXPECT_NEAR(warm.Controls[0][0], 0.7, 1e-6);
+  EXPECT_NEAR(warm.Controls[0][1], -1.1, 1e-6);
+  EXPECT_NEAR(warm.Value, cold.Value, 1e-12);
+  EXPECT_EQ(warm.Arguments[0], warm.Controls[0][0]); // parameters of a ball are its coordinates
+  EXPECT_EQ(warm.Arguments[1], warm.Controls[0][1]);
+  EXPECT_LT(4 * warm.Evaluations, cold.Evaluations);
+
+  // A start on the boundary: the shifted grid is projected onto A, the minimum on the rim is found.
+  auto rim = [&](const sltk::ControlSequence<2, 1>& a) { return -a[0][0]; };
+  const auto edge = m.minimizeFrom(rim, { 2.2, 0.0 });
+  EXPECT_EQ(outside, 0);
+  EXPECT_NEAR(edge.Value, -2.2, 1e-8);
+}
+
+TEST(HjbMinimizer, WarmStartOnACircleOfHeadings)
+{
+  const auto circle = ControlSet<2>::sphere({ 0.0, 0.0 }, 1.0);
+  MinimizerOptions opt;
+  opt.TabulationPoints = 32;
+  opt.Tolerance = 1e-10;
+  opt.WarmTabulationPoints = 3;
+  const ControlMinimizer<2, 1> m(circle, opt);
+  auto f = [](const sltk::ControlSequence<2, 1>& a) { return -(0.6 * a[0][0] + 0.8 * a[0][1]); };
+  const auto r = m.minimizeFrom(f, { std::atan2(0.8, 0.6) + 0.3 });
+  EXPECT_NEAR(r.Value, -1.0, 1e-12);
+  EXPECT_NEAR(r.Arguments[0], std::atan2(0.8, 0.6), 1e-5);
+  EXPECT_LT(r.Evaluations, 60);
+}
+
 TEST(HjbMinimizer, NelderMeadKeepsVerticesInsideWhenTheMinimumIsOutside)
 {
   // Unconstrained minimum at (3, 4), |(3, 4)| = 5: the constrained one is 2 (3, 4) / 5.

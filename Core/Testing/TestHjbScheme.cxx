@@ -188,6 +188,33 @@ TEST(HjbScheme, Test4MatchesTables37And39)
   expectWithin(c.Max, 0.992, 0.01, "Test 4 CWENO max N=41");
 }
 
+TEST(HjbScheme, Test4WarmStartMatchesTheFullTabulation)
+{
+  // The preset warm-starts each node's minimisation from its previous argmin;
+  // the thesis's procedure tabulates A (33 x 33) at every node and step.
+  const auto problem = sltk::test4Problem();
+  auto cold = sltk::test4Setup(41);
+  cold.Options.Minimizer.WarmTabulationPoints = 0;
+  const HjbRun full = solve<Cweno2>(problem, cold);
+  const HjbRun warm = solve<Cweno2>(problem, sltk::test4Setup(41));
+  EXPECT_NEAR(warm.Error, full.Error, 0.01 * full.Error);
+  EXPECT_NEAR(warm.Min, full.Min, 0.05 * std::fabs(full.Min));
+  EXPECT_NEAR(warm.Max, full.Max, 1e-3);
+  // Step 1 has no previous argmin and tabulates A in both runs: compare the
+  // evaluations of the later steps.
+  sltk::GridField<2> u(cold.Grid, 2), next(cold.Grid, 2);
+  sltk::hjbInitialize(problem, u);
+  sltk::HjbStats first;
+  const double dt = cold.Options.MaxTimeStep;
+  ASSERT_TRUE(sltk::hjbStep<Cweno2>(sltk::Context{}, cold.Options, problem, u, next, dt, dt, &first).isOk());
+  auto laterSteps = [&](const sltk::HjbStats& s)
+  { return (s.Evaluations - first.Evaluations) / (s.NodeUpdates - first.NodeUpdates); };
+  ASSERT_GT(full.Stats.Steps, 2);
+  EXPECT_GT(laterSteps(full.Stats), 5.0 * laterSteps(warm.Stats))
+    << "evaluations per node and step after the first: cold " << laterSteps(full.Stats) << ", warm "
+    << laterSteps(warm.Stats);
+}
+
 TEST(HjbScheme, Test4MatchesTables37And39_Long)
 {
   const auto problem = sltk::test4Problem();
@@ -357,7 +384,7 @@ TEST(HjbScheme, SerialAndThreadedAreBitIdenticalAndCacheSizeIsInvisible)
   ASSERT_TRUE(sltk::hjbAdvance<CwenoZ2>(ctx, eight.Options, problem, cache8).isOk());
   ASSERT_TRUE(sltk::hjbAdvance<Weno2>(ctx, one.Options, problem, weno1).isOk());
   ASSERT_TRUE(sltk::hjbAdvance<Weno2>(ctx, setup.Options, problem, weno256).isOk());
-  EXPECT_EQ(setup.Options.CellCacheSize, 256); // the default: the hashed polynomial table
+  EXPECT_EQ(setup.Options.CellCacheSize, 0); // the default: automatic (4096 CWENO polynomials, 256 WENO interpolators)
   EXPECT_EQ(serial.storage(), threaded.storage());
   EXPECT_EQ(serial.storage(), cache1.storage());
   EXPECT_EQ(serial.storage(), cache8.storage());

@@ -151,10 +151,11 @@ Status checkSizesAndTimes(const HjbExpressionSpec& spec, Index nodes)
       "the RK order must be 1, 2 or 3, got " + std::to_string(static_cast<int>(spec.Order)));
   }
   const MinimizerOptions& m = spec.Minimizer;
-  if (m.TabulationPoints < 1 || !(m.Tolerance >= 0.0) || m.MaxIterations < 0)
+  if (m.TabulationPoints < 1 || !(m.Tolerance >= 0.0) || m.MaxIterations < 0 || m.WarmTabulationPoints < 0 ||
+    m.WarmTabulationPoints > 15)
   {
-    return Status::invalidArgument(
-      "minimiser options: tabulation points >= 1, tolerance >= 0 and iterations >= 0 are needed");
+    return Status::invalidArgument("minimiser options: tabulation points >= 1, tolerance >= 0, iterations >= 0 and "
+                                   "warm-start points in 0..15 are needed");
   }
   return Status::ok();
 }

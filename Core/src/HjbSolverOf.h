@@ -101,7 +101,8 @@ public:
         break;
       }
       const double tNext = this->startTime() + static_cast<double>(this->Done + 1) * this->Dt;
-      status = hjbStep<Interp>(ctx, this->Options, this->P, this->U, this->Next, tNext, this->Dt, &this->Stats);
+      status = hjbStep<Interp>(
+        ctx, this->Options, this->P, this->U, this->Next, tNext, this->Dt, &this->Stats, &this->Argmins);
       if (status.isOk() || status.code() == StatusCode::NumericalFailure)
       {
         std::swap(this->U, this->Next);
@@ -172,6 +173,7 @@ private:
       }
     }
     this->Stats = HjbStats{};
+    this->Argmins = HjbArgmins{};
     this->Done = 0;
     if (this->Reachable)
     {
@@ -208,6 +210,7 @@ private:
   GridField<D, double> Next;
   GridField<D, double> Reach;
   HjbStats Stats;
+  HjbArgmins Argmins; ///< warm starts of the minimiser (MinimizerOptions::WarmTabulationPoints)
 };
 
 /// Builds the solver for the interpolator chosen at run time.

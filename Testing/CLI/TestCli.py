@@ -169,7 +169,7 @@ t4 = json.load(open(os.path.join(tmp, "t4.json"))) if rc == 0 else {}
 custom = ["hjb", "--fx=-a1", "--fy", "-a2", "--cost", "(a1^2 + a2^2)/2", "--v0", "max(1 - (x^2 + y^2), 0)",
           "--exact", "hypot(x, y) <= 1 ? (hypot(x, y) - 1)^2 / (2*t) : 0", "--nodes", "21,21", "--domain", "-2,2,-2,2",
           "--controls", "ball", "--control-dim", "2", "--control-radius", "2.2", "--rk", "1", "--courant", "1.25",
-          "--final-time", "0.5"]
+          "--warm-start", "5", "--final-time", "0.5"]
 rc, out, err = run(*custom, "--json", os.path.join(tmp, "c4.json"))
 c4 = json.load(open(os.path.join(tmp, "c4.json"))) if rc == 0 else {}
 expect(rc == 0 and abs(c4.get("l1_error", 1) - t4.get("l1_error", 0)) < 1e-12 and c4.get("steps") == 2,

@@ -67,6 +67,7 @@ void setQuadraticProblem(vtkCWENOHJBSolver* s, int n)
   s->SetFinalTime(0.5);
   s->SetTabulationPoints(33);
   s->SetMinimizerTolerance(1e-8);
+  s->SetWarmStartPoints(5); // as the preset
 }
 } // namespace
 

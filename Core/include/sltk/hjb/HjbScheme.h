@@ -16,11 +16,14 @@
 /// each chunk of nodes owns a CellCache of HjbOptions::CellCacheSize prepared
 /// cells so that a CWENO polynomial serves all the feet of a node that fall in
 /// its cell (Remarks 3.1-3.2). dt = (T - t0) / ceil((T - t0) / MaxTimeStep).
+/// With MinimizerOptions::WarmTabulationPoints > 0 and an HjbArgmins store,
+/// each node's minimisation starts from its argmin of the previous step.
 
 #include "sltk/core/Status.h"
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
 #include "sltk/hjb/CellCache.h"
+#include "sltk/hjb/HjbArgmins.h"
 #include "sltk/hjb/HjbProblem.h"
 #include "sltk/hjb/Minimizer.h"
 #include "sltk/sl/Characteristics.h"
@@ -46,22 +49,24 @@ struct HjbOptions
   double MaxTimeStep = 0.0;        ///< lambda dx, shortened so that (T - t0) / dt is an integer
   MinimizerOptions Minimizer;      ///< tabulation + local search over A^nu
   /// Prepared cells kept per thread chunk (CellCache.h): 1 (prepareIfNeeded),
-  /// 8 (linear search) or 256 (hashed table; CWENO keeps only the polynomials).
-  /// 256 lets consecutive nodes reuse the cells of their neighbours' feet.
+  /// 8 (linear search), 256 or 4096 (hashed tables; CWENO keeps only the
+  /// polynomials), 0 = automatic: 4096 for CWENO/CWENOZ, whose builds are the
+  /// expensive part, 256 for the others (an interpolator object per entry).
+  /// Large tables let consecutive nodes reuse the cells of their neighbours' feet.
   /// Measured (sltkBenchHjb, one thread, same run; builds per node and step,
   /// CWENO time gain over WENO): Test 4 N = 41: 1 -> 203 builds, -98%;
   /// 8 -> 32, +26%; 256 -> 6.5, +49%. Test 2 N = 641: 1 -> 42, -58%;
   /// 8 -> 33, -49%; 256 -> 2.9, +13%. Results are identical for every size.
-  int CellCacheSize = 256;
+  int CellCacheSize = 0;
 };
 
 /// Work counters, summed over the steps done.
 struct HjbStats
 {
   Index Steps = 0;
-  double NodeUpdates = 0.0;    ///< nodes x steps
-  double Evaluations = 0.0;    ///< objective evaluations F(a) of (3.7) (= interpolations)
-  double CellBuilds = 0.0;     ///< interpolator prepare() calls
+  double NodeUpdates = 0.0; ///< nodes x steps
+  double Evaluations = 0.0; ///< objective evaluations F(a) of (3.7) (= interpolations)
+  double CellBuilds = 0.0;  ///< interpolator prepare() calls
   double evaluationsPerNode() const { return this->NodeUpdates > 0.0 ? this->Evaluations / this->NodeUpdates : 0.0; }
   double buildsPerNode() const { return this->NodeUpdates > 0.0 ? this->CellBuilds / this->NodeUpdates : 0.0; }
 };
@@ -86,7 +91,7 @@ namespace detail
 template <class Interp, int K, int S, class Problem>
 void hjbKernel(const Context& ctx, const ButcherTableau<S>& tableau, const MinimizerOptions& minOptions,
   const Problem& problem, const GridField<Interp::Dim, double>& current, GridField<Interp::Dim, double>& next,
-  double tNext, double dt, std::array<double, 3>& work)
+  double tNext, double dt, HjbArgmins* argmins, std::array<double, 3>& work)
 {
   constexpr int D = Interp::Dim;
   constexpr int M = Problem::ControlDim;
@@ -95,11 +100,17 @@ void hjbKernel(const Context& ctx, const ButcherTableau<S>& tableau, const Minim
   const GridSpec<D>& spec = current.spec();
   const ControlMinimizer<M, S> minimizer(problem.Controls, minOptions);
   const Index n = spec.nodeCount();
+  const bool warm = argmins != nullptr && minimizer.warmStarts() && !Problem::HasFeedback;
+  if (warm && (argmins->count() != minimizer.parameterCount() || argmins->nodes() != n))
+  {
+    argmins->reset(n, minimizer.parameterCount());
+  }
   const Index grain = std::max<Index>(16, (n + 63) / 64); // chunks independent of the thread count
   const Index chunks = (n + grain - 1) / grain;
   std::vector<std::array<double, 3>> partial(static_cast<size_t>(chunks), std::array<double, 3>{});
   const Interp prototype(current);
-  auto body = [&](Index begin, Index end) {
+  auto body = [&](Index begin, Index end)
+  {
     CellCache<Interp, K> cache(prototype, current); // per chunk: interpolators hold per-cell scratch
     CharacteristicStages<D, S> stages;
     std::array<double, 3> local{};
@@ -108,9 +119,10 @@ void hjbKernel(const Context& ctx, const ButcherTableau<S>& tableau, const Minim
     {
       const Point x = nodePoint(spec, i);
       // F(a) of (3.7): interpolation at the foot (3.8) + cost quadrature (3.9).
-      auto objective = [&](const Sequence& a) -> double {
-        traceCharacteristic(tableau, x, tNext, dt,
-          [&](double t, const Point& X, int k) { return problem.Dynamics(t, X, a[k]); }, stages);
+      auto objective = [&](const Sequence& a) -> double
+      {
+        traceCharacteristic(
+          tableau, x, tNext, dt, [&](double t, const Point& X, int k) { return problem.Dynamics(t, X, a[k]); }, stages);
         for (int d = 0; d < D; ++d)
         {
           if (!std::isfinite(stages.Foot[d])) // cannot be located: not a candidate
@@ -121,8 +133,8 @@ void hjbKernel(const Context& ctx, const ButcherTableau<S>& tableau, const Minim
         double v = cache(stages.Foot.data());
         if constexpr (Problem::HasCost)
         {
-          v += stageQuadrature(tableau, stages, dt,
-            [&](double t, const Point& X, int k) { return problem.RunningCost(t, X, a[k]); });
+          v += stageQuadrature(
+            tableau, stages, dt, [&](double t, const Point& X, int k) { return problem.RunningCost(t, X, a[k]); });
         }
         return v;
       };
@@ -137,6 +149,26 @@ void hjbKernel(const Context& ctx, const ButcherTableau<S>& tableau, const Minim
         }
         value = objective(a);
         local[0] += 1.0;
+      }
+      else if (warm)
+      {
+        MinimizerResult<M, S> r;
+        if (argmins->has(node))
+        {
+          typename ControlMinimizer<M, S>::Parameters start{};
+          std::copy_n(argmins->at(node), minimizer.parameterCount(), start.begin());
+          r = minimizer.minimizeFrom(objective, start);
+        }
+        else
+        {
+          r = minimizer.minimize(objective);
+        }
+        if (std::isfinite(r.Value))
+        {
+          std::copy_n(r.Arguments.begin(), minimizer.parameterCount(), argmins->at(node));
+        }
+        value = r.Value;
+        local[0] += static_cast<double>(r.Evaluations);
       }
       else
       {
@@ -183,30 +215,43 @@ struct FixedCellCache<Problem, std::void_t<decltype(Problem::CellCacheSize)>>
 template <class Interp, int S, class Problem>
 Status hjbDispatchCache(const Context& ctx, const HjbOptions& options, const ButcherTableau<S>& tableau,
   const Problem& problem, const GridField<Interp::Dim, double>& current, GridField<Interp::Dim, double>& next,
-  double tNext, double dt, std::array<double, 3>& work)
+  double tNext, double dt, HjbArgmins* argmins, std::array<double, 3>& work)
 {
+  auto run = [&](auto size)
+  {
+    hjbKernel<Interp, decltype(size)::value>(
+      ctx, tableau, options.Minimizer, problem, current, next, tNext, dt, argmins, work);
+    return Status::ok();
+  };
   if constexpr (FixedCellCache<Problem>::value > 0)
   {
-    (void)options;
-    hjbKernel<Interp, FixedCellCache<Problem>::value>(ctx, tableau, options.Minimizer, problem, current, next, tNext, dt, work);
-    return Status::ok();
+    return run(std::integral_constant<int, FixedCellCache<Problem>::value>{});
   }
   else
   {
-  switch (options.CellCacheSize)
-  {
-    case 1:
-      hjbKernel<Interp, 1>(ctx, tableau, options.Minimizer, problem, current, next, tNext, dt, work);
-      return Status::ok();
-    case 8:
-      hjbKernel<Interp, 8>(ctx, tableau, options.Minimizer, problem, current, next, tNext, dt, work);
-      return Status::ok();
-    case 256:
-      hjbKernel<Interp, 256>(ctx, tableau, options.Minimizer, problem, current, next, tNext, dt, work);
-      return Status::ok();
-    default:
-      return Status::invalidArgument("CellCacheSize must be 1, 8 or 256, got " + std::to_string(options.CellCacheSize));
-  }
+    switch (options.CellCacheSize)
+    {
+      case 0:
+        if constexpr (IsCwenoInterpolator<Interp>::value)
+        {
+          return run(std::integral_constant<int, 4096>{});
+        }
+        else
+        {
+          return run(std::integral_constant<int, 256>{});
+        }
+      case 1:
+        return run(std::integral_constant<int, 1>{});
+      case 8:
+        return run(std::integral_constant<int, 8>{});
+      case 256:
+        return run(std::integral_constant<int, 256>{});
+      case 4096:
+        return run(std::integral_constant<int, 4096>{});
+      default:
+        return Status::invalidArgument(
+          "CellCacheSize must be 0 (automatic), 1, 8, 256 or 4096, got " + std::to_string(options.CellCacheSize));
+    }
   }
 }
 
@@ -220,7 +265,8 @@ Status hjbValidate(const HjbOptions& options, const Problem& problem, const Grid
   SLTK_RETURN_IF_ERROR(problem.Controls.validate());
   if (!isValidRkOrder(static_cast<int>(options.Order)))
   {
-    return Status::invalidArgument("RK order must be 1, 2 or 3, got " + std::to_string(static_cast<int>(options.Order)));
+    return Status::invalidArgument(
+      "RK order must be 1, 2 or 3, got " + std::to_string(static_cast<int>(options.Order)));
   }
   if (u.ghost() < Interp::GhostWidth)
   {
@@ -228,9 +274,11 @@ Status hjbValidate(const HjbOptions& options, const Problem& problem, const Grid
       " ghost layers, the interpolator reads " + std::to_string(Interp::GhostWidth));
   }
   if (options.Minimizer.TabulationPoints < 1 || !(options.Minimizer.Tolerance >= 0.0) ||
-    options.Minimizer.MaxIterations < 0)
+    options.Minimizer.MaxIterations < 0 || options.Minimizer.WarmTabulationPoints < 0 ||
+    options.Minimizer.WarmTabulationPoints > 15)
   {
-    return Status::invalidArgument("minimiser options: TabulationPoints >= 1, Tolerance >= 0 and MaxIterations >= 0 are needed");
+    return Status::invalidArgument("minimiser options: TabulationPoints >= 1, Tolerance >= 0, MaxIterations >= 0 and "
+                                   "WarmTabulationPoints in 0..15 are needed");
   }
   return Status::ok();
 }
@@ -238,10 +286,13 @@ Status hjbValidate(const HjbOptions& options, const Problem& problem, const Grid
 /// One step of (3.7) from t_n = tNext - dt to tNext. `current` holds U^n (its
 /// ghosts are filled here), `next` receives U^{n+1} (resized if needed).
 /// Returns numericalFailure when a value is NaN/Inf (the step is complete).
+/// `argmins` (optional) carries the per-node argmins from step to step for the
+/// warm start (MinimizerOptions::WarmTabulationPoints > 0; reset when its size
+/// does not match).
 template <class Interp, class Problem>
 Status hjbStep(const Context& ctx, const HjbOptions& options, const Problem& problem,
   GridField<Interp::Dim, double>& current, GridField<Interp::Dim, double>& next, double tNext, double dt,
-  HjbStats* stats = nullptr)
+  HjbStats* stats = nullptr, HjbArgmins* argmins = nullptr)
 {
   static_assert(Problem::Dim == Interp::Dim, "the problem and the interpolator must have the same dimension");
   SLTK_RETURN_IF_ERROR(hjbValidate<Interp>(options, problem, current));
@@ -263,9 +314,10 @@ Status hjbStep(const Context& ctx, const HjbOptions& options, const Problem& pro
   }
   current.fillGhosts();
   std::array<double, 3> work{};
-  const Status status = withTableau(options.Order, [&](const auto& tableau) {
-    return detail::hjbDispatchCache<Interp>(ctx, options, tableau, problem, current, next, tNext, dt, work);
-  });
+  const Status status = withTableau(options.Order,
+    [&](const auto& tableau) {
+      return detail::hjbDispatchCache<Interp>(ctx, options, tableau, problem, current, next, tNext, dt, argmins, work);
+    });
   SLTK_RETURN_IF_ERROR(status);
   if (stats)
   {
@@ -333,6 +385,7 @@ Status hjbAdvance(const Context& ctx, const HjbOptions& options, const Problem& 
     hjbMarkReached<D>(nullptr, options.StartTime, u, *reach, options.StartTime);
   }
   GridField<D, double> next(spec, u.ghost());
+  HjbArgmins argmins; // warm starts (MinimizerOptions::WarmTabulationPoints)
   Interrupter& progress = ctx.interrupter();
   progress.start("HJB semi-Lagrangian scheme (3.7)");
   Status status;
@@ -344,7 +397,7 @@ Status hjbAdvance(const Context& ctx, const HjbOptions& options, const Problem& 
       break;
     }
     const double tNext = options.StartTime + static_cast<double>(n + 1) * dt;
-    status = hjbStep<Interp>(ctx, options, problem, u, next, tNext, dt, stats);
+    status = hjbStep<Interp>(ctx, options, problem, u, next, tNext, dt, stats, &argmins);
     if (status.isOk() || status.code() == StatusCode::NumericalFailure)
     {
       std::swap(u, next);
