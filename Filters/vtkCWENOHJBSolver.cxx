@@ -34,13 +34,8 @@ vtkCWENOHJBSolver::vtkCWENOHJBSolver()
 
 vtkCWENOHJBSolver::~vtkCWENOHJBSolver()
 {
-  for (char** text : { &this->DynamicsX,
-         &this->DynamicsY,
-         &this->DynamicsZ,
-         &this->RunningCost,
-         &this->InitialValue,
-         &this->Obstacle,
-         &this->ExactSolution })
+  for (char** text : { &this->DynamicsX, &this->DynamicsY, &this->DynamicsZ, &this->RunningCost, &this->InitialValue,
+         &this->Obstacle, &this->ExactSolution, &this->ArgminA1, &this->ArgminA2, &this->ArgminA3 })
   {
     delete[] * text;
     *text = nullptr;
@@ -114,10 +109,8 @@ sltk::Status valuesFromImage(vtkImageData* image, sltk::HjbExpressionSpec& spec)
 }
 
 /// The block `extent` of a whole-grid node array (x fastest); +inf (never reached) becomes -1.
-vtkSmartPointer<vtkDoubleArray> block(const std::vector<double>& values,
-  const sltk::HjbGrid& grid,
-  const int extent[6],
-  const char* name)
+vtkSmartPointer<vtkDoubleArray> block(
+  const std::vector<double>& values, const sltk::HjbGrid& grid, const int extent[6], const char* name)
 {
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
   array->SetName(name);
@@ -147,9 +140,8 @@ void addScalar(vtkFieldData* fd, const char* name, double value)
 }
 } // namespace
 
-int vtkCWENOHJBSolver::BuildSolver(vtkInformation* inInfo,
-  vtkImageData* values,
-  std::unique_ptr<sltk::HjbSolver>& solver)
+int vtkCWENOHJBSolver::BuildSolver(
+  vtkInformation* inInfo, vtkImageData* values, std::unique_ptr<sltk::HjbSolver>& solver)
 {
   sltk::Status status;
   if (this->Preset != CUSTOM)
@@ -170,6 +162,7 @@ int vtkCWENOHJBSolver::BuildSolver(vtkInformation* inInfo,
     spec.Initial = text(this->InitialValue);
     spec.Obstacle = text(this->Obstacle);
     spec.Exact = text(this->ExactSolution);
+    spec.Argmin = { text(this->ArgminA1), text(this->ArgminA2), text(this->ArgminA3) };
     spec.ReachableSet = this->ComputeReachableSet != 0;
     spec.Dimension = 0;
     for (int a = 0; a < 3; ++a)
@@ -225,9 +218,8 @@ int vtkCWENOHJBSolver::BuildSolver(vtkInformation* inInfo,
   return 1;
 }
 
-int vtkCWENOHJBSolver::RequestInformation(vtkInformation*,
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
+int vtkCWENOHJBSolver::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkInformation* inInfo =
     inputVector[0]->GetNumberOfInformationObjects() > 0 ? inputVector[0]->GetInformationObject(0) : nullptr;
@@ -270,9 +262,8 @@ int vtkCWENOHJBSolver::RequestUpdateExtent(vtkInformation*, vtkInformationVector
   return 1;
 }
 
-int vtkCWENOHJBSolver::RequestData(vtkInformation*,
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
+int vtkCWENOHJBSolver::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkInformation* inInfo =
     inputVector[0]->GetNumberOfInformationObjects() > 0 ? inputVector[0]->GetInformationObject(0) : nullptr;
@@ -351,6 +342,8 @@ void vtkCWENOHJBSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InitialValue: " << text(this->InitialValue) << "\n";
   os << indent << "Obstacle: " << text(this->Obstacle) << "\n";
   os << indent << "ExactSolution: " << text(this->ExactSolution) << "\n";
+  os << indent << "Argmin: " << text(this->ArgminA1) << " | " << text(this->ArgminA2) << " | " << text(this->ArgminA3)
+     << "\n";
   os << indent << "Dimensions: " << this->Dimensions[0] << " " << this->Dimensions[1] << " " << this->Dimensions[2]
      << "\n";
   os << indent << "ControlSet: " << this->ControlSet << " (dimension " << this->ControlDimension << ")\n";

@@ -136,6 +136,19 @@ public:
   ///@}
 
   ///@{
+  /// Custom problem: closed-form argmin a*(t, x, y, z) of (3.7), one formula
+  /// per control component (a1..a3 as many as ControlDimension). When given,
+  /// it replaces the search of A (projected onto A; one evaluation per node
+  /// and step). All empty (the default): the minimiser searches A.
+  vtkSetStringMacro(ArgminA1);
+  vtkGetStringMacro(ArgminA1);
+  vtkSetStringMacro(ArgminA2);
+  vtkGetStringMacro(ArgminA2);
+  vtkSetStringMacro(ArgminA3);
+  vtkGetStringMacro(ArgminA3);
+  ///@}
+
+  ///@{
   /// Custom problem grid: nodes per axis (1 on unused axes; periodic axes count
   /// distinct nodes) and the domain (xmin, xmax, ymin, ymax, zmin, zmax).
   /// Ignored when an input image is connected. Default {81, 81, 1} on [-1, 1]^3.
@@ -230,6 +243,9 @@ protected:
   char* InitialValue = nullptr;
   char* Obstacle = nullptr;
   char* ExactSolution = nullptr;
+  char* ArgminA1 = nullptr;
+  char* ArgminA2 = nullptr;
+  char* ArgminA3 = nullptr;
   int Dimensions[3] = { 81, 81, 1 };
   double DomainBounds[6] = { -1.0, 1.0, -1.0, 1.0, -1.0, 1.0 };
   int PeriodicAxes[3] = { 0, 0, 0 };

@@ -15,6 +15,8 @@ clamp if, pi, e); --fx starts one:
   --v0 F                 initial datum v0(x, y, z)
   --obstacle F           state constraint g(x, y, z): v = max(v, g) (3.39); ReachTime is written (3.40)
   --exact F              exact solution v(t, x, y, z): adds l1_error and linf_error
+  --argmin1 F --argmin2 F --argmin3 F   closed-form argmin a*(t, x, y, z), one formula per control
+                         component: replaces the search (one evaluation per node and step)
   --nodes NX[,NY[,NZ]]   nodes per axis; their count is the dimension (default 81,81)
   --domain X0,X1[,Y0,Y1[,Z0,Z1]]   the box (default [-1, 1] per axis)
   --periodic AXES        periodic axes, e.g. x or x,y (default none: linear extrapolation)
@@ -24,8 +26,8 @@ clamp if, pi, e); --fx starts one:
   --control-center A,... --control-radius R       ball / sphere (default 0 and 1)
   --rk 1|2|3             RK order of the characteristics (default 3)
   --tabulation N         tabulated controls per axis of A before the local search (default 33)
-  --warm-start N         after the first step, search an N^q grid around each node's previous
-                         argmin instead of tabulating A (default 0: off; 5 suits Test 4)
+  --warm-start N         after the first step, search a coarse N^q grid of A and an N^q grid around
+                         each node's previous argmin instead of tabulating A (default 0: off; 5 suits Test 4)
   --tolerance TOL        local search tolerance (default 1e-8)
   --reach                write ReachTime also without an obstacle
 example (thesis Test 4): sltk hjb --fx=-a1 --fy=-a2 --cost "(a1^2+a2^2)/2" --v0 "max(1-x^2-y^2,0)"
@@ -35,9 +37,9 @@ example (thesis Test 4): sltk hjb --fx=-a1 --fy=-a2 --cost "(a1^2+a2^2)/2" --v0 
 
 const std::vector<std::string>& hjbCustomOptionNames()
 {
-  static const std::vector<std::string> names = { "fx", "fy", "fz", "cost", "v0", "obstacle", "exact", "nodes",
-    "domain", "periodic", "controls", "control-dim", "control-lower", "control-upper", "control-center",
-    "control-radius", "rk", "tabulation", "warm-start", "tolerance" };
+  static const std::vector<std::string> names = { "fx", "fy", "fz", "cost", "v0", "obstacle", "exact", "argmin1",
+    "argmin2", "argmin3", "nodes", "domain", "periodic", "controls", "control-dim", "control-lower", "control-upper",
+    "control-center", "control-radius", "rk", "tabulation", "warm-start", "tolerance" };
   return names;
 }
 
@@ -147,6 +149,9 @@ std::string setHjbCustomProblem(Options& opt, vtkCWENOHJBSolver* solver)
   solver->SetInitialValue(opt.value("v0", "").c_str());
   solver->SetObstacle(opt.value("obstacle", "").c_str());
   solver->SetExactSolution(opt.value("exact", "").c_str());
+  solver->SetArgminA1(opt.value("argmin1", "").c_str());
+  solver->SetArgminA2(opt.value("argmin2", "").c_str());
+  solver->SetArgminA3(opt.value("argmin3", "").c_str());
   solver->SetDimensions(dims);
   solver->SetDomainBounds(bounds);
   solver->SetPeriodicAxes(periodic);

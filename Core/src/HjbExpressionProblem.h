@@ -30,16 +30,18 @@ enum ExpressionSlot : int
 struct CompiledHjbExpressions
 {
   std::array<Expression, 3> Dynamics;
-  Expression Cost;     ///< "0" when the user gave none
-  Expression Initial;  ///< unused when initial values are given
-  Expression Obstacle; ///< compiled only when HasObstacle
-  Expression Exact;    ///< compiled only when HasExact
+  Expression Cost;                  ///< "0" when the user gave none
+  Expression Initial;               ///< unused when initial values are given
+  Expression Obstacle;              ///< compiled only when HasObstacle
+  Expression Exact;                 ///< compiled only when HasExact
+  std::array<Expression, 3> Argmin; ///< compiled only when HasArgmin
   bool HasObstacle = false;
   bool HasExact = false;
+  bool HasArgmin = false;
 };
 using SharedHjbExpressions = std::shared_ptr<const CompiledHjbExpressions>;
 
-template<int D, int M>
+template <int D, int M>
 void fillSlots(double (&v)[SlotCount], double t, const std::array<double, D>& x, const std::array<double, M>& a)
 {
   for (int k = 0; k < SlotCount; ++k)
@@ -57,7 +59,7 @@ void fillSlots(double (&v)[SlotCount], double t, const std::array<double, D>& x,
   }
 }
 
-template<int D, int M>
+template <int D, int M>
 struct ExpressionDynamics
 {
   SharedHjbExpressions E;
@@ -74,7 +76,7 @@ struct ExpressionDynamics
   }
 };
 
-template<int D, int M>
+template <int D, int M>
 struct ExpressionCost
 {
   SharedHjbExpressions E;
@@ -87,7 +89,7 @@ struct ExpressionCost
 };
 
 /// v_0(x), g(x) (-inf when there is no obstacle, so that max(u, g) = u) and v(t, x).
-template<int D>
+template <int D>
 struct ExpressionOfState
 {
   SharedHjbExpressions E;
@@ -107,24 +109,39 @@ struct ExpressionOfState
   }
 };
 
-/// One problem type per (D, M): cost, obstacle and exact solution are always
-/// present (constant or disabled at run time), and the cell cache is fixed,
-/// so that each (D, M, interpolator) compiles one kernel per RK order.
-template<int D, int M>
-struct ExpressionHjbProblem
-  : HjbProblem<D,
-      M,
-      ExpressionDynamics<D, M>,
-      ExpressionCost<D, M>,
-      ExpressionOfState<D>,
-      ExpressionOfState<D>,
-      ExpressionOfState<D>>
+/// The closed-form argmin a*(t, x) (enabled only when the user gave it).
+template <int D, int M>
+struct ExpressionArgmin
 {
-  static constexpr int CellCacheSize = 256;
+  SharedHjbExpressions E;
+  bool enabled() const { return this->E->HasArgmin; }
+  std::array<double, M> operator()(double t, const std::array<double, D>& x) const
+  {
+    double v[SlotCount];
+    fillSlots<D, 1>(v, t, x, std::array<double, 1>{ 0.0 });
+    std::array<double, M> a;
+    for (int m = 0; m < M; ++m)
+    {
+      a[m] = this->E->Argmin[m].evaluate(v);
+    }
+    return a;
+  }
+};
+
+/// One problem type per (D, M): cost, obstacle, exact solution and argmin are
+/// always present (constant or disabled at run time), and the cell cache is
+/// chosen automatically, so that each (D, M, interpolator) compiles one kernel
+/// per RK order.
+template <int D, int M>
+struct ExpressionHjbProblem
+  : HjbProblem<D, M, ExpressionDynamics<D, M>, ExpressionCost<D, M>, ExpressionOfState<D>, ExpressionOfState<D>,
+      ExpressionOfState<D>, ExpressionArgmin<D, M>>
+{
+  static constexpr int CellCacheSize = 0; // automatic only (HjbScheme.h FixedCellCache)
 };
 
 /// Everything makeExpressionSolver() checked and built, for the per-dimension part.
-template<int D>
+template <int D>
 struct ExpressionSolverInput
 {
   SharedHjbExpressions Expressions;
@@ -137,15 +154,13 @@ struct ExpressionSolverInput
 };
 
 /// Per dimension (HjbExpressionSolver{1,2,3}D.cxx): the solver for spec.ControlDimension and spec.Interpolator.
-template<int D>
-Status makeExpressionSolverOf(const HjbExpressionSpec& spec,
-  const ExpressionSolverInput<D>& in,
-  std::unique_ptr<HjbSolver>& solver);
+template <int D>
+Status makeExpressionSolverOf(
+  const HjbExpressionSpec& spec, const ExpressionSolverInput<D>& in, std::unique_ptr<HjbSolver>& solver);
 
-template<int D, int M>
-Status makeExpressionSolverOfControls(const HjbExpressionSpec& spec,
-  const ExpressionSolverInput<D>& in,
-  std::unique_ptr<HjbSolver>& solver)
+template <int D, int M>
+Status makeExpressionSolverOfControls(
+  const HjbExpressionSpec& spec, const ExpressionSolverInput<D>& in, std::unique_ptr<HjbSolver>& solver)
 {
   using Problem = ExpressionHjbProblem<D, M>;
   Problem problem;
@@ -174,23 +189,16 @@ Status makeExpressionSolverOfControls(const HjbExpressionSpec& spec,
   problem.Initial = ExpressionOfState<D>{ in.Expressions, &CompiledHjbExpressions::Initial };
   problem.Obstacle = ExpressionOfState<D>{ in.Expressions, &CompiledHjbExpressions::Obstacle };
   problem.Exact = ExpressionOfState<D>{ in.Expressions, &CompiledHjbExpressions::Exact };
-  solver = makeHjbSolverOf<Problem>(spec.Interpolator,
-    problem,
-    in.Grid,
-    in.Options,
-    in.Steps,
-    in.Dt,
-    in.Reachable,
-    in.Expressions->HasExact,
-    spec.InitialValues);
+  problem.Feedback = ExpressionArgmin<D, M>{ in.Expressions };
+  solver = makeHjbSolverOf<Problem>(spec.Interpolator, problem, in.Grid, in.Options, in.Steps, in.Dt, in.Reachable,
+    in.Expressions->HasExact, spec.InitialValues);
   return solver ? Status::ok() : Status::invalidArgument("unknown interpolator");
 }
 
 /// The body of makeExpressionSolverOf<D>: dispatch on the control dimension.
-template<int D>
-Status makeExpressionSolverForDim(const HjbExpressionSpec& spec,
-  const ExpressionSolverInput<D>& in,
-  std::unique_ptr<HjbSolver>& solver)
+template <int D>
+Status makeExpressionSolverForDim(
+  const HjbExpressionSpec& spec, const ExpressionSolverInput<D>& in, std::unique_ptr<HjbSolver>& solver)
 {
   switch (in.ControlDimension)
   {

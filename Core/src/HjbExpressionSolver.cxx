@@ -43,6 +43,47 @@ std::vector<std::string> slotNames(int dimension, int controls, bool time)
   return names;
 }
 
+/// The closed-form argmin: none, or one formula in x, y, z, t per control component.
+Status compileArgmin(const HjbExpressionSpec& spec, int controls, CompiledHjbExpressions& out)
+{
+  int given = 0;
+  for (const std::string& f : spec.Argmin)
+  {
+    given += f.empty() ? 0 : 1;
+  }
+  out.HasArgmin = given > 0;
+  if (!out.HasArgmin)
+  {
+    return Status::ok();
+  }
+  if (controls == 0)
+  {
+    return Status::invalidArgument(
+      "a closed-form argmin is given but there is no control set: choose one, or drop the argmin formulas");
+  }
+  const std::vector<std::string> stateAndTime = slotNames(spec.Dimension, 0, true);
+  for (int m = 0; m < 3; ++m)
+  {
+    const std::string what = "the argmin component a" + std::to_string(m + 1);
+    const std::string& formula = spec.Argmin[static_cast<size_t>(m)];
+    if (m >= controls)
+    {
+      if (!formula.empty())
+      {
+        return Status::invalidArgument(what + " is given but the controls have " + std::to_string(controls) +
+          " component(s): drop it or raise the control dimension");
+      }
+      continue;
+    }
+    if (formula.empty())
+    {
+      return Status::invalidArgument(what + " is empty: give one formula per control component (or none to search A)");
+    }
+    SLTK_RETURN_IF_ERROR(Expression::compile(what, formula, stateAndTime, out.Argmin[static_cast<size_t>(m)]));
+  }
+  return Status::ok();
+}
+
 Status compileAll(const HjbExpressionSpec& spec, CompiledHjbExpressions& out)
 {
   const int controls = spec.Controls == ControlKind::None ? 0 : spec.ControlDimension;
@@ -72,6 +113,7 @@ Status compileAll(const HjbExpressionSpec& spec, CompiledHjbExpressions& out)
   {
     SLTK_RETURN_IF_ERROR(Expression::compile("the obstacle g", spec.Obstacle, state, out.Obstacle));
   }
+  SLTK_RETURN_IF_ERROR(compileArgmin(spec, controls, out));
   out.HasExact = !spec.Exact.empty();
   if (out.HasExact)
   {
@@ -81,7 +123,7 @@ Status compileAll(const HjbExpressionSpec& spec, CompiledHjbExpressions& out)
   return Status::ok();
 }
 
-template<int D>
+template <int D>
 Status buildGrid(const HjbExpressionSpec& spec, GridSpec<D>& grid)
 {
   for (int a = 0; a < D; ++a)
@@ -160,10 +202,9 @@ Status checkSizesAndTimes(const HjbExpressionSpec& spec, Index nodes)
   return Status::ok();
 }
 
-template<int D>
-Status makeForDimension(const HjbExpressionSpec& spec,
-  SharedHjbExpressions expressions,
-  std::unique_ptr<HjbSolver>& solver)
+template <int D>
+Status makeForDimension(
+  const HjbExpressionSpec& spec, SharedHjbExpressions expressions, std::unique_ptr<HjbSolver>& solver)
 {
   ExpressionSolverInput<D> in;
   SLTK_RETURN_IF_ERROR(buildGrid<D>(spec, in.Grid));

@@ -174,6 +174,18 @@ rc, out, err = run(*custom, "--json", os.path.join(tmp, "c4.json"))
 c4 = json.load(open(os.path.join(tmp, "c4.json"))) if rc == 0 else {}
 expect(rc == 0 and abs(c4.get("l1_error", 1) - t4.get("l1_error", 0)) < 1e-12 and c4.get("steps") == 2,
        "custom Test 4 formulas reproduce the preset (L1 %s vs %s) %s" % (c4.get("l1_error"), t4.get("l1_error"), err))
+# A closed-form argmin replaces the search: v0 = |x|^2/2, f_D = -a, f_C = |a|^2/2 -> a* = x / (1 + t), one evaluation a node.
+quadratic = ["hjb", "--fx=-a1", "--fy=-a2", "--cost", "(a1^2 + a2^2)/2", "--v0", "(x^2 + y^2)/2", "--exact",
+          "(x^2 + y^2) / (2*(1 + t))", "--nodes", "21,21", "--controls", "ball",
+          "--control-dim", "2", "--control-radius", "2", "--rk", "1", "--final-time", "0.5"]
+rc, out, err = run(*quadratic, "--argmin1", "x/(1 + t)", "--argmin2", "y/(1 + t)", "--json", os.path.join(tmp, "argmin.json"))
+am = json.load(open(os.path.join(tmp, "argmin.json"))) if rc == 0 else {}
+expect(rc == 0 and am.get("evaluations_per_node") == 1 and am.get("l1_error", 1) < 1e-3,
+       "--argmin1/--argmin2 replace the search (%s evaluations a node, L1 %s) %s"
+       % (am.get("evaluations_per_node"), am.get("l1_error"), err))
+rc, _, err = run(*quadratic, "--argmin1", "x", "-o", os.path.join(tmp, "argmin-bad.vti"))
+expect(rc == 1 and "argmin component a2 is empty" in err and not os.path.exists(os.path.join(tmp, "argmin-bad.vti")),
+       "a missing argmin component is named, no file: " + err.strip())
 bad = os.path.join(tmp, "bad-formula.vti")
 rc, _, err = run(*custom[:-2], "--final-time", "0.5", "--cost", "(a1^2 + a2^2/2", "-o", bad)
 expect(rc == 1 and "running cost f_C" in err and "column" in err and not os.path.exists(bad),

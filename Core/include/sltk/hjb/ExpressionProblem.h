@@ -9,7 +9,8 @@
 /// (thesis (3.1)-(3.3)); the scheme (3.7) follows y' = f_D backwards in time
 /// from each node. Variables: x, y, z (as many as the dimension), t, and
 /// a1, a2, a3 (as many as the control dimension). f_D components and f_C may
-/// use all of them; v_0 and g use x, y, z; the exact solution x, y, z and t.
+/// use all of them; v_0 and g use x, y, z; the exact solution and the
+/// closed-form argmin (optional) x, y, z and t.
 /// Example, thesis Test 4 (3.37): f_D = (-a1, -a2), f_C = (a1^2 + a2^2)/2,
 /// A = disc of radius 2.2, v_0 = max(1 - x^2 - y^2, 0).
 
@@ -40,7 +41,10 @@ struct HjbExpressionSpec
   std::vector<double> InitialValues;   ///< v_0 at the nodes, x fastest (e.g. from an image)
   std::string Obstacle;                ///< g of (3.39); empty: unconstrained
   std::string Exact;                   ///< exact v(t, x); empty: unknown
-  bool ReachableSet = false;           ///< keep (3.40); also when an obstacle is given
+  /// Closed-form argmin a*(t, x) of (3.7), one formula per control component
+  /// (in x, y, z, t); all empty: the minimiser searches A. Projected onto A.
+  std::array<std::string, 3> Argmin;
+  bool ReachableSet = false; ///< keep (3.40); also when an obstacle is given
 
   ControlKind Controls = ControlKind::None;
   int ControlDimension = 1;                               ///< m of A in R^m (1-3)

@@ -38,8 +38,21 @@ struct NoFeedback
 {
 };
 
-template <int D, int M, class Dyn, class Cost, class Init, class Obs = NoObstacle,
-  class Ex = NoExact, class Fb = NoFeedback>
+namespace detail
+{
+/// True for callables with a `bool enabled() const` member.
+template <class F, class = void>
+struct HasEnabledMember : std::false_type
+{
+};
+template <class F>
+struct HasEnabledMember<F, std::void_t<decltype(std::declval<const F&>().enabled())>> : std::true_type
+{
+};
+} // namespace detail
+
+template <int D, int M, class Dyn, class Cost, class Init, class Obs = NoObstacle, class Ex = NoExact,
+  class Fb = NoFeedback>
 struct HjbProblem
 {
   static constexpr int Dim = D;
@@ -64,6 +77,24 @@ struct HjbProblem
   Obs Obstacle;
   Ex Exact;
   Fb Feedback;
+
+  /// True when the closed-form argmin replaces the search: always for a
+  /// feedback callable, unless it has enabled() (formulas the user may omit).
+  bool usesFeedback() const
+  {
+    if constexpr (!HasFeedback)
+    {
+      return false;
+    }
+    else if constexpr (detail::HasEnabledMember<Fb>::value)
+    {
+      return this->Feedback.enabled();
+    }
+    else
+    {
+      return true;
+    }
+  }
 
   /// u^0_i = v_0(x_i), or max(v_0, g) with an obstacle ((3.39): v(x, 0) = max(v_0(x), g(x))).
   double initialValue(const Point& x) const
@@ -97,14 +128,17 @@ HjbProblem<D, M, Dyn, Cost, Init, G, Ex, Fb> withObstacle(const HjbProblem<D, M,
 
 /// The same problem with its exact solution v(t, x).
 template <int D, int M, class Dyn, class Cost, class Init, class Obs, class Ex, class Fb, class E>
-HjbProblem<D, M, Dyn, Cost, Init, Obs, E, Fb> withExact(const HjbProblem<D, M, Dyn, Cost, Init, Obs, Ex, Fb>& p, E exact)
+HjbProblem<D, M, Dyn, Cost, Init, Obs, E, Fb> withExact(
+  const HjbProblem<D, M, Dyn, Cost, Init, Obs, Ex, Fb>& p, E exact)
 {
   return { p.Controls, p.Dynamics, p.RunningCost, p.Initial, p.Obstacle, std::move(exact), p.Feedback };
 }
 
-/// The same problem with a closed-form argmin a*(t_{n+1}, x_i) used in place of the search.
+/// The same problem with a closed-form argmin a*(t_{n+1}, x_i) used in place of
+/// the search (projected onto A; one evaluation per node and step).
 template <int D, int M, class Dyn, class Cost, class Init, class Obs, class Ex, class Fb, class F>
-HjbProblem<D, M, Dyn, Cost, Init, Obs, Ex, F> withFeedback(const HjbProblem<D, M, Dyn, Cost, Init, Obs, Ex, Fb>& p, F feedback)
+HjbProblem<D, M, Dyn, Cost, Init, Obs, Ex, F> withFeedback(
+  const HjbProblem<D, M, Dyn, Cost, Init, Obs, Ex, Fb>& p, F feedback)
 {
   return { p.Controls, p.Dynamics, p.RunningCost, p.Initial, p.Obstacle, p.Exact, std::move(feedback) };
 }

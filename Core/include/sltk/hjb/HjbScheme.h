@@ -100,7 +100,8 @@ void hjbKernel(const Context& ctx, const ButcherTableau<S>& tableau, const Minim
   const GridSpec<D>& spec = current.spec();
   const ControlMinimizer<M, S> minimizer(problem.Controls, minOptions);
   const Index n = spec.nodeCount();
-  const bool warm = argmins != nullptr && minimizer.warmStarts() && !Problem::HasFeedback;
+  const bool feedback = problem.usesFeedback();
+  const bool warm = argmins != nullptr && minimizer.warmStarts() && !feedback;
   if (warm && (argmins->count() != minimizer.parameterCount() || argmins->nodes() != n))
   {
     argmins->reset(n, minimizer.parameterCount());
@@ -139,16 +140,19 @@ void hjbKernel(const Context& ctx, const ButcherTableau<S>& tableau, const Minim
         return v;
       };
       double value = 0.0;
-      if constexpr (Problem::HasFeedback)
+      if (feedback)
       {
-        Sequence a{};
-        const auto star = problem.Feedback(tNext, x);
-        for (int k = 0; k < S; ++k)
+        if constexpr (Problem::HasFeedback)
         {
-          a[k] = star;
+          Sequence a{};
+          const auto star = problem.Controls.project(problem.Feedback(tNext, x)); // kept inside A
+          for (int k = 0; k < S; ++k)
+          {
+            a[k] = star;
+          }
+          value = objective(a);
+          local[0] += 1.0;
         }
-        value = objective(a);
-        local[0] += 1.0;
       }
       else if (warm)
       {
@@ -201,14 +205,22 @@ void hjbKernel(const Context& ctx, const ButcherTableau<S>& tableau, const Minim
 }
 
 /// Problems may fix the cell-cache size at compile time (static constexpr int
-/// CellCacheSize), which instantiates one kernel instead of three.
+/// CellCacheSize; 0 = the automatic size), which instantiates one kernel
+/// instead of five; -1: HjbOptions::CellCacheSize chooses at run time.
 template <class Problem, class = void>
-struct FixedCellCache : std::integral_constant<int, 0>
+struct FixedCellCache : std::integral_constant<int, -1>
 {
 };
 template <class Problem>
 struct FixedCellCache<Problem, std::void_t<decltype(Problem::CellCacheSize)>>
   : std::integral_constant<int, Problem::CellCacheSize>
+{
+};
+
+/// CellCacheSize 0: 4096 CWENO/CWENOZ polynomials (their builds are the
+/// expensive part), 256 for the others (an interpolator object per entry).
+template <class Interp>
+struct AutomaticCellCache : std::integral_constant<int, IsCwenoInterpolator<Interp>::value ? 4096 : 256>
 {
 };
 
@@ -223,23 +235,17 @@ Status hjbDispatchCache(const Context& ctx, const HjbOptions& options, const But
       ctx, tableau, options.Minimizer, problem, current, next, tNext, dt, argmins, work);
     return Status::ok();
   };
-  if constexpr (FixedCellCache<Problem>::value > 0)
+  constexpr int fixed = FixedCellCache<Problem>::value;
+  if constexpr (fixed >= 0)
   {
-    return run(std::integral_constant<int, FixedCellCache<Problem>::value>{});
+    return run(std::integral_constant < int, fixed == 0 ? AutomaticCellCache<Interp>::value : fixed > {});
   }
   else
   {
     switch (options.CellCacheSize)
     {
       case 0:
-        if constexpr (IsCwenoInterpolator<Interp>::value)
-        {
-          return run(std::integral_constant<int, 4096>{});
-        }
-        else
-        {
-          return run(std::integral_constant<int, 256>{});
-        }
+        return run(AutomaticCellCache<Interp>{});
       case 1:
         return run(std::integral_constant<int, 1>{});
       case 8:

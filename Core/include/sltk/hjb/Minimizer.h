@@ -91,6 +91,7 @@ public:
     this->Blocks = options.PerStageControls ? S : 1;
     this->Count = q * this->Blocks;
     this->Step = set.tabulationSpacing(options.TabulationPoints);
+    this->CoarseStep = set.tabulationSpacing(options.WarmTabulationPoints);
     if (set.empty())
     {
       this->Table.push_back(Sequence{});
@@ -154,7 +155,7 @@ public:
   {
     MinimizerResult<M, S> r;
     scanTable(objective, this->Table, this->TableParameters, r);
-    this->localSearch(objective, r);
+    this->localSearch(objective, r, this->Step);
     return r;
   }
 
@@ -179,17 +180,20 @@ public:
     {
       total *= w;
     }
+    bool interior = false; // the best is inside the fine grid: the argmin is within one fine step
     for (int code = 0; code < total; ++code)
     {
       Parameters p = start;
       int rest = code;
+      bool onEdge = false;
       for (int j = 0; j < q; ++j)
       {
-        const double offset = this->Step * static_cast<double>(rest % w - w / 2);
+        const int k = rest % w - w / 2;
         rest /= w;
+        onEdge = onEdge || k == -(w / 2) || k == w / 2;
         for (int b = 0; b < this->Blocks; ++b)
         {
-          p[b * q + j] += offset;
+          p[b * q + j] += this->Step * static_cast<double>(k);
         }
       }
       this->projectParameters(p);
@@ -200,16 +204,20 @@ public:
         r.Value = v;
         r.Controls = a;
         r.Arguments = p;
+        interior = !onEdge;
       }
     }
-    this->localSearch(objective, r);
+    // Otherwise the argmin moved past the fine grid (or jumped to the coarse
+    // candidate): search within one coarse step.
+    this->localSearch(objective, r, interior ? this->Step : this->CoarseStep);
     return r;
   }
 
 private:
-  /// Golden section or Nelder-Mead from r.Arguments (Options.Search).
+  /// Golden section on r.Arguments +- radius, or Nelder-Mead from r.Arguments
+  /// with edges of length radius (Options.Search).
   template <class Objective>
-  void localSearch(Objective& objective, MinimizerResult<M, S>& r) const
+  void localSearch(Objective& objective, MinimizerResult<M, S>& r, double radius) const
   {
     if (this->Count == 0 || this->Options.Search == LocalSearch::None || !std::isfinite(r.Value))
     {
@@ -218,11 +226,11 @@ private:
     const Parameters start = r.Arguments;
     if (this->Count == 1 && this->Options.Search != LocalSearch::NelderMead)
     {
-      this->golden(objective, start, r);
+      this->golden(objective, start, radius, r);
     }
     else
     {
-      this->nelderMead(objective, start, r);
+      this->nelderMead(objective, start, radius, r);
     }
   }
 
@@ -294,12 +302,12 @@ private:
 
   /// Golden-section search of the single parameter on [p* - h, p* + h] (clipped to A).
   template <class Objective>
-  void golden(Objective& objective, const Parameters& start, MinimizerResult<M, S>& r) const
+  void golden(Objective& objective, const Parameters& start, double radius, MinimizerResult<M, S>& r) const
   {
     double lo = 0.0, hi = 0.0;
     this->Set.parameterBounds(0, lo, hi);
-    double a = std::max(lo, start[0] - this->Step);
-    double b = std::min(hi, start[0] + this->Step);
+    double a = std::max(lo, start[0] - radius);
+    double b = std::min(hi, start[0] + radius);
     constexpr double invPhi = 0.6180339887498949; // (sqrt 5 - 1) / 2
     Parameters p = start;
     auto f = [&](double s)
@@ -346,7 +354,7 @@ private:
   /// every trial vertex projected onto A (3.2), started from the tabulated
   /// optimum with edges of the tabulation spacing.
   template <class Objective>
-  void nelderMead(Objective& objective, const Parameters& start, MinimizerResult<M, S>& r) const
+  void nelderMead(Objective& objective, const Parameters& start, double radius, MinimizerResult<M, S>& r) const
   {
     const int n = this->Count;
     std::array<Parameters, MaxParameters + 1> v{};
@@ -361,12 +369,12 @@ private:
     for (int j = 0; j < n; ++j)
     {
       v[j + 1] = start;
-      v[j + 1][j] += this->Step;
+      v[j + 1][j] += radius;
       this->projectParameters(v[j + 1]);
-      if (std::fabs(v[j + 1][j] - start[j]) < 0.5 * this->Step) // the step left A: go the other way
+      if (std::fabs(v[j + 1][j] - start[j]) < 0.5 * radius) // the step left A: go the other way
       {
         v[j + 1] = start;
-        v[j + 1][j] -= this->Step;
+        v[j + 1][j] -= radius;
       }
       fv[j + 1] = eval(v[j + 1]);
     }
@@ -490,7 +498,8 @@ private:
   std::vector<Parameters> CoarseParameters;
   int Blocks = 1;
   int Count = 0;
-  double Step = 0.0;
+  double Step = 0.0;       ///< spacing of the tabulation of A
+  double CoarseStep = 0.0; ///< spacing of the coarse tabulation of the warm starts
 };
 
 } // namespace sltk
