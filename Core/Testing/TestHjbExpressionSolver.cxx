@@ -92,24 +92,33 @@ TEST(HjbExpressionSolver, RotationMatchesTest1Preset)
   EXPECT_TRUE(std::isnan(e.L1Error)); // no exact solution given
 }
 
-TEST(HjbExpressionSolver, QuadraticHamiltonianMatchesTest4Preset)
+/// H(p) = |p|^2 / 2 on a 21 x 21 grid: f_D = -a, f_C = |a|^2/2, A = a disc of
+/// the given radius, RK1 feet, Nelder-Mead, T = 0.5 (Test 4 (3.37) and the
+/// closed-form argmin test below).
+sltk::HjbExpressionSpec quadraticHamiltonian(double radius)
 {
   sltk::HjbExpressionSpec s;
   s.Nodes = { 21, 21, 1 };
-  s.Lower = { -2.0, -2.0, 0.0 };
-  s.Upper = { 2.0, 2.0, 0.0 };
   s.Dynamics = { "-a1", "-a2", "" };
   s.Cost = "(a1^2 + a2^2)/2";
-  s.Initial = "max(1 - (x^2 + y^2), 0)";
-  s.Exact = "hypot(x, y) <= 1 ? (hypot(x, y) - 1)^2 / (2*t) : 0";
   s.Controls = sltk::ControlKind::Ball;
   s.ControlDimension = 2;
-  s.ControlRadius = 2.2;
+  s.ControlRadius = radius;
   s.Order = sltk::RkOrder::Euler;
   s.FinalTime = 0.5;
+  s.Minimizer.Search = sltk::LocalSearch::NelderMead;
+  return s;
+}
+
+TEST(HjbExpressionSolver, QuadraticHamiltonianMatchesTest4Preset)
+{
+  sltk::HjbExpressionSpec s = quadraticHamiltonian(2.2);
+  s.Lower = { -2.0, -2.0, 0.0 };
+  s.Upper = { 2.0, 2.0, 0.0 };
+  s.Initial = "max(1 - (x^2 + y^2), 0)";
+  s.Exact = "hypot(x, y) <= 1 ? (hypot(x, y) - 1)^2 / (2*t) : 0";
   s.CourantNumber = 1.25;
   s.Minimizer.TabulationPoints = 33;
-  s.Minimizer.Search = sltk::LocalSearch::NelderMead;
   s.Minimizer.Tolerance = 1e-8;
   s.Minimizer.WarmTabulationPoints = 5; // as the preset: the warm start also runs through the expression path
   const sltk::HjbRunResult p = preset(sltk::HjbPreset::Test4Quadratic, 21);
@@ -127,19 +136,10 @@ TEST(HjbExpressionSolver, QuadraticHamiltonianMatchesTest4Preset)
 /// data (the feet x (1 + t_n) / (1 + t_{n+1}) stay inside the domain).
 sltk::HjbExpressionSpec quadraticValue()
 {
-  sltk::HjbExpressionSpec s;
-  s.Nodes = { 21, 21, 1 };
-  s.Dynamics = { "-a1", "-a2", "" };
-  s.Cost = "(a1^2 + a2^2)/2";
+  sltk::HjbExpressionSpec s = quadraticHamiltonian(2.0);
   s.Initial = "(x^2 + y^2)/2";
   s.Exact = "(x^2 + y^2) / (2*(1 + t))";
-  s.Controls = sltk::ControlKind::Ball;
-  s.ControlDimension = 2;
-  s.ControlRadius = 2.0;
-  s.Order = sltk::RkOrder::Euler;
-  s.FinalTime = 0.5;
   s.Minimizer.TabulationPoints = 17;
-  s.Minimizer.Search = sltk::LocalSearch::NelderMead;
   s.Minimizer.Tolerance = 1e-9;
   return s;
 }

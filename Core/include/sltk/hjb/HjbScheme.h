@@ -154,10 +154,11 @@ void hjbKernel(const Context& ctx, const ButcherTableau<S>& tableau, const Minim
           local[0] += 1.0;
         }
       }
-      else if (warm)
+      else
       {
+        // Warm start from the node's previous argmin when it has one (HjbArgmins.h).
         MinimizerResult<M, S> r;
-        if (argmins->has(node))
+        if (warm && argmins->has(node))
         {
           typename ControlMinimizer<M, S>::Parameters start{};
           std::copy_n(argmins->at(node), minimizer.parameterCount(), start.begin());
@@ -167,16 +168,10 @@ void hjbKernel(const Context& ctx, const ButcherTableau<S>& tableau, const Minim
         {
           r = minimizer.minimize(objective);
         }
-        if (std::isfinite(r.Value))
+        if (warm && std::isfinite(r.Value))
         {
           std::copy_n(r.Arguments.begin(), minimizer.parameterCount(), argmins->at(node));
         }
-        value = r.Value;
-        local[0] += static_cast<double>(r.Evaluations);
-      }
-      else
-      {
-        const MinimizerResult<M, S> r = minimizer.minimize(objective);
         value = r.Value;
         local[0] += static_cast<double>(r.Evaluations);
       }
@@ -238,7 +233,8 @@ Status hjbDispatchCache(const Context& ctx, const HjbOptions& options, const But
   constexpr int fixed = FixedCellCache<Problem>::value;
   if constexpr (fixed >= 0)
   {
-    return run(std::integral_constant < int, fixed == 0 ? AutomaticCellCache<Interp>::value : fixed > {});
+    constexpr int size = fixed == 0 ? AutomaticCellCache<Interp>::value : fixed;
+    return run(std::integral_constant<int, size>{});
   }
   else
   {

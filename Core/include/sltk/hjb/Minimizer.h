@@ -67,8 +67,8 @@ template <int M, int S>
 struct MinimizerResult
 {
   ControlSequence<M, S> Controls{};
-  std::array<double, M * S>
-    Arguments{}; ///< local-search parameters of Controls (ControlMinimizer::parameterCount() used)
+  /// Local-search parameters of Controls (the first ControlMinimizer::parameterCount()).
+  std::array<double, M * S> Arguments{};
   double Value = std::numeric_limits<double>::infinity();
   int Evaluations = 0;
 };
