@@ -160,7 +160,7 @@ inline HjbSetup<2> test4Setup(Index n)
   // The argmin moves continuously in time here: warm starts (a coarse 5 x 5
   // tabulation of A plus 5 x 5 points around the node's previous argmin, then
   // Nelder-Mead) find the thesis's minima -- L1 1.000-1.010x Table 3.7 at
-  // N = 81-641, Table 3.9 to 3 digits -- with about 115 evaluations per node
+  // N = 81-641, Table 3.9 to 3 digits -- with about 125 evaluations per node
   // and step after the first (N = 641) against 880 for the 33 x 33 tabulation
   // (N = 81, 161; sltkBenchHjb --warm 0).
   s.Options.Minimizer.WarmTabulationPoints = 5;
