@@ -65,7 +65,11 @@ sltk::ReconstructionOptions optionsOf(vtkSLLevelSetReconstruct* self)
   o.Tolerance = self->GetTolerance();
   o.Interpolator = static_cast<sltk::InterpolatorKind>(self->GetInterpolator());
   o.Guess = static_cast<sltk::InitialGuess>(self->GetInitialGuess());
-  if (self->GetFinalEta() != sltk::table41(3).Eta)
+  for (int k = 0; k < self->GetNumberOfRunParameters(); ++k)
+  {
+    o.Schedule.push_back({ self->GetRunP(k), self->GetRunEta(k) });
+  }
+  if (o.Schedule.empty() && self->GetFinalEta() != sltk::table41(3).Eta)
   {
     // Table 4.1 with eta of runs >= 3 replaced (noisy data: Fig. 4.8, 4.11).
     o.Schedule = { sltk::table41(1), sltk::table41(2), { sltk::table41(3).P, self->GetFinalEta() } };
@@ -160,6 +164,39 @@ int vtkSLLevelSetReconstruct::RequestData(
   return 1;
 }
 
+void vtkSLLevelSetReconstruct::AddRunParameters(double p, double eta)
+{
+  this->RunSchedule.push_back(p);
+  this->RunSchedule.push_back(eta);
+  this->Modified();
+}
+
+void vtkSLLevelSetReconstruct::RemoveAllRunParameters()
+{
+  if (!this->RunSchedule.empty())
+  {
+    this->RunSchedule.clear();
+    this->Modified();
+  }
+}
+
+int vtkSLLevelSetReconstruct::GetNumberOfRunParameters() const
+{
+  return static_cast<int>(this->RunSchedule.size() / 2);
+}
+
+double vtkSLLevelSetReconstruct::GetRunP(int index) const
+{
+  return index >= 0 && index < this->GetNumberOfRunParameters() ? this->RunSchedule[2 * static_cast<size_t>(index)]
+                                                                : 0.0;
+}
+
+double vtkSLLevelSetReconstruct::GetRunEta(int index) const
+{
+  return index >= 0 && index < this->GetNumberOfRunParameters() ? this->RunSchedule[2 * static_cast<size_t>(index) + 1]
+                                                                : 0.0;
+}
+
 void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -174,6 +211,12 @@ void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InitialGuess: " << this->InitialGuess << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "FinalEta: " << this->FinalEta << "\n";
+  os << indent << "RunParameters (p, eta):";
+  for (int k = 0; k < this->GetNumberOfRunParameters(); ++k)
+  {
+    os << " (" << this->GetRunP(k) << ", " << this->GetRunEta(k) << ")";
+  }
+  os << (this->RunSchedule.empty() ? " none (Table 4.1)\n" : "\n");
   os << indent << "RemoveOutliers: " << this->RemoveOutliers << "\n";
   os << indent << "DetectTunnels: " << this->DetectTunnels << "\n";
   os << indent << "OutlierDeviations: " << this->OutlierDeviations << "\n";

@@ -29,6 +29,8 @@
 #include "SLTKFiltersModule.h" // for export macro
 #include "vtkImageAlgorithm.h"
 
+#include <vector> // for RunSchedule
+
 class SLTKFILTERS_EXPORT vtkSLLevelSetReconstruct : public vtkImageAlgorithm
 {
 public:
@@ -109,6 +111,20 @@ public:
   ///@}
 
   ///@{
+  /// Per-run p and eta of the model (4.9), as in the thesis's Table 4.1: run r
+  /// uses entry min(r, n), so the last entry holds for all later runs. Empty
+  /// (the default) means Table 4.1 with FinalEta for the runs r >= 3; a
+  /// schedule replaces FinalEta. Example, the thesis's teapot (4.5.5), which
+  /// keeps details with eta = 0 in the first two runs: (1, 0), (2, 0), (2, 1).
+  /// Entries need 1 <= p <= 10 and 0 <= eta <= 100 (checked at execution).
+  void AddRunParameters(double p, double eta);
+  void RemoveAllRunParameters();
+  int GetNumberOfRunParameters() const;
+  double GetRunP(int index) const;
+  double GetRunEta(int index) const;
+  ///@}
+
+  ///@{
   /// Pre-processing of merged range scans (sltk/recon/CloudCleaning.h), off by
   /// default. RemoveOutliers drops points whose mean distance to their 8 nearest
   /// neighbours exceeds the mean by OutlierDeviations standard deviations
@@ -159,6 +175,7 @@ protected:
   int InitialGuess = OUTSIDE_MARKING;
   int NumberOfThreads = 0;
   double FinalEta = 1.0;
+  std::vector<double> RunSchedule; ///< p, eta of run 1, p, eta of run 2, ...
   bool RemoveOutliers = false;
   double OutlierDeviations = 3.0;
   double ThinningFactor = 0.0;

@@ -35,7 +35,7 @@
 ///
 /// Usage: sltkBenchReconstruction [--case NAME[,NAME...]] [--interp q1,weno3,cweno,cwenoz]
 ///          [--threads N] [--tables PATH] [--data DIR] [--scans] [--cdx C] [--kp K] [--runs R]
-///          [--noise SIGMA] [--tolerance T] [--final-only] [--log]
+///          [--noise SIGMA] [--tolerance T] [--final-only] [--padding P] [--log]
 ///   default cases: circle,square,sphere,cubespheres; also noisycircle, noisysphere (10% noise, larger
 ///   final eta; --noise sets sigma, default 0.1 = 10% of the radius);
 ///   --scans: bunny,teapot,fandisk,knot,knotellipse,frog
@@ -43,6 +43,8 @@
 ///   --final-only: synthetic cases run once with R runs (L1 of the last run only; half the work for R = 3)
 ///   default interpolators: q1,weno3,cweno in 2D, q1,weno3 in 3D and for the scans
 ///   --log prints the library's per-run phase times (the context's logger)
+///   --padding: cells of padding per side of the synthetic cases (library default 10; the thesis's square grids are
+///   padding 8)
 
 #include "sltk/exec/Context.h"
 #include "sltk/exec/Memory.h"
@@ -662,7 +664,8 @@ struct Args
   bool Log = false;
   double Tolerance = NaN; ///< threshold of (4.33); NaN: the library's 1e-4
   bool FinalOnly = false; ///< synthetic cases: one R-run call, L1 of run R only
-  double Noise = 0.1; ///< sigma of the noisy cases: "10% noise" on the unit circle / sphere (withNoise)
+  double Noise = 0.1;     ///< sigma of the noisy cases: "10% noise" on the unit circle / sphere (withNoise)
+  int Padding = -1;       ///< cells of padding per side; < 0: the library's default
 };
 
 std::vector<std::string> split(const std::string& s)
@@ -769,9 +772,12 @@ void runSynthetic(const SyntheticCase<D>& c, const std::vector<std::string>& int
     {
       options.OutsideThresholdFactor = args.Kp;
     }
+    if (args.Padding >= 0)
+    {
+      options.Padding = args.Padding;
+    }
     const std::vector<double> tl1 = key.empty() ? std::vector<double>{} : thesis.numbers({ c.TableKey, key, "l1" });
-    const std::vector<double> ten =
-      key.empty() ? std::vector<double>{} : thesis.numbers({ c.TableKey, key, "energy" });
+    const std::vector<double> ten = key.empty() ? std::vector<double>{} : thesis.numbers({ c.TableKey, key, "energy" });
     const std::vector<double> terr =
       key.empty() ? std::vector<double>{} : thesis.numbers({ c.TableKey, key, "err_cloud" });
     const std::vector<double> tit =
@@ -971,7 +977,7 @@ int usage()
 {
   std::printf("usage: sltkBenchReconstruction [--case NAME[,NAME...]] [--interp q1,weno3,cweno,cwenoz] "
               "[--threads N] [--tables PATH] [--data DIR] [--scans] [--cdx C] [--kp K] [--runs R] [--noise SIGMA]\n"
-              "         [--tolerance T] [--final-only] [--log]\n"
+              "         [--tolerance T] [--final-only] [--padding P] [--log]\n"
               "  synthetic cases: circle square sphere cubespheres (default), noisycircle noisysphere\n"
               "  scans (--scans): bunny teapot fandisk knot knotellipse frog\n");
   return 2;
@@ -1027,6 +1033,10 @@ int main(int argc, char** argv)
     else if (a == "--tolerance" && hasValue)
     {
       args.Tolerance = std::atof(argv[++i]);
+    }
+    else if (a == "--padding" && hasValue)
+    {
+      args.Padding = std::atoi(argv[++i]);
     }
     else if (a == "--noise" && hasValue)
     {

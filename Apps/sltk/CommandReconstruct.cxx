@@ -29,6 +29,8 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <sstream>
+#include <vector>
 
 namespace sltkcli
 {
@@ -55,6 +57,8 @@ options:
   --max-iterations N      iteration cap per run (default 100)
   --initial NAME          outside | sphere | ellipsoid (default outside)
   --eta E                 eta of runs >= 3 (Table 4.1: 1); larger smooths noisy scans (thesis Fig. 4.8)
+  --schedule P:E,P:E,...  p and eta of each run (4.9); the last pair holds for later runs (default Table 4.1:
+                          1:0.05,2:0.05,2:1); the thesis's teapot keeps details with 1:0,2:0,2:1
   --detect-tunnels        follow grad phi through long narrow holes instead of plugging them (4.5.6)
   --remove-outliers       drop points whose mean distance to 8 neighbours is above mean + S sigma
   --outlier-sigma S       the S of --remove-outliers (default 3)
@@ -93,6 +97,39 @@ int initialGuessCode(const std::string& name)
   return -1;
 }
 
+/// "P:E,P:E,..." -> p, eta, p, eta, ...; false when malformed.
+bool parseSchedule(const std::string& text, std::vector<double>& pEta)
+{
+  std::stringstream in(text);
+  std::string pair;
+  while (std::getline(in, pair, ','))
+  {
+    const size_t colon = pair.find(':');
+    if (colon == std::string::npos)
+    {
+      return false;
+    }
+    try
+    {
+      size_t usedP = 0;
+      size_t usedEta = 0;
+      const std::string p = pair.substr(0, colon);
+      const std::string eta = pair.substr(colon + 1);
+      pEta.push_back(std::stod(p, &usedP));
+      pEta.push_back(std::stod(eta, &usedEta));
+      if (usedP != p.size() || usedEta != eta.size())
+      {
+        return false;
+      }
+    }
+    catch (const std::exception&)
+    {
+      return false;
+    }
+  }
+  return !pEta.empty();
+}
+
 vtkSmartPointer<vtkPolyData> asPolyData(const sltk::PointCloud<3>& cloud)
 {
   vtkNew<vtkPoints> points;
@@ -116,8 +153,8 @@ int commandReconstruct(const Args& rawArgs)
     a = a == "-o" ? "--output" : a;
   }
   Options opt(args,
-    { "output", "surface", "csv", "json", "interpolator", "cdx", "kp", "runs", "max-iterations", "initial",
-      "threads", "reference", "png", "eta", "outlier-sigma", "thin" },
+    { "output", "surface", "csv", "json", "interpolator", "cdx", "kp", "runs", "max-iterations", "initial", "threads",
+      "reference", "png", "eta", "outlier-sigma", "thin", "schedule" },
     { "help", "quiet", "remove-outliers", "verbose", "detect-tunnels" });
   if (opt.has("help"))
   {
@@ -153,12 +190,32 @@ int commandReconstruct(const Args& rawArgs)
   if (!(cdx >= 0.05 && cdx <= 100) || !(kp >= 0.1 && kp <= 100) || runs < 1 || runs > 6 || iterations < 1 ||
     threads < 0)
   {
-    return fail("out of range: --cdx 0.05..100, --kp 0.1..100, --runs 1..6, --max-iterations >= 1, --threads >= 0",
-      2);
+    return fail("out of range: --cdx 0.05..100, --kp 0.1..100, --runs 1..6, --max-iterations >= 1, --threads >= 0", 2);
   }
   if (!(eta >= 0 && eta <= 100) || !(sigma >= 0.5 && sigma <= 100) || !(thin >= 0 && thin <= 100))
   {
     return fail("out of range: --eta 0..100, --outlier-sigma 0.5..100, --thin 0..100", 2);
+  }
+  std::vector<double> schedule;
+  if (opt.has("schedule"))
+  {
+    if (!parseSchedule(opt.value("schedule"), schedule))
+    {
+      const std::string text = opt.value("schedule");
+      return fail("malformed --schedule '" + text + "': give p:eta pairs separated by commas, e.g. 1:0,2:0,2:1", 2);
+    }
+    for (size_t k = 0; k < schedule.size(); k += 2)
+    {
+      if (!(schedule[k] >= 1 && schedule[k] <= 10) || !(schedule[k + 1] >= 0 && schedule[k + 1] <= 100))
+      {
+        const std::string pair = std::to_string(k / 2 + 1);
+        return fail("out of range in --schedule: pair " + pair + " needs 1 <= p <= 10 and 0 <= eta <= 100", 2);
+      }
+    }
+    if (opt.has("eta"))
+    {
+      return fail("give either --eta or --schedule (a schedule sets eta of every run)", 2);
+    }
   }
   if (opt.has("outlier-sigma") && !opt.has("remove-outliers"))
   {
@@ -221,6 +278,10 @@ int commandReconstruct(const Args& rawArgs)
   filter->SetInitialGuess(guess);
   filter->SetNumberOfThreads(static_cast<int>(threads));
   filter->SetFinalEta(eta);
+  for (size_t k = 0; k < schedule.size(); k += 2)
+  {
+    filter->AddRunParameters(schedule[k], schedule[k + 1]);
+  }
   filter->SetRemoveOutliers(opt.has("remove-outliers"));
   filter->SetOutlierDeviations(sigma);
   filter->SetThinningFactor(thin);

@@ -143,6 +143,19 @@ expect(rc == 2 and ".vtp, .ply or .stl" in err, "an unsupported surface format i
 rc, _, err = run("reconstruct", bad, "-o", os.path.join(tmp, "bad.vti"))
 expect(rc == 1 and "point 17" in err and not os.path.exists(os.path.join(tmp, "bad.vti")),
        "NaN input: error, no output file")
+rc, _, err = run("reconstruct", sphere, "--schedule", "1:0,2", "-o", os.path.join(tmp, "never.vti"))
+expect(rc == 2 and "p:eta pairs" in err, "a malformed --schedule is a usage error: " + err.strip())
+rc, _, err = run("reconstruct", sphere, "--schedule", "1:0,2:200")
+expect(rc == 2 and "pair 2" in err, "an out-of-range --schedule pair is named: " + err.strip())
+rc, _, err = run("reconstruct", sphere, "--schedule", "1:0,2:0,2:1", "--eta", "2")
+expect(rc == 2 and "either --eta or --schedule" in err, "--eta with --schedule is a usage error")
+sched_json = os.path.join(tmp, "schedule.json")
+rc, _, err = run("reconstruct", sphere, "--runs", "2", "--interpolator", "q1", "--schedule", "1:0,2:0", "--quiet",
+                 "--json", sched_json)
+sched = json.load(open(sched_json)) if rc == 0 else {"runs": [{}, {}]}
+expect(rc == 0 and sched["runs"][1].get("err_cloud", 1) < 0.01 and
+       sched["runs"][1].get("energy") != summary["runs"][1]["energy"],
+       "--schedule 1:0,2:0 runs and changes the result (%s)" % err.strip())
 rc, _, err = run("reconstruct", sphere, "--interpolator", "rbf")
 expect(rc == 2 and "q1, weno3, cweno or cwenoz" in err, "an unknown interpolator is a usage error")
 

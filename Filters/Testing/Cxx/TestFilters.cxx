@@ -22,6 +22,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -32,7 +33,6 @@ void check(bool ok, const std::string& what)
   std::cout << (ok ? "ok   " : "FAIL ") << what << "\n";
   failures += ok ? 0 : 1;
 }
-
 
 vtkSmartPointer<vtkPolyData> cloud(int n, double scale)
 {
@@ -62,8 +62,8 @@ int main()
     int whole[6];
     solver->GetOutputInformation(0)->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
     check(whole[1] == 40 && whole[3] == 40 && whole[5] == 0, "HJB Test 1 whole extent is 0..40 x 0..40");
-    check(solver->GetOutputInformation(0)->Get(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT()) == 1,
-      "HJB advertises sub-extents");
+    check(
+      solver->GetOutputInformation(0)->Get(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT()) == 1, "HJB advertises sub-extents");
     int sub[6] = { 0, 40, 10, 19, 0, 0 };
     solver->UpdateExtent(sub);
     vtkImageData* image = solver->GetOutput();
@@ -157,6 +157,44 @@ int main()
     check(image->GetDimensions()[2] == 1 && image->GetOrigin()[2] == 0.5, "in 2D: one z layer at the cloud's height");
     surface = vtkPolyData::SafeDownCast(recon->GetOutputDataObject(1));
     check(surface->GetNumberOfLines() > 50, "the 2D output 1 is a closed contour");
+
+    // Per-run (p, eta): Table 4.1 with eta 0 from run 3 on, once through FinalEta and once
+    // through a schedule whose last row repeats, gives bitwise the same signed distance;
+    // a schedule with eta = 0 in every run gives another one; a bad row is refused.
+    const auto signedDistance = [&recon]()
+    {
+      std::vector<double> values;
+      auto* out = vtkImageData::SafeDownCast(recon->GetOutputDataObject(0));
+      auto* array = out ? out->GetPointData()->GetArray("SignedDistance") : nullptr;
+      for (vtkIdType k = 0; array && k < array->GetNumberOfTuples(); ++k)
+      {
+        values.push_back(array->GetTuple1(k));
+      }
+      return values;
+    };
+    recon->SetNumberOfRuns(4);
+    recon->SetFinalEta(0.0);
+    recon->Update();
+    const std::vector<double> viaFinalEta = signedDistance();
+    recon->SetFinalEta(1.0);
+    recon->AddRunParameters(1.0, 0.05);
+    recon->AddRunParameters(2.0, 0.05);
+    recon->AddRunParameters(2.0, 0.0);
+    check(recon->GetNumberOfRunParameters() == 3 && recon->GetRunEta(2) == 0.0 && recon->GetRunP(5) == 0.0,
+      "the run schedule holds three (p, eta) rows");
+    check(recon->GetExecutive()->Update() == 1, "a reconstruction with a run schedule succeeds");
+    const std::vector<double> viaSchedule = signedDistance();
+    check(!viaFinalEta.empty() && viaSchedule == viaFinalEta,
+      "the schedule's last row holds for run 4, as FinalEta does (bitwise the same result)");
+    recon->RemoveAllRunParameters();
+    recon->AddRunParameters(1.0, 0.0);
+    recon->AddRunParameters(2.0, 0.0);
+    recon->Update();
+    check(signedDistance() != viaSchedule, "eta = 0 in runs 1-2 changes the result");
+    recon->AddRunParameters(0.5, 1.0);
+    check(recon->GetExecutive()->Update() == 0, "a schedule row with p < 1 is refused");
+    recon->RemoveAllRunParameters();
+    check(recon->GetNumberOfRunParameters() == 0, "RemoveAllRunParameters empties the schedule");
   }
 
   // Octree: a real vtkHyperTreeGrid output type, never the input type.

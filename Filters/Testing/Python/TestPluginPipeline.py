@@ -67,6 +67,19 @@ bounds = surface.GetBounds()
 assert surface.GetNumberOfPolys() > 100 and abs(bounds[1] - 1.0) < 0.05, (surface.GetNumberOfPolys(), bounds)
 history = servermanager.Fetch(recon, idx=2)
 assert history.GetNumberOfRows() >= 2 and history.GetColumnByName("CloudError") is not None
+# The per-run (p, eta) schedule is a repeatable property: rows reach the filter, a bad row is an error.
+energies = history.GetColumnByName("Energy")
+recon.RunParameters = [1, 0, 2, 0, 2, 1]
+recon.UpdatePipeline()
+assert list(recon.RunParameters) == [1, 0, 2, 0, 2, 1], list(recon.RunParameters)
+assert servermanager.Fetch(recon, idx=1).GetNumberOfPolys() > 100
+scheduled = servermanager.Fetch(recon, idx=2).GetColumnByName("Energy")
+assert scheduled.GetValue(scheduled.GetNumberOfTuples() - 1) != energies.GetValue(energies.GetNumberOfTuples() - 1), \
+    "eta = 0 in runs 1-2 changes the reconstruction"
+recon.RunParameters = [0.5, 1]
+recon.UpdatePipeline()
+assert recon.GetDataInformation().GetNumberOfPoints() == 0, "p < 1 is refused"
+recon.RunParameters = []
 
 octree = OctreeSignedDistancefromPoints(Input=cloud)
 octree.UpdatePipeline()
