@@ -22,7 +22,7 @@
 #include "sltk/core/Status.h"
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
-#include "sltk/hjb/CellCache.h"
+#include "sltk/interp/CellCache.h"
 #include "sltk/hjb/HjbArgmins.h"
 #include "sltk/hjb/HjbProblem.h"
 #include "sltk/hjb/Minimizer.h"

@@ -17,6 +17,7 @@
 
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
+#include "sltk/interp/CellCache.h"
 #include "sltk/interp/Interpolator.h"
 #include "sltk/levelset/CutOff.h"
 #include "sltk/levelset/NarrowBand.h"
@@ -113,8 +114,11 @@ Status levelSetStep(const Context& ctx, GridField<D>& phi, const GridField<D>& d
   constexpr int Points = 1 << (D - 1); // 2 in 2D (4.22), 4 in 3D (4.24)
   const double singular = par.SingularD * std::pow(par.TimeStep, par.SingularAlpha);
 
+  const Interp prototype(phi);
   const double bad = ctx.parallelSum(0, count, [&](Index b, Index e) {
-    Interp interp(phi);
+    // CWENO: the polynomial of a cell serves all the feet that fall in it (CellCache.h);
+    // Q1/WENO3 prepare cheaply, one cell is enough. Results do not depend on the size.
+    CellCache<Interp, detail::IsCwenoInterpolator<Interp>::value ? 1024 : 1> interpolate(prototype, phi);
     double failures = 0.0;
     for (Index k = b; k < e; ++k)
     {
@@ -177,7 +181,7 @@ Status levelSetStep(const Context& ctx, GridField<D>& phi, const GridField<D>& d
               x[a] += spread * sigma[m][a] * xi;
             }
           }
-          value += interpolate(interp, spec, x);
+          value += interpolate(x);
         }
         value /= Points;
       }

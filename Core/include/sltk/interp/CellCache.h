@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file CellCache.h
-/// A per-thread cache of K prepared cells for the HJB minimisation. Remarks
-/// 3.1-3.2: CWENO builds one polynomial per cell and evaluates it cheaply, so
-/// the many feet y_i^n(a) of one node (tabulation + local search, Figures
-/// 3.4-3.6) -- and of the next nodes, whose feet fall in mostly the same
-/// cells -- should reuse it. Two layouts:
+/// A per-thread cache of K prepared cells. Remarks 3.1-3.2: CWENO builds one
+/// polynomial per cell and evaluates it cheaply, so the many feet of one node
+/// (HJB: y_i^n(a) of the tabulation and local search, Figures 3.4-3.6; level
+/// sets: the 2^(d-1) points of (4.22)/(4.24)) -- and of the next nodes, whose
+/// feet fall in mostly the same cells -- should reuse it. Two layouts:
 ///  - K <= 8: K interpolators, linear search, round-robin replacement (the
 ///    most recently hit slot first). K = 1 is plain prepareIfNeeded().
 ///  - K >= 16 (a power of two): a direct-mapped table indexed by a
