@@ -2,6 +2,7 @@
 #include "sltk/recon/LevelSetStep.h"
 
 #include "sltk/grid/SampleField.h"
+#include "sltk/interp/Cweno.h"
 #include "sltk/interp/Q1.h"
 #include "sltk/interp/Weno3.h"
 
@@ -101,6 +102,9 @@ TEST(LevelSetStep, AdvectionMovesTheFrontTowardsTheCloudAtUnitSpeed)
   EXPECT_NEAR(q1, 0.7 - 5 * dt, 0.05 * dt);
   const double weno = advanceSphere<3, sltk::Weno3Interpolator<3>>(41, 4, 0.0, 0.7, true, &dt);
   EXPECT_NEAR(weno, 0.7 - 4 * dt, 0.05 * dt);
+  // CWENO feet go through the cell cache (CellCache.h).
+  const double cweno = advanceSphere<3, sltk::CwenoInterpolator<3>>(41, 4, 0.0, 0.7, true, &dt);
+  EXPECT_NEAR(cweno, 0.7 - 4 * dt, 0.05 * dt);
 }
 
 TEST(LevelSetStep, CurvatureTermShrinksCirclesAndSpheresByMeanCurvatureMotion)
