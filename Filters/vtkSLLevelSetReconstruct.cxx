@@ -7,6 +7,7 @@
 #include "sltk/recon/Reconstruction.h"
 
 #include "vtkDataObject.h"
+#include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -15,6 +16,8 @@
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
+
+#include <algorithm>
 
 vtkStandardNewMacro(vtkSLLevelSetReconstruct);
 
@@ -99,8 +102,20 @@ bool flatten(const sltk::PointCloud<3>& cloud, sltk::PointCloud<2>& flat, double
 }
 } // namespace
 
+int vtkSLLevelSetReconstruct::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // The model needs the whole cloud (h_P (4.36), the bounding box and the
+  // distance function see every point), whatever piece is asked of us.
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  return 1;
+}
+
 int vtkSLLevelSetReconstruct::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
   vtkImageData* image = vtkImageData::GetData(outputVector, 0);
@@ -111,14 +126,16 @@ int vtkSLLevelSetReconstruct::RequestData(
   sltk::PointCloud<2> flat;
   double z = 0.0;
   sltk::Status status = sltk::vtkbridge::toCloud(input, cloud);
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  const int pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-    : 1;
-  if (status.isOk() && cloud.Points.empty() && pieces > 1)
+  // Under MPI each rank is asked for one piece and has read the whole cloud
+  // (RequestUpdateExtent): piece 0 reconstructs, the other pieces stay empty
+  // (distributed runs are not built yet).
+  const int port = request->Has(vtkExecutive::FROM_OUTPUT_PORT())
+    ? std::max(0, request->Get(vtkExecutive::FROM_OUTPUT_PORT()))
+    : 0;
+  vtkInformation* outInfo = outputVector->GetInformationObject(port);
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
   {
-    // Under MPI a rank without points (e.g. not the reader's) has nothing to do: the
-    // reconstruction runs where the cloud is (distributed runs are not built yet).
     return 1;
   }
   const bool planar = status.isOk() && !cloud.Points.empty() && flatten(cloud, flat, z);
