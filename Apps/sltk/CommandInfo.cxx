@@ -108,7 +108,7 @@ int commandInfo(const Args& args)
   }
   if (!status.isOk())
   {
-    return fail(path + ": " + status.message());
+    return fail(path + ": " + withMergedScanHint(status.message(), read, cleaning.ThinningFactor > 0));
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

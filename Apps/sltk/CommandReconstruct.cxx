@@ -290,7 +290,7 @@ int commandReconstruct(const Args& rawArgs)
   bar->finish();
   if (!errors->Message.empty())
   {
-    return fail(path + ": " + errors->Message);
+    return fail(path + ": " + withMergedScanHint(errors->Message, cloud.Points.size(), thin > 0));
   }
   auto* image = vtkImageData::SafeDownCast(filter->GetOutputDataObject(0));
   auto* surface = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1));

@@ -16,6 +16,11 @@ int commandInfo(const Args& args);
 int commandHjb(const Args& args);
 int commandReconstruct(const Args& args);
 
+/// A grid refused for memory ("... use C_dx >= ...") on a large cloud that was not
+/// thinned: appends the hint that merged, overlapping range scans make h_P (4.36)
+/// tiny and want --remove-outliers --thin (README). Other messages are returned as they are.
+std::string withMergedScanHint(const std::string& message, size_t points, bool thinned);
+
 /// Prints "sltk: error: <message>" to stderr and returns `code`.
 int fail(const std::string& message, int code = 1);
 

@@ -56,7 +56,11 @@ expect(rc == 1 and "cannot open" in err, "a missing file is reported: " + err.st
 rc, _, err = run("info", sphere, "--cdx", "zero")
 expect(rc == 2 and "expects a number" in err, "a malformed option value is usage error 2")
 rc, _, err = run("info", sphere, "--cdx", "1e-4")
-expect(rc == 1 and "use C_dx >=" in err, "a grid beyond memory is refused with a C_dx: " + err.strip())
+expect(rc == 1 and "use C_dx >=" in err and "--thin" not in err, "a grid beyond memory is refused with a C_dx: " + err.strip())
+big = os.path.join(tmp, "big.xyz")
+write_sphere(big, 120000)
+rc, _, err = run("info", big, "--cdx", "1e-3")
+expect(rc == 1 and "use C_dx >=" in err and "--thin 2.5" in err, "a large refused cloud gets the merged-scan hint: " + err.strip())
 rc, _, err = run("frobnicate")
 expect(rc == 2, "an unknown command is usage error 2")
 
