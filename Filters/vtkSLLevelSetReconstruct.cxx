@@ -84,6 +84,27 @@ sltk::ReconstructionOptions optionsOf(vtkSLLevelSetReconstruct* self)
   return o;
 }
 
+/// One execution makes all three outputs, and piece 0 holds the whole result:
+/// every ghost level a consumer may ask for is there. Say so in the data
+/// information, and drop the piece keys that the internal contour filter left on
+/// the surface (ShallowCopy), so that the executive stamps the requested piece on
+/// every output. Otherwise, under MPI, ParaView's request of port 1 with one
+/// ghost level executes the whole reconstruction a second time.
+void markOutputsComplete(vtkInformationVector* outputs)
+{
+  constexpr int everyGhostLevel = 32; // ParaView asks for 1, some filters 2-3
+  for (int port = 0; port < outputs->GetNumberOfInformationObjects(); ++port)
+  {
+    vtkDataObject* data = outputs->GetInformationObject(port)->Get(vtkDataObject::DATA_OBJECT());
+    if (data)
+    {
+      data->GetInformation()->Remove(vtkDataObject::DATA_PIECE_NUMBER());
+      data->GetInformation()->Remove(vtkDataObject::DATA_NUMBER_OF_PIECES());
+      data->GetInformation()->Set(vtkDataObject::DATA_NUMBER_OF_GHOST_LEVELS(), everyGhostLevel);
+    }
+  }
+}
+
 /// The cloud in its plane when it has no z extent (2D reconstruction).
 bool flatten(const sltk::PointCloud<3>& cloud, sltk::PointCloud<2>& flat, double& z)
 {
@@ -136,6 +157,7 @@ int vtkSLLevelSetReconstruct::RequestData(
   if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
   {
+    markOutputsComplete(outputVector);
     return 1;
   }
   const bool planar = status.isOk() && !cloud.Points.empty() && flatten(cloud, flat, z);
@@ -178,6 +200,7 @@ int vtkSLLevelSetReconstruct::RequestData(
     sltk::vtkbridge::historyTable(result3.History, history);
   }
   sltk::vtkbridge::zeroLevelSet(image, surface);
+  markOutputsComplete(outputVector);
   return 1;
 }
 
