@@ -12,6 +12,7 @@
 #include "WriteSurface.h"
 
 #include "sltk/exec/Memory.h"
+#include "sltk/recon/Reconstruction.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -97,8 +98,8 @@ int initialGuessCode(const std::string& name)
   return -1;
 }
 
-/// "P:E,P:E,..." -> p, eta, p, eta, ...; false when malformed.
-bool parseSchedule(const std::string& text, std::vector<double>& pEta)
+/// "P:E,P:E,..." -> one (p, eta) per run; false when malformed.
+bool parseSchedule(const std::string& text, std::vector<sltk::RunParameters>& schedule)
 {
   std::stringstream in(text);
   std::string pair;
@@ -115,8 +116,7 @@ bool parseSchedule(const std::string& text, std::vector<double>& pEta)
       size_t usedEta = 0;
       const std::string p = pair.substr(0, colon);
       const std::string eta = pair.substr(colon + 1);
-      pEta.push_back(std::stod(p, &usedP));
-      pEta.push_back(std::stod(eta, &usedEta));
+      schedule.push_back({ std::stod(p, &usedP), std::stod(eta, &usedEta) });
       if (usedP != p.size() || usedEta != eta.size())
       {
         return false;
@@ -127,7 +127,7 @@ bool parseSchedule(const std::string& text, std::vector<double>& pEta)
       return false;
     }
   }
-  return !pEta.empty();
+  return !schedule.empty();
 }
 
 vtkSmartPointer<vtkPolyData> asPolyData(const sltk::PointCloud<3>& cloud)
@@ -196,7 +196,7 @@ int commandReconstruct(const Args& rawArgs)
   {
     return fail("out of range: --eta 0..100, --outlier-sigma 0.5..100, --thin 0..100", 2);
   }
-  std::vector<double> schedule;
+  std::vector<sltk::RunParameters> schedule;
   if (opt.has("schedule"))
   {
     if (!parseSchedule(opt.value("schedule"), schedule))
@@ -204,13 +204,10 @@ int commandReconstruct(const Args& rawArgs)
       const std::string text = opt.value("schedule");
       return fail("malformed --schedule '" + text + "': give p:eta pairs separated by commas, e.g. 1:0,2:0,2:1", 2);
     }
-    for (size_t k = 0; k < schedule.size(); k += 2)
+    const sltk::Status valid = sltk::validateSchedule(schedule);
+    if (!valid.isOk())
     {
-      if (!(schedule[k] >= 1 && schedule[k] <= 10) || !(schedule[k + 1] >= 0 && schedule[k + 1] <= 100))
-      {
-        const std::string pair = std::to_string(k / 2 + 1);
-        return fail("out of range in --schedule: pair " + pair + " needs 1 <= p <= 10 and 0 <= eta <= 100", 2);
-      }
+      return fail("--schedule: " + valid.message(), 2);
     }
     if (opt.has("eta"))
     {
@@ -278,9 +275,9 @@ int commandReconstruct(const Args& rawArgs)
   filter->SetInitialGuess(guess);
   filter->SetNumberOfThreads(static_cast<int>(threads));
   filter->SetFinalEta(eta);
-  for (size_t k = 0; k < schedule.size(); k += 2)
+  for (const sltk::RunParameters& run : schedule)
   {
-    filter->AddRunParameters(schedule[k], schedule[k + 1]);
+    filter->AddRunParameters(run.P, run.Eta);
   }
   filter->SetRemoveOutliers(opt.has("remove-outliers"));
   filter->SetOutlierDeviations(sigma);

@@ -418,17 +418,7 @@ Status reconstructInUnitBox(const PointCloud<D>& cloud, const ReconstructionOpti
     return Status::invalidArgument("reconstruction options out of range: need runs >= 1, iterations >= 1, "
                                    "K_P > 0, tolerance >= 0, 0 < beta < gamma");
   }
-  for (size_t k = 0; k < options.Schedule.size(); ++k)
-  {
-    const RunParameters& run = options.Schedule[k];
-    if (!(run.P >= 1.0 && run.P <= 10.0) || !(run.Eta >= 0.0 && run.Eta <= 100.0))
-    {
-      std::ostringstream m;
-      m << "run schedule entry " << k + 1 << " (p = " << run.P << ", eta = " << run.Eta
-        << ") out of range: the model (4.9) needs 1 <= p <= 10 and 0 <= eta <= 100";
-      return Status::invalidArgument(m.str());
-    }
-  }
+  SLTK_RETURN_IF_ERROR(validateSchedule(options.Schedule));
   SLTK_RETURN_IF_ERROR(options.Reinit.validate<D>());
   double spacing = 0.0;
   SLTK_RETURN_IF_ERROR(cloudSpacing(cloud, ctx, spacing)); // h_P (4.36)
@@ -472,6 +462,22 @@ Status reconstructInUnitBox(const PointCloud<D>& cloud, const ReconstructionOpti
   return Status::invalidArgument("unknown interpolator");
 }
 } // namespace
+
+Status validateSchedule(const std::vector<RunParameters>& schedule)
+{
+  for (size_t k = 0; k < schedule.size(); ++k)
+  {
+    const RunParameters& run = schedule[k];
+    if (!(run.P >= 1.0 && run.P <= 10.0) || !(run.Eta >= 0.0 && run.Eta <= 100.0))
+    {
+      std::ostringstream m;
+      m << "run schedule pair " << k + 1 << " (p = " << run.P << ", eta = " << run.Eta
+        << ") out of range: the model (4.9) needs 1 <= p <= 10 and 0 <= eta <= 100";
+      return Status::invalidArgument(m.str());
+    }
+  }
+  return Status::ok();
+}
 
 template <int D>
 Status reconstruct(const PointCloud<D>& userCloud, const ReconstructionOptions& options, const Context& ctx,

@@ -118,7 +118,7 @@ Status levelSetStep(const Context& ctx, GridField<D>& phi, const GridField<D>& d
   const double bad = ctx.parallelSum(0, count, [&](Index b, Index e) {
     // CWENO: the polynomial of a cell serves all the feet that fall in it (CellCache.h);
     // Q1/WENO3 prepare cheaply, one cell is enough. Results do not depend on the size.
-    CellCache<Interp, detail::IsCwenoInterpolator<Interp>::value ? 1024 : 1> interpolate(prototype, phi);
+    CellCache<Interp, detail::IsCwenoInterpolator<Interp>::value ? 1024 : 1> interpolateAt(prototype, phi);
     double failures = 0.0;
     for (Index k = b; k < e; ++k)
     {
@@ -181,7 +181,7 @@ Status levelSetStep(const Context& ctx, GridField<D>& phi, const GridField<D>& d
               x[a] += spread * sigma[m][a] * xi;
             }
           }
-          value += interpolate(x);
+          value += interpolateAt(x);
         }
         value /= Points;
       }

@@ -33,6 +33,11 @@ struct ReconstructionResult
   std::vector<IterationRecord> History;
 };
 
+/// Checks a per-run (p, eta) schedule: the model (4.9) needs 1 <= p <= 10 and
+/// 0 <= eta <= 100; the message names the first pair out of range. reconstruct()
+/// runs it; front ends call it to refuse a bad schedule before reading a cloud.
+Status validateSchedule(const std::vector<RunParameters>& schedule);
+
 /// Runs Algorithm 1. The cloud is validated first, then cleaned when
 /// options.Cleaning asks for it (CloudCleaning.h; Err_P (4.35) is measured on
 /// the cleaned cloud) and validated again; grids beyond the memory
