@@ -125,7 +125,7 @@ public:
   ///@}
 
   ///@{
-  /// Pre-processing of merged range scans (sltk/recon/CloudCleaning.h), off by
+  /// Pre-processing of merged range scans (sltk/cloud/CloudCleaning.h), off by
   /// default. RemoveOutliers drops points whose mean distance to their 8 nearest
   /// neighbours exceeds the mean by OutlierDeviations standard deviations
   /// (default 3, range 0.5-100). ThinningFactor > 0 replaces the points of each

@@ -7,8 +7,8 @@
 
 #include "sltk/exec/Context.h"
 #include "sltk/exec/Memory.h"
-#include "sltk/recon/CloudCleaning.h"
-#include "sltk/recon/CloudSpacing.h"
+#include "sltk/cloud/CloudCleaning.h"
+#include "sltk/cloud/CloudSpacing.h"
 #include "sltk/recon/GridPlan.h"
 
 #include <chrono>

@@ -6,7 +6,7 @@
 /// .csv .pts through a text parser (first three numbers of each line; extra
 /// columns such as normals are ignored; comment and header lines skipped).
 
-#include "sltk/recon/PointCloud.h"
+#include "sltk/cloud/PointCloud.h"
 
 #include <string>
 

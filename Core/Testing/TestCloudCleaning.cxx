@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "sltk/recon/CloudCleaning.h"
+#include "sltk/cloud/CloudCleaning.h"
 
-#include "sltk/recon/CloudSpacing.h"
+#include "sltk/cloud/CloudSpacing.h"
 #include "sltk/recon/Reconstruction.h"
-#include "sltk/recon/SyntheticClouds.h"
+#include "sltk/cloud/SyntheticClouds.h"
 
 #include <gtest/gtest.h>
 

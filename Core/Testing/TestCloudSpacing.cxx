@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "sltk/recon/CloudSpacing.h"
+#include "sltk/cloud/CloudSpacing.h"
 
 #include <gtest/gtest.h>
 

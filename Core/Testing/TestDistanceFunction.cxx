@@ -2,7 +2,7 @@
 #include "sltk/levelset/FastSweeping.h"
 #include "sltk/recon/DistanceFunction.h"
 
-#include "sltk/recon/SyntheticClouds.h"
+#include "sltk/cloud/SyntheticClouds.h"
 
 #include <gtest/gtest.h>
 

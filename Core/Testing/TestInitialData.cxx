@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/interp/Q1.h"
 #include "sltk/recon/CloudInitialData.h"
-#include "sltk/recon/CloudSpacing.h"
+#include "sltk/cloud/CloudSpacing.h"
 #include "sltk/recon/DistanceFunction.h"
 
-#include "sltk/recon/SyntheticClouds.h"
+#include "sltk/cloud/SyntheticClouds.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/recon/Reconstruction.h"
 
-#include "sltk/recon/SyntheticClouds.h"
+#include "sltk/cloud/SyntheticClouds.h"
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 
 #include "sltk/exec/Interrupter.h"
 #include "sltk/exec/Logger.h"
-#include "sltk/recon/PointCloud.h"
+#include "sltk/cloud/PointCloud.h"
 
 class vtkAlgorithm;
 class vtkPointSet;

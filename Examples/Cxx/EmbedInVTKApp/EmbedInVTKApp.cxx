@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Using SLTK from an application: the VTK filter in a pipeline, and Core
 // directly (VTK-free API) to validate a cloud before handing it over.
-#include <sltk/recon/PointCloud.h>
+#include <sltk/cloud/PointCloud.h>
 #include <vtkCWENOHJBSolver.h>
 
 #include <vtkDataArray.h>

@@ -24,7 +24,7 @@
 /// Also the sphere/ellipsoid guesses of the knot test (Ellipsoid.h).
 
 #include "sltk/levelset/Ellipsoid.h"
-#include "sltk/recon/PointCloud.h"
+#include "sltk/cloud/PointCloud.h"
 
 #include <cstdint>
 #include <vector>

@@ -13,7 +13,7 @@
 
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
-#include "sltk/recon/PointCloud.h"
+#include "sltk/cloud/PointCloud.h"
 
 namespace sltk
 {

@@ -13,7 +13,7 @@
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
 #include "sltk/levelset/NarrowBand.h"
-#include "sltk/recon/PointLocator.h"
+#include "sltk/cloud/PointLocator.h"
 
 #include <cstdint>
 #include <vector>

@@ -8,7 +8,7 @@
 /// node count and a C_dx that would fit.
 
 #include "sltk/grid/GridSpec.h"
-#include "sltk/recon/PointCloud.h"
+#include "sltk/cloud/PointCloud.h"
 
 #include <vector>
 

@@ -16,7 +16,7 @@
 
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
-#include "sltk/recon/PointCloud.h"
+#include "sltk/cloud/PointCloud.h"
 #include "sltk/recon/ReconstructionOptions.h"
 
 namespace sltk

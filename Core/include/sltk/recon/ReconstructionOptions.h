@@ -5,7 +5,7 @@
 
 #include "sltk/grid/GridSpec.h"
 #include "sltk/levelset/ReinitOptions.h"
-#include "sltk/recon/CloudCleaning.h"
+#include "sltk/cloud/CloudCleaning.h"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The 1D expression-defined HJB solvers (one translation unit per dimension
 // so that the kernels of (3.7) compile in parallel).
-#include "HjbExpressionProblem.h"
+#include "ExpressionSolverOf.h"
 
 namespace sltk
 {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "sltk/recon/CloudSpacing.h"
+#include "sltk/cloud/CloudSpacing.h"
 
-#include "sltk/recon/PointLocator.h"
+#include "sltk/cloud/PointLocator.h"
 
 #include <algorithm>
 #include <cmath>

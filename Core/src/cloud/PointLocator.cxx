@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "sltk/recon/PointLocator.h"
+#include "sltk/cloud/PointLocator.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "sltk/recon/CloudCleaning.h"
+#include "sltk/cloud/CloudCleaning.h"
 
-#include "sltk/recon/CloudSpacing.h"
-#include "sltk/recon/CloudThinning.h"
+#include "sltk/cloud/CloudSpacing.h"
+#include "sltk/cloud/CloudThinning.h"
 
 #include <cmath>
 #include <sstream>

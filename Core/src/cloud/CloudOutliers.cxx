@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "sltk/recon/CloudOutliers.h"
+#include "sltk/cloud/CloudOutliers.h"
 
-#include "sltk/recon/PointLocator.h"
+#include "sltk/cloud/PointLocator.h"
 
 #include <cmath>
 

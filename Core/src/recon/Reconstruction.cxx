@@ -7,13 +7,13 @@
 #include "sltk/levelset/NarrowBand.h"
 #include "sltk/levelset/Reinitialise.h"
 #include "sltk/recon/CloudInitialData.h"
-#include "sltk/recon/CloudSpacing.h"
+#include "sltk/cloud/CloudSpacing.h"
 #include "sltk/recon/DistanceFunction.h"
 #include "sltk/recon/EnergyFunctional.h"
 #include "sltk/recon/ExactDistanceCache.h"
 #include "sltk/recon/GridPlan.h"
 #include "sltk/recon/LevelSetStep.h"
-#include "sltk/recon/PointLocator.h"
+#include "sltk/cloud/PointLocator.h"
 
 #include <algorithm>
 #include <chrono>

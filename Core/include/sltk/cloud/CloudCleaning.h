@@ -10,7 +10,7 @@
 /// h_P (4.36) of the cleaned cloud. With the defaults nothing changes.
 
 #include "sltk/exec/Context.h"
-#include "sltk/recon/CloudOutliers.h"
+#include "sltk/cloud/CloudOutliers.h"
 
 namespace sltk
 {

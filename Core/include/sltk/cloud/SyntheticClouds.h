@@ -5,7 +5,7 @@
 /// on a circle, and an about-uniform (Fibonacci) sampling of a sphere. Used by
 /// tests, benchmarks and examples.
 
-#include "sltk/recon/PointCloud.h"
+#include "sltk/cloud/PointCloud.h"
 
 #include <cmath>
 

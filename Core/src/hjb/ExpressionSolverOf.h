@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-/// \file HjbExpressionProblem.h (private)
+/// \file ExpressionSolverOf.h (private)
 /// The callables of HjbProblem (HjbProblem.h) evaluated from compiled user
 /// formulas (ExpressionProblem.h). Every formula reads the same slots
 /// {x, y, z, t, a1, a2, a3}; slots a formula may not use were refused when it

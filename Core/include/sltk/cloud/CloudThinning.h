@@ -9,7 +9,7 @@
 /// Err_P (4.35); averaging the points of overlapping, noisy scans also
 /// reduces the noise the model (4.9) would otherwise fit.
 
-#include "sltk/recon/PointCloud.h"
+#include "sltk/cloud/PointCloud.h"
 
 namespace sltk
 {

@@ -2,7 +2,7 @@
 #include "sltk/recon/DistanceFunction.h"
 
 #include "sltk/levelset/FastSweeping.h"
-#include "sltk/recon/PointLocator.h"
+#include "sltk/cloud/PointLocator.h"
 
 #include <cmath>
 #include <limits>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "sltk/recon/CloudThinning.h"
+#include "sltk/cloud/CloudThinning.h"
 
 #include <algorithm>
 #include <cmath>

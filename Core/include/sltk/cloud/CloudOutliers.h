@@ -11,7 +11,7 @@
 /// Q is an outlier when m(Q) > mean(m) + s * std(m) over the cloud.
 
 #include "sltk/exec/Context.h"
-#include "sltk/recon/PointCloud.h"
+#include "sltk/cloud/PointCloud.h"
 
 namespace sltk
 {

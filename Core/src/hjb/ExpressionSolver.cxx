@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // makeExpressionSolver(): checks an expression-defined HJB problem
 // (ExpressionProblem.h), compiles its formulas and builds its grid.
-#include "HjbExpressionProblem.h"
+#include "ExpressionSolverOf.h"
 #include "sltk/exec/Memory.h"
 
 #include <cmath>

@@ -16,7 +16,7 @@
 /// scans the density spacing shrinks only by sqrt(m).
 
 #include "sltk/exec/Context.h"
-#include "sltk/recon/PointCloud.h"
+#include "sltk/cloud/PointCloud.h"
 
 namespace sltk
 {

@@ -5,7 +5,7 @@
 /// search behind h_P (4.36) and the exact distance near the points (4.4.2).
 /// Buckets are stored compressed (CSR): no per-bucket allocation.
 
-#include "sltk/recon/PointCloud.h"
+#include "sltk/cloud/PointCloud.h"
 
 #include <limits>
 
