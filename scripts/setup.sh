@@ -10,7 +10,7 @@ jobs=${SLTK_JOBS:-$(nproc)}
 
 # Build and test dependencies (../shared/TOOLCHAIN.md). ParaView brings its own VTK.
 packages=(cmake make g++ paraview paraview-dev python3-paraview libp4est-dev libopenmpi-dev openmpi-bin
-  libeigen3-dev libgtest-dev libx11-dev libglew-dev xvfb xauth)
+  libeigen3-dev libgtest-dev libx11-dev libglew-dev xvfb xauth nlohmann-json3-dev libcli11-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -8,9 +8,7 @@
 #include "sltk/hjb/HjbError.h"
 #include "sltk/hjb/HjbScheme.h"
 #include "sltk/hjb/HjbSolver.h"
-#include "sltk/interp/Cweno.h"
-#include "sltk/interp/Q1.h"
-#include "sltk/interp/Weno3.h"
+#include "sltk/interp/Interpolators.h"
 
 #include <algorithm>
 #include <cmath>
@@ -217,19 +215,9 @@ private:
 template<class Problem, class... Args>
 std::unique_ptr<HjbSolver> makeHjbSolverOf(InterpolatorKind kind, Args&&... args)
 {
-  constexpr int D = Problem::Dim;
-  switch (kind)
-  {
-    case InterpolatorKind::Q1:
-      return std::make_unique<HjbSolverOf<Q1Interpolator<D>, Problem>>(std::forward<Args>(args)...);
-    case InterpolatorKind::Weno3:
-      return std::make_unique<HjbSolverOf<Weno3Interpolator<D>, Problem>>(std::forward<Args>(args)...);
-    case InterpolatorKind::Cweno:
-      return std::make_unique<HjbSolverOf<CwenoInterpolator<D>, Problem>>(std::forward<Args>(args)...);
-    case InterpolatorKind::CwenoZ:
-      return std::make_unique<HjbSolverOf<CwenoZInterpolator<D>, Problem>>(std::forward<Args>(args)...);
-  }
-  return nullptr;
+  return withInterpolator<Problem::Dim>(kind, [&](auto tag) -> std::unique_ptr<HjbSolver> {
+    return std::make_unique<HjbSolverOf<typename decltype(tag)::type, Problem>>(std::forward<Args>(args)...);
+  });
 }
 
 } // namespace sltk

@@ -1,9 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/recon/Reconstruction.h"
 
-#include "sltk/interp/Cweno.h"
-#include "sltk/interp/Q1.h"
-#include "sltk/interp/Weno3.h"
+#include "sltk/interp/Interpolators.h"
 #include "sltk/levelset/NarrowBand.h"
 #include "sltk/levelset/Reinitialise.h"
 #include "sltk/recon/CloudInitialData.h"
@@ -448,18 +446,9 @@ Status reconstructInUnitBox(const PointCloud<D>& cloud, const ReconstructionOpti
   GridPlan<D> plan;
   SLTK_RETURN_IF_ERROR(planGrids(bounds, spacing, po, plan));
   result.CloudSpacing = spacing;
-  switch (options.Interpolator)
-  {
-    case InterpolatorKind::Q1:
-      return runAll<D, Q1Interpolator<D>>(cloud, options, plan, ctx, result);
-    case InterpolatorKind::Weno3:
-      return runAll<D, Weno3Interpolator<D>>(cloud, options, plan, ctx, result);
-    case InterpolatorKind::Cweno:
-      return runAll<D, CwenoInterpolator<D>>(cloud, options, plan, ctx, result);
-    case InterpolatorKind::CwenoZ:
-      return runAll<D, CwenoZInterpolator<D>>(cloud, options, plan, ctx, result);
-  }
-  return Status::invalidArgument("unknown interpolator");
+  return withInterpolator<D>(options.Interpolator, [&](auto tag) {
+    return runAll<D, typename decltype(tag)::type>(cloud, options, plan, ctx, result);
+  });
 }
 } // namespace
 

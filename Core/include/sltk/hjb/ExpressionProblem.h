@@ -17,7 +17,7 @@
 #include "sltk/grid/GridSpec.h"
 #include "sltk/hjb/ControlSet.h"
 #include "sltk/hjb/Minimizer.h"
-#include "sltk/recon/ReconstructionOptions.h" // InterpolatorKind
+#include "sltk/interp/InterpolatorKind.h"
 #include "sltk/sl/ButcherTableau.h"
 
 #include <array>

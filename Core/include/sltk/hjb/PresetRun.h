@@ -7,7 +7,7 @@
 /// (and, for Test 5, the first time each node is reached (3.40)).
 
 #include "sltk/exec/Context.h"
-#include "sltk/recon/ReconstructionOptions.h" // InterpolatorKind
+#include "sltk/interp/InterpolatorKind.h"
 
 #include <array>
 #include <limits>

@@ -4,6 +4,7 @@
 /// Parameters of Algorithm 1 (thesis 4.3-4.5) and the records it returns.
 
 #include "sltk/grid/GridSpec.h"
+#include "sltk/interp/InterpolatorKind.h"
 #include "sltk/levelset/ReinitOptions.h"
 #include "sltk/cloud/CloudCleaning.h"
 
@@ -11,16 +12,6 @@
 
 namespace sltk
 {
-
-/// Spatial reconstruction at the feet (4.3.1): Q1 (4.28), WENO3 (2.69), and,
-/// beyond the thesis, CWENO / CWENOZ (3.3).
-enum class InterpolatorKind : std::uint8_t
-{
-  Q1 = 0,
-  Weno3 = 1,
-  Cweno = 2,
-  CwenoZ = 3
-};
 
 /// How the first run's initial data is built.
 enum class InitialGuess : std::uint8_t
