@@ -140,10 +140,22 @@ void addScalar(vtkFieldData* fd, const char* name, double value)
 }
 } // namespace
 
+static_assert(vtkCWENOHJBSolver::Q1 == static_cast<int>(sltk::InterpolatorKind::Q1) &&
+    vtkCWENOHJBSolver::WENO3 == static_cast<int>(sltk::InterpolatorKind::Weno3) &&
+    vtkCWENOHJBSolver::CWENO == static_cast<int>(sltk::InterpolatorKind::Cweno) &&
+    vtkCWENOHJBSolver::CWENOZ == static_cast<int>(sltk::InterpolatorKind::CwenoZ),
+  "the filter's InterpolatorType names the registry's codes (InterpolatorKind.h)");
+
 int vtkCWENOHJBSolver::BuildSolver(
   vtkInformation* inInfo, vtkImageData* values, std::unique_ptr<sltk::HjbSolver>& solver)
 {
-  sltk::Status status;
+  sltk::InterpolatorKind interpolator{};
+  sltk::Status status = sltk::vtkbridge::interpolatorOf(this->Interpolator, interpolator);
+  if (!status.isOk())
+  {
+    vtkErrorMacro(<< status.message());
+    return 0;
+  }
   if (this->Preset != CUSTOM)
   {
     sltk::PresetRunOptions options;
@@ -151,7 +163,7 @@ int vtkCWENOHJBSolver::BuildSolver(
     options.Nodes = this->NumberOfNodes;
     options.FinalTime = this->FinalTime;
     options.CourantNumber = this->CourantNumber;
-    options.Interpolator = static_cast<sltk::InterpolatorKind>(this->Interpolator);
+    options.Interpolator = interpolator;
     status = sltk::makePresetSolver(options, solver);
   }
   else
@@ -192,7 +204,7 @@ int vtkCWENOHJBSolver::BuildSolver(
     spec.Minimizer.WarmTabulationPoints = this->WarmStartPoints;
     spec.Minimizer.Tolerance = this->MinimizerTolerance;
     spec.Minimizer.PerStageControls = this->PerStageControls != 0;
-    spec.Interpolator = static_cast<sltk::InterpolatorKind>(this->Interpolator);
+    spec.Interpolator = interpolator;
     if (inInfo)
     {
       status = gridFromImage(inInfo, spec);

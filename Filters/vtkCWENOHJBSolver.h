@@ -95,8 +95,9 @@ public:
   ///@}
 
   ///@{
-  /// Reconstruction at the feet. Default CWENOZ.
-  vtkSetClampMacro(Interpolator, int, Q1, CWENOZ);
+  /// Reconstruction at the feet, an InterpolatorType value (RequestData refuses
+  /// any other value with an error). Default CWENOZ.
+  vtkSetMacro(Interpolator, int);
   vtkGetMacro(Interpolator, int);
   ///@}
 

@@ -57,16 +57,21 @@ int vtkSLLevelSetReconstruct::RequestInformation(
 
 namespace
 {
-sltk::ReconstructionOptions optionsOf(vtkSLLevelSetReconstruct* self)
+static_assert(vtkSLLevelSetReconstruct::Q1 == static_cast<int>(sltk::InterpolatorKind::Q1) &&
+    vtkSLLevelSetReconstruct::WENO3 == static_cast<int>(sltk::InterpolatorKind::Weno3) &&
+    vtkSLLevelSetReconstruct::CWENO == static_cast<int>(sltk::InterpolatorKind::Cweno) &&
+    vtkSLLevelSetReconstruct::CWENOZ == static_cast<int>(sltk::InterpolatorKind::CwenoZ),
+  "the filter's InterpolatorType names the registry's codes (InterpolatorKind.h)");
+
+sltk::Status optionsOf(vtkSLLevelSetReconstruct* self, sltk::ReconstructionOptions& o)
 {
-  sltk::ReconstructionOptions o;
+  o = sltk::ReconstructionOptions{};
   o.Runs = self->GetNumberOfRuns();
   o.CellSizeFactor = self->GetCellSizeFactor();
   o.OutsideThresholdFactor = self->GetOutsideThresholdFactor();
   o.Padding = self->GetPadding();
   o.MaxIterations = self->GetMaximumNumberOfIterations();
   o.Tolerance = self->GetTolerance();
-  o.Interpolator = static_cast<sltk::InterpolatorKind>(self->GetInterpolator());
   o.Guess = static_cast<sltk::InitialGuess>(self->GetInitialGuess());
   for (int k = 0; k < self->GetNumberOfRunParameters(); ++k)
   {
@@ -81,7 +86,7 @@ sltk::ReconstructionOptions optionsOf(vtkSLLevelSetReconstruct* self)
   o.Cleaning.Outliers.Deviations = self->GetOutlierDeviations();
   o.Cleaning.ThinningFactor = self->GetThinningFactor();
   o.DetectTunnels = self->GetDetectTunnels();
-  return o;
+  return sltk::vtkbridge::interpolatorOf(self->GetInterpolator(), o.Interpolator);
 }
 
 /// One execution makes all three outputs, and piece 0 holds the whole result:
@@ -105,21 +110,37 @@ void markOutputsComplete(vtkInformationVector* outputs)
   }
 }
 
-/// The cloud in its plane when it has no z extent (2D reconstruction).
-bool flatten(const sltk::PointCloud<3>& cloud, sltk::PointCloud<2>& flat, double& z)
+/// Plans (ReconstructionPlan.h) and runs Algorithm 1 on `cloud` (moved in),
+/// then fills the image (lying in the plane z = `z` in 2D) and the history.
+template <int D>
+int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, double z, const sltk::Context& ctx,
+  vtkImageData* image, vtkTable* history)
 {
-  const auto box = sltk::boundingBox(cloud);
-  if (box.extent(2) != 0.0)
+  sltk::ReconstructionOptions options;
+  sltk::Status status = optionsOf(self, options);
+  if (!status.isOk())
   {
-    return false;
+    vtkErrorWithObjectMacro(self, << status.message());
+    return 0;
   }
-  z = box.Min[2];
-  flat.Points.resize(cloud.Points.size());
-  for (size_t k = 0; k < cloud.Points.size(); ++k)
+  sltk::ReconstructionPlan<D> plan;
+  status = sltk::planReconstruction(std::move(cloud), options, ctx, plan);
+  if (!status.isOk())
   {
-    flat.Points[k] = { cloud.Points[k][0], cloud.Points[k][1] };
+    vtkErrorWithObjectMacro(self, "Input point set rejected: " << status.message());
+    return 0;
   }
-  return true;
+  sltk::ReconstructionResult<D> result;
+  status = sltk::reconstruct(plan, options, ctx, result);
+  if (!status.isOk())
+  {
+    vtkErrorWithObjectMacro(self, "Reconstruction failed: " << status.message());
+    return 0;
+  }
+  sltk::vtkbridge::toImage(result, z, image);
+  sltk::vtkbridge::runSummary(result, image);
+  sltk::vtkbridge::historyTable(result.History, history);
+  return 1;
 }
 } // namespace
 
@@ -143,16 +164,11 @@ int vtkSLLevelSetReconstruct::RequestData(
   vtkPolyData* surface = vtkPolyData::GetData(outputVector, 1);
   vtkTable* history = vtkTable::GetData(outputVector, 2);
 
-  sltk::PointCloud<3> cloud;
-  sltk::PointCloud<2> flat;
-  double z = 0.0;
-  sltk::Status status = sltk::vtkbridge::toCloud(input, cloud);
   // Under MPI each rank is asked for one piece and has read the whole cloud
   // (RequestUpdateExtent): piece 0 reconstructs, the other pieces stay empty
   // (distributed runs are not built yet).
-  const int port = request->Has(vtkExecutive::FROM_OUTPUT_PORT())
-    ? std::max(0, request->Get(vtkExecutive::FROM_OUTPUT_PORT()))
-    : 0;
+  const int port =
+    request->Has(vtkExecutive::FROM_OUTPUT_PORT()) ? std::max(0, request->Get(vtkExecutive::FROM_OUTPUT_PORT())) : 0;
   vtkInformation* outInfo = outputVector->GetInformationObject(port);
   if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
@@ -160,11 +176,8 @@ int vtkSLLevelSetReconstruct::RequestData(
     markOutputsComplete(outputVector);
     return 1;
   }
-  const bool planar = status.isOk() && !cloud.Points.empty() && flatten(cloud, flat, z);
-  if (status.isOk())
-  {
-    status = planar ? sltk::validateCloud(flat) : sltk::validateCloud(cloud);
-  }
+  sltk::PointCloud<3> cloud;
+  const sltk::Status status = sltk::vtkbridge::toCloud(input, cloud);
   if (!status.isOk())
   {
     vtkErrorMacro("Input point set rejected: " << status.message());
@@ -178,26 +191,14 @@ int vtkSLLevelSetReconstruct::RequestData(
   ctx.Executor = &pool;
   ctx.Progress = &progress;
   ctx.Log = &logger;
-  const sltk::ReconstructionOptions options = optionsOf(this);
-  sltk::ReconstructionResult<2> result2;
-  sltk::ReconstructionResult<3> result3;
-  status = planar ? sltk::reconstruct(flat, options, ctx, result2) : sltk::reconstruct(cloud, options, ctx, result3);
-  if (!status.isOk())
+  sltk::PointCloud<2> flat;
+  double z = 0.0;
+  const int done = sltk::flattenIfPlanar(cloud, flat, z)
+    ? reconstructInto<2>(this, std::move(flat), z, ctx, image, history)
+    : reconstructInto<3>(this, std::move(cloud), 0.0, ctx, image, history);
+  if (!done)
   {
-    vtkErrorMacro("Reconstruction failed: " << status.message());
     return 0;
-  }
-  if (planar)
-  {
-    sltk::vtkbridge::toImage(result2, z, image);
-    sltk::vtkbridge::runSummary(result2, image);
-    sltk::vtkbridge::historyTable(result2.History, history);
-  }
-  else
-  {
-    sltk::vtkbridge::toImage(result3, 0.0, image);
-    sltk::vtkbridge::runSummary(result3, image);
-    sltk::vtkbridge::historyTable(result3.History, history);
   }
   sltk::vtkbridge::zeroLevelSet(image, surface);
   markOutputsComplete(outputVector);
@@ -240,8 +241,9 @@ double vtkSLLevelSetReconstruct::GetRunEta(int index) const
 void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  static const char* names[4] = { "Q1", "WENO3", "CWENO", "CWENOZ" };
-  os << indent << "Interpolator: " << names[this->Interpolator] << "\n";
+  sltk::InterpolatorKind kind{};
+  os << indent << "Interpolator: "
+     << (sltk::interpolatorFromCode(this->Interpolator, kind) ? sltk::interpolatorInfo(kind).Label : "?") << "\n";
   os << indent << "NumberOfRuns: " << this->NumberOfRuns << "\n";
   os << indent << "CellSizeFactor: " << this->CellSizeFactor << "\n";
   os << indent << "OutsideThresholdFactor: " << this->OutsideThresholdFactor << "\n";

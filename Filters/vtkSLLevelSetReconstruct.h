@@ -41,15 +41,16 @@ public:
   /// Spatial reconstruction used at the feet of the characteristics.
   enum InterpolatorType
   {
-    Q1 = 0,     ///< multilinear (4.28)
-    WENO3 = 1,  ///< dimension-split WENO3 (2.65)-(2.76)
-    CWENO = 2,  ///< central WENO (3.10)-(3.28)
-    CWENOZ = 3  ///< central WENO-Z
+    Q1 = 0,    ///< multilinear (4.28)
+    WENO3 = 1, ///< dimension-split WENO3 (2.65)-(2.76)
+    CWENO = 2, ///< central WENO (3.10)-(3.28)
+    CWENOZ = 3 ///< central WENO-Z
   };
 
   ///@{
-  /// Interpolator (default WENO3, the thesis's choice for laser scans).
-  vtkSetClampMacro(Interpolator, int, Q1, CWENOZ);
+  /// Interpolator (default WENO3, the thesis's choice for laser scans): an
+  /// InterpolatorType value; RequestData refuses any other value with an error.
+  vtkSetMacro(Interpolator, int);
   vtkGetMacro(Interpolator, int);
   ///@}
 

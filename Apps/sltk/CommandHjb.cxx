@@ -8,6 +8,7 @@
 #include "WriteSurface.h"
 
 #include "sltk/exec/Memory.h"
+#include "sltk/interp/InterpolatorKind.h"
 
 #include <vtkCWENOHJBSolver.h>
 #include <vtkCommand.h>
@@ -42,19 +43,6 @@ options:
   -o, --output FILE.vti  write the value function (and ReachTime for test5)
   --json FILE            summary: l1_error, linf_error (when exact), min, max, seconds, steps, evaluations_per_node
 )";
-
-int interpolatorCode(const std::string& name)
-{
-  if (name == "q1")
-    return vtkCWENOHJBSolver::Q1;
-  if (name == "weno3")
-    return vtkCWENOHJBSolver::WENO3;
-  if (name == "cweno")
-    return vtkCWENOHJBSolver::CWENO;
-  if (name == "cwenoz")
-    return vtkCWENOHJBSolver::CWENOZ;
-  return -1;
-}
 
 } // namespace
 
@@ -111,10 +99,10 @@ int commandHjb(const Args& rawArgs)
   {
     return fail("unknown preset '" + presetName + "': use test1, test2, test3, test4 or test5", 2);
   }
-  const int interpolator = interpolatorCode(opt.value("interpolator", "cwenoz"));
-  if (interpolator < 0)
+  sltk::InterpolatorKind interpolator = sltk::InterpolatorKind::CwenoZ;
+  if (opt.has("interpolator") && !sltk::parseInterpolator(opt.value("interpolator"), interpolator))
   {
-    return fail("unknown interpolator '" + opt.value("interpolator") + "': use q1, weno3, cweno or cwenoz", 2);
+    return fail("unknown interpolator '" + opt.value("interpolator") + "': use " + sltk::interpolatorNameList(), 2);
   }
   if (n < 5 || n > 100000 || n != static_cast<int>(n))
   {
@@ -145,7 +133,7 @@ int commandHjb(const Args& rawArgs)
   }
   solver->SetFinalTime(finalTime);
   solver->SetCourantNumber(courant);
-  solver->SetInterpolator(interpolator);
+  solver->SetInterpolator(static_cast<int>(interpolator));
   solver->SetNumberOfThreads(static_cast<int>(threads));
   solver->Update();
   if (!errors->Message.empty())
@@ -161,8 +149,8 @@ int commandHjb(const Args& rawArgs)
   const double steps = fd->GetArray("Steps")->GetTuple1(0);
   const double evaluations = fd->GetArray("EvaluationsPerNode")->GetTuple1(0);
   const int* dims = image->GetDimensions();
-  std::printf("%s, %d x %d x %d nodes, T = %g, %.0f steps, %.1f evaluations per node and step\n",
-    presetName.c_str(), dims[0], dims[1], dims[2], t, steps, evaluations);
+  std::printf("%s, %d x %d x %d nodes, T = %g, %.0f steps, %.1f evaluations per node and step\n", presetName.c_str(),
+    dims[0], dims[1], dims[2], t, steps, evaluations);
   std::printf("value in [%.6g, %.6g], %.3f s", range[0], range[1], seconds);
   const bool exact = fd->GetArray("L1Error") != nullptr;
   if (exact)

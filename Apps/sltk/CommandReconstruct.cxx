@@ -12,9 +12,9 @@
 #include "WriteSurface.h"
 
 #include "sltk/exec/Memory.h"
-#include "sltk/recon/Reconstruction.h"
+#include "sltk/interp/InterpolatorKind.h"
+#include "sltk/recon/ReconstructionPlan.h"
 
-#include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkDelimitedTextWriter.h>
 #include <vtkFieldData.h>
@@ -22,7 +22,6 @@
 #include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSLLevelSetReconstruct.h>
 #include <vtkTable.h>
@@ -72,32 +71,6 @@ options:
   --verbose               the solver's log (cleaning counts, grids, per-run phase times) on stderr
 )";
 
-int interpolatorCode(const std::string& name)
-{
-  const char* names[4] = { "q1", "weno3", "cweno", "cwenoz" };
-  for (int k = 0; k < 4; ++k)
-  {
-    if (name == names[k])
-    {
-      return k;
-    }
-  }
-  return -1;
-}
-
-int initialGuessCode(const std::string& name)
-{
-  const char* names[3] = { "outside", "sphere", "ellipsoid" };
-  for (int k = 0; k < 3; ++k)
-  {
-    if (name == names[k])
-    {
-      return k;
-    }
-  }
-  return -1;
-}
-
 /// "P:E,P:E,..." -> one (p, eta) per run; false when malformed.
 bool parseSchedule(const std::string& text, std::vector<sltk::RunParameters>& schedule)
 {
@@ -130,19 +103,6 @@ bool parseSchedule(const std::string& text, std::vector<sltk::RunParameters>& sc
   return !schedule.empty();
 }
 
-vtkSmartPointer<vtkPolyData> asPolyData(const sltk::PointCloud<3>& cloud)
-{
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(cloud.Points.size()));
-  for (size_t k = 0; k < cloud.Points.size(); ++k)
-  {
-    points->SetPoint(static_cast<vtkIdType>(k), cloud.Points[k].data());
-  }
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->SetPoints(points);
-  return poly;
-}
 } // namespace
 
 int commandReconstruct(const Args& rawArgs)
@@ -177,13 +137,13 @@ int commandReconstruct(const Args& rawArgs)
   {
     return fail("give exactly one point cloud file (see sltk reconstruct --help)", 2);
   }
-  const int interpolator = interpolatorCode(opt.value("interpolator", "weno3"));
-  if (interpolator < 0)
+  sltk::InterpolatorKind interpolator = sltk::InterpolatorKind::Weno3;
+  if (opt.has("interpolator") && !sltk::parseInterpolator(opt.value("interpolator"), interpolator))
   {
-    return fail("unknown interpolator '" + opt.value("interpolator") + "': use q1, weno3, cweno or cwenoz", 2);
+    return fail("unknown interpolator '" + opt.value("interpolator") + "': use " + sltk::interpolatorNameList(), 2);
   }
-  const int guess = initialGuessCode(opt.value("initial", "outside"));
-  if (guess < 0)
+  sltk::InitialGuess guess = sltk::InitialGuess::OutsideMarking;
+  if (!parseInitialGuess(opt.value("initial", "outside"), guess))
   {
     return fail("unknown initial guess '" + opt.value("initial") + "': use outside, sphere or ellipsoid", 2);
   }
@@ -248,7 +208,7 @@ int commandReconstruct(const Args& rawArgs)
 
   const auto start = std::chrono::steady_clock::now();
   const std::string path = opt.positional()[0];
-  sltk::PointCloud<3> cloud;
+  vtkSmartPointer<vtkPointSet> cloud;
   sltk::Status status = readPointCloud(path, cloud);
   if (!status.isOk())
   {
@@ -266,13 +226,13 @@ int commandReconstruct(const Args& rawArgs)
   {
     filter->AddObserver(vtkCommand::ProgressEvent, bar);
   }
-  filter->SetInputData(asPolyData(cloud));
-  filter->SetInterpolator(interpolator);
+  filter->SetInputData(cloud);
+  filter->SetInterpolator(static_cast<int>(interpolator));
   filter->SetCellSizeFactor(cdx);
   filter->SetOutsideThresholdFactor(kp);
   filter->SetNumberOfRuns(static_cast<int>(runs));
   filter->SetMaximumNumberOfIterations(static_cast<int>(iterations));
-  filter->SetInitialGuess(guess);
+  filter->SetInitialGuess(static_cast<int>(guess));
   filter->SetNumberOfThreads(static_cast<int>(threads));
   filter->SetFinalEta(eta);
   for (const sltk::RunParameters& run : schedule)
@@ -287,7 +247,8 @@ int commandReconstruct(const Args& rawArgs)
   bar->finish();
   if (!errors->Message.empty())
   {
-    return fail(path + ": " + withMergedScanHint(errors->Message, cloud.Points.size(), thin > 0));
+    return fail(
+      path + ": " + withMergedScanHint(errors->Message, static_cast<size_t>(cloud->GetNumberOfPoints()), thin > 0));
   }
   auto* image = vtkImageData::SafeDownCast(filter->GetOutputDataObject(0));
   auto* surface = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1));
@@ -302,8 +263,8 @@ int commandReconstruct(const Args& rawArgs)
   auto* energy = fd->GetArray("RunEnergy");
   auto* cloudError = fd->GetArray("RunCloudError");
   auto* runSeconds = fd->GetArray("RunSeconds");
-  std::printf("cloud      %s (%zu points, h_P = %.6g)\n", path.c_str(), cloud.Points.size(),
-    fd->GetArray("CloudSpacing")->GetTuple1(0));
+  std::printf("cloud      %s (%lld points, h_P = %.6g)\n", path.c_str(),
+    static_cast<long long>(cloud->GetNumberOfPoints()), fd->GetArray("CloudSpacing")->GetTuple1(0));
   const auto fieldValue = [fd](const char* name) { return fd->GetArray(name)->GetTuple1(0); };
   const long long reconstructed = static_cast<long long>(fieldValue("ReconstructedPoints"));
   const long long outliers = static_cast<long long>(fieldValue("OutliersRemoved"));
@@ -321,15 +282,17 @@ int commandReconstruct(const Args& rawArgs)
       g[1], g[2], its->GetTuple1(r), energy->GetTuple1(r), cloudError->GetTuple1(r), runSeconds->GetTuple1(r));
     runRecords.push_back(JsonObject()
                            .add("run", static_cast<long long>(r + 1))
-                           .add("grid", std::vector<long long>{ static_cast<long long>(g[0]),
-                                          static_cast<long long>(g[1]), static_cast<long long>(g[2]) })
+                           .add("grid",
+                             std::vector<long long>{ static_cast<long long>(g[0]), static_cast<long long>(g[1]),
+                               static_cast<long long>(g[2]) })
                            .add("iterations", static_cast<long long>(its->GetTuple1(r)))
                            .add("energy", energy->GetTuple1(r))
                            .add("err_cloud", cloudError->GetTuple1(r))
                            .add("seconds", runSeconds->GetTuple1(r)));
   }
   const double hP = fd->GetArray("CloudSpacing")->GetTuple1(0);
-  const double finalError = cloudError->GetNumberOfTuples() ? cloudError->GetTuple1(cloudError->GetNumberOfTuples() - 1) : 0.0;
+  const double finalError =
+    cloudError->GetNumberOfTuples() ? cloudError->GetTuple1(cloudError->GetNumberOfTuples() - 1) : 0.0;
   if (finalError > 2.0 * hP)
   {
     std::fprintf(stderr,
@@ -372,7 +335,7 @@ int commandReconstruct(const Args& rawArgs)
   }
   if (opt.has("png"))
   {
-    status = renderPng(opt.value("png"), surface, asPolyData(cloud));
+    status = renderPng(opt.value("png"), surface, cloud);
     if (!status.isOk())
     {
       return fail(status.message());
@@ -380,14 +343,16 @@ int commandReconstruct(const Args& rawArgs)
   }
   if (opt.has("csv"))
   {
-    status = writeAtomically(opt.value("csv"), [&](const std::string& temporary) {
-      vtkNew<vtkDelimitedTextWriter> writer;
-      writer->SetInputData(history);
-      writer->SetFileName(temporary.c_str());
-      writer->SetFieldDelimiter(",");
-      writer->SetUseStringDelimiter(false);
-      return writer->Write() == 1;
-    });
+    status = writeAtomically(opt.value("csv"),
+      [&](const std::string& temporary)
+      {
+        vtkNew<vtkDelimitedTextWriter> writer;
+        writer->SetInputData(history);
+        writer->SetFileName(temporary.c_str());
+        writer->SetFieldDelimiter(",");
+        writer->SetUseStringDelimiter(false);
+        return writer->Write() == 1;
+      });
     if (!status.isOk())
     {
       return fail(status.message());
@@ -397,7 +362,7 @@ int commandReconstruct(const Args& rawArgs)
   {
     JsonObject summary;
     summary.add("cloud", path)
-      .add("points", static_cast<long long>(cloud.Points.size()))
+      .add("points", static_cast<long long>(cloud->GetNumberOfPoints()))
       .add("outliers_removed", outliers)
       .add("thinning_cell", fieldValue("ThinningCell"))
       .add("points_reconstructed", reconstructed)

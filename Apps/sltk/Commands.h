@@ -4,6 +4,8 @@
 /// Sub-commands of the `sltk` command line. Each returns the process exit
 /// code: 0 success, 1 the job failed (message printed), 2 bad usage.
 
+#include "sltk/recon/ReconstructionOptions.h"
+
 #include <string>
 #include <vector>
 
@@ -20,6 +22,9 @@ int commandReconstruct(const Args& args);
 /// thinned: appends the hint that merged, overlapping range scans make h_P (4.36)
 /// tiny and want --remove-outliers --thin (README). Other messages are returned as they are.
 std::string withMergedScanHint(const std::string& message, size_t points, bool thinned);
+
+/// The InitialGuess named `name` (outside, sphere, ellipsoid); false when unknown.
+bool parseInitialGuess(const std::string& name, sltk::InitialGuess& guess);
 
 /// Prints "sltk: error: <message>" to stderr and returns `code`.
 int fail(const std::string& message, int code = 1);

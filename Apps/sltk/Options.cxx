@@ -17,8 +17,23 @@ std::string withMergedScanHint(const std::string& message, size_t points, bool t
   {
     return message;
   }
-  return message + ". If the cloud merges overlapping range scans, their overlaps make h_P tiny: try "
-                   "--remove-outliers --thin 2.5 (README, merged scans), then sltk info with the same options";
+  return message +
+    ". If the cloud merges overlapping range scans, their overlaps make h_P tiny: try "
+    "--remove-outliers --thin 2.5 (README, merged scans), then sltk info with the same options";
+}
+
+bool parseInitialGuess(const std::string& name, sltk::InitialGuess& guess)
+{
+  const char* names[3] = { "outside", "sphere", "ellipsoid" }; // InitialGuess values 0, 1, 2
+  for (int k = 0; k < 3; ++k)
+  {
+    if (name == names[k])
+    {
+      guess = static_cast<sltk::InitialGuess>(k);
+      return true;
+    }
+  }
+  return false;
 }
 
 int fail(const std::string& message, int code)
@@ -146,8 +161,8 @@ std::vector<double> Options::numbers(
     if (this->Error.empty())
     {
       this->Error = "option --" + name + " expects " + std::to_string(minCount) +
-        (maxCount > minCount ? " to " + std::to_string(maxCount) : std::string()) +
-        " comma-separated numbers, got '" + text + "'";
+        (maxCount > minCount ? " to " + std::to_string(maxCount) : std::string()) + " comma-separated numbers, got '" +
+        text + "'";
     }
     return fallback;
   }

@@ -1,17 +1,20 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ReadPointCloud.h"
 
+#include "FileNames.h"
+
 #include <vtkDataSetReader.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkPLYReader.h>
 #include <vtkPointSet.h>
 #include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <algorithm>
-#include <cctype>
+#include <array>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -21,20 +24,10 @@ namespace sltkcli
 
 namespace
 {
-std::string extensionOf(const std::string& path)
+sltk::Status readText(const std::string& path, vtkSmartPointer<vtkPointSet>& cloud)
 {
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos)
-  {
-    return "";
-  }
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
-
-sltk::Status readText(const std::string& path, sltk::PointCloud<3>& cloud)
-{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
   std::ifstream in(path);
   std::string line;
   long long lineNumber = 0;
@@ -61,7 +54,7 @@ sltk::Status readText(const std::string& path, sltk::PointCloud<3>& cloud)
       }
       p = end;
     }
-    if (got == 0 && cloud.Points.empty())
+    if (got == 0 && points->GetNumberOfPoints() == 0)
     {
       continue; // a header line such as "x,y,z"
     }
@@ -70,17 +63,19 @@ sltk::Status readText(const std::string& path, sltk::PointCloud<3>& cloud)
       return sltk::Status::ioError(path + ":" + std::to_string(lineNumber) +
         ": expected three coordinates per line (x y z), got " + std::to_string(got));
     }
-    cloud.Points.push_back(x);
+    points->InsertNextPoint(x.data());
   }
   if (in.bad())
   {
     return sltk::Status::ioError("read error in " + path);
   }
+  cloud = vtkSmartPointer<vtkPolyData>::New();
+  cloud->SetPoints(points);
   return sltk::Status::ok();
 }
 
 template <class Reader>
-sltk::Status readWith(const std::string& path, sltk::PointCloud<3>& cloud)
+sltk::Status readWith(const std::string& path, vtkSmartPointer<vtkPointSet>& cloud)
 {
   vtkNew<Reader> reader;
   reader->SetFileName(path.c_str());
@@ -90,19 +85,14 @@ sltk::Status readWith(const std::string& path, sltk::PointCloud<3>& cloud)
   {
     return sltk::Status::ioError("could not read points from " + path + " (is it a valid file of its type?)");
   }
-  vtkPoints* points = data->GetPoints();
-  cloud.Points.resize(static_cast<size_t>(points->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
-  {
-    points->GetPoint(i, cloud.Points[static_cast<size_t>(i)].data());
-  }
+  cloud = data;
   return sltk::Status::ok();
 }
 } // namespace
 
-sltk::Status readPointCloud(const std::string& path, sltk::PointCloud<3>& cloud)
+sltk::Status readPointCloud(const std::string& path, vtkSmartPointer<vtkPointSet>& cloud)
 {
-  cloud.Points.clear();
+  cloud = nullptr;
   std::ifstream probe(path, std::ios::binary);
   if (!probe)
   {
@@ -134,8 +124,8 @@ sltk::Status readPointCloud(const std::string& path, sltk::PointCloud<3>& cloud)
   {
     return readWith<vtkDataSetReader>(path, cloud);
   }
-  return sltk::Status::ioError("unsupported file type '." + ext + "' of " + path +
-    ": use .ply .xyz .txt .csv .pts .obj .vtp .vtu or .vtk");
+  return sltk::Status::ioError(
+    "unsupported file type '." + ext + "' of " + path + ": use .ply .xyz .txt .csv .pts .obj .vtp .vtu or .vtk");
 }
 
 } // namespace sltkcli

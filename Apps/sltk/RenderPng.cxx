@@ -42,7 +42,7 @@ std::string pngProblem(const std::string& path)
   return "";
 }
 
-sltk::Status renderPng(const std::string& path, vtkPolyData* surface, vtkPolyData* cloud)
+sltk::Status renderPng(const std::string& path, vtkPolyData* surface, vtkPointSet* cloud)
 {
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(1.0, 1.0, 1.0);

@@ -9,6 +9,7 @@
 
 #include <string>
 
+class vtkPointSet;
 class vtkPolyData;
 
 namespace sltkcli
@@ -19,6 +20,6 @@ namespace sltkcli
 std::string pngProblem(const std::string& path);
 
 /// Renders `surface` (and `cloud`'s points when given) to `path`, atomically.
-sltk::Status renderPng(const std::string& path, vtkPolyData* surface, vtkPolyData* cloud);
+sltk::Status renderPng(const std::string& path, vtkPolyData* surface, vtkPointSet* cloud);
 
 } // namespace sltkcli

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SurfaceDistance.h"
 
+#include "FileNames.h"
+
 #include <vtkGenericCell.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
@@ -23,12 +25,6 @@ namespace sltkcli
 
 namespace
 {
-std::string extensionOf(const std::string& path)
-{
-  const auto dot = path.find_last_of('.');
-  return dot == std::string::npos ? "" : path.substr(dot + 1);
-}
-
 /// OFF (the ground-truth format of ../shared/data/clouds): "OFF", counts, vertices, faces.
 sltk::Status readOff(const std::string& path, vtkPolyData* mesh)
 {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "WriteSurface.h"
 
+#include "FileNames.h"
+
 #include "WriteAtomically.h"
 
 #include <vtkImageData.h>
@@ -16,12 +18,6 @@ namespace sltkcli
 
 namespace
 {
-std::string extensionOf(const std::string& path)
-{
-  const auto dot = path.find_last_of('.');
-  return dot == std::string::npos ? "" : path.substr(dot + 1);
-}
-
 template <class Writer>
 bool writeWith(vtkDataObject* data, const std::string& path)
 {
@@ -45,17 +41,19 @@ std::string surfaceFormatProblem(const std::string& path)
 sltk::Status writeSurface(const std::string& path, vtkPolyData* surface)
 {
   const std::string ext = extensionOf(path);
-  return writeAtomically(path, [&](const std::string& temporary) {
-    if (ext == "ply")
+  return writeAtomically(path,
+    [&](const std::string& temporary)
     {
-      return writeWith<vtkPLYWriter>(surface, temporary);
-    }
-    if (ext == "stl")
-    {
-      return writeWith<vtkSTLWriter>(surface, temporary);
-    }
-    return writeWith<vtkXMLPolyDataWriter>(surface, temporary);
-  });
+      if (ext == "ply")
+      {
+        return writeWith<vtkPLYWriter>(surface, temporary);
+      }
+      if (ext == "stl")
+      {
+        return writeWith<vtkSTLWriter>(surface, temporary);
+      }
+      return writeWith<vtkXMLPolyDataWriter>(surface, temporary);
+    });
 }
 
 sltk::Status writeImage(const std::string& path, vtkImageData* image)

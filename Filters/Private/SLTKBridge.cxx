@@ -34,6 +34,21 @@ Status toValidCloud(vtkPointSet* input, PointCloud<3>& cloud)
   return validateCloud(cloud);
 }
 
+Status interpolatorOf(int code, InterpolatorKind& kind)
+{
+  if (interpolatorFromCode(code, kind))
+  {
+    return Status::ok();
+  }
+  std::string valid;
+  for (int k = 0; k < interpolatorCount(); ++k)
+  {
+    valid += k == 0 ? "" : (k + 1 == interpolatorCount() ? " or " : ", ");
+    valid += std::to_string(k) + " (" + Interpolators[static_cast<size_t>(k)].Label + ")";
+  }
+  return Status::invalidArgument("Interpolator " + std::to_string(code) + " is not an interpolator: use " + valid);
+}
+
 void AlgorithmInterrupter::start(const std::string& phase)
 {
   this->Algorithm->SetProgressText(phase.c_str());

@@ -5,9 +5,10 @@
 /// Core <-> VTK bridge (never installed or wrapped): point sets into Core
 /// clouds, Core services onto vtkAlgorithm progress/abort and vtkLogger.
 
+#include "sltk/cloud/PointCloud.h"
 #include "sltk/exec/Interrupter.h"
 #include "sltk/exec/Logger.h"
-#include "sltk/cloud/PointCloud.h"
+#include "sltk/interp/InterpolatorKind.h"
 
 class vtkAlgorithm;
 class vtkPointSet;
@@ -24,6 +25,10 @@ Status toCloud(vtkPointSet* input, PointCloud<3>& cloud);
 /// toCloud() followed by validateCloud(): the check every point-cloud filter
 /// runs before it allocates anything.
 Status toValidCloud(vtkPointSet* input, PointCloud<3>& cloud);
+
+/// The interpolator of a filter's Interpolator property (InterpolatorKind.h);
+/// fails with a message listing the valid values when `code` is out of range.
+Status interpolatorOf(int code, InterpolatorKind& kind);
 
 /// Progress and abort of a vtkAlgorithm: UpdateProgress + AbortExecute.
 class AlgorithmInterrupter final : public Interrupter

@@ -46,6 +46,24 @@ expect(info["points"] == 2562, "info JSON counts the points")
 expect(0.05 < info["h_P"] < 0.09, "h_P of a 2562-point unit sphere is ~0.07 (got %g)" % info["h_P"])
 expect(len(info["runs"]) == 3 and info["runs"][2]["dx"] * 4 == info["runs"][0]["dx"], "three runs halve dx (4.36)")
 
+# One plan (ReconstructionPlan.h): info prints the grids reconstruct runs, run 1's padding for K_P included.
+for kp, initial in (("10", "outside"), ("2", "ellipsoid")):
+    info_kp, rec_kp = os.path.join(tmp, "info-kp.json"), os.path.join(tmp, "rec-kp.json")
+    rc1, _, err1 = run("info", sphere, "--kp", kp, "--initial", initial, "--cdx", "2", "--json", info_kp)
+    rc2, _, err2 = run("reconstruct", sphere, "--kp", kp, "--initial", initial, "--cdx", "2", "--max-iterations", "1",
+                       "--quiet", "--json", rec_kp)
+    planned = [r["grid"] for r in json.load(open(info_kp))["runs"]] if rc1 == 0 else None
+    ran = [r["grid"] for r in json.load(open(rec_kp))["runs"]] if rc2 == 0 else []
+    expect(planned == ran and len(ran) == 3, "info and reconstruct give the same grids with --kp %s --initial %s: %s vs %s"
+           % (kp, initial, planned, ran))
+flat = os.path.join(tmp, "circle.xyz")
+with open(flat, "w") as f:
+    for k in range(400):
+        f.write("%.9f %.9f 0.5\n" % (math.cos(2 * math.pi * k / 400), math.sin(2 * math.pi * k / 400)))
+rc, out, err = run("info", flat, "--json", summary)
+expect(rc == 0 and json.load(open(summary))["dimension"] == 2 and "2D" in out,
+       "info plans a cloud with no z extent in 2D, as reconstruct runs it: " + err.strip())
+
 bad = os.path.join(tmp, "nan.xyz")
 write_sphere(bad, 100, bad_line=17)
 rc, _, err = run("info", bad)

@@ -11,14 +11,36 @@
 namespace sltk
 {
 
+namespace
+{
+Status tooFewPoints()
+{
+  return Status::invalidArgument("the cloud spacing h_P needs at least two points");
+}
+} // namespace
+
 template <int D>
 Status cloudSpacing(const PointCloud<D>& cloud, const Context& ctx, double& spacing, const CloudSpacingOptions& options)
 {
   spacing = 0.0;
+  if (cloud.size() < 2)
+  {
+    return tooFewPoints(); // (the locator needs a non-empty cloud)
+  }
+  const PointLocator<D> locator(cloud);
+  return cloudSpacing(locator, ctx, spacing, options);
+}
+
+template <int D>
+Status cloudSpacing(
+  const PointLocator<D>& locator, const Context& ctx, double& spacing, const CloudSpacingOptions& options)
+{
+  spacing = 0.0;
+  const PointCloud<D>& cloud = locator.cloud();
   const std::int64_t n = cloud.size();
   if (n < 2)
   {
-    return Status::invalidArgument("the cloud spacing h_P needs at least two points");
+    return tooFewPoints();
   }
   // Sample without replacement: a partial Fisher-Yates shuffle with a fixed seed.
   std::int64_t m = static_cast<std::int64_t>(options.SampleFraction * static_cast<double>(n));
@@ -36,22 +58,23 @@ Status cloudSpacing(const PointCloud<D>& cloud, const Context& ctx, double& spac
   {
     return Status::invalidArgument("the density spacing needs 0 < k < the number of points");
   }
-  const PointLocator<D> locator(cloud);
   std::vector<double> nearest(static_cast<size_t>(m), 0.0);
-  ctx.parallelFor(0, m, [&](Index b, Index e) {
-    std::vector<typename PointLocator<D>::Hit> hits;
-    for (Index i = b; i < e; ++i)
+  ctx.parallelFor(0, m,
+    [&](Index b, Index e)
     {
-      const std::int64_t k = order[static_cast<size_t>(i)];
-      if (kth == 0)
+      std::vector<typename PointLocator<D>::Hit> hits;
+      for (Index i = b; i < e; ++i)
       {
-        nearest[static_cast<size_t>(i)] = locator.nearest(cloud.Points[static_cast<size_t>(k)], k).Distance;
-        continue;
+        const std::int64_t k = order[static_cast<size_t>(i)];
+        if (kth == 0)
+        {
+          nearest[static_cast<size_t>(i)] = locator.nearest(cloud.Points[static_cast<size_t>(k)], k).Distance;
+          continue;
+        }
+        locator.nearest(cloud.Points[static_cast<size_t>(k)], kth, k, hits);
+        nearest[static_cast<size_t>(i)] = hits.back().Distance; // r_k
       }
-      locator.nearest(cloud.Points[static_cast<size_t>(k)], kth, k, hits);
-      nearest[static_cast<size_t>(i)] = hits.back().Distance; // r_k
-    }
-  });
+    });
   double sum = 0.0;
   std::int64_t used = 0;
   for (double d : nearest)
@@ -77,5 +100,7 @@ Status cloudSpacing(const PointCloud<D>& cloud, const Context& ctx, double& spac
 
 template Status cloudSpacing(const PointCloud<2>&, const Context&, double&, const CloudSpacingOptions&);
 template Status cloudSpacing(const PointCloud<3>&, const Context&, double&, const CloudSpacingOptions&);
+template Status cloudSpacing(const PointLocator<2>&, const Context&, double&, const CloudSpacingOptions&);
+template Status cloudSpacing(const PointLocator<3>&, const Context&, double&, const CloudSpacingOptions&);
 
 } // namespace sltk

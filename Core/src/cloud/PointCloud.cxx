@@ -92,8 +92,14 @@ double spreadOffPlane(const PointCloud<3>& c, size_t i0, size_t i1)
   return best;
 }
 
-double spreadOffFlat(const PointCloud<2>& c, size_t i0, size_t i1) { return spreadOffLine(c, i0, i1); }
-double spreadOffFlat(const PointCloud<3>& c, size_t i0, size_t i1) { return spreadOffPlane(c, i0, i1); }
+double spreadOffFlat(const PointCloud<2>& c, size_t i0, size_t i1)
+{
+  return spreadOffLine(c, i0, i1);
+}
+double spreadOffFlat(const PointCloud<3>& c, size_t i0, size_t i1)
+{
+  return spreadOffPlane(c, i0, i1);
+}
 } // namespace
 
 template <int D>
@@ -153,8 +159,8 @@ Status validateCloud(const PointCloud<D>& cloud)
   }
   if (spreadOffFlat(cloud, 0, i1) <= 1e-12 * diameter)
   {
-    return Status::invalidArgument(std::string("all points lie on one ") + (D == 2 ? "line" : "plane") +
-      ": a closed " + (D == 2 ? "curve" : "surface") + " cannot be reconstructed from them");
+    return Status::invalidArgument(std::string("all points lie on one ") + (D == 2 ? "line" : "plane") + ": a closed " +
+      (D == 2 ? "curve" : "surface") + " cannot be reconstructed from them");
   }
   return Status::ok();
 }
@@ -163,5 +169,25 @@ template Box<2> boundingBox(const PointCloud<2>&);
 template Box<3> boundingBox(const PointCloud<3>&);
 template Status validateCloud(const PointCloud<2>&);
 template Status validateCloud(const PointCloud<3>&);
+
+bool flattenIfPlanar(const PointCloud<3>& cloud, PointCloud<2>& flat, double& z)
+{
+  if (cloud.Points.empty())
+  {
+    return false;
+  }
+  const auto box = boundingBox(cloud);
+  if (box.extent(2) != 0.0)
+  {
+    return false;
+  }
+  z = box.Min[2];
+  flat.Points.resize(cloud.Points.size());
+  for (size_t k = 0; k < cloud.Points.size(); ++k)
+  {
+    flat.Points[k] = { cloud.Points[k][0], cloud.Points[k][1] };
+  }
+  return true;
+}
 
 } // namespace sltk

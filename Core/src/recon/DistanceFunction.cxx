@@ -2,7 +2,6 @@
 #include "sltk/recon/DistanceFunction.h"
 
 #include "sltk/levelset/FastSweeping.h"
-#include "sltk/cloud/PointLocator.h"
 
 #include <cmath>
 #include <limits>
@@ -10,14 +9,35 @@
 namespace sltk
 {
 
+namespace
+{
+Status emptyCloud()
+{
+  return Status::invalidArgument("the distance function needs a non-empty point cloud");
+}
+} // namespace
+
 template <int D>
 Status distanceToCloud(const PointCloud<D>& cloud, const GridSpec<D>& grid, const Context& ctx,
   GridField<D, double>& distance, const DistanceOptions& options, DistanceReport* report)
 {
+  if (cloud.size() == 0)
+  {
+    return emptyCloud(); // (the locator needs a non-empty cloud)
+  }
+  const PointLocator<D> locator(cloud);
+  return distanceToCloud(locator, grid, ctx, distance, options, report);
+}
+
+template <int D>
+Status distanceToCloud(const PointLocator<D>& locator, const GridSpec<D>& grid, const Context& ctx,
+  GridField<D, double>& distance, const DistanceOptions& options, DistanceReport* report)
+{
+  const PointCloud<D>& cloud = locator.cloud();
   SLTK_RETURN_IF_ERROR(grid.validate());
   if (cloud.size() == 0)
   {
-    return Status::invalidArgument("the distance function needs a non-empty point cloud");
+    return emptyCloud();
   }
   if (options.ExactHalfWidth < 1 || options.Ghost < 0 || options.MaxSweepCycles < 1)
   {
@@ -73,27 +93,28 @@ Status distanceToCloud(const PointCloud<D>& cloud, const GridSpec<D>& grid, cons
     }
   }
   distance.resize(grid, options.Ghost, std::numeric_limits<double>::infinity());
-  const PointLocator<D> locator(cloud);
   // Exact distance on the marked nodes, per node: independent of the thread count.
-  const double exactCount = ctx.parallelSum(0, nodes, [&](Index b, Index e) {
-    double count = 0.0;
-    for (Index k = b; k < e; ++k)
+  const double exactCount = ctx.parallelSum(0, nodes,
+    [&](Index b, Index e)
     {
-      if (!exact[static_cast<size_t>(k)])
+      double count = 0.0;
+      for (Index k = b; k < e; ++k)
       {
-        continue;
+        if (!exact[static_cast<size_t>(k)])
+        {
+          continue;
+        }
+        const std::array<Index, D> i = distance.nodeIndex(k);
+        std::array<double, D> x;
+        for (int a = 0; a < D; ++a)
+        {
+          x[a] = grid.coordinate(a, i[a]);
+        }
+        distance(i) = locator.nearest(x).Distance;
+        count += 1.0;
       }
-      const std::array<Index, D> i = distance.nodeIndex(k);
-      std::array<double, D> x;
-      for (int a = 0; a < D; ++a)
-      {
-        x[a] = grid.coordinate(a, i[a]);
-      }
-      distance(i) = locator.nearest(x).Distance;
-      count += 1.0;
-    }
-    return count;
-  });
+      return count;
+    });
   if (ctx.interrupter().wasInterrupted())
   {
     return Status::aborted();
@@ -118,6 +139,10 @@ Status distanceToCloud(const PointCloud<D>& cloud, const GridSpec<D>& grid, cons
 template Status distanceToCloud(const PointCloud<2>&, const GridSpec<2>&, const Context&, GridField<2, double>&,
   const DistanceOptions&, DistanceReport*);
 template Status distanceToCloud(const PointCloud<3>&, const GridSpec<3>&, const Context&, GridField<3, double>&,
+  const DistanceOptions&, DistanceReport*);
+template Status distanceToCloud(const PointLocator<2>&, const GridSpec<2>&, const Context&, GridField<2, double>&,
+  const DistanceOptions&, DistanceReport*);
+template Status distanceToCloud(const PointLocator<3>&, const GridSpec<3>&, const Context&, GridField<3, double>&,
   const DistanceOptions&, DistanceReport*);
 
 } // namespace sltk

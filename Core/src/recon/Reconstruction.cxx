@@ -5,13 +5,10 @@
 #include "sltk/levelset/NarrowBand.h"
 #include "sltk/levelset/Reinitialise.h"
 #include "sltk/recon/CloudInitialData.h"
-#include "sltk/cloud/CloudSpacing.h"
 #include "sltk/recon/DistanceFunction.h"
 #include "sltk/recon/EnergyFunctional.h"
 #include "sltk/recon/ExactDistanceCache.h"
-#include "sltk/recon/GridPlan.h"
 #include "sltk/recon/LevelSetStep.h"
-#include "sltk/cloud/PointLocator.h"
 
 #include <algorithm>
 #include <chrono>
@@ -34,15 +31,17 @@ double secondsSince(std::chrono::steady_clock::time_point start)
 template <int D, class Interp>
 double cloudError(const GridField<D>& phi, const PointCloud<D>& cloud, const Context& ctx)
 {
-  const double sum = ctx.parallelSum(0, cloud.size(), [&](Index b, Index e) {
-    Interp interp(phi);
-    double s = 0.0;
-    for (Index k = b; k < e; ++k)
+  const double sum = ctx.parallelSum(0, cloud.size(),
+    [&](Index b, Index e)
     {
-      s += std::fabs(interpolate(interp, phi.spec(), cloud.Points[static_cast<size_t>(k)].data()));
-    }
-    return s;
-  });
+      Interp interp(phi);
+      double s = 0.0;
+      for (Index k = b; k < e; ++k)
+      {
+        s += std::fabs(interpolate(interp, phi.spec(), cloud.Points[static_cast<size_t>(k)].data()));
+      }
+      return s;
+    });
   return sum / static_cast<double>(cloud.size());
 }
 
@@ -77,19 +76,21 @@ template <int D>
 void transfer(const GridField<D>& from, const GridSpec<D>& grid, const Context& ctx, GridField<D>& to)
 {
   to.resize(grid, PhiGhost);
-  ctx.parallelFor(0, grid.nodeCount(), [&](Index b, Index e) {
-    Q1Interpolator<D> interp(from);
-    for (Index k = b; k < e; ++k)
+  ctx.parallelFor(0, grid.nodeCount(),
+    [&](Index b, Index e)
     {
-      const auto i = to.nodeIndex(k);
-      double x[D];
-      for (int a = 0; a < D; ++a)
+      Q1Interpolator<D> interp(from);
+      for (Index k = b; k < e; ++k)
       {
-        x[a] = grid.coordinate(a, i[a]);
+        const auto i = to.nodeIndex(k);
+        double x[D];
+        for (int a = 0; a < D; ++a)
+        {
+          x[a] = grid.coordinate(a, i[a]);
+        }
+        to(i) = interpolate(interp, from.spec(), x);
       }
-      to(i) = interpolate(interp, from.spec(), x);
-    }
-  });
+    });
 }
 
 /// The stopping rule (4.33): Delta_E^n = |ebar_{n-1} - ebar_n| / ebar_n with the
@@ -128,7 +129,8 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
   step.TimeStep = dx; // (4.36): dt = dx
   step.Widths = BandWidths::forSpacing(dx, options.BetaFactor, options.GammaFactor);
   // h_P in the unit box: dx = C_dx h_P / 2^(run-1) (4.36).
-  const double cloudSpacing = options.CellSizeFactor > 0.0 ? dx * std::ldexp(1.0, run - 1) / options.CellSizeFactor : dx;
+  const double cloudSpacing =
+    options.CellSizeFactor > 0.0 ? dx * std::ldexp(1.0, run - 1) / options.CellSizeFactor : dx;
   step.DetectTunnels = options.DetectTunnels;
   step.TunnelDistance = 2.0 * dx; // 4.5.6
   step.TunnelMinDistance = 0.6 * cloudSpacing;
@@ -143,7 +145,7 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
   std::vector<double> energies;
   double bandSizes = 0.0;
   double phase[4] = { 0.0, 0.0, 0.0, 0.0 }; // energy, step, reinitialisation, metrics (seconds)
-  collectBand(phi, gamma, ctx, band); // (1.50)
+  collectBand(phi, gamma, ctx, band);       // (1.50)
   exact.reset(dist);
   for (int n = 0; n < options.MaxIterations; ++n)
   {
@@ -237,8 +239,8 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
 /// Initial data of a run: run 1 from the cloud (4.4.4) or an ellipsoid, later
 /// runs from the previous result; cut (1.49) and made a distance near the front.
 template <int D>
-Status initialData(const PointCloud<D>& cloud, const ReconstructionOptions& options, int run, double spacing,
-  const GridField<D>& dist, const GridField<D>* previous, const Context& ctx, GridField<D>& phi)
+Status initialData(const ReconstructionPlan<D>& plan, const ReconstructionOptions& options, const GridField<D>& dist,
+  const GridField<D>* previous, const Context& ctx, GridField<D>& phi)
 {
   const GridSpec<D>& grid = dist.spec();
   const double gamma = options.GammaFactor * grid.Spacing[0];
@@ -246,18 +248,15 @@ Status initialData(const PointCloud<D>& cloud, const ReconstructionOptions& opti
   {
     transfer(*previous, grid, ctx, phi);
   }
-  else if (options.Guess == InitialGuess::OutsideMarking)
+  else if (plan.InitialEllipsoid)
   {
-    InitialDataOptions io;
-    io.Ghost = PhiGhost;
-    SLTK_RETURN_IF_ERROR(cloudInitialData(dist, options.OutsideThresholdFactor * spacing, ctx, phi, io));
+    SLTK_RETURN_IF_ERROR(ellipsoidLevelSet(*plan.InitialEllipsoid, grid, ctx, phi, PhiGhost));
   }
   else
   {
-    const double margin = options.OutsideThresholdFactor * spacing;
-    const Ellipsoid<D> e = options.Guess == InitialGuess::BoundingSphere ? boundingSphere(cloud, margin)
-                                                                         : boundingEllipsoid(cloud, margin);
-    SLTK_RETURN_IF_ERROR(ellipsoidLevelSet(e, grid, ctx, phi, PhiGhost));
+    InitialDataOptions io;
+    io.Ghost = PhiGhost;
+    SLTK_RETURN_IF_ERROR(cloudInitialData(dist, options.OutsideThresholdFactor * plan.CloudSpacing, ctx, phi, io));
   }
   cutLevelSet(phi, gamma, ctx);
   if (previous)
@@ -274,26 +273,22 @@ Status initialData(const PointCloud<D>& cloud, const ReconstructionOptions& opti
 }
 
 template <int D, class Interp>
-Status runAll(const PointCloud<D>& cloud, const ReconstructionOptions& options, const GridPlan<D>& plan,
-  const Context& ctx, ReconstructionResult<D>& result)
+Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& options, const Context& ctx,
+  ReconstructionResult<D>& result)
 {
-  // Coarser buckets than the locator's default (2 points): the first bands of run 1
-  // lie K_P h_P (4.4.4) from the cloud, where a fine bucket grid makes every
-  // nearest-point query scan thousands of empty buckets (K_P = 16 on merged
-  // scans: run 1 took 40% less time); the distances are the same exact ones.
-  const PointLocator<D> locator(cloud, 16.0);
-  ExactDistanceCache<D> exact(cloud, locator);
+  const PointCloud<D>& cloud = plan.Cloud;
+  ExactDistanceCache<D> exact(cloud, *plan.Locator);
   GridField<D> phi, previous, dist, previousDist;
   for (int run = 1; run <= options.Runs; ++run)
   {
-    const GridSpec<D>& grid = plan.Runs[static_cast<size_t>(run - 1)];
+    const GridSpec<D>& grid = plan.Grids.Runs[static_cast<size_t>(run - 1)];
     ctx.interrupter().start("run " + std::to_string(run) + "/" + std::to_string(options.Runs));
     const auto setup = std::chrono::steady_clock::now();
     if (run == 1)
     {
       DistanceOptions dopt;
       dopt.Ghost = PhiGhost;
-      SLTK_RETURN_IF_ERROR(distanceToCloud(cloud, grid, ctx, dist, dopt)); // (4.4.2)
+      SLTK_RETURN_IF_ERROR(distanceToCloud(*plan.Locator, grid, ctx, dist, dopt)); // (4.4.2)
     }
     else
     {
@@ -303,8 +298,7 @@ Status runAll(const PointCloud<D>& cloud, const ReconstructionOptions& options, 
       previousDist = GridField<D>();
     }
     const double distanceSeconds = secondsSince(setup);
-    SLTK_RETURN_IF_ERROR(initialData(cloud, options, run, plan.CloudSpacing, dist, run > 1 ? &previous : nullptr,
-      ctx, phi));
+    SLTK_RETURN_IF_ERROR(initialData(plan, options, dist, run > 1 ? &previous : nullptr, ctx, phi));
     previous = GridField<D>(); // free the coarse field before iterating
     std::ostringstream log;
     log << "run " << run << ": grid " << grid.nodeCount() << " nodes, distance " << distanceSeconds
@@ -329,61 +323,6 @@ Status runAll(const PointCloud<D>& cloud, const ReconstructionOptions& options, 
   return Status::ok();
 }
 
-/// The thesis rescales every cloud into [-1, 1]^d (4.5): the model (4.9) is
-/// not scale-invariant for p > 1 (d / E_p has the dimension of 1/length).
-template <int D>
-struct UnitBox
-{
-  std::array<double, D> Centre{};
-  double Scale = 1.0; ///< user length = Scale * unit-box length
-
-  explicit UnitBox(const Box<D>& box)
-  {
-    double half = 0.0;
-    for (int a = 0; a < D; ++a)
-    {
-      this->Centre[a] = 0.5 * (box.Min[a] + box.Max[a]);
-      half = std::max(half, 0.5 * box.extent(a));
-    }
-    this->Scale = half;
-  }
-
-  PointCloud<D> toUnit(const PointCloud<D>& cloud) const
-  {
-    PointCloud<D> unit;
-    unit.Points.resize(cloud.Points.size());
-    for (size_t k = 0; k < cloud.Points.size(); ++k)
-    {
-      for (int a = 0; a < D; ++a)
-      {
-        unit.Points[k][a] = (cloud.Points[k][a] - this->Centre[a]) / this->Scale;
-      }
-    }
-    return unit;
-  }
-
-  GridSpec<D> toUser(GridSpec<D> g) const
-  {
-    for (int a = 0; a < D; ++a)
-    {
-      g.Origin[a] = this->Centre[a] + this->Scale * g.Origin[a];
-      g.Spacing[a] *= this->Scale;
-    }
-    return g;
-  }
-
-  /// Lengths (phi, d) and the grid back to the user's units.
-  void toUser(GridField<D>& f) const
-  {
-    const GridSpec<D> g = this->toUser(f.spec());
-    f.setGeometry(g.Origin, g.Spacing);
-    for (double& v : f.storage())
-    {
-      v *= this->Scale;
-    }
-  }
-};
-
 /// Records of a unit-box run in the user's units: E_2 ~ length^((2 + D - 1) / 2).
 template <int D>
 void recordsToUser(const UnitBox<D>& box, ReconstructionResult<D>& result)
@@ -400,100 +339,45 @@ void recordsToUser(const UnitBox<D>& box, ReconstructionResult<D>& result)
     run.Energy *= energyScale;
     run.CloudError *= box.Scale;
   }
-  result.CloudSpacing *= box.Scale;
   box.toUser(result.SignedDistance);
   box.toUser(result.Distance);
 }
-
-template <int D>
-Status reconstructInUnitBox(const PointCloud<D>& cloud, const ReconstructionOptions& options, const Context& ctx,
-  ReconstructionResult<D>& result)
-{
-  if (options.Runs < 1 || options.MaxIterations < 1 || options.MinIterations < 0 || options.EnergyWindow < 1 ||
-    !(options.OutsideThresholdFactor > 0.0) || !(options.Tolerance >= 0.0) || options.ReinitDilation < 1 ||
-    !(options.BetaFactor > 0.0) || !(options.GammaFactor > options.BetaFactor))
-  {
-    return Status::invalidArgument("reconstruction options out of range: need runs >= 1, iterations >= 1, "
-                                   "K_P > 0, tolerance >= 0, 0 < beta < gamma");
-  }
-  SLTK_RETURN_IF_ERROR(validateSchedule(options.Schedule));
-  SLTK_RETURN_IF_ERROR(options.Reinit.validate<D>());
-  double spacing = 0.0;
-  SLTK_RETURN_IF_ERROR(cloudSpacing(cloud, ctx, spacing)); // h_P (4.36)
-  GridPlanOptions po;
-  po.Runs = options.Runs;
-  po.CellSizeFactor = options.CellSizeFactor;
-  po.Padding = options.Padding;
-  // Run 1 must hold the initial surface, K_P h_P outside the cloud (4.4.4) or the
-  // ellipsoid around it, plus the band gamma and two cells, inside the grid.
-  const Box<D> bounds = boundingBox(cloud);
-  const double dx1 = options.CellSizeFactor * spacing;
-  double reach = options.OutsideThresholdFactor * spacing;
-  if (options.Guess != InitialGuess::OutsideMarking)
-  {
-    const double margin = options.OutsideThresholdFactor * spacing;
-    const Ellipsoid<D> e = options.Guess == InitialGuess::BoundingSphere ? boundingSphere(cloud, margin)
-                                                                         : boundingEllipsoid(cloud, margin);
-    for (int a = 0; a < D; ++a)
-    {
-      reach = std::max(reach, e.Centre[a] + e.SemiAxes[a] - bounds.Max[a]);
-      reach = std::max(reach, bounds.Min[a] - (e.Centre[a] - e.SemiAxes[a]));
-    }
-  }
-  po.FirstRunPadding = static_cast<int>(std::ceil(reach / dx1 + options.GammaFactor + 2.0));
-  po.BytesPerNode = 40.0; // phi and d with ghosts, band masks, the coarse field during transfer
-  po.MemoryBudget = options.MemoryBudget;
-  GridPlan<D> plan;
-  SLTK_RETURN_IF_ERROR(planGrids(bounds, spacing, po, plan));
-  result.CloudSpacing = spacing;
-  return withInterpolator<D>(options.Interpolator, [&](auto tag) {
-    return runAll<D, typename decltype(tag)::type>(cloud, options, plan, ctx, result);
-  });
-}
 } // namespace
 
-Status validateSchedule(const std::vector<RunParameters>& schedule)
-{
-  for (size_t k = 0; k < schedule.size(); ++k)
-  {
-    const RunParameters& run = schedule[k];
-    if (!(run.P >= 1.0 && run.P <= 10.0) || !(run.Eta >= 0.0 && run.Eta <= 100.0))
-    {
-      std::ostringstream m;
-      m << "run schedule pair " << k + 1 << " (p = " << run.P << ", eta = " << run.Eta
-        << ") out of range: the model (4.9) needs 1 <= p <= 10 and 0 <= eta <= 100";
-      return Status::invalidArgument(m.str());
-    }
-  }
-  return Status::ok();
-}
-
 template <int D>
-Status reconstruct(const PointCloud<D>& userCloud, const ReconstructionOptions& options, const Context& ctx,
+Status reconstruct(const ReconstructionPlan<D>& plan, const ReconstructionOptions& options, const Context& ctx,
   ReconstructionResult<D>& result)
 {
   result = ReconstructionResult<D>{};
-  SLTK_RETURN_IF_ERROR(validateCloud(userCloud));
-  // Cleaning comes before the unit box (4.5): an outlier would otherwise set its scale.
-  PointCloud<D> cleaned;
-  SLTK_RETURN_IF_ERROR(cleanCloud(userCloud, options.Cleaning, ctx, cleaned, result.Cleaning));
-  const Status valid = validateCloud(cleaned);
-  if (!valid.isOk())
+  if (!plan.Locator || plan.Grids.Runs.size() != static_cast<size_t>(options.Runs))
   {
-    return Status::invalidArgument("after cleaning: " + valid.message() + "; relax outlier removal or thinning");
+    return Status::invalidArgument("reconstruct: the plan was not made with these options (planReconstruction)");
   }
-  const UnitBox<D> box(boundingBox(cleaned));
-  const PointCloud<D> cloud = box.toUnit(cleaned);
-  cleaned = PointCloud<D>();
-  const Status status = reconstructInUnitBox(cloud, options, ctx, result);
-  recordsToUser(box, result);
+  result.CloudSpacing = plan.userCloudSpacing();
+  result.Cleaning = plan.Cleaning;
+  const Status status = withInterpolator<D>(options.Interpolator,
+    [&](auto tag) { return runAll<D, typename decltype(tag)::type>(plan, options, ctx, result); });
+  recordsToUser(plan.Box, result);
   return status;
 }
 
+template <int D>
+Status reconstruct(
+  const PointCloud<D>& cloud, const ReconstructionOptions& options, const Context& ctx, ReconstructionResult<D>& result)
+{
+  result = ReconstructionResult<D>{};
+  ReconstructionPlan<D> plan;
+  SLTK_RETURN_IF_ERROR(planReconstruction(cloud, options, ctx, plan));
+  return reconstruct(plan, options, ctx, result);
+}
 
 template Status reconstruct(
   const PointCloud<2>&, const ReconstructionOptions&, const Context&, ReconstructionResult<2>&);
 template Status reconstruct(
   const PointCloud<3>&, const ReconstructionOptions&, const Context&, ReconstructionResult<3>&);
+template Status reconstruct(
+  const ReconstructionPlan<2>&, const ReconstructionOptions&, const Context&, ReconstructionResult<2>&);
+template Status reconstruct(
+  const ReconstructionPlan<3>&, const ReconstructionOptions&, const Context&, ReconstructionResult<3>&);
 
 } // namespace sltk

@@ -9,8 +9,8 @@
 /// they collapse the nearest-neighbour h_P (4.36). The grids then follow from
 /// h_P (4.36) of the cleaned cloud. With the defaults nothing changes.
 
-#include "sltk/exec/Context.h"
 #include "sltk/cloud/CloudOutliers.h"
+#include "sltk/exec/Context.h"
 
 namespace sltk
 {
@@ -27,19 +27,17 @@ struct CloudCleaningReport
 {
   std::int64_t InputPoints = 0;
   std::int64_t OutliersRemoved = 0;
-  double ThinningCell = 0.0;      ///< 0: not thinned
-  std::int64_t OutputPoints = 0;  ///< points given to Algorithm 1
+  double ThinningCell = 0.0;     ///< 0: not thinned
+  std::int64_t OutputPoints = 0; ///< points given to Algorithm 1
 };
 
-/// Cleans `cloud` into `cleaned` (a copy when nothing is enabled) and logs the
+/// Cleans `cloud` in place (untouched when nothing is enabled) and logs the
 /// counts at Info level. Deterministic for any number of threads.
 template <int D>
-Status cleanCloud(const PointCloud<D>& cloud, const CloudCleaningOptions& options, const Context& ctx,
-  PointCloud<D>& cleaned, CloudCleaningReport& report);
+Status cleanCloud(
+  PointCloud<D>& cloud, const CloudCleaningOptions& options, const Context& ctx, CloudCleaningReport& report);
 
-extern template Status cleanCloud(
-  const PointCloud<2>&, const CloudCleaningOptions&, const Context&, PointCloud<2>&, CloudCleaningReport&);
-extern template Status cleanCloud(
-  const PointCloud<3>&, const CloudCleaningOptions&, const Context&, PointCloud<3>&, CloudCleaningReport&);
+extern template Status cleanCloud(PointCloud<2>&, const CloudCleaningOptions&, const Context&, CloudCleaningReport&);
+extern template Status cleanCloud(PointCloud<3>&, const CloudCleaningOptions&, const Context&, CloudCleaningReport&);
 
 } // namespace sltk

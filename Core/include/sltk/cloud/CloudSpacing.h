@@ -15,8 +15,8 @@
 /// sampled surface both estimates agree within about 10%; on m overlapping
 /// scans the density spacing shrinks only by sqrt(m).
 
+#include "sltk/cloud/PointLocator.h"
 #include "sltk/exec/Context.h"
-#include "sltk/cloud/PointCloud.h"
 
 namespace sltk
 {
@@ -26,17 +26,24 @@ struct CloudSpacingOptions
   double SampleFraction = 0.1;      ///< 10% in the thesis
   std::int64_t MinimumSample = 100; ///< small clouds: use up to this many points
   std::uint64_t Seed = 20240101;
-  int DensityNeighbours = 0;        ///< 0: h_P (4.36); k > 0: the density spacing at the k-th neighbour
+  int DensityNeighbours = 0; ///< 0: h_P (4.36); k > 0: the density spacing at the k-th neighbour
 };
 
 /// Computes h_P (or the density spacing); fails when the cloud has fewer than
 /// two distinct points (density spacing: fewer than k + 1 points).
 /// Duplicate points (distance 0) are skipped: they carry no spacing.
 template <int D>
-Status cloudSpacing(const PointCloud<D>& cloud, const Context& ctx, double& spacing,
-  const CloudSpacingOptions& options = {});
+Status cloudSpacing(
+  const PointCloud<D>& cloud, const Context& ctx, double& spacing, const CloudSpacingOptions& options = {});
+
+/// The same with the caller's locator (on the cloud it measures): one bucketing per cloud.
+template <int D>
+Status cloudSpacing(
+  const PointLocator<D>& locator, const Context& ctx, double& spacing, const CloudSpacingOptions& options = {});
 
 extern template Status cloudSpacing(const PointCloud<2>&, const Context&, double&, const CloudSpacingOptions&);
 extern template Status cloudSpacing(const PointCloud<3>&, const Context&, double&, const CloudSpacingOptions&);
+extern template Status cloudSpacing(const PointLocator<2>&, const Context&, double&, const CloudSpacingOptions&);
+extern template Status cloudSpacing(const PointLocator<3>&, const Context&, double&, const CloudSpacingOptions&);
 
 } // namespace sltk

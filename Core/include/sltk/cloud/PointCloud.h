@@ -43,6 +43,11 @@ Box<D> boundingBox(const PointCloud<D>& cloud);
 template <int D>
 Status validateCloud(const PointCloud<D>& cloud);
 
+/// A 3D cloud with no z extent as a 2D cloud in its plane z = `z` (2D
+/// reconstruction); false, and `flat` untouched, when the cloud has a z extent
+/// or is empty.
+bool flattenIfPlanar(const PointCloud<3>& cloud, PointCloud<2>& flat, double& z);
+
 extern template Box<2> boundingBox(const PointCloud<2>&);
 extern template Box<3> boundingBox(const PointCloud<3>&);
 extern template Status validateCloud(const PointCloud<2>&);

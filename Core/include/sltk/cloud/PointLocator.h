@@ -35,6 +35,7 @@ public:
   void nearest(const std::array<double, D>& x, int k, std::int64_t exclude, std::vector<Hit>& hits) const;
 
   double bucketSize() const { return this->Size; }
+  const PointCloud<D>& cloud() const { return *this->Cloud; }
 
 private:
   std::int64_t bucketOf(const std::array<std::int64_t, D>& b) const;

@@ -6,7 +6,9 @@
 /// final time and Courant number; get the grid and the value function at T
 /// (and, for Test 5, the first time each node is reached (3.40)).
 
+#include "sltk/core/Status.h"
 #include "sltk/exec/Context.h"
+#include "sltk/grid/GridSpec.h"
 #include "sltk/interp/InterpolatorKind.h"
 
 #include <array>
@@ -18,11 +20,11 @@ namespace sltk
 
 enum class HjbPreset : int
 {
-  Test1Rotation = 1,     ///< 3.5.1, 2D, pure transport
-  Test2SemiConcave = 2,  ///< 3.5.2, 1D
-  Test3Eikonal = 3,      ///< 3.5.3, 1D periodic, per-stage controls
-  Test4Quadratic = 4,    ///< 3.5.4, 2D
-  Test5Zermelo = 5       ///< 3.5.5, 2D with obstacles, reachable set
+  Test1Rotation = 1,    ///< 3.5.1, 2D, pure transport
+  Test2SemiConcave = 2, ///< 3.5.2, 1D
+  Test3Eikonal = 3,     ///< 3.5.3, 1D periodic, per-stage controls
+  Test4Quadratic = 4,   ///< 3.5.4, 2D
+  Test5Zermelo = 5      ///< 3.5.5, 2D with obstacles, reachable set
 };
 
 /// Grid of a preset as three axes (unused axes: one node).
@@ -37,19 +39,19 @@ struct HjbGrid
 struct PresetRunOptions
 {
   HjbPreset Preset = HjbPreset::Test1Rotation;
-  Index Nodes = 81;                       ///< N per direction (Test 3: distinct periodic nodes)
-  double FinalTime = -1.0;                ///< < 0: the preset's
-  double CourantNumber = -1.0;            ///< dt = lambda dx; <= 0: the preset's
+  Index Nodes = 81;            ///< N per direction (Test 3: distinct periodic nodes)
+  double FinalTime = -1.0;     ///< < 0: the preset's
+  double CourantNumber = -1.0; ///< dt = lambda dx; <= 0: the preset's
   InterpolatorKind Interpolator = InterpolatorKind::CwenoZ;
 };
 
 struct HjbRunResult
 {
   HjbGrid Grid;
-  std::vector<double> Value;              ///< u at T, x fastest
-  std::vector<double> ReachTime;          ///< Test 5: first t_k with u <= 0 (+inf: never); else empty
+  std::vector<double> Value;     ///< u at T, x fastest
+  std::vector<double> ReachTime; ///< Test 5: first t_k with u <= 0 (+inf: never); else empty
   double FinalTime = 0.0;
-  double L1Error = std::numeric_limits<double>::quiet_NaN();   ///< when an exact solution is known
+  double L1Error = std::numeric_limits<double>::quiet_NaN(); ///< when an exact solution is known
   double LinfError = std::numeric_limits<double>::quiet_NaN();
   Index Steps = 0;
   double EvaluationsPerNode = 0.0;

@@ -11,9 +11,9 @@
 /// number of threads). Memory: the field, one byte per node for the exact
 /// mask, and the locator (O(|P|)); work O(|P| 4^D) + O(nodes) per sweep.
 
+#include "sltk/cloud/PointLocator.h"
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
-#include "sltk/cloud/PointCloud.h"
 
 namespace sltk
 {
@@ -37,9 +37,18 @@ template <int D>
 Status distanceToCloud(const PointCloud<D>& cloud, const GridSpec<D>& grid, const Context& ctx,
   GridField<D, double>& distance, const DistanceOptions& options = {}, DistanceReport* report = nullptr);
 
-extern template Status distanceToCloud(const PointCloud<2>&, const GridSpec<2>&, const Context&,
+/// The same with the caller's locator (on the cloud it measures): one bucketing per cloud.
+template <int D>
+Status distanceToCloud(const PointLocator<D>& locator, const GridSpec<D>& grid, const Context& ctx,
+  GridField<D, double>& distance, const DistanceOptions& options = {}, DistanceReport* report = nullptr);
+
+extern template Status distanceToCloud(const PointCloud<2>&, const GridSpec<2>&, const Context&, GridField<2, double>&,
+  const DistanceOptions&, DistanceReport*);
+extern template Status distanceToCloud(const PointCloud<3>&, const GridSpec<3>&, const Context&, GridField<3, double>&,
+  const DistanceOptions&, DistanceReport*);
+extern template Status distanceToCloud(const PointLocator<2>&, const GridSpec<2>&, const Context&,
   GridField<2, double>&, const DistanceOptions&, DistanceReport*);
-extern template Status distanceToCloud(const PointCloud<3>&, const GridSpec<3>&, const Context&,
+extern template Status distanceToCloud(const PointLocator<3>&, const GridSpec<3>&, const Context&,
   GridField<3, double>&, const DistanceOptions&, DistanceReport*);
 
 } // namespace sltk

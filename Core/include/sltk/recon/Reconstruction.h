@@ -14,10 +14,11 @@
 ///     band (1.53), constrained reinitialisation (1.38)-(1.45), cutting (1.49),
 ///     the metrics eps_1 (4.34) and Err_P (4.35).
 
+#include "sltk/cloud/PointCloud.h"
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
-#include "sltk/cloud/PointCloud.h"
 #include "sltk/recon/ReconstructionOptions.h"
+#include "sltk/recon/ReconstructionPlan.h"
 
 namespace sltk
 {
@@ -25,18 +26,13 @@ namespace sltk
 template <int D>
 struct ReconstructionResult
 {
-  GridField<D> SignedDistance;       ///< phi of the last run (negative inside), cut at +-gamma far away
-  GridField<D> Distance;             ///< d of the last run (4.4.2)
-  double CloudSpacing = 0.0;         ///< h_P (of the cleaned cloud)
-  CloudCleaningReport Cleaning;      ///< what the pre-processing removed and merged
+  GridField<D> SignedDistance;  ///< phi of the last run (negative inside), cut at +-gamma far away
+  GridField<D> Distance;        ///< d of the last run (4.4.2)
+  double CloudSpacing = 0.0;    ///< h_P (of the cleaned cloud)
+  CloudCleaningReport Cleaning; ///< what the pre-processing removed and merged
   std::vector<RunRecord<D>> Runs;
   std::vector<IterationRecord> History;
 };
-
-/// Checks a per-run (p, eta) schedule: the model (4.9) needs 1 <= p <= 10 and
-/// 0 <= eta <= 100; the message names the first pair out of range. reconstruct()
-/// runs it; front ends call it to refuse a bad schedule before reading a cloud.
-Status validateSchedule(const std::vector<RunParameters>& schedule);
 
 /// Runs Algorithm 1. The cloud is validated first, then cleaned when
 /// options.Cleaning asks for it (CloudCleaning.h; Err_P (4.35) is measured on
@@ -47,9 +43,18 @@ template <int D>
 Status reconstruct(const PointCloud<D>& cloud, const ReconstructionOptions& options, const Context& ctx,
   ReconstructionResult<D>& result);
 
+/// Runs Algorithm 1 on a plan that planReconstruction() made with the same options.
+template <int D>
+Status reconstruct(const ReconstructionPlan<D>& plan, const ReconstructionOptions& options, const Context& ctx,
+  ReconstructionResult<D>& result);
+
 extern template Status reconstruct(
   const PointCloud<2>&, const ReconstructionOptions&, const Context&, ReconstructionResult<2>&);
 extern template Status reconstruct(
   const PointCloud<3>&, const ReconstructionOptions&, const Context&, ReconstructionResult<3>&);
+extern template Status reconstruct(
+  const ReconstructionPlan<2>&, const ReconstructionOptions&, const Context&, ReconstructionResult<2>&);
+extern template Status reconstruct(
+  const ReconstructionPlan<3>&, const ReconstructionOptions&, const Context&, ReconstructionResult<3>&);
 
 } // namespace sltk

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file ReconstructionPlan.h
+/// Everything about a reconstruction that is known before its first grid is
+/// allocated, computed once for reconstruct(), the filter, `sltk info` and the
+/// benchmarks (Documentation/Architecture.md, "Data flow of a reconstruction"):
+///
+///  1. the options and the cloud are validated (PointCloud.h);
+///  2. the cloud is cleaned when asked (CloudCleaning.h) and validated again;
+///  3. it is moved into the unit box [-1, 1]^D (4.5, UnitBox.h);
+///  4. one point locator is built on it, used for h_P (4.36), the distance d
+///     (4.4.2) and the exact distances near the band (ExactDistanceCache.h);
+///  5. h_P (4.36), run 1's initial ellipsoid when one is asked for, and the
+///     grid of every run, dx^(r) = C_dx h_P / 2^(r-1) (4.36), run 1 padded so
+///     that the initial surface K_P h_P outside the cloud (4.4.4) fits;
+///  6. the memory of the finest grid against the budget (refused with a C_dx
+///     that fits).
+
+#include "sltk/cloud/CloudCleaning.h"
+#include "sltk/cloud/PointLocator.h"
+#include "sltk/exec/Context.h"
+#include "sltk/levelset/Ellipsoid.h"
+#include "sltk/recon/GridPlan.h"
+#include "sltk/recon/ReconstructionOptions.h"
+#include "sltk/recon/UnitBox.h"
+
+#include <memory>
+#include <optional>
+
+namespace sltk
+{
+
+/// Memory one node of a run costs the solver: phi and d with ghosts, band
+/// masks, the coarse field during the transfer between runs (measured).
+constexpr double ReconstructionBytesPerNode = 40.0;
+
+template <int D>
+struct ReconstructionPlan
+{
+  PointCloud<D> Cloud;                            ///< cleaned, in the unit box (4.5)
+  UnitBox<D> Box;                                 ///< unit box <-> the user's units
+  CloudCleaningReport Cleaning;                   ///< what the cleaning removed and merged
+  std::unique_ptr<const PointLocator<D>> Locator; ///< on Cloud
+  double CloudSpacing = 0.0;                      ///< h_P (4.36) of Cloud, unit-box units
+  std::optional<Ellipsoid<D>> InitialEllipsoid;   ///< run 1's surface for InitialGuess sphere/ellipsoid
+  GridPlan<D> Grids;                              ///< unit-box grids of runs 1..R
+
+  ReconstructionPlan() = default;
+  ReconstructionPlan(const ReconstructionPlan&) = delete; // the locator points at Cloud
+  ReconstructionPlan& operator=(const ReconstructionPlan&) = delete;
+
+  /// The grid of run r (1-based) in the user's units.
+  GridSpec<D> userGrid(int run) const { return this->Box.toUser(this->Grids.Runs[static_cast<size_t>(run - 1)]); }
+  /// h_P in the user's units.
+  double userCloudSpacing() const { return this->CloudSpacing * this->Box.Scale; }
+  /// Estimated solver memory of run r (bytes).
+  double memoryEstimate(int run) const
+  {
+    return static_cast<double>(this->Grids.Runs[static_cast<size_t>(run - 1)].nodeCount()) * ReconstructionBytesPerNode;
+  }
+};
+
+/// Checks a per-run (p, eta) schedule: the model (4.9) needs 1 <= p <= 10 and
+/// 0 <= eta <= 100; the message names the first pair out of range. Front ends
+/// call it to refuse a bad schedule before reading a cloud.
+Status validateSchedule(const std::vector<RunParameters>& schedule);
+
+/// Checks the options of Algorithm 1 (ranges, the schedule, the reinitialisation).
+template <int D>
+Status validateReconstructionOptions(const ReconstructionOptions& options);
+
+/// Steps 1-6 above on `cloud` (taken by value: moved in, cleaned and rescaled in place).
+template <int D>
+Status planReconstruction(
+  PointCloud<D> cloud, const ReconstructionOptions& options, const Context& ctx, ReconstructionPlan<D>& plan);
+
+extern template Status validateReconstructionOptions<2>(const ReconstructionOptions&);
+extern template Status validateReconstructionOptions<3>(const ReconstructionOptions&);
+extern template Status planReconstruction(
+  PointCloud<2>, const ReconstructionOptions&, const Context&, ReconstructionPlan<2>&);
+extern template Status planReconstruction(
+  PointCloud<3>, const ReconstructionOptions&, const Context&, ReconstructionPlan<3>&);
+
+} // namespace sltk
