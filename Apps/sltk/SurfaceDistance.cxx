@@ -29,7 +29,7 @@ std::string extensionOf(const std::string& path)
   return dot == std::string::npos ? "" : path.substr(dot + 1);
 }
 
-/// OFF (the ground-truth format of ../shared/data/clouds): "OFF", counts, vertices, faces.
+/// OFF (the format of the scanned data sets' ground-truth meshes): "OFF", counts, vertices, faces.
 sltk::Status readOff(const std::string& path, vtkPolyData* mesh)
 {
   std::ifstream in(path);
