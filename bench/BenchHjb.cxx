@@ -9,7 +9,7 @@
 ///    of CWENO(Z) over WENO measured in the same run, beside the thesis's
 ///    (Galileo100 cluster: compare the gains, not the seconds);
 ///  - objective evaluations and cell builds (prepare()) per node and step.
-/// The thesis's numbers are read from thesis_tables.json (GUIDE.md).
+/// The thesis's numbers are read from a JSON transcription of its tables (--tables).
 ///
 /// Usage: sltkBenchHjb [--test 1|2|3|3h|4|5|all] [--min-n N] [--max-n N] [--repeat R]
 ///                     [--threads T] [--cache K] [--warm W] [--interp LIST] [--tables PATH]

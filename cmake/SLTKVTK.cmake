@@ -1,6 +1,6 @@
 # VTK/ParaView side of SLTK: the SLTK::Filters VTK module (with Python
-# wrapping), the ParaView plugin and the sltk CLI. Recipes measured in
-# ../shared/TOOLCHAIN.md: ParaView first with RemotingCore only, then VTK.
+# wrapping), the ParaView plugin and the sltk CLI. Recipes (Documentation/Toolchain.md,
+# "CMake recipes"): ParaView first with RemotingCore only, then VTK.
 find_package(ParaView REQUIRED COMPONENTS RemotingCore)
 set(SLTK_VTK_COMPONENTS
   CommonCore CommonDataModel CommonExecutionModel ParallelCore FiltersCore

@@ -17,7 +17,7 @@ mkdir -p "$out"
 echo
 echo "== sltk reconstruct: the Stanford bunny (npm bunny@1.0.1), with a picture =="
 # The picture renders through X: under a virtual X server, with one retry because one
-# occasionally fails to start (../shared/TOOLCHAIN.md).
+# occasionally fails to start (Documentation/Toolchain.md, "Pitfalls").
 for attempt in 1 2; do
   if xvfb-run -a -s "-screen 0 1024x768x24" "$build/bin/sltk" reconstruct "$build/data/bunny.ply" --kp 10 \
     --cdx 0.5 --runs 2 -o "$out/bunny-sdf.vti" --surface "$out/bunny-surface.ply" --png "$out/bunny.png" \

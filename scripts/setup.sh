@@ -8,7 +8,7 @@ repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${SLTK_BUILD_DIR:-$repo/build}
 jobs=${SLTK_JOBS:-$(nproc)}
 
-# Build and test dependencies (../shared/TOOLCHAIN.md). ParaView brings its own VTK.
+# Build and test dependencies (Documentation/Toolchain.md). ParaView brings its own VTK.
 packages=(cmake make g++ paraview paraview-dev python3-paraview libp4est-dev libopenmpi-dev openmpi-bin
   libeigen3-dev libgtest-dev libx11-dev libglew-dev xvfb xauth nlohmann-json3-dev libcli11-dev)
 missing=()

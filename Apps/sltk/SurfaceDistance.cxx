@@ -25,7 +25,7 @@ namespace sltkcli
 
 namespace
 {
-/// OFF (the ground-truth format of ../shared/data/clouds): "OFF", counts, vertices, faces.
+/// OFF (the format of the scanned data sets' ground-truth meshes): "OFF", counts, vertices, faces.
 sltk::Status readOff(const std::string& path, vtkPolyData* mesh)
 {
   std::ifstream in(path);

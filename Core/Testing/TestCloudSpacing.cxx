@@ -25,7 +25,7 @@ TEST(CloudSpacing, EvenCircleGivesTheChordLength)
   sltk::Context ctx;
   double h = 0.0;
   ASSERT_TRUE(sltk::cloudSpacing(circle(64), ctx, h).isOk());
-  EXPECT_NEAR(h, 2.0 * std::sin(M_PI / 64), 1e-12); // 0.0981, as GUIDE.md quotes for the thesis circle
+  EXPECT_NEAR(h, 2.0 * std::sin(M_PI / 64), 1e-12); // 0.0981, the thesis circle's h_P (4.5.3)
 }
 
 TEST(CloudSpacing, LatticeIn3D)

@@ -655,7 +655,7 @@ TEST(Cweno, IndicatorMatricesMatchThesisAppendix2D)
   EXPECT_NEAR(a(opt, 5, 1), -340087. / 8400, 1e-9);
   EXPECT_NEAR(a(opt, 5, 10), 10709107. / 100800, 1e-9);
   EXPECT_NEAR(a(opt, 5, 6), -2958593. / 25200, 1e-9);
-  // With the cell diameter (the scaling used by CwenoInterpolator, GUIDE.md):
+  // With the cell diameter (the scaling used by CwenoInterpolator, Documentation/Numerics.md):
   EXPECT_NEAR(dataForm<2>(3, std::sqrt(2.0))[16 * 10 + 10], 4112. / 45, 1e-11);
 }
 

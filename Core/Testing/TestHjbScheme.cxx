@@ -155,7 +155,7 @@ TEST(HjbScheme, Test3MatchesTable35)
   const HjbRun c = solve<Cweno1>(problem, sltk::test3Setup(126));
   expectWithin(w.Error, 1.28e-5, 0.2, "Test 3 WENO N=126");
   expectWithin(c.Error, 1.38e-5, 0.2, "Test 3 CWENO N=126");
-  // One control per step instead of one per RK stage loses third order (GUIDE.md).
+  // One control per step instead of one per RK stage loses third order (Documentation/Numerics.md, "HJB").
   auto single = sltk::test3Setup(126);
   single.Options.Minimizer.PerStageControls = false;
   const HjbRun s = solve<Weno1>(problem, single);

@@ -124,7 +124,7 @@ std::array<double, 2> test1Velocity(double, const std::array<double, 2>& x)
 }
 
 /// Test 1 on [0,1]^2 with N x N nodes, dt = 3 dx shortened to divide T = 1, RK3 feet:
-/// L1 error dx^2 sum |u_i - v0(x_i)| after one revolution (GUIDE.md definitions).
+/// L1 error dx^2 sum |u_i - v0(x_i)| after one revolution (thesis 3.5; Documentation/Numerics.md).
 template <class Interp>
 double test1Error(sltk::Index n, const sltk::Context& ctx = sltk::Context{})
 {
@@ -146,7 +146,7 @@ double test1Error(sltk::Index n, const sltk::Context& ctx = sltk::Context{})
   return sum * g.Spacing[0] * g.Spacing[1];
 }
 
-/// Table 3.1 (thesis_tables.json "table_3_1_test1_errors"): L1 errors of Test 1.
+/// Table 3.1 of the thesis: L1 errors of Test 1.
 struct Table31Row
 {
   sltk::Index N;

@@ -14,7 +14,7 @@ namespace octree
 namespace
 {
 /// p4est_init registers a package once per process; a second call aborts
-/// (../shared/TOOLCHAIN.md), e.g. when ParaView already loaded p4est.
+/// (Documentation/Toolchain.md, "Pitfalls"), e.g. when ParaView already loaded p4est.
 void initialiseOnce()
 {
   if (p4est_package_id < 0)

@@ -196,7 +196,7 @@ def main():
     perm = [basis.index(b) for b in b3]
     print_matrix("M (2D, thesis basis B_3 order)", m2.extract(perm, perm))
     # The Appendix prints A_k and A_opt computed with Delta = dx (its M of (3.25) uses
-    # the diameter): print both; CwenoInterpolator uses the diameter (GUIDE.md).
+    # the diameter): print both; CwenoInterpolator uses the diameter (Documentation/Numerics.md).
     for label, delta in (("Delta = sqrt(2) dx", sp.sqrt(2)), ("Delta = dx, as in the Appendix", 1)):
         print("\n## data forms (3.26), U ordered x fastest over the 4x4 stencil, " + label)
         _, m = indicator_form(2, 3, [1, 1], delta)

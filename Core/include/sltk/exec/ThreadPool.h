@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file ThreadPool.h
-/// Core's own executor (ARCHITECTURE.md, "Threads": Debian's VTK defaults
+/// Core's own executor (Documentation/Architecture.md, "Threading": Debian's VTK defaults
 /// vtkSMPTools to Sequential, so Core owns its pool).
 ///
 /// parallelFor splits [begin, end) into chunks whose boundaries depend only on

@@ -16,7 +16,7 @@
 ///   fmod(a, b) min(a, b, ...) max(a, b, ...) clamp(v, lo, hi) if(c, a, b)
 /// Sub-expressions without variables are folded to constants when compiled.
 ///
-/// Why not ExprTk (vtk_exprtk.h): Core stays VTK-free (ARCHITECTURE.md), the
+/// Why not ExprTk (vtk_exprtk.h): Core stays VTK-free (Documentation/Architecture.md), the
 /// messages here name the expression and the column of the mistake, and a
 /// compiled program needs no per-thread copy of a symbol table.
 

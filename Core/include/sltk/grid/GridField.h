@@ -4,8 +4,8 @@
 /// Nodal values on a GridSpec, stored with G ghost layers per side so that
 /// interpolation stencils read memory without branches. Layout: x fastest
 /// (the VTK point order). fillGhosts() applies the per-axis boundary policy:
-/// linear extrapolation or periodic wrap (GUIDE.md: two ghost layers by
-/// linear extrapolation).
+/// linear extrapolation or periodic wrap (thesis 3.5, Documentation/Numerics.md:
+/// two ghost layers by linear extrapolation).
 
 #include "sltk/grid/GridSpec.h"
 

@@ -4,7 +4,7 @@
 /// Geometry of a uniform node-centred grid in D = 1, 2, 3 dimensions
 /// (thesis 3.2: x_i = x_0 + i dx, N nodes per axis including both ends).
 ///
-/// Boundary policies per axis (thesis 3.5, GUIDE.md "Definitions"):
+/// Boundary policies per axis (thesis 3.5, Documentation/Numerics.md "Grids"):
 ///  - Extrapolate: ghost nodes filled by linear extrapolation; points outside
 ///    the domain are projected (clipped) onto it before interpolation;
 ///  - Periodic: N distinct nodes, dx = L / N, node N is node 0.

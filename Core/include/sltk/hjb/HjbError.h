@@ -2,7 +2,7 @@
 #pragma once
 /// \file HjbError.h
 /// The error measures of thesis 3.5: the L1 error dx^d sum_i |u_i - v(x_i)|
-/// over all grid nodes (GUIDE.md) and the range of the solution (Table 3.9).
+/// over all grid nodes (Documentation/Numerics.md) and the range of the solution (Table 3.9).
 
 #include "sltk/grid/GridField.h"
 #include "sltk/sl/LinearSLStep.h"

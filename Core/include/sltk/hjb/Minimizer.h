@@ -11,7 +11,7 @@
 ///  2. local search from the best tabulated sequence, in the parameters of
 ///     ControlSet (one block per stage when PerStageControls):
 ///     - golden section on [p* - h, p* + h] (h the tabulation spacing, clipped
-///       to A) when there is a single parameter (Test 2: GUIDE.md notes the
+///       to A) when there is a single parameter (Test 2, Table 3.3: the
 ///       minimiser's accuracy shows at N = 641, hence a tight tolerance);
 ///     - otherwise Nelder-Mead whose trial vertices are projected onto A.
 /// The result is never worse than the best tabulated value. Evaluations are

@@ -2,7 +2,7 @@
 #pragma once
 /// \file Presets.h
 /// The HJB tests of thesis 3.5 as ready problems (HjbProblem.h) and setups
-/// (grid + solver options), with the readings of GUIDE.md where the text is
+/// (grid + solver options), with the readings of Documentation/Numerics.md where the text is
 /// ambiguous:
 ///  - Test 1 (3.5.1) rotation: A = {} , f_C = 0, f_D = (-2 pi (y - 1/2), 2 pi (x - 1/2)),
 ///    [0, 1]^2, extrapolation, RK3, dt = 3 dx, T = 1, exact = v0;
@@ -126,7 +126,7 @@ inline HjbSetup<1> test3Setup(Index n, double finalTime = 1.0)
   s.Options.FinalTime = finalTime;
   s.Options.MaxTimeStep = s.Grid.Spacing[0];
   s.Options.Minimizer.TabulationPoints = 64;
-  s.Options.Minimizer.PerStageControls = true; // GUIDE.md: essential for third order
+  s.Options.Minimizer.PerStageControls = true; // essential for third order (3.5.3)
   s.Options.Minimizer.Search = LocalSearch::NelderMead;
   s.Options.Minimizer.Tolerance = 1e-10;
   return s;

@@ -14,7 +14,7 @@
 ///    stored as 4^D monomial coefficients in local coordinates (Remarks 3.1-3.2);
 ///  - eval() is a tensor Horner evaluation of that polynomial.
 ///
-/// Scaling choices (GUIDE.md; 3D by extension): Delta = cell diameter
+/// Scaling choices (Documentation/Numerics.md; 3D by extension): Delta = cell diameter
 /// sqrt(sum_a h_a^2) in the indicators, epsilon = Delta^2 / D (= dx^2 on the
 /// uniform grids of the thesis), l = 2, d_0 = 3/4, d_k = 1/(4 * 2^D). The diameter
 /// is the reading of (3.24) that reproduces M of (3.25) and Table 3.1; the

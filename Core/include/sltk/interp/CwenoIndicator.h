@@ -7,7 +7,7 @@
 ///   OSC[P] = sum_{|alpha| >= 2} Delta^(2|alpha| - 2 - D) int_cell (d^alpha P)^2 dV,
 ///
 /// which is (3.18) for D = 1 (Delta = dx) and (3.24) for D = 2 (Delta = the cell
-/// diameter, integral over the cell in dx dy: GUIDE.md), and the same scaling in
+/// diameter, integral over the cell in dx dy: Documentation/Numerics.md), and the same scaling in
 /// 3D: the exponent keeps OSC ~ 1 across a kink and OSC = O(h^2) on smooth data
 /// (a kink makes d^alpha P ~ h^(1-|alpha|), the cell has volume h^D).
 ///

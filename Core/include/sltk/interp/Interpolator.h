@@ -2,7 +2,7 @@
 #pragma once
 /// \file Interpolator.h
 /// The interpolator concept shared by every reconstruction in SLTK
-/// (ARCHITECTURE.md "Numerics"). An interpolator type `I` for dimension D:
+/// (Documentation/Architecture.md, "Adding an interpolator"). An interpolator type `I` for dimension D:
 ///
 ///   static constexpr int Dim = D;
 ///   static constexpr int GhostWidth;           // ghost layers it reads (Q1: 1, others: 2)

@@ -3,7 +3,7 @@
 /// \file GridPlan.h
 /// The uniform grid of each run of Algorithm 1: dx^(r) = C_dx h_P / 2^(r-1)
 /// (4.36) over the cloud's bounding box padded by a number of cells per side
-/// (GUIDE.md: the thesis's grids correspond to roughly 8-12 cells of padding).
+/// (Documentation/Numerics.md: the grids of Tables 4.2 and 4.8 have roughly 8-12 cells of padding).
 /// Also refuses plans whose finest grid would not fit in memory, naming the
 /// node count and a C_dx that would fit.
 

@@ -11,7 +11,7 @@
 /// by sltk::locate (thesis 3.5.1).
 ///
 /// linearSLStep() does one step; linearSLAdvance() runs t0 -> T with
-/// dt = (T - t0) / ceil((T - t0) / maxDt) (GUIDE.md: dt = lambda dx, shortened
+/// dt = (T - t0) / ceil((T - t0) / maxDt) (thesis 3.2: dt = lambda dx, shortened
 /// so that the span is a whole number of steps), asking the interrupter
 /// between steps.
 
