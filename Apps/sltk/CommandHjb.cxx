@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `sltk hjb`: the HJB solver (vtkCWENOHJBSolver) from a terminal.
+#include "CliOptions.h"
 #include "Commands.h"
 #include "ErrorCollector.h"
 #include "HjbCustomProblem.h"
-#include "Json.h"
 #include "WriteAtomically.h"
 #include "WriteSurface.h"
 
@@ -19,122 +19,73 @@
 #include <vtkPointData.h>
 
 #include <chrono>
-#include <iostream>
+#include <cstdio>
+#include <memory>
+
+#include <nlohmann/json.hpp>
 
 namespace sltkcli
 {
 
 namespace
 {
-const char* hjbUsage = R"(usage: sltk hjb [options]
+const char* hjbDescription = R"(solve a Hamilton-Jacobi-Bellman problem (thesis ch. 3)
 
 Solves a Hamilton-Jacobi-Bellman problem with the semi-Lagrangian scheme (3.7)
 (Preda 2024, ch. 3): the thesis's Tests 1-5 with their domains, controls, RK
-orders and time steps, or a problem given by formulas (below).
+orders and time steps, or a problem given by formulas.
 
-options:
-  --preset NAME          test1 (rotation, 2D) | test2 (semi-concave, 1D) | test3 (eikonal, 1D periodic)
-                         | test4 (quadratic, 2D) | test5 (Zermelo with obstacles, 2D)   (default test1)
-  --n N                  preset: nodes per direction (default 81)
-  --final-time T         final time (default: the preset's; 0 gives the initial datum)
-  --courant L            dt = L dx (default: the preset's; custom: 1, dx the smallest spacing)
-  --interpolator NAME    q1 | weno3 | cweno | cwenoz (default cwenoz)
-  --threads T            threads (default: all)
-  -o, --output FILE.vti  write the value function (and ReachTime for test5)
-  --json FILE            summary: l1_error, linf_error (when exact), min, max, seconds, steps, evaluations_per_node
 )";
 
-} // namespace
-
-int commandHjb(const Args& rawArgs)
+/// `sltk hjb`'s command line.
+struct Hjb
 {
-  Args args = rawArgs;
-  for (auto& a : args)
-  {
-    a = a == "-o" ? "--output" : a;
-  }
-  std::vector<std::string> valued = { "preset", "n", "final-time", "courant", "interpolator", "threads", "output",
-    "json" };
-  valued.insert(valued.end(), hjbCustomOptionNames().begin(), hjbCustomOptionNames().end());
-  Options opt(args, valued, { "help", "reach" });
-  if (opt.has("help"))
-  {
-    std::cout << hjbUsage << hjbCustomUsage;
-    return 0;
-  }
-  const bool custom = hasHjbCustomProblem(opt);
-  const double n = opt.number("n", 81);
-  const double finalTime = opt.number("final-time", -1.0);
-  const double courant = opt.number("courant", 0.0);
-  const double threads = opt.number("threads", 0);
-  if (!opt.ok())
-  {
-    return fail(opt.error(), 2);
-  }
-  if (!opt.positional().empty())
-  {
-    return fail("unexpected argument '" + opt.positional()[0] + "' (see sltk hjb --help)", 2);
-  }
-  if (custom && (opt.has("preset") || opt.has("n")))
+  CLI::App* Parser = nullptr;
+  int Preset = 1; ///< test1..test5
+  int N = 81;
+  double FinalTime = -1.0; // the preset's
+  double Courant = 0.0;    // the preset's
+  sltk::InterpolatorKind Interpolator = sltk::InterpolatorKind::CwenoZ;
+  int Threads = 0;
+  std::string Output, Json;
+  HjbCustomProblem Custom;
+  int run() const;
+};
+
+int Hjb::run() const
+{
+  const bool custom = this->Parser->count("--fx") || this->Parser->count("--fy") || this->Parser->count("--fz");
+  if (custom && (this->Parser->count("--preset") || this->Parser->count("--n")))
   {
     return fail("--preset and --n are for the thesis's tests; a custom problem (--fx ...) uses --nodes", 2);
   }
-  if (!custom)
+  for (const CLI::Option* option : this->Parser->get_options())
   {
-    for (const std::string& name : hjbCustomOptionNames())
+    if (!custom && option->count() && option->get_group() == HjbCustomProblem::Group)
     {
-      if (opt.has(name))
-      {
-        return fail("--" + name + " belongs to a custom problem: give its dynamics with --fx (see --help)", 2);
-      }
+      return fail(option->get_name() + " belongs to a custom problem: give its dynamics with --fx (see --help)", 2);
     }
   }
-  const std::string presetName = custom ? "custom" : opt.value("preset", "test1");
-  int preset = custom ? vtkCWENOHJBSolver::CUSTOM : 0;
-  for (int k = 1; k <= 5; ++k)
-  {
-    preset = presetName == "test" + std::to_string(k) ? k : preset;
-  }
-  if (preset == 0 && !custom)
-  {
-    return fail("unknown preset '" + presetName + "': use test1, test2, test3, test4 or test5", 2);
-  }
-  sltk::InterpolatorKind interpolator = sltk::InterpolatorKind::CwenoZ;
-  if (opt.has("interpolator") && !sltk::parseInterpolator(opt.value("interpolator"), interpolator))
-  {
-    return fail("unknown interpolator '" + opt.value("interpolator") + "': use " + sltk::interpolatorNameList(), 2);
-  }
-  if (n < 5 || n > 100000 || n != static_cast<int>(n))
-  {
-    return fail("--n must be a whole number of nodes from 5 to 100000", 2);
-  }
-  if (opt.has("final-time") && finalTime < 0.0)
-  {
-    return fail("--final-time must be >= 0", 2);
-  }
-  if (opt.has("courant") && !(courant > 0.0 && courant <= 100.0))
-  {
-    return fail("--courant must be in (0, 100]", 2);
-  }
-
+  const std::string presetName = custom ? "custom" : "test" + std::to_string(this->Preset);
+  const int preset = custom ? vtkCWENOHJBSolver::CUSTOM : this->Preset;
   const auto start = std::chrono::steady_clock::now();
   vtkNew<vtkCWENOHJBSolver> solver;
   vtkNew<ErrorCollector> errors;
   solver->AddObserver(vtkCommand::ErrorEvent, errors);
   solver->SetPreset(preset);
-  solver->SetNumberOfNodes(static_cast<int>(n));
+  solver->SetNumberOfNodes(this->N);
   if (custom)
   {
-    const std::string error = setHjbCustomProblem(opt, solver);
+    const std::string error = this->Custom.apply(solver);
     if (!error.empty())
     {
       return fail(error, 2);
     }
   }
-  solver->SetFinalTime(finalTime);
-  solver->SetCourantNumber(courant);
-  solver->SetInterpolator(static_cast<int>(interpolator));
-  solver->SetNumberOfThreads(static_cast<int>(threads));
+  solver->SetFinalTime(this->FinalTime);
+  solver->SetCourantNumber(this->Courant);
+  solver->SetInterpolator(static_cast<int>(this->Interpolator));
+  solver->SetNumberOfThreads(this->Threads);
   solver->Update();
   if (!errors->Message.empty())
   {
@@ -160,38 +111,69 @@ int commandHjb(const Args& rawArgs)
   }
   std::printf("\n");
 
-  if (opt.has("output"))
+  if (this->Parser->count("--output"))
   {
-    const auto status = writeImage(opt.value("output"), image);
+    const auto status = writeImage(this->Output, image);
     if (!status.isOk())
     {
       return fail(status.message());
     }
   }
-  if (opt.has("json"))
+  if (this->Parser->count("--json"))
   {
-    JsonObject summary;
-    summary.add("preset", presetName)
-      .add("n", static_cast<long long>(dims[0]))
-      .add("final_time", t)
-      .add("min", range[0])
-      .add("max", range[1])
-      .add("seconds", seconds)
-      .add("steps", static_cast<long long>(steps))
-      .add("evaluations_per_node", evaluations)
-      .add("peak_memory_mb", static_cast<double>(sltk::peakResidentBytes()) / 1e6);
+    nlohmann::ordered_json summary = { { "preset", presetName }, { "n", dims[0] }, { "final_time", t },
+      { "min", range[0] }, { "max", range[1] }, { "seconds", seconds }, { "steps", static_cast<long long>(steps) },
+      { "evaluations_per_node", evaluations },
+      { "peak_memory_mb", static_cast<double>(sltk::peakResidentBytes()) / 1e6 } };
     if (exact)
     {
-      summary.add("l1_error", fd->GetArray("L1Error")->GetTuple1(0))
-        .add("linf_error", fd->GetArray("LinfError")->GetTuple1(0));
+      summary["l1_error"] = fd->GetArray("L1Error")->GetTuple1(0);
+      summary["linf_error"] = fd->GetArray("LinfError")->GetTuple1(0);
     }
-    auto status = writeTextFile(opt.value("json"), summary.str() + "\n");
+    auto status = writeJsonFile(this->Json, summary);
     if (!status.isOk())
     {
       return fail(status.message());
     }
   }
   return 0;
+}
+} // namespace
+
+Command addHjbCommand(CLI::App& sltk)
+{
+  auto command = std::make_shared<Hjb>();
+  CLI::App* app = sltk.add_subcommand("hjb", std::string(hjbDescription) + HjbCustomProblem::Help);
+  command->Parser = app;
+  app->footer("example (thesis Test 4): sltk hjb --fx=-a1 --fy=-a2 --cost \"(a1^2+a2^2)/2\"\n"
+              "  --v0 \"max(1-x^2-y^2,0)\" --nodes 81,81 --domain -2,2,-2,2 --controls ball\n"
+              "  --control-dim 2 --control-radius 2.2 --rk 1 --courant 1.25 --final-time 0.5");
+  addChoice(
+    app, "--preset", "preset", { "test1", "test2", "test3", "test4", "test5" },
+    [&preset = command->Preset](size_t k) { preset = static_cast<int>(k) + 1; },
+    "test1 (rotation, 2D) | test2 (semi-concave, 1D) | test3 (eikonal,\n1D periodic) | test4 (quadratic, 2D) "
+    "| test5 (Zermelo with\nobstacles, 2D)   (default test1)")
+    ->option_text("NAME");
+  addNumber(app, "--n", command->N, "preset: nodes per direction, 5 to 100000 (default 81)")
+    ->check(within(5, 100000))
+    ->option_text("N");
+  addNumber(app, "--final-time", command->FinalTime, "final time (default: the preset's; 0 gives the initial datum)")
+    ->check(within(0))
+    ->option_text("T");
+  addNumber(app, "--courant", command->Courant,
+    "dt = L dx, L in (0, 100] (default: the preset's; custom: 1,\ndx the smallest spacing)")
+    ->check(within(0, 100, true))
+    ->option_text("L");
+  addInterpolatorOption(app, command->Interpolator, "cwenoz");
+  addThreadsOption(app, command->Threads);
+  app->add_option("-o,--output", command->Output, "write the value function (and ReachTime for test5)")
+    ->option_text("FILE.vti");
+  app
+    ->add_option("--json", command->Json,
+      "summary: l1_error, linf_error (when exact), min, max, seconds, steps,\nevaluations_per_node")
+    ->option_text("FILE");
+  command->Custom.addOptions(app);
+  return { app, [command] { return command->run(); } };
 }
 
 } // namespace sltkcli

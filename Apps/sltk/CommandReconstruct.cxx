@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `sltk reconstruct CLOUD`: vtkSLLevelSetReconstruct from a terminal.
+#include "CliOptions.h"
 #include "Commands.h"
 #include "ErrorCollector.h"
-#include "Json.h"
 #include "ProgressBar.h"
 #include "ReadPointCloud.h"
 #include "RenderPng.h"
@@ -26,9 +26,11 @@
 #include <vtkSLLevelSetReconstruct.h>
 #include <vtkTable.h>
 
+#include <nlohmann/json.hpp>
+
 #include <chrono>
 #include <cstdio>
-#include <iostream>
+#include <memory>
 #include <sstream>
 #include <vector>
 
@@ -37,38 +39,11 @@ namespace sltkcli
 
 namespace
 {
-const char* reconstructUsage = R"(usage: sltk reconstruct CLOUD [options]
+const char* reconstructDescription = R"(reconstruct a watertight surface (signed distance + surface)
 
 Reconstructs a watertight surface from an unorganised point cloud with the
 semi-Lagrangian level-set method (Preda 2024, Algorithm 1 with the multi-run
 schedule of Table 4.1). Clouds with no z extent are reconstructed in 2D.
-
-options:
-  -o, --output FILE.vti   signed distance (and distance to the cloud) on the grid
-  --surface FILE          zero level set: .vtp, .ply, .stl (3D) or .vtp (2D)
-  --png FILE              a picture of the surface and the cloud (renders through X: xvfb-run -a without a display)
-  --csv FILE              convergence history (run, iteration, energy, change, cloud error, band, time)
-  --json FILE             summary: points, points_reconstructed, outliers_removed, seconds, peak_memory_mb,
-                          surface_pieces, euler_characteristic, runs [grid, iterations, energy, err_cloud]
-  --interpolator NAME     q1 | weno3 | cweno | cwenoz (default weno3)
-  --cdx C                 C_dx of (4.36): first-run cell size in units of h_P (default 1)
-  --kp K                  K_P: initial surface at K h_P from the cloud (default 2; 10 for scans with holes)
-  --runs R                runs, each halving the cell size (default 3)
-  --max-iterations N      iteration cap per run (default 100)
-  --initial NAME          outside | sphere | ellipsoid (default outside)
-  --eta E                 eta of runs >= 3 (Table 4.1: 1); larger smooths noisy scans (thesis Fig. 4.8)
-  --schedule P:E,P:E,...  p and eta of each run (4.9); the last pair holds for later runs (default Table 4.1:
-                          1:0.05,2:0.05,2:1); the thesis's teapot keeps details with 1:0,2:0,2:1
-  --detect-tunnels        follow grad phi through long narrow holes instead of plugging them (4.5.6)
-  --remove-outliers       drop points whose mean distance to 8 neighbours is above mean + S sigma
-  --outlier-sigma S       the S of --remove-outliers (default 3)
-  --thin F                average the points in voxels of F x the density spacing (merged, overlapping
-                          scans: h_P (4.36) is then taken on the thinned cloud); 0 = off (default)
-  --threads T             threads (default: all)
-  --reference MESH        add Chamfer and Hausdorff distances to a reference surface (.off .ply .obj .stl .vtp)
-                          to the summary: Chamfer = (mean d(result->ref) + mean d(ref->result)) / 2
-  --quiet                 no progress bar
-  --verbose               the solver's log (cleaning counts, grids, per-run phase times) on stderr
 )";
 
 /// "P:E,P:E,..." -> one (p, eta) per run; false when malformed.
@@ -103,103 +78,51 @@ bool parseSchedule(const std::string& text, std::vector<sltk::RunParameters>& sc
   return !schedule.empty();
 }
 
-} // namespace
-
-int commandReconstruct(const Args& rawArgs)
+/// "" or the problem of a --schedule.
+std::string scheduleProblem(const std::string& text)
 {
-  Args args = rawArgs;
-  for (auto& a : args)
-  {
-    a = a == "-o" ? "--output" : a;
-  }
-  Options opt(args,
-    { "output", "surface", "csv", "json", "interpolator", "cdx", "kp", "runs", "max-iterations", "initial", "threads",
-      "reference", "png", "eta", "outlier-sigma", "thin", "schedule" },
-    { "help", "quiet", "remove-outliers", "verbose", "detect-tunnels" });
-  if (opt.has("help"))
-  {
-    std::cout << reconstructUsage;
-    return 0;
-  }
-  const double cdx = opt.number("cdx", 1.0);
-  const double kp = opt.number("kp", 2.0);
-  const double runs = opt.number("runs", 3);
-  const double iterations = opt.number("max-iterations", 100);
-  const double threads = opt.number("threads", 0);
-  const double eta = opt.number("eta", 1.0);
-  const double sigma = opt.number("outlier-sigma", 3.0);
-  const double thin = opt.number("thin", 0.0);
-  if (!opt.ok())
-  {
-    return fail(opt.error(), 2);
-  }
-  if (opt.positional().size() != 1)
-  {
-    return fail("give exactly one point cloud file (see sltk reconstruct --help)", 2);
-  }
-  sltk::InterpolatorKind interpolator = sltk::InterpolatorKind::Weno3;
-  if (opt.has("interpolator") && !sltk::parseInterpolator(opt.value("interpolator"), interpolator))
-  {
-    return fail("unknown interpolator '" + opt.value("interpolator") + "': use " + sltk::interpolatorNameList(), 2);
-  }
-  sltk::InitialGuess guess = sltk::InitialGuess::OutsideMarking;
-  if (!parseInitialGuess(opt.value("initial", "outside"), guess))
-  {
-    return fail("unknown initial guess '" + opt.value("initial") + "': use outside, sphere or ellipsoid", 2);
-  }
-  if (!(cdx >= 0.05 && cdx <= 100) || !(kp >= 0.1 && kp <= 100) || runs < 1 || runs > 6 || iterations < 1 ||
-    threads < 0)
-  {
-    return fail("out of range: --cdx 0.05..100, --kp 0.1..100, --runs 1..6, --max-iterations >= 1, --threads >= 0", 2);
-  }
-  if (!(eta >= 0 && eta <= 100) || !(sigma >= 0.5 && sigma <= 100) || !(thin >= 0 && thin <= 100))
-  {
-    return fail("out of range: --eta 0..100, --outlier-sigma 0.5..100, --thin 0..100", 2);
-  }
   std::vector<sltk::RunParameters> schedule;
-  if (opt.has("schedule"))
+  if (!parseSchedule(text, schedule))
   {
-    if (!parseSchedule(opt.value("schedule"), schedule))
-    {
-      const std::string text = opt.value("schedule");
-      return fail("malformed --schedule '" + text + "': give p:eta pairs separated by commas, e.g. 1:0,2:0,2:1", 2);
-    }
-    const sltk::Status valid = sltk::validateSchedule(schedule);
-    if (!valid.isOk())
-    {
-      return fail("--schedule: " + valid.message(), 2);
-    }
-    if (opt.has("eta"))
-    {
-      return fail("give either --eta or --schedule (a schedule sets eta of every run)", 2);
-    }
+    return "expects p:eta pairs separated by commas, e.g. 1:0,2:0,2:1, got '" + text + "'";
   }
-  if (opt.has("outlier-sigma") && !opt.has("remove-outliers"))
+  const sltk::Status valid = sltk::validateSchedule(schedule);
+  return valid.isOk() ? std::string() : valid.message();
+}
+
+/// `sltk reconstruct`'s command line.
+struct Reconstruct
+{
+  CLI::App* Parser = nullptr;
+  std::string Cloud, Output, Surface, Png, Csv, Json, Reference;
+  sltk::ReconstructionOptions Options;
+  double Eta = 1.0; // of runs >= 3 without a schedule
+  int Threads = 0;
+  bool Quiet = false;
+  bool Verbose = false;
+  bool given(const char* name) const { return this->Parser->count(name) > 0; }
+  int run() const;
+};
+
+int Reconstruct::run() const
+{
+  if (this->given("--eta") && this->given("--schedule"))
   {
-    return fail("--outlier-sigma needs --remove-outliers", 2);
+    return fail("give either --eta or --schedule (a schedule sets eta of every run)", 2);
   }
-  if (opt.has("surface"))
+  if (this->given("--png"))
   {
-    const std::string problem = surfaceFormatProblem(opt.value("surface"));
+    const std::string problem = pngProblem(this->Png);
     if (!problem.empty())
     {
       return fail(problem, 2);
     }
   }
-
-  if (opt.has("png"))
-  {
-    const std::string problem = pngProblem(opt.value("png"));
-    if (!problem.empty())
-    {
-      return fail(problem, 2);
-    }
-  }
-
+  const sltk::ReconstructionOptions& o = this->Options;
   vtkNew<vtkPolyData> reference;
-  if (opt.has("reference"))
+  if (this->given("--reference"))
   {
-    const sltk::Status read = readMesh(opt.value("reference"), reference);
+    const sltk::Status read = readMesh(this->Reference, reference);
     if (!read.isOk())
     {
       return fail(read.message());
@@ -207,14 +130,14 @@ int commandReconstruct(const Args& rawArgs)
   }
 
   const auto start = std::chrono::steady_clock::now();
-  const std::string path = opt.positional()[0];
+  const std::string& path = this->Cloud;
   vtkSmartPointer<vtkPointSet> cloud;
   sltk::Status status = readPointCloud(path, cloud);
   if (!status.isOk())
   {
     return fail(status.message());
   }
-  if (opt.has("verbose"))
+  if (this->Verbose)
   {
     vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_INFO);
   }
@@ -222,33 +145,34 @@ int commandReconstruct(const Args& rawArgs)
   vtkNew<ErrorCollector> errors;
   filter->AddObserver(vtkCommand::ErrorEvent, errors);
   vtkNew<ProgressBar> bar;
-  if (!opt.has("quiet"))
+  if (!this->Quiet)
   {
     filter->AddObserver(vtkCommand::ProgressEvent, bar);
   }
   filter->SetInputData(cloud);
-  filter->SetInterpolator(static_cast<int>(interpolator));
-  filter->SetCellSizeFactor(cdx);
-  filter->SetOutsideThresholdFactor(kp);
-  filter->SetNumberOfRuns(static_cast<int>(runs));
-  filter->SetMaximumNumberOfIterations(static_cast<int>(iterations));
-  filter->SetInitialGuess(static_cast<int>(guess));
-  filter->SetNumberOfThreads(static_cast<int>(threads));
-  filter->SetFinalEta(eta);
-  for (const sltk::RunParameters& run : schedule)
+  filter->SetInterpolator(static_cast<int>(o.Interpolator));
+  filter->SetCellSizeFactor(o.CellSizeFactor);
+  filter->SetOutsideThresholdFactor(o.OutsideThresholdFactor);
+  filter->SetNumberOfRuns(o.Runs);
+  filter->SetMaximumNumberOfIterations(o.MaxIterations);
+  filter->SetInitialGuess(static_cast<int>(o.Guess));
+  filter->SetNumberOfThreads(this->Threads);
+  filter->SetFinalEta(this->Eta);
+  for (const sltk::RunParameters& run : o.Schedule)
   {
     filter->AddRunParameters(run.P, run.Eta);
   }
-  filter->SetRemoveOutliers(opt.has("remove-outliers"));
-  filter->SetOutlierDeviations(sigma);
-  filter->SetThinningFactor(thin);
-  filter->SetDetectTunnels(opt.has("detect-tunnels"));
+  filter->SetRemoveOutliers(o.Cleaning.RemoveOutliers);
+  filter->SetOutlierDeviations(o.Cleaning.Outliers.Deviations);
+  filter->SetThinningFactor(o.Cleaning.ThinningFactor);
+  filter->SetDetectTunnels(o.DetectTunnels);
   filter->Update();
   bar->finish();
   if (!errors->Message.empty())
   {
-    return fail(
-      path + ": " + withMergedScanHint(errors->Message, static_cast<size_t>(cloud->GetNumberOfPoints()), thin > 0));
+    return fail(path + ": " +
+      withMergedScanHint(
+        errors->Message, static_cast<size_t>(cloud->GetNumberOfPoints()), o.Cleaning.ThinningFactor > 0));
   }
   auto* image = vtkImageData::SafeDownCast(filter->GetOutputDataObject(0));
   auto* surface = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1));
@@ -268,27 +192,22 @@ int commandReconstruct(const Args& rawArgs)
   const auto fieldValue = [fd](const char* name) { return fd->GetArray(name)->GetTuple1(0); };
   const long long reconstructed = static_cast<long long>(fieldValue("ReconstructedPoints"));
   const long long outliers = static_cast<long long>(fieldValue("OutliersRemoved"));
-  if (opt.has("remove-outliers") || thin > 0.0)
+  if (o.Cleaning.RemoveOutliers || o.Cleaning.ThinningFactor > 0.0)
   {
     std::printf("cleaning   %lld outliers removed, thinning cell %.4g: %lld points reconstructed\n", outliers,
       fieldValue("ThinningCell"), reconstructed);
   }
   std::printf("\n run            grid   iterations      energy E_2     Err_P        time\n");
-  std::vector<JsonObject> runRecords;
+  nlohmann::ordered_json runRecords = nlohmann::ordered_json::array();
   for (vtkIdType r = 0; r < grids->GetNumberOfTuples(); ++r)
   {
     const double* g = grids->GetTuple3(r);
     std::printf("%4lld  %5.0f x %4.0f x %4.0f  %6.0f  %14.6g  %10.4g  %8.2f s\n", static_cast<long long>(r + 1), g[0],
       g[1], g[2], its->GetTuple1(r), energy->GetTuple1(r), cloudError->GetTuple1(r), runSeconds->GetTuple1(r));
-    runRecords.push_back(JsonObject()
-                           .add("run", static_cast<long long>(r + 1))
-                           .add("grid",
-                             std::vector<long long>{ static_cast<long long>(g[0]), static_cast<long long>(g[1]),
-                               static_cast<long long>(g[2]) })
-                           .add("iterations", static_cast<long long>(its->GetTuple1(r)))
-                           .add("energy", energy->GetTuple1(r))
-                           .add("err_cloud", cloudError->GetTuple1(r))
-                           .add("seconds", runSeconds->GetTuple1(r)));
+    runRecords.push_back({ { "run", r + 1 },
+      { "grid", { static_cast<long long>(g[0]), static_cast<long long>(g[1]), static_cast<long long>(g[2]) } },
+      { "iterations", static_cast<long long>(its->GetTuple1(r)) }, { "energy", energy->GetTuple1(r) },
+      { "err_cloud", cloudError->GetTuple1(r) }, { "seconds", runSeconds->GetTuple1(r) } });
   }
   const double hP = fd->GetArray("CloudSpacing")->GetTuple1(0);
   const double finalError =
@@ -306,7 +225,7 @@ int commandReconstruct(const Args& rawArgs)
     topology.Pieces, topology.Euler);
   std::printf("total      %.2f s, peak memory %.0f MB\n", seconds, peakMb);
   SurfaceDistances distances;
-  if (opt.has("reference"))
+  if (this->given("--reference"))
   {
     status = surfaceDistances(surface, reference, distances);
     if (!status.isOk())
@@ -317,33 +236,33 @@ int commandReconstruct(const Args& rawArgs)
       distances.Chamfer, distances.Hausdorff, distances.MeanToReference, distances.MeanFromReference);
   }
 
-  if (opt.has("output"))
+  if (this->given("--output"))
   {
-    status = writeImage(opt.value("output"), image);
+    status = writeImage(this->Output, image);
     if (!status.isOk())
     {
       return fail(status.message());
     }
   }
-  if (opt.has("surface"))
+  if (this->given("--surface"))
   {
-    status = writeSurface(opt.value("surface"), surface);
+    status = writeSurface(this->Surface, surface);
     if (!status.isOk())
     {
       return fail(status.message());
     }
   }
-  if (opt.has("png"))
+  if (this->given("--png"))
   {
-    status = renderPng(opt.value("png"), surface, cloud);
+    status = renderPng(this->Png, surface, cloud);
     if (!status.isOk())
     {
       return fail(status.message());
     }
   }
-  if (opt.has("csv"))
+  if (this->given("--csv"))
   {
-    status = writeAtomically(opt.value("csv"),
+    status = writeAtomically(this->Csv,
       [&](const std::string& temporary)
       {
         vtkNew<vtkDelimitedTextWriter> writer;
@@ -358,34 +277,87 @@ int commandReconstruct(const Args& rawArgs)
       return fail(status.message());
     }
   }
-  if (opt.has("json"))
+  if (this->given("--json"))
   {
-    JsonObject summary;
-    summary.add("cloud", path)
-      .add("points", static_cast<long long>(cloud->GetNumberOfPoints()))
-      .add("outliers_removed", outliers)
-      .add("thinning_cell", fieldValue("ThinningCell"))
-      .add("points_reconstructed", reconstructed)
-      .add("h_P", fd->GetArray("CloudSpacing")->GetTuple1(0))
-      .add("seconds", seconds)
-      .add("peak_memory_mb", peakMb)
-      .add("surface_points", static_cast<long long>(surface->GetNumberOfPoints()))
-      .add("surface_pieces", topology.Pieces)
-      .add("euler_characteristic", topology.Euler)
-      .add("runs", runRecords);
-    if (opt.has("reference"))
+    nlohmann::ordered_json summary = { { "cloud", path },
+      { "points", static_cast<long long>(cloud->GetNumberOfPoints()) }, { "outliers_removed", outliers },
+      { "thinning_cell", fieldValue("ThinningCell") }, { "points_reconstructed", reconstructed }, { "h_P", hP },
+      { "seconds", seconds }, { "peak_memory_mb", peakMb },
+      { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) }, { "surface_pieces", topology.Pieces },
+      { "euler_characteristic", topology.Euler }, { "runs", runRecords } };
+    if (this->given("--reference"))
     {
-      summary.add("reference", opt.value("reference"))
-        .add("chamfer", distances.Chamfer)
-        .add("hausdorff", distances.Hausdorff);
+      summary["reference"] = this->Reference;
+      summary["chamfer"] = distances.Chamfer;
+      summary["hausdorff"] = distances.Hausdorff;
     }
-    status = writeTextFile(opt.value("json"), summary.str() + "\n");
+    status = writeJsonFile(this->Json, summary);
     if (!status.isOk())
     {
       return fail(status.message());
     }
   }
   return 0;
+}
+} // namespace
+
+Command addReconstructCommand(CLI::App& sltk)
+{
+  auto command = std::make_shared<Reconstruct>();
+  CLI::App* app = addCloudCommand(sltk, "reconstruct", reconstructDescription, command->Cloud);
+  command->Parser = app;
+  sltk::ReconstructionOptions& o = command->Options;
+  app->add_option("-o,--output", command->Output, "signed distance (and distance to the cloud) on the grid")
+    ->option_text("FILE.vti");
+  app->add_option("--surface", command->Surface, "zero level set: .vtp, .ply, .stl (3D) or .vtp (2D)")
+    ->check(CLI::Validator(surfaceFormatProblem, ""))
+    ->option_text("FILE");
+  app
+    ->add_option("--png", command->Png,
+      "a picture of the surface and the cloud (renders through X:\nxvfb-run -a without a display)")
+    ->option_text("FILE");
+  app
+    ->add_option(
+      "--csv", command->Csv, "convergence history (run, iteration, energy, change, cloud error,\nband, time)")
+    ->option_text("FILE");
+  app
+    ->add_option("--json", command->Json,
+      "summary: points, points_reconstructed, outliers_removed, seconds,\npeak_memory_mb, surface_pieces, "
+      "euler_characteristic,\nruns [grid, iterations, energy, err_cloud]")
+    ->option_text("FILE");
+  addInterpolatorOption(app, o.Interpolator, "weno3");
+  addPlanOptions(app, o);
+  app->get_option("--cdx")->check(within(0.05, 100));
+  app->get_option("--kp")->check(within(0.1, 100));
+  app->get_option("--runs")->check(within(1, 6));
+  app->get_option("--outlier-sigma")->check(within(0.5, 100))->needs("--remove-outliers");
+  app->get_option("--thin")->check(within(0, 100));
+  addNumber(app, "--max-iterations", o.MaxIterations, "iteration cap per run (default 100)")
+    ->check(within(1))
+    ->option_text("N");
+  addNumber(
+    app, "--eta", command->Eta, "eta of runs >= 3 (Table 4.1: 1); larger smooths noisy scans\n(thesis Fig. 4.8)")
+    ->check(within(0, 100))
+    ->option_text("E");
+  app
+    ->add_option_function<std::string>(
+      "--schedule", [&o](const std::string& text) { parseSchedule(text, o.Schedule); },
+      "p and eta of each run (4.9); the last pair holds for later runs\n(default Table 4.1: 1:0.05,2:0.05,2:1); "
+      "the thesis's teapot\nkeeps details with 1:0,2:0,2:1")
+    ->check(CLI::Validator(scheduleProblem, ""))
+    ->option_text("P:E,P:E,...");
+  app->add_flag(
+    "--detect-tunnels", o.DetectTunnels, "follow grad phi through long narrow holes instead of plugging them\n(4.5.6)");
+  addThreadsOption(app, command->Threads);
+  app
+    ->add_option("--reference", command->Reference,
+      "add Chamfer and Hausdorff distances to a reference surface\n(.off .ply .obj .stl .vtp) to the summary: "
+      "Chamfer =\n(mean d(result->ref) + mean d(ref->result)) / 2")
+    ->option_text("MESH");
+  app->add_flag("--quiet", command->Quiet, "no progress bar");
+  app->add_flag(
+    "--verbose", command->Verbose, "the solver's log (cleaning counts, grids, per-run phase times) on stderr");
+  return { app, [command] { return command->run(); } };
 }
 
 } // namespace sltkcli

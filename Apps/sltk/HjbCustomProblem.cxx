@@ -1,55 +1,40 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "HjbCustomProblem.h"
 
+#include "CliOptions.h"
+
 #include <vtkCWENOHJBSolver.h>
 
 namespace sltkcli
 {
 
-const char* hjbCustomUsage = R"USAGE(
-custom problems, v_t + max_a { -f_D(t,x,a) . Dv - f_C(t,x,a) } = 0 (thesis (3.1)-(3.4)), by formulas in
-x, y, z, t, a1, a2, a3 (+ - * / % ^, comparisons, c ? a : b, sin ... exp log sqrt abs atan2 hypot min max
-clamp if, pi, e); --fx starts one:
-  --fx F --fy F --fz F   dynamics f_D, one component per axis used
-  --cost F               running cost f_C (default 0)
-  --v0 F                 initial datum v0(x, y, z)
-  --obstacle F           state constraint g(x, y, z): v = max(v, g) (3.39); ReachTime is written (3.40)
-  --exact F              exact solution v(t, x, y, z): adds l1_error and linf_error
-  --argmin1 F --argmin2 F --argmin3 F   closed-form argmin a*(t, x, y, z), one formula per control
-                         component: replaces the search (one evaluation per node and step)
-  --nodes NX[,NY[,NZ]]   nodes per axis; their count is the dimension (default 81,81)
-  --domain X0,X1[,Y0,Y1[,Z0,Z1]]   the box (default [-1, 1] per axis)
-  --periodic AXES        periodic axes, e.g. x or x,y (default none: linear extrapolation)
-  --controls KIND        none | box | ball | sphere (default none: pure transport)
-  --control-dim M        dimension of a = (a1, ..., aM) (default 1)
-  --control-lower A,...  --control-upper A,...    box corners (default -1 and 1)
-  --control-center A,... --control-radius R       ball / sphere (default 0 and 1)
-  --rk 1|2|3             RK order of the characteristics (default 3)
-  --tabulation N         tabulated controls per axis of A before the local search (default 33)
-  --warm-start N         after the first step, search a coarse N^q grid of A and an N^q grid around
-                         each node's previous argmin instead of tabulating A (default 0: off; 5 suits Test 4)
-  --tolerance TOL        local search tolerance (default 1e-8)
-  --reach                write ReachTime also without an obstacle
-example (thesis Test 4): sltk hjb --fx=-a1 --fy=-a2 --cost "(a1^2+a2^2)/2" --v0 "max(1-x^2-y^2,0)"
-  --nodes 81,81 --domain -2,2,-2,2 --controls ball --control-dim 2 --control-radius 2.2 --rk 1
-  --courant 1.25 --final-time 0.5
-)USAGE";
+const char* const HjbCustomProblem::Group = "Custom problem (--fx starts one)";
 
-const std::vector<std::string>& hjbCustomOptionNames()
-{
-  static const std::vector<std::string> names = { "fx", "fy", "fz", "cost", "v0", "obstacle", "exact", "argmin1",
-    "argmin2", "argmin3", "nodes", "domain", "periodic", "controls", "control-dim", "control-lower", "control-upper",
-    "control-center", "control-radius", "rk", "tabulation", "warm-start", "tolerance" };
-  return names;
-}
-
-bool hasHjbCustomProblem(const Options& opt)
-{
-  return opt.has("fx") || opt.has("fy") || opt.has("fz");
-}
+const char* const HjbCustomProblem::Help =
+  "Custom problems, v_t + max_a { -f_D(t,x,a) . Dv - f_C(t,x,a) } = 0 (thesis (3.1)-(3.4)),\n"
+  "by formulas in x, y, z, t, a1, a2, a3 (+ - * / % ^, comparisons, c ? a : b, sin ... exp\n"
+  "log sqrt abs atan2 hypot min max clamp if, pi, e); --fx starts one (options below).\n";
 
 namespace
 {
+/// "x", "x,y", ...: the periodic axes; false when malformed.
+bool parsePeriodic(const std::string& axes, int periodic[3])
+{
+  for (size_t k = 0; k < axes.size(); ++k)
+  {
+    const char c = axes[k];
+    if ((c == 'x' || c == 'y' || c == 'z') && (k + 1 == axes.size() || axes[k + 1] == ','))
+    {
+      periodic[c - 'x'] = 1;
+    }
+    else if (c != ',')
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 /// The first three values of `v`, padded with `pad`.
 void copy3(const std::vector<double>& v, double* out, double pad)
 {
@@ -60,115 +45,124 @@ void copy3(const std::vector<double>& v, double* out, double pad)
 }
 } // namespace
 
-std::string setHjbCustomProblem(Options& opt, vtkCWENOHJBSolver* solver)
+void HjbCustomProblem::addOptions(CLI::App* app)
 {
-  const std::vector<double> nodes = opt.numbers("nodes", 1, 3, { 81, 81 });
-  const std::vector<double> domain = opt.numbers("domain", 2, 6, {});
-  const std::vector<double> lower = opt.numbers("control-lower", 1, 3, { -1, -1, -1 });
-  const std::vector<double> upper = opt.numbers("control-upper", 1, 3, { 1, 1, 1 });
-  const std::vector<double> center = opt.numbers("control-center", 1, 3, { 0, 0, 0 });
-  const double radius = opt.number("control-radius", 1.0);
-  const double controlDim = opt.number("control-dim", 1.0);
-  const double rk = opt.number("rk", 3.0);
-  const double tabulation = opt.number("tabulation", 33.0);
-  const double tolerance = opt.number("tolerance", 1e-8);
-  const double warmStart = opt.number("warm-start", 0.0);
-  if (!opt.ok())
+  const size_t before = app->get_options().size();
+  const auto formula = [app](const std::string& name, std::string& value, const std::string& description)
+  { app->add_option(name, value, description)->option_text("F"); };
+  formula("--fx", this->Dynamics[0], "dynamics f_D: its x component (one component per axis used)");
+  formula("--fy", this->Dynamics[1], "its y component");
+  formula("--fz", this->Dynamics[2], "its z component");
+  formula("--cost", this->Cost, "running cost f_C (default 0)");
+  formula("--v0", this->InitialValue, "initial datum v0(x, y, z)");
+  formula(
+    "--obstacle", this->Obstacle, "state constraint g(x, y, z): v = max(v, g) (3.39); ReachTime is\nwritten (3.40)");
+  formula("--exact", this->Exact, "exact solution v(t, x, y, z): adds l1_error and linf_error");
+  formula("--argmin1", this->Argmin[0],
+    "closed-form argmin a*(t, x, y, z), one formula per control\ncomponent: replaces "
+    "the search (one evaluation per node\nand step)");
+  formula("--argmin2", this->Argmin[1], "a2* (with --argmin1)");
+  formula("--argmin3", this->Argmin[2], "a3* (with --argmin1 and --argmin2)");
+  addNumberList(app, "--nodes", this->Nodes, 1, 3, "nodes per axis; their count is the dimension (default 81,81)")
+    ->option_text("NX[,NY[,NZ]]");
+  addNumberList(app, "--domain", this->Domain, 2, 6, "the box (default [-1, 1] per axis)")
+    ->option_text("X0,X1[,Y0,Y1[,Z0,Z1]]");
+  app->add_option("--periodic", this->Periodic, "periodic axes, e.g. x or x,y (default none: linear extrapolation)")
+    ->check(CLI::Validator(
+      [](std::string& axes)
+      {
+        int periodic[3] = { 0, 0, 0 };
+        return parsePeriodic(axes, periodic) ? std::string()
+                                             : "takes axis names x, y, z separated by commas, got '" + axes + "'";
+      },
+      ""))
+    ->option_text("AXES");
+  addChoice(
+    app, "--controls", "control set", { "none", "box", "ball", "sphere" },
+    [this](size_t k) { this->ControlSet = static_cast<int>(k); },
+    "none | box | ball | sphere (default none: pure transport)")
+    ->option_text("KIND");
+  addNumber(app, "--control-dim", this->ControlDimension, "dimension of a = (a1, ..., aM) (default 1)")
+    ->check(within(1, 3))
+    ->option_text("M");
+  addNumberList(app, "--control-lower", this->Lower, 1, 3, "box corner (default -1)")->option_text("A,...");
+  addNumberList(app, "--control-upper", this->Upper, 1, 3, "box corner (default 1)")->option_text("A,...");
+  addNumberList(app, "--control-center", this->Center, 1, 3, "ball / sphere centre (default 0)")->option_text("A,...");
+  addNumber(app, "--control-radius", this->Radius, "ball / sphere radius (default 1)")->option_text("R");
+  addNumber(app, "--rk", this->RKOrder, "RK order of the characteristics: 1, 2 or 3 (default 3)")
+    ->check(within(1, 3))
+    ->option_text("1|2|3");
+  addNumber(app, "--tabulation", this->Tabulation,
+    "tabulated controls per axis of A before the local search\n(1 to 1000, default 33)")
+    ->check(within(1, 1000))
+    ->option_text("N");
+  addNumber(app, "--warm-start", this->WarmStart,
+    "after the first step, search a coarse N^q grid of A and an N^q\ngrid around each node's previous argmin "
+    "instead of tabulating A\n(0 to 15, default 0: off; 5 suits Test 4)")
+    ->check(within(0, 15))
+    ->option_text("N");
+  addNumber(app, "--tolerance", this->Tolerance, "local search tolerance, in [0, 1] (default 1e-8)")
+    ->check(within(0, 1))
+    ->option_text("TOL");
+  app->add_flag("--reach", this->Reach, "write ReachTime also without an obstacle");
+  const std::vector<CLI::Option*> options = app->get_options();
+  for (size_t k = before; k < options.size(); ++k)
   {
-    return opt.error();
+    options[k]->group(Group);
   }
-  if (domain.size() % 2 != 0)
+}
+
+std::string HjbCustomProblem::apply(vtkCWENOHJBSolver* solver) const
+{
+  if (this->Domain.size() % 2 != 0)
   {
-    return "--domain takes pairs lower,upper per axis, got " + std::to_string(domain.size()) + " numbers";
+    return "--domain takes pairs lower,upper per axis, got " + std::to_string(this->Domain.size()) + " numbers";
   }
   int dims[3] = { 1, 1, 1 };
-  for (size_t a = 0; a < nodes.size(); ++a)
+  for (size_t a = 0; a < this->Nodes.size(); ++a)
   {
-    if (nodes[a] < 5 || nodes[a] > 100000 || nodes[a] != static_cast<int>(nodes[a]))
+    if (this->Nodes[a] < 5 || this->Nodes[a] > 100000 || this->Nodes[a] != static_cast<int>(this->Nodes[a]))
     {
       return "--nodes takes whole numbers from 5 to 100000 per axis";
     }
-    dims[a] = static_cast<int>(nodes[a]);
+    dims[a] = static_cast<int>(this->Nodes[a]);
   }
   double bounds[6] = { -1, 1, -1, 1, -1, 1 };
-  for (size_t k = 0; k < domain.size(); ++k)
+  for (size_t k = 0; k < this->Domain.size(); ++k)
   {
-    bounds[k] = domain[k];
+    bounds[k] = this->Domain[k];
   }
   int periodic[3] = { 0, 0, 0 };
-  const std::string axes = opt.value("periodic", "");
-  for (size_t k = 0; k < axes.size(); ++k)
-  {
-    const char c = axes[k];
-    if ((c == 'x' || c == 'y' || c == 'z') && (k + 1 == axes.size() || axes[k + 1] == ','))
-    {
-      periodic[c - 'x'] = 1;
-    }
-    else if (c != ',')
-    {
-      return "--periodic takes axis names x, y, z separated by commas, got '" + axes + "'";
-    }
-  }
-  const std::string kind = opt.value("controls", "none");
-  const char* kinds[] = { "none", "box", "ball", "sphere" };
-  int controlSet = -1;
-  for (int k = 0; k < 4; ++k)
-  {
-    controlSet = kind == kinds[k] ? k : controlSet;
-  }
-  if (controlSet < 0)
-  {
-    return "unknown control set '" + kind + "': use none, box, ball or sphere";
-  }
-  if (controlDim != 1 && controlDim != 2 && controlDim != 3)
-  {
-    return "--control-dim must be 1, 2 or 3";
-  }
-  if (rk != 1 && rk != 2 && rk != 3)
-  {
-    return "--rk must be 1, 2 or 3";
-  }
-  if (tabulation < 1 || tabulation > 1000 || tabulation != static_cast<int>(tabulation))
-  {
-    return "--tabulation must be a whole number from 1 to 1000";
-  }
-  if (warmStart < 0 || warmStart > 15 || warmStart != static_cast<int>(warmStart))
-  {
-    return "--warm-start must be a whole number from 0 (off) to 15";
-  }
-  if (!(tolerance >= 0.0 && tolerance <= 1.0))
-  {
-    return "--tolerance must be in [0, 1]";
-  }
+  parsePeriodic(this->Periodic, periodic); // checked by the parser
   double v3[3];
   solver->SetPreset(vtkCWENOHJBSolver::CUSTOM);
-  solver->SetDynamicsX(opt.value("fx", "0").c_str());
-  solver->SetDynamicsY(opt.value("fy", "0").c_str());
-  solver->SetDynamicsZ(opt.value("fz", "0").c_str());
-  solver->SetRunningCost(opt.value("cost", "").c_str());
-  solver->SetInitialValue(opt.value("v0", "").c_str());
-  solver->SetObstacle(opt.value("obstacle", "").c_str());
-  solver->SetExactSolution(opt.value("exact", "").c_str());
-  solver->SetArgminA1(opt.value("argmin1", "").c_str());
-  solver->SetArgminA2(opt.value("argmin2", "").c_str());
-  solver->SetArgminA3(opt.value("argmin3", "").c_str());
+  solver->SetDynamicsX(this->Dynamics[0].c_str());
+  solver->SetDynamicsY(this->Dynamics[1].c_str());
+  solver->SetDynamicsZ(this->Dynamics[2].c_str());
+  solver->SetRunningCost(this->Cost.c_str());
+  solver->SetInitialValue(this->InitialValue.c_str());
+  solver->SetObstacle(this->Obstacle.c_str());
+  solver->SetExactSolution(this->Exact.c_str());
+  solver->SetArgminA1(this->Argmin[0].c_str());
+  solver->SetArgminA2(this->Argmin[1].c_str());
+  solver->SetArgminA3(this->Argmin[2].c_str());
   solver->SetDimensions(dims);
   solver->SetDomainBounds(bounds);
   solver->SetPeriodicAxes(periodic);
-  solver->SetControlSet(controlSet);
-  solver->SetControlDimension(static_cast<int>(controlDim));
-  copy3(lower, v3, 0.0);
+  solver->SetControlSet(this->ControlSet);
+  solver->SetControlDimension(this->ControlDimension);
+  copy3(this->Lower, v3, 0.0);
   solver->SetControlLowerBound(v3);
-  copy3(upper, v3, 0.0);
+  copy3(this->Upper, v3, 0.0);
   solver->SetControlUpperBound(v3);
-  copy3(center, v3, 0.0);
+  copy3(this->Center, v3, 0.0);
   solver->SetControlCenter(v3);
-  solver->SetControlRadius(radius);
-  solver->SetRKOrder(static_cast<int>(rk));
-  solver->SetTabulationPoints(static_cast<int>(tabulation));
-  solver->SetWarmStartPoints(static_cast<int>(warmStart));
-  solver->SetMinimizerTolerance(tolerance);
-  solver->SetComputeReachableSet(opt.has("reach") ? 1 : 0);
+  solver->SetControlRadius(this->Radius);
+  solver->SetRKOrder(this->RKOrder);
+  solver->SetTabulationPoints(this->Tabulation);
+  solver->SetWarmStartPoints(this->WarmStart);
+  solver->SetMinimizerTolerance(this->Tolerance);
+  solver->SetComputeReachableSet(this->Reach ? 1 : 0);
   return "";
 }
 

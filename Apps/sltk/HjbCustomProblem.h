@@ -2,9 +2,9 @@
 #pragma once
 /// \file HjbCustomProblem.h
 /// `sltk hjb` options of a problem given by formulas (vtkCWENOHJBSolver's
-/// Custom preset): their names, their help text, and setting them on the filter.
+/// Custom preset): their parser, their help, and setting them on the filter.
 
-#include "Commands.h"
+#include <CLI/CLI.hpp>
 
 #include <string>
 #include <vector>
@@ -14,16 +14,36 @@ class vtkCWENOHJBSolver;
 namespace sltkcli
 {
 
-/// Valued options of a custom problem.
-const std::vector<std::string>& hjbCustomOptionNames();
+/// A problem given by formulas, as the command line gives it.
+struct HjbCustomProblem
+{
+  /// The help group of its options, and their preamble (the equation and the formula syntax).
+  static const char* const Group;
+  static const char* const Help;
 
-/// Their help, for `sltk hjb --help`.
-extern const char* hjbCustomUsage;
+  std::string Dynamics[3] = { "0", "0", "0" };
+  std::string Cost, InitialValue, Obstacle, Exact;
+  std::string Argmin[3];
+  std::vector<double> Nodes = { 81, 81 };
+  std::vector<double> Domain;
+  std::string Periodic;
+  int ControlSet = 0; ///< none, box, ball, sphere
+  int ControlDimension = 1;
+  std::vector<double> Lower = { -1, -1, -1 };
+  std::vector<double> Upper = { 1, 1, 1 };
+  std::vector<double> Center = { 0, 0, 0 };
+  double Radius = 1.0;
+  int RKOrder = 3;
+  int Tabulation = 33;
+  int WarmStart = 0;
+  double Tolerance = 1e-8;
+  bool Reach = false;
 
-/// True when the command line defines a custom problem (any of --fx --fy --fz).
-bool hasHjbCustomProblem(const Options& opt);
+  /// Adds its options to `app`, in the help group Group.
+  void addOptions(CLI::App* app);
 
-/// Sets the custom problem on `solver`; returns "" or the usage error.
-std::string setHjbCustomProblem(Options& opt, vtkCWENOHJBSolver* solver);
+  /// Sets the problem on `solver`; returns "" or the usage error.
+  std::string apply(vtkCWENOHJBSolver* solver) const;
+};
 
 } // namespace sltkcli

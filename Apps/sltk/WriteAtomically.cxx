@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 namespace sltkcli
@@ -32,12 +33,19 @@ sltk::Status writeAtomically(const std::string& path, const std::function<bool(c
 
 sltk::Status writeTextFile(const std::string& path, const std::string& text)
 {
-  return writeAtomically(path, [&](const std::string& temporary) {
-    std::ofstream out(temporary);
-    out << text;
-    out.close();
-    return static_cast<bool>(out);
-  });
+  return writeAtomically(path,
+    [&](const std::string& temporary)
+    {
+      std::ofstream out(temporary);
+      out << text;
+      out.close();
+      return static_cast<bool>(out);
+    });
+}
+
+sltk::Status writeJsonFile(const std::string& path, const nlohmann::ordered_json& value)
+{
+  return writeTextFile(path, value.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n");
 }
 
 } // namespace sltkcli

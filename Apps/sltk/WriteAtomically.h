@@ -6,6 +6,8 @@
 
 #include "sltk/core/Status.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <functional>
 #include <string>
 
@@ -18,5 +20,9 @@ sltk::Status writeAtomically(const std::string& path, const std::function<bool(c
 
 /// Writes text to `path` atomically.
 sltk::Status writeTextFile(const std::string& path, const std::string& text);
+
+/// Writes `value` to `path` atomically as JSON (indented; non-finite numbers as null,
+/// text that is not UTF-8, e.g. a file name, with U+FFFD in place of its invalid bytes).
+sltk::Status writeJsonFile(const std::string& path, const nlohmann::ordered_json& value);
 
 } // namespace sltkcli

@@ -1,56 +1,92 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // sltk: the Semi-Lagrangian level-set ToolKit from a terminal.
+#include "CliOptions.h"
 #include "Commands.h"
 
 #include <vtkLogger.h>
 
-#include <cstdlib>
 #include <iostream>
+#include <memory>
+#include <regex>
+#include <sstream>
+#include <vector>
 
 namespace
 {
-const char* usage = R"(usage: sltk <command> [options]
-
-commands:
-  info CLOUD        validate a point cloud and print its size, bounds, spacing h_P
-                    and the grid of every run of the reconstruction (thesis (4.36))
-  reconstruct CLOUD reconstruct a watertight surface (signed distance + surface)
-  hjb               solve a Hamilton-Jacobi-Bellman problem (thesis ch. 3)
-
-Run `sltk <command> --help` for the options of a command.
-Clouds: .ply .xyz .txt .csv .pts .obj .vtp .vtu .vtk
-)";
+/// CLI11's help, listing each command by the first paragraph of its description.
+class Formatter : public CLI::Formatter
+{
+public:
+  std::string make_subcommand(const CLI::App* sub) const override
+  {
+    const std::string& description = sub->get_description();
+    std::stringstream out;
+    CLI::detail::format_help(
+      out, sub->get_display_name(true), description.substr(0, description.find("\n\n")), this->column_width_);
+    return out.str();
+  }
+};
 } // namespace
 
 int main(int argc, char** argv)
 {
   // Errors reach the user once, through the commands' own messages.
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  sltkcli::Args args(argv + 1, argv + argc);
-  if (args.empty() || args[0] == "--help" || args[0] == "-h")
+  CLI::App sltk("sltk: the Semi-Lagrangian level-set ToolKit (Preda 2024)\n", "sltk");
+  sltk.set_version_flag("--version", "sltk " SLTK_VERSION);
+  sltk.require_subcommand(1);
+  sltk.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast); // a repeated option: the last
+  sltk.formatter(std::make_shared<Formatter>());
+  sltk.get_formatter()->column_width(26);
+  sltk.get_formatter()->label("SUBCOMMAND", "COMMAND");
+  sltk.footer("Run `sltk <command> --help` for the options of a command.\n"
+              "Clouds: .ply .xyz .txt .csv .pts .obj .vtp .vtu .vtk");
+  const std::vector<sltkcli::Command> commands = { sltkcli::addInfoCommand(sltk), sltkcli::addReconstructCommand(sltk),
+    sltkcli::addHjbCommand(sltk) };
+  for (const sltkcli::Command& command : commands)
   {
-    std::cout << usage;
-    return args.empty() ? 2 : 0;
+    command.Parser->group("Commands");
   }
-  if (args[0] == "--version")
+  if (argc < 2)
   {
-    std::cout << "sltk " << SLTK_VERSION << "\n";
-    return 0;
+    std::cout << sltk.help();
+    return 2;
   }
-  const std::string command = args[0];
-  args.erase(args.begin());
-  if (command == "info")
+  try
   {
-    return sltkcli::commandInfo(args);
+    sltk.parse(argc, argv);
   }
-  if (command == "reconstruct")
+  catch (const CLI::Success& e) // --help, --version
   {
-    return sltkcli::commandReconstruct(args);
+    return sltk.exit(e);
   }
-  if (command == "hjb")
+  catch (const CLI::ParseError& e)
   {
-    return sltkcli::commandHjb(args);
+    const auto chosen = sltk.get_subcommands();
+    if (chosen.empty() && argv[1][0] != '-')
+    {
+      std::vector<std::string> names;
+      for (const sltkcli::Command& command : commands)
+      {
+        names.push_back(command.Parser->get_name());
+      }
+      return sltkcli::fail(
+        std::string("unknown command '") + argv[1] + "': use " + sltkcli::orList(names) + " (see sltk --help)", 2);
+    }
+    // CLI11 says "--cdx: 1 required FLOAT missing" when an option ends the command line.
+    static const std::regex missing("(\\S+): [0-9]+ required \\S* ?missing");
+    std::smatch option;
+    const std::string what = e.what();
+    const std::string message = std::regex_match(what, option, missing) ? option[1].str() + ": needs a value" : what;
+    const std::string help = chosen.empty() ? "sltk --help" : "sltk " + chosen[0]->get_name() + " --help";
+    return sltkcli::fail(message + " (see " + help + ")", 2);
   }
-  std::cerr << "sltk: unknown command '" << command << "'\n" << usage;
-  return 2;
+  for (const sltkcli::Command& command : commands)
+  {
+    if (command.Parser->parsed())
+    {
+      return command.Run();
+    }
+  }
+  return 2; // not reached: require_subcommand(1)
 }

@@ -1,0 +1,214 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "CliOptions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace sltkcli
+{
+
+namespace
+{
+/// The whole of `text` as a finite number.
+bool parseNumber(const std::string& text, double& v)
+{
+  try
+  {
+    size_t used = 0;
+    v = std::stod(text, &used);
+    return used == text.size() && std::isfinite(v);
+  }
+  catch (const std::exception&)
+  {
+    return false;
+  }
+}
+
+/// "v1,v2,..." as numbers; false when one is malformed.
+bool parseNumberList(const std::string& text, std::vector<double>& values)
+{
+  values.clear();
+  std::stringstream in(text);
+  std::string item;
+  double v = 0.0;
+  while (std::getline(in, item, ','))
+  {
+    if (!parseNumber(item, v))
+    {
+      return false;
+    }
+    values.push_back(v);
+  }
+  return !text.empty() && text.back() != ','; // getline drops a trailing empty item
+}
+
+/// A transform: a number, rewritten as a whole one for an int option (CLI11 then converts it).
+CLI::Validator numberText(bool whole)
+{
+  return CLI::Validator(
+    [whole](std::string& text)
+    {
+      double v = 0.0;
+      if (!parseNumber(text, v) || (whole && (v != std::floor(v) || std::fabs(v) > 2e9)))
+      {
+        return std::string(whole ? "expects a whole number, got '" : "expects a number, got '") + text + "'";
+      }
+      if (whole)
+      {
+        text = std::to_string(static_cast<long long>(v));
+      }
+      return std::string();
+    },
+    "");
+}
+
+/// A check: `known(text)`, else "unknown <what> 'text': use <list>".
+CLI::Validator namedCheck(
+  const std::string& what, const std::function<bool(const std::string&)>& known, const std::string& list)
+{
+  CLI::Validator check([=](std::string& text)
+    { return known(text) ? std::string() : "unknown " + what + " '" + text + "': use " + list; },
+    "");
+  return check.non_modifying();
+}
+
+} // namespace
+
+std::string orList(const std::vector<std::string>& names)
+{
+  std::string list;
+  for (size_t k = 0; k < names.size(); ++k)
+  {
+    list += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + names[k];
+  }
+  return list;
+}
+
+CLI::Option* addNumber(CLI::App* app, const std::string& name, double& value, const std::string& description)
+{
+  return app->add_option(name, value, description)->transform(numberText(false));
+}
+
+CLI::Option* addNumber(CLI::App* app, const std::string& name, int& value, const std::string& description)
+{
+  return app->add_option(name, value, description)->transform(numberText(true));
+}
+
+CLI::Validator within(double low, double high, bool lowOpen)
+{
+  std::ostringstream range;
+  if (std::isinf(high))
+  {
+    range << (lowOpen ? "> " : ">= ") << low;
+  }
+  else
+  {
+    range << "in " << (lowOpen ? "(" : "[") << low << ", " << high << "]";
+  }
+  CLI::Validator check(
+    [=, text = range.str()](std::string& input)
+    {
+      const double v = std::stod(input); // a number: addNumber's transform ran first
+      const bool inside = (lowOpen ? v > low : v >= low) && v <= high;
+      return inside ? std::string() : "must be " + text + ", got " + input;
+    },
+    "");
+  return check.non_modifying();
+}
+
+CLI::Option* addNumberList(CLI::App* app, const std::string& name, std::vector<double>& values, size_t minCount,
+  size_t maxCount, const std::string& description)
+{
+  CLI::Validator check(
+    [=](std::string& text)
+    {
+      std::vector<double> parsed;
+      if (parseNumberList(text, parsed) && parsed.size() >= minCount && parsed.size() <= maxCount)
+      {
+        return std::string();
+      }
+      return "expects " + std::to_string(minCount) +
+        (maxCount > minCount ? " to " + std::to_string(maxCount) : std::string()) + " comma-separated numbers, got '" +
+        text + "'";
+    },
+    "");
+  return app
+    ->add_option_function<std::string>(
+      name, [&values](const std::string& text) { parseNumberList(text, values); }, description)
+    ->check(check.non_modifying());
+}
+
+CLI::Option* addChoice(CLI::App* app, const std::string& name, const std::string& what,
+  const std::vector<std::string>& names, const std::function<void(size_t)>& chosen, const std::string& description)
+{
+  const auto known = [names](const std::string& text)
+  { return std::find(names.begin(), names.end(), text) != names.end(); };
+  return app
+    ->add_option_function<std::string>(
+      name,
+      [names, chosen](const std::string& text)
+      { chosen(static_cast<size_t>(std::find(names.begin(), names.end(), text) - names.begin())); },
+      description)
+    ->check(namedCheck(what, known, orList(names)));
+}
+
+CLI::Option* addInterpolatorOption(CLI::App* app, sltk::InterpolatorKind& kind, const std::string& defaultName)
+{
+  std::string description = "spatial reconstruction at the feet of the characteristics (default " + defaultName + "):";
+  for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
+  {
+    description += std::string("\n  ") + info.Name + ": " + info.Description;
+  }
+  const auto known = [](const std::string& text)
+  {
+    sltk::InterpolatorKind parsed;
+    return sltk::parseInterpolator(text, parsed);
+  };
+  return app
+    ->add_option_function<std::string>(
+      "--interpolator", [&kind](const std::string& text) { sltk::parseInterpolator(text, kind); }, description)
+    ->check(namedCheck("interpolator", known, sltk::interpolatorNameList()))
+    ->option_text("NAME");
+}
+
+CLI::Option* addThreadsOption(CLI::App* app, int& threads)
+{
+  return addNumber(app, "--threads", threads, "threads (default 0: all)")->check(within(0))->option_text("T");
+}
+
+CLI::App* addCloudCommand(CLI::App& sltk, const std::string& name, const std::string& description, std::string& cloud)
+{
+  CLI::App* app = sltk.add_subcommand(name, description);
+  app->footer(""); // the clouds are listed here, not sltk's footer
+  app->add_option("CLOUD", cloud, "the point cloud (.ply .xyz .txt .csv .pts .obj .vtp .vtu .vtk)")
+    ->required()
+    ->type_name("");
+  return app;
+}
+
+void addPlanOptions(CLI::App* app, sltk::ReconstructionOptions& options)
+{
+  addNumber(app, "--runs", options.Runs, "runs, each halving the cell size (default 3)")->option_text("R");
+  addNumber(app, "--cdx", options.CellSizeFactor, "C_dx of (4.36): first-run cell size in units of h_P (default 1)")
+    ->option_text("C");
+  addNumber(app, "--kp", options.OutsideThresholdFactor,
+    "K_P: initial surface at K h_P from the cloud; run 1's grid holds it\n(default 2; 10 for scans with holes)")
+    ->option_text("K");
+  addChoice(
+    app, "--initial", "initial guess", { "outside", "sphere", "ellipsoid" }, // InitialGuess values 0, 1, 2
+    [&options](size_t k) { options.Guess = static_cast<sltk::InitialGuess>(k); },
+    "initial surface: outside (4.4.4: external marking) | sphere | ellipsoid\naround the cloud (default outside)")
+    ->option_text("NAME");
+  app->add_flag("--remove-outliers", options.Cleaning.RemoveOutliers,
+    "drop points whose mean distance to 8 neighbours is above mean + S sigma");
+  addNumber(app, "--outlier-sigma", options.Cleaning.Outliers.Deviations, "the S of --remove-outliers (default 3)")
+    ->option_text("S");
+  addNumber(app, "--thin", options.Cleaning.ThinningFactor,
+    "average the points in voxels of F x the density spacing (merged,\noverlapping scans: h_P (4.36) is then taken "
+    "on the thinned cloud);\n0 = off (default)")
+    ->option_text("F");
+}
+
+} // namespace sltkcli
