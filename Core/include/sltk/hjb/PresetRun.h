@@ -6,6 +6,7 @@
 /// final time and Courant number; get the grid and the value function at T
 /// (and, for Test 5, the first time each node is reached (3.40)).
 
+#include "sltk/core/Status.h"
 #include "sltk/exec/Context.h"
 #include "sltk/interp/InterpolatorKind.h"
 
