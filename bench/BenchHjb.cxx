@@ -24,6 +24,9 @@
 ///   --interp  comma list of weno,cweno,cwenoz (default all three; gains need weno)
 ///   --tables  path of thesis_tables.json (default /work/shared/reference/thesis_tables.json)
 
+#include "common/BenchCli.h"
+#include "common/ThesisTables.h"
+
 #include "sltk/hjb/HjbError.h"
 #include "sltk/hjb/HjbScheme.h"
 #include "sltk/hjb/Presets.h"
@@ -31,255 +34,81 @@
 #include "sltk/interp/Weno3.h"
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <fstream>
-#include <map>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
 namespace
 {
 
-// --- a tiny JSON reader (objects, arrays, numbers, strings, null/true/false) ---------------------
-
-struct Json
-{
-  enum Type
-  {
-    Null,
-    Number,
-    String,
-    Array,
-    Object,
-    Bool
-  } Kind = Null;
-  double Value = 0.0;
-  std::string Text;
-  std::vector<Json> Items;
-  std::map<std::string, Json> Members;
-
-  const Json* get(const std::string& key) const
-  {
-    const auto it = this->Members.find(key);
-    return it == this->Members.end() ? nullptr : &it->second;
-  }
-};
-
-class JsonParser
-{
-public:
-  explicit JsonParser(const std::string& text)
-    : Src(text)
-  {
-  }
-  bool parse(Json& out)
-  {
-    this->value(out);
-    return this->Ok;
-  }
-
-private:
-  void skip()
-  {
-    while (this->Pos < this->Src.size() && std::isspace(static_cast<unsigned char>(this->Src[this->Pos])))
-    {
-      ++this->Pos;
-    }
-  }
-  void value(Json& out)
-  {
-    this->skip();
-    if (this->Pos >= this->Src.size())
-    {
-      this->Ok = false;
-      return;
-    }
-    const char c = this->Src[this->Pos];
-    if (c == '{')
-    {
-      out.Kind = Json::Object;
-      ++this->Pos;
-      this->skip();
-      if (this->Src[this->Pos] == '}')
-      {
-        ++this->Pos;
-        return;
-      }
-      while (this->Ok)
-      {
-        this->skip();
-        std::string key = this->string();
-        this->skip();
-        if (this->Src[this->Pos++] != ':')
-        {
-          this->Ok = false;
-          return;
-        }
-        this->value(out.Members[key]);
-        this->skip();
-        const char d = this->Src[this->Pos++];
-        if (d == '}')
-        {
-          return;
-        }
-        if (d != ',')
-        {
-          this->Ok = false;
-        }
-      }
-    }
-    else if (c == '[')
-    {
-      out.Kind = Json::Array;
-      ++this->Pos;
-      this->skip();
-      if (this->Src[this->Pos] == ']')
-      {
-        ++this->Pos;
-        return;
-      }
-      while (this->Ok)
-      {
-        out.Items.emplace_back();
-        this->value(out.Items.back());
-        this->skip();
-        const char d = this->Src[this->Pos++];
-        if (d == ']')
-        {
-          return;
-        }
-        if (d != ',')
-        {
-          this->Ok = false;
-        }
-      }
-    }
-    else if (c == '"')
-    {
-      out.Kind = Json::String;
-      out.Text = this->string();
-    }
-    else if (this->Src.compare(this->Pos, 4, "null") == 0)
-    {
-      this->Pos += 4;
-    }
-    else if (this->Src.compare(this->Pos, 4, "true") == 0 || this->Src.compare(this->Pos, 5, "false") == 0)
-    {
-      out.Kind = Json::Bool;
-      out.Value = c == 't' ? 1.0 : 0.0;
-      this->Pos += c == 't' ? 4 : 5;
-    }
-    else
-    {
-      char* end = nullptr;
-      out.Kind = Json::Number;
-      out.Value = std::strtod(this->Src.c_str() + this->Pos, &end);
-      const size_t used = static_cast<size_t>(end - (this->Src.c_str() + this->Pos));
-      this->Ok = this->Ok && used > 0;
-      this->Pos += used;
-    }
-  }
-  std::string string()
-  {
-    std::string s;
-    if (this->Src[this->Pos] != '"')
-    {
-      this->Ok = false;
-      return s;
-    }
-    ++this->Pos;
-    while (this->Pos < this->Src.size() && this->Src[this->Pos] != '"')
-    {
-      if (this->Src[this->Pos] == '\\')
-      {
-        ++this->Pos;
-      }
-      s += this->Src[this->Pos++];
-    }
-    ++this->Pos;
-    return s;
-  }
-
-  const std::string& Src;
-  size_t Pos = 0;
-  bool Ok = true;
-};
-
-/// The entry at `path` ("table/WENO/l1"), or nullptr.
-const Json* lookup(const Json& root, const std::string& path)
-{
-  const Json* node = &root;
-  std::stringstream ss(path);
-  std::string part;
-  while (node && std::getline(ss, part, '/'))
-  {
-    node = node->get(part);
-  }
-  return node;
-}
+using sltkbench::ThesisTables;
+using Json = nlohmann::json;
 
 /// Thesis value at position of `n` in table/N (or table/grid), NaN when absent.
-double thesisValue(const Json& root, const std::string& table, const std::string& field, long long n)
+double thesisValue(const ThesisTables& root, const std::string& table, const std::string& field, long long n)
 {
-  const Json* ns = lookup(root, table + "/N");
-  const Json* values = lookup(root, table + "/" + field);
-  if (!ns || !values || values->Kind != Json::Array)
+  const Json* ns = root.find(table + "/N");
+  const Json* values = root.find(table + "/" + field);
+  if (!ns || !values || !ns->is_array() || !values->is_array())
   {
     return std::nan("");
   }
-  for (size_t k = 0; k < ns->Items.size() && k < values->Items.size(); ++k)
+  for (size_t k = 0; k < ns->size() && k < values->size(); ++k)
   {
-    if (ns->Items[k].Kind == Json::Number && static_cast<long long>(ns->Items[k].Value) == n)
+    if ((*ns)[k].is_number() && static_cast<long long>((*ns)[k].get<double>()) == n)
     {
-      return values->Items[k].Kind == Json::Number ? values->Items[k].Value : std::nan("");
+      return (*values)[k].is_number() ? (*values)[k].get<double>() : std::nan("");
     }
   }
   return std::nan("");
+}
+
+/// The leading integer of a grid entry ("126x101": 126), 0 for anything else.
+long long leadingNumber(const Json& entry)
+{
+  return entry.is_string() ? std::atoll(entry.get<std::string>().c_str()) : 0;
 }
 
 /// Test 5's table lists grids "126x101": match on the first number.
-double thesisGridValue(const Json& root, const std::string& table, const std::string& field, long long nx)
+double thesisGridValue(const ThesisTables& root, const std::string& table, const std::string& field, long long nx)
 {
-  const Json* grids = lookup(root, table + "/grid");
-  const Json* values = lookup(root, table + "/" + field);
-  if (!grids || !values)
+  const Json* grids = root.find(table + "/grid");
+  const Json* values = root.find(table + "/" + field);
+  if (!grids || !values || !grids->is_array() || !values->is_array())
   {
     return std::nan("");
   }
-  for (size_t k = 0; k < grids->Items.size() && k < values->Items.size(); ++k)
+  for (size_t k = 0; k < grids->size() && k < values->size(); ++k)
   {
-    if (std::atoll(grids->Items[k].Text.c_str()) == nx && values->Items[k].Kind == Json::Number)
+    if (leadingNumber((*grids)[k]) == nx && (*values)[k].is_number())
     {
-      return values->Items[k].Value;
+      return (*values)[k].get<double>();
     }
   }
   return std::nan("");
 }
 
-std::vector<long long> tableNs(const Json& root, const std::vector<std::string>& tables)
+std::vector<long long> tableNs(const ThesisTables& root, const std::vector<std::string>& tables)
 {
   std::vector<long long> ns;
   for (const auto& t : tables)
   {
-    const Json* list = lookup(root, t + "/N");
+    const Json* list = root.find(t + "/N");
     if (!list)
     {
-      list = lookup(root, t + "/grid");
+      list = root.find(t + "/grid");
     }
-    if (!list)
+    if (!list || !list->is_array())
     {
       continue;
     }
-    for (const Json& v : list->Items)
+    for (const Json& v : *list)
     {
-      ns.push_back(v.Kind == Json::Number ? static_cast<long long>(v.Value) : std::atoll(v.Text.c_str()));
+      ns.push_back(v.is_number() ? static_cast<long long>(v.get<double>()) : leadingNumber(v));
     }
   }
   std::sort(ns.begin(), ns.end());
@@ -436,7 +265,7 @@ void printHeader(const TestSpec& spec, bool errors)
 }
 
 template <int D, class Problem, class SetupFn>
-void runTable(const Json& tables, const TestSpec& spec, const Config& cfg, const sltk::Context& ctx,
+void runTable(const ThesisTables& tables, const TestSpec& spec, const Config& cfg, const sltk::Context& ctx,
   const Problem& problem, SetupFn&& makeSetup, double nMinusOneFactor, bool minMaxTable = false)
 {
   std::vector<std::string> names;
@@ -541,66 +370,35 @@ void runTable(const Json& tables, const TestSpec& spec, const Config& cfg, const
 int main(int argc, char** argv)
 {
   Config cfg;
-  for (int a = 1; a + 1 < argc; a += 2)
+  std::string interps;
+  CLI::App app("SLTK HJB benchmark (thesis 3.5); see the header of bench/BenchHjb.cxx", "sltkBenchHjb");
+  sltkbench::takeLastByDefault(app);
+  app.add_option("--test", cfg.Test, "1, 2, 3, 3h (Test 3 with T = 0.5), 4, 5 or all")->capture_default_str();
+  app.add_option("--min-n", cfg.MinN, "smallest N of the tables to run");
+  app.add_option("--max-n", cfg.MaxN, "largest N of the tables to run (0: per-test default)");
+  app.add_option("--repeat", cfg.Repeat, "timing repetitions, median reported")->capture_default_str();
+  app.add_option("--threads", cfg.Threads, "executor size")->capture_default_str();
+  app.add_option("--cache", cfg.Cache, "cells per thread chunk (0: automatic)")->capture_default_str();
+  app.add_option("--warm", cfg.Warm, "warm tabulation points (-1: the preset's; 0: off)")->capture_default_str();
+  app.add_option("--interp", interps, "comma list of weno,cweno,cwenoz (default all three)");
+  app.add_option("--tables", cfg.Tables, "thesis_tables.json")->capture_default_str();
+  if (const auto exit = sltkbench::parseCommandLine(app, argc, argv))
   {
-    const std::string key = argv[a];
-    const char* value = argv[a + 1];
-    if (key == "--test")
-    {
-      cfg.Test = value;
-    }
-    else if (key == "--min-n")
-    {
-      cfg.MinN = std::atoll(value);
-    }
-    else if (key == "--max-n")
-    {
-      cfg.MaxN = std::atoll(value);
-    }
-    else if (key == "--repeat")
-    {
-      cfg.Repeat = std::max(1, std::atoi(value));
-    }
-    else if (key == "--threads")
-    {
-      cfg.Threads = std::atoi(value);
-    }
-    else if (key == "--cache")
-    {
-      cfg.Cache = std::atoi(value);
-    }
-    else if (key == "--warm")
-    {
-      cfg.Warm = std::atoi(value);
-    }
-    else if (key == "--interp")
-    {
-      const std::string list = std::string(",") + value + ",";
-      cfg.Interps = { list.find(",weno,") != std::string::npos, list.find(",cweno,") != std::string::npos,
-        list.find(",cwenoz,") != std::string::npos };
-    }
-    else if (key == "--tables")
-    {
-      cfg.Tables = value;
-    }
-    else
-    {
-      std::fprintf(stderr, "unknown option %s (see the header of bench/BenchHjb.cxx)\n", key.c_str());
-      return 2;
-    }
+    return *exit;
   }
-  Json tables;
+  cfg.Repeat = std::max(1, cfg.Repeat);
+  if (app.count("--interp") > 0)
   {
-    std::ifstream in(cfg.Tables);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    const std::string text = ss.str();
-    if (text.empty() || !JsonParser(text).parse(tables))
-    {
-      std::fprintf(
-        stderr, "cannot read %s: thesis columns and the tables' N lists are unavailable\n", cfg.Tables.c_str());
-      return 1;
-    }
+    const std::string list = "," + interps + ",";
+    cfg.Interps = { list.find(",weno,") != std::string::npos, list.find(",cweno,") != std::string::npos,
+      list.find(",cwenoz,") != std::string::npos };
+  }
+  const ThesisTables tables(cfg.Tables);
+  if (!tables.loaded())
+  {
+    std::fprintf(
+      stderr, "cannot read %s: thesis columns and the tables' N lists are unavailable\n", cfg.Tables.c_str());
+    return 1;
   }
   sltk::ThreadPool pool(cfg.Threads);
   sltk::Context ctx;

@@ -19,6 +19,8 @@
 ///   --evals  evaluations per measurement in 2D (3D uses a quarter; default 262144)
 ///   --reps   repetitions per measurement, median reported (default 7)
 
+#include "common/BenchCli.h"
+
 #include "sltk/interp/Cweno.h"
 #include "sltk/interp/Q1.h"
 #include "sltk/interp/Weno3.h"
@@ -28,7 +30,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <random>
 #include <vector>
 
@@ -137,8 +138,8 @@ void runDimension(sltk::Index n, long totalEvals, int reps)
   const auto u = makeField<D>(n);
   const long maxCells = totalEvals / EvalsPerCell[0];
   const auto w = makeWorkload<D>(u.spec(), maxCells);
-  std::printf("\n%dD, %lld^%d nodes, %ld evaluations per measurement, median of %d\n", D,
-    static_cast<long long>(n), D, totalEvals, reps);
+  std::printf("\n%dD, %lld^%d nodes, %ld evaluations per measurement, median of %d\n", D, static_cast<long long>(n), D,
+    totalEvals, reps);
   std::printf("%-8s %6s %14s %12s %16s\n", "kernel", "E/cell", "Mevals/s", "ns/eval", "time/WENO3 time");
   sltk::Q1Interpolator<D> q1(u);
   sltk::Weno3Interpolator<D> weno(u);
@@ -175,22 +176,17 @@ int main(int argc, char** argv)
 {
   long totalEvals = 1L << 18;
   int reps = 7;
-  for (int i = 1; i + 1 < argc; i += 2)
+  CLI::App app("Reconstruction cost per kernel; see the header of bench/BenchInterp.cxx", "sltkBenchInterp");
+  sltkbench::takeLastByDefault(app);
+  app.add_option("--evals", totalEvals, "evaluations per measurement in 2D (3D: a quarter; at least 64)")
+    ->capture_default_str();
+  app.add_option("--reps", reps, "repetitions per measurement, median reported")->capture_default_str();
+  if (const auto exit = sltkbench::parseCommandLine(app, argc, argv))
   {
-    if (std::strcmp(argv[i], "--evals") == 0)
-    {
-      totalEvals = std::max(64L, std::atol(argv[i + 1]));
-    }
-    else if (std::strcmp(argv[i], "--reps") == 0)
-    {
-      reps = std::max(1, std::atoi(argv[i + 1]));
-    }
-    else
-    {
-      std::fprintf(stderr, "usage: %s [--evals N] [--reps R]\n", argv[0]);
-      return 2;
-    }
+    return *exit;
   }
+  totalEvals = std::max(64L, totalEvals);
+  reps = std::max(1, reps);
   std::printf("Reconstruction cost: prepare() once per cell, then E evaluations (one thread).\n"
               "time/WENO3 time < 1: cheaper than WENO3 for the same evaluations.\n");
   runDimension<2>(513, totalEvals, reps);

@@ -11,6 +11,8 @@
 ///   --max-n   largest grid of the table to run (default 641; 1281 takes minutes)
 ///   --threads executor size (default 1: the CPU time of one core)
 
+#include "common/BenchCli.h"
+
 #include "sltk/hjb/InitialData.h"
 #include "sltk/interp/Cweno.h"
 #include "sltk/interp/Q1.h"
@@ -21,7 +23,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <vector>
 
 namespace
@@ -102,18 +103,16 @@ double order(const std::vector<Result>& r, size_t l)
 
 int main(int argc, char** argv)
 {
-  sltk::Index maxN = 641;
+  long long maxN = 641;
   int threads = 1;
-  for (int a = 1; a + 1 < argc; a += 2)
+  CLI::App app(
+    "Thesis Test 1 (3.5.1) with the linear SL step; see the header of bench/BenchRotation.cxx", "sltkBenchRotation");
+  sltkbench::takeLastByDefault(app);
+  app.add_option("--max-n", maxN, "largest grid of the table to run (1281 takes minutes)")->capture_default_str();
+  app.add_option("--threads", threads, "executor size")->capture_default_str();
+  if (const auto exit = sltkbench::parseCommandLine(app, argc, argv))
   {
-    if (std::strcmp(argv[a], "--max-n") == 0)
-    {
-      maxN = std::atoll(argv[a + 1]);
-    }
-    else if (std::strcmp(argv[a], "--threads") == 0)
-    {
-      threads = std::atoi(argv[a + 1]);
-    }
+    return *exit;
   }
   sltk::ThreadPool pool(threads);
   sltk::Context ctx;
@@ -153,8 +152,9 @@ int main(int argc, char** argv)
     }
     for (int m = 0; m < 3; ++m)
     {
-      const double thesisOrder = l == 0 ? 0.0 :
-        std::log(ThesisErr[m][l - 1] / ThesisErr[m][l]) / std::log(double(ThesisN[l] - 1) / double(ThesisN[l - 1] - 1));
+      const double thesisOrder = l == 0 ? 0.0
+                                        : std::log(ThesisErr[m][l - 1] / ThesisErr[m][l]) /
+          std::log(double(ThesisN[l] - 1) / double(ThesisN[l - 1] - 1));
       std::snprintf(thesis[m], sizeof(thesis[m]), l ? "%5.2f" : "    -", thesisOrder);
       std::printf(" | %-8s %9.2e %s %9.2e %s", "", res[m][l].Error, ours[m], ThesisErr[m][l], thesis[m]);
     }
@@ -163,8 +163,8 @@ int main(int argc, char** argv)
 
   std::printf("\nTable 3.2, Test 1 run times in seconds (%d thread%s here; thesis: Galileo100) and %% gain over WENO\n",
     threads, threads == 1 ? "" : "s");
-  std::printf("%6s | %9s %9s %6s %9s %6s | %9s %9s %6s %9s %6s | %9s\n", "N", "WENO", "CWENO", "gain", "CWENOZ",
-    "gain", "thesis W", "thesis C", "gain", "thesis CZ", "gain", "Q1");
+  std::printf("%6s | %9s %9s %6s %9s %6s | %9s %9s %6s %9s %6s | %9s\n", "N", "WENO", "CWENO", "gain", "CWENOZ", "gain",
+    "thesis W", "thesis C", "gain", "thesis CZ", "gain", "Q1");
   for (size_t l = 0; l < levels; ++l)
   {
     const double w = res[0][l].Seconds, c = res[1][l].Seconds, z = res[2][l].Seconds;

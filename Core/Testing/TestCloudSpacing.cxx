@@ -1,30 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/cloud/CloudSpacing.h"
 
+#include "sltk/cloud/SyntheticClouds.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-namespace
-{
-/// n points evenly spaced on a circle of radius 1: nearest-neighbour distance 2 sin(pi/n).
-sltk::PointCloud<2> circle(int n)
-{
-  sltk::PointCloud<2> c;
-  for (int k = 0; k < n; ++k)
-  {
-    const double t = 2.0 * M_PI * k / n;
-    c.Points.push_back({ std::cos(t), std::sin(t) });
-  }
-  return c;
-}
-} // namespace
 
 TEST(CloudSpacing, EvenCircleGivesTheChordLength)
 {
   sltk::Context ctx;
   double h = 0.0;
-  ASSERT_TRUE(sltk::cloudSpacing(circle(64), ctx, h).isOk());
+  ASSERT_TRUE(sltk::cloudSpacing(sltk::circleCloud(64), ctx, h).isOk());
   EXPECT_NEAR(h, 2.0 * std::sin(M_PI / 64), 1e-12); // 0.0981, the thesis circle's h_P (4.5.3)
 }
 

@@ -4,6 +4,8 @@
 
 #include "sltk/cloud/SyntheticClouds.h"
 
+#include "TestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,12 +17,6 @@ namespace
 using sltk::circleCloud;
 using sltk::sphereCloud;
 constexpr double Pi = 3.14159265358979323846;
-
-template <int D>
-sltk::GridSpec<D> cube(double half, sltk::Index n)
-{
-  return sltk::uniformBox<D>(n, -half, half);
-}
 
 template <int D>
 double bruteDistance(const sltk::PointCloud<D>& c, const double* x)
@@ -38,18 +34,6 @@ double bruteDistance(const sltk::PointCloud<D>& c, const double* x)
   return best;
 }
 
-template <int D>
-std::array<double, D> nodeCoordinates(const sltk::GridField<D, double>& f, sltk::Index k)
-{
-  const auto i = f.nodeIndex(k);
-  std::array<double, D> x;
-  for (int a = 0; a < D; ++a)
-  {
-    x[a] = f.spec().coordinate(a, i[a]);
-  }
-  return x;
-}
-
 /// Max |d - exact| over all nodes, and the same on the 2^D corners of each point's cell.
 template <int D>
 void errors(const sltk::PointCloud<D>& cloud, const sltk::GridField<D, double>& d, double& swept, double& nearPoints)
@@ -57,7 +41,8 @@ void errors(const sltk::PointCloud<D>& cloud, const sltk::GridField<D, double>& 
   swept = 0.0;
   for (sltk::Index k = 0; k < d.spec().nodeCount(); ++k)
   {
-    swept = std::max(swept, std::fabs(d(d.nodeIndex(k)) - bruteDistance(cloud, nodeCoordinates(d, k).data())));
+    swept =
+      std::max(swept, std::fabs(d(d.nodeIndex(k)) - bruteDistance(cloud, sltktest::nodeCoordinates(d, k).data())));
   }
   nearPoints = 0.0;
   for (const auto& q : cloud.Points)
@@ -103,7 +88,7 @@ TEST(DistanceFunction, CircleCloudExactNearPointsAndSweptErrorSmall)
   const auto cloud = circleCloud(64, 1.0); // the thesis's circle (4.5.3)
   for (sltk::Index n : { 65, 129 })
   {
-    const auto g = cube<2>(1.6, n);
+    const auto g = sltk::uniformBox<2>(n, -1.6, 1.6);
     sltk::GridField<2, double> d;
     sltk::DistanceReport report;
     ASSERT_TRUE(sltk::distanceToCloud(cloud, g, sltk::Context{}, d, {}, &report).isOk());
@@ -120,13 +105,13 @@ TEST(DistanceFunction, CircleCloudExactNearPointsAndSweptErrorSmall)
     double undercut = 0.0;
     for (sltk::Index k = 0; k < g.nodeCount(); ++k)
     {
-      undercut = std::max(undercut, bruteDistance(cloud, nodeCoordinates(d, k).data()) - d(d.nodeIndex(k)));
+      undercut = std::max(undercut, bruteDistance(cloud, sltktest::nodeCoordinates(d, k).data()) - d(d.nodeIndex(k)));
     }
     // Outside the circle (farther from the central medial point) the sweep is closer.
     double outside = 0.0;
     for (sltk::Index k = 0; k < g.nodeCount(); ++k)
     {
-      const auto x = nodeCoordinates(d, k);
+      const auto x = sltktest::nodeCoordinates(d, k);
       if (std::hypot(x[0], x[1]) > 1.0)
       {
         outside = std::max(outside, std::fabs(bruteDistance(cloud, x.data()) - d(d.nodeIndex(k))));
@@ -141,7 +126,7 @@ TEST(DistanceFunction, CircleCloudExactNearPointsAndSweptErrorSmall)
 TEST(DistanceFunction, SphereCloudSweptErrorSmall)
 {
   const auto cloud = sphereCloud(800, 1.0);
-  const auto g = cube<3>(1.5, 41);
+  const auto g = sltk::uniformBox<3>(41, -1.5, 1.5);
   sltk::GridField<3, double> d;
   ASSERT_TRUE(sltk::distanceToCloud(cloud, g, sltk::Context{}, d).isOk());
   double swept = 0.0;
@@ -155,7 +140,7 @@ TEST(DistanceFunction, SphereCloudSweptErrorSmall)
 TEST(DistanceFunction, MonotoneAndLipschitz)
 {
   const auto cloud = circleCloud(64, 1.0);
-  const auto g = cube<2>(1.6, 81);
+  const auto g = sltk::uniformBox<2>(81, -1.6, 1.6);
   sltk::GridField<2, double> d;
   ASSERT_TRUE(sltk::distanceToCloud(cloud, g, sltk::Context{}, d).isOk());
   const double dx = g.Spacing[0];
@@ -187,7 +172,7 @@ TEST(DistanceFunction, MonotoneAndLipschitz)
 TEST(DistanceFunction, IdenticalWithThreadsAndGhostsFilled)
 {
   const auto cloud = sphereCloud(500, 0.8);
-  const auto g = cube<3>(1.2, 33);
+  const auto g = sltk::uniformBox<3>(33, -1.2, 1.2);
   sltk::GridField<3, double> serial;
   sltk::GridField<3, double> threaded;
   ASSERT_TRUE(sltk::distanceToCloud(cloud, g, sltk::Context{}, serial).isOk());
@@ -205,7 +190,7 @@ TEST(DistanceFunction, PointsOutsideTheGridAndBadInput)
 {
   sltk::PointCloud<2> cloud;
   cloud.Points.push_back({ 3.0, 0.0 }); // outside [-1, 1]^2
-  const auto g = cube<2>(1.0, 21);
+  const auto g = sltk::uniformBox<2>(21, -1.0, 1.0);
   sltk::GridField<2, double> d;
   ASSERT_TRUE(sltk::distanceToCloud(cloud, g, sltk::Context{}, d).isOk());
   // The clipped box gives exact values on the right boundary column.

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/recon/EnergyFunctional.h"
 
+#include "TestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,30 +11,6 @@
 namespace
 {
 constexpr double Pi = 3.14159265358979323846;
-
-template <int D>
-sltk::GridSpec<D> cube(double half, sltk::Index n)
-{
-  return sltk::uniformBox<D>(n, -half, half);
-}
-
-/// f(x) on every node.
-template <int D, class F>
-sltk::GridField<D, double> sample(const sltk::GridSpec<D>& g, F f)
-{
-  sltk::GridField<D, double> u(g, 1);
-  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
-  {
-    const auto i = u.nodeIndex(k);
-    std::array<double, D> x;
-    for (int a = 0; a < D; ++a)
-    {
-      x[a] = g.coordinate(a, i[a]);
-    }
-    u(i) = f(x);
-  }
-  return u;
-}
 
 // A centre off the grid's symmetry axes.
 const double C[3] = { 0.0131, -0.0207, 0.0173 };
@@ -55,9 +33,9 @@ TEST(EnergyFunctional, CircleLengthConvergesAtSecondOrder)
   double previous = 0.0;
   for (sltk::Index n : { 21, 41, 81, 161 })
   {
-    const auto g = cube<2>(1.0, n);
-    const auto phi = sample<2>(g, [&](const std::array<double, 2>& x) { return radius<2>(x) - r; });
-    const auto one = sample<2>(g, [](const std::array<double, 2>&) { return 1.0; });
+    const auto g = sltk::uniformBox<2>(n, -1.0, 1.0);
+    const auto phi = sltktest::sampleNodes<2>(g, 1, [&](const std::array<double, 2>& x) { return radius<2>(x) - r; });
+    const auto one = sltktest::sampleNodes<2>(g, 1, [](const std::array<double, 2>&) { return 1.0; });
     sltk::EnergyResult e;
     sltk::EnergyOptions options;
     options.P = 1.0;
@@ -81,10 +59,10 @@ TEST(EnergyFunctional, CircleWithDistanceWeightAndPEqualTwo)
 {
   // d = |x - C| equals r on the circle: E_p = (2 pi r r^p)^(1/p).
   const double r = 0.6;
-  const auto g = cube<2>(1.0, 161);
-  const auto phi = sample<2>(g, [&](const std::array<double, 2>& x) { return radius<2>(x) - r; });
-  const auto d = sample<2>(g, [&](const std::array<double, 2>& x) { return radius<2>(x); });
-  const auto one = sample<2>(g, [](const std::array<double, 2>&) { return 1.0; });
+  const auto g = sltk::uniformBox<2>(161, -1.0, 1.0);
+  const auto phi = sltktest::sampleNodes<2>(g, 1, [&](const std::array<double, 2>& x) { return radius<2>(x) - r; });
+  const auto d = sltktest::sampleNodes<2>(g, 1, [&](const std::array<double, 2>& x) { return radius<2>(x); });
+  const auto one = sltktest::sampleNodes<2>(g, 1, [](const std::array<double, 2>&) { return 1.0; });
   sltk::EnergyResult e;
   ASSERT_TRUE(sltk::energyFunctional(phi, one, sltk::Context{}, e).isOk()); // p = 2 by default
   EXPECT_NEAR(e.Energy, std::sqrt(2.0 * Pi * r), 1e-4);
@@ -106,8 +84,8 @@ TEST(EnergyFunctional, SaddleCellsGiveTwoSegments)
   g.Dims = { 2, 2 };
   g.Origin = { -1.0, -1.0 };
   g.Spacing = { 2.0, 2.0 };
-  const auto phi = sample<2>(g, [](const std::array<double, 2>& x) { return x[0] * x[1] + 0.1; });
-  const auto one = sample<2>(g, [](const std::array<double, 2>&) { return 1.0; });
+  const auto phi = sltktest::sampleNodes<2>(g, 1, [](const std::array<double, 2>& x) { return x[0] * x[1] + 0.1; });
+  const auto one = sltktest::sampleNodes<2>(g, 1, [](const std::array<double, 2>&) { return 1.0; });
   sltk::EnergyResult e;
   sltk::EnergyOptions options;
   options.P = 1.0;
@@ -124,10 +102,10 @@ TEST(EnergyFunctional, SaddleCellsGiveTwoSegments)
 TEST(EnergyFunctional, SphereAreaWithinAFewPercent)
 {
   const double r = 0.6;
-  const auto g = cube<3>(1.0, 41);
-  const auto phi = sample<3>(g, [&](const std::array<double, 3>& x) { return radius<3>(x) - r; });
-  const auto one = sample<3>(g, [](const std::array<double, 3>&) { return 1.0; });
-  const auto d = sample<3>(g, [&](const std::array<double, 3>& x) { return radius<3>(x); });
+  const auto g = sltk::uniformBox<3>(41, -1.0, 1.0);
+  const auto phi = sltktest::sampleNodes<3>(g, 1, [&](const std::array<double, 3>& x) { return radius<3>(x) - r; });
+  const auto one = sltktest::sampleNodes<3>(g, 1, [](const std::array<double, 3>&) { return 1.0; });
+  const auto d = sltktest::sampleNodes<3>(g, 1, [&](const std::array<double, 3>& x) { return radius<3>(x); });
   const double area = 4.0 * Pi * r * r;
   sltk::EnergyResult e;
   sltk::EnergyOptions options;
@@ -154,9 +132,9 @@ TEST(EnergyFunctional, SphereAreaConvergesWithTheGrid)
   int k = 0;
   for (sltk::Index n : { 21, 41 })
   {
-    const auto g = cube<3>(1.0, n);
-    const auto phi = sample<3>(g, [&](const std::array<double, 3>& x) { return radius<3>(x) - r; });
-    const auto one = sample<3>(g, [](const std::array<double, 3>&) { return 1.0; });
+    const auto g = sltk::uniformBox<3>(n, -1.0, 1.0);
+    const auto phi = sltktest::sampleNodes<3>(g, 1, [&](const std::array<double, 3>& x) { return radius<3>(x) - r; });
+    const auto one = sltktest::sampleNodes<3>(g, 1, [](const std::array<double, 3>&) { return 1.0; });
     sltk::EnergyResult e;
     sltk::EnergyOptions options;
     options.P = 1.0;
@@ -170,10 +148,10 @@ TEST(EnergyFunctional, SphereAreaConvergesWithTheGrid)
 TEST(EnergyFunctional, BandRestrictionAndThreadsAgree)
 {
   const double r = 0.55;
-  const auto g = cube<3>(1.0, 33);
+  const auto g = sltk::uniformBox<3>(33, -1.0, 1.0);
   const double dx = g.Spacing[0];
-  const auto phi = sample<3>(g, [&](const std::array<double, 3>& x) { return radius<3>(x) - r; });
-  const auto d = sample<3>(g, [&](const std::array<double, 3>& x) { return 0.2 + x[0] * x[0]; });
+  const auto phi = sltktest::sampleNodes<3>(g, 1, [&](const std::array<double, 3>& x) { return radius<3>(x) - r; });
+  const auto d = sltktest::sampleNodes<3>(g, 1, [&](const std::array<double, 3>& x) { return 0.2 + x[0] * x[0]; });
   sltk::EnergyResult full;
   ASSERT_TRUE(sltk::energyFunctional(phi, d, sltk::Context{}, full).isOk());
   sltk::NodeList band;
@@ -192,7 +170,8 @@ TEST(EnergyFunctional, BandRestrictionAndThreadsAgree)
   sltk::EnergyOptions bad;
   bad.P = 0.5;
   EXPECT_EQ(sltk::energyFunctional(phi, d, ctx, threaded, bad).code(), sltk::StatusCode::InvalidArgument);
-  const auto other = sample<3>(cube<3>(1.0, 21), [](const std::array<double, 3>&) { return 1.0; });
+  const auto other =
+    sltktest::sampleNodes<3>(sltk::uniformBox<3>(21, -1.0, 1.0), 1, [](const std::array<double, 3>&) { return 1.0; });
   EXPECT_EQ(sltk::energyFunctional(phi, other, ctx, threaded).code(), sltk::StatusCode::InvalidArgument);
 }
 
@@ -200,7 +179,8 @@ TEST(EnergyFunctional, SecondExponentInTheSamePassEqualsASeparatePass)
 {
   // Algorithm 1 needs E_p for the scale factor (4.32) and E_2 for the stopping rule (4.33):
   // one traversal gives both, bit for bit the values of two separate passes (2D and 3D).
-  auto check = [](const auto& phi, const auto& d) {
+  auto check = [](const auto& phi, const auto& d)
+  {
     sltk::EnergyOptions both;
     both.P = 1.0;
     both.SecondP = 2.0;
@@ -215,16 +195,17 @@ TEST(EnergyFunctional, SecondExponentInTheSamePassEqualsASeparatePass)
     EXPECT_EQ(merged.SecondEnergy, second.Energy);
     EXPECT_GT(merged.SecondEnergy, 0.0);
   };
-  const auto g2 = cube<2>(1.0, 81);
-  check(sample<2>(g2, [](const std::array<double, 2>& x) { return radius<2>(x) - 0.6; }),
-    sample<2>(g2, [](const std::array<double, 2>& x) { return 0.1 + x[0] * x[0]; }));
-  const auto g3 = cube<3>(1.0, 31);
-  check(sample<3>(g3, [](const std::array<double, 3>& x) { return radius<3>(x) - 0.6; }),
-    sample<3>(g3, [](const std::array<double, 3>& x) { return 0.1 + x[1] * x[1]; }));
+  const auto g2 = sltk::uniformBox<2>(81, -1.0, 1.0);
+  check(sltktest::sampleNodes<2>(g2, 1, [](const std::array<double, 2>& x) { return radius<2>(x) - 0.6; }),
+    sltktest::sampleNodes<2>(g2, 1, [](const std::array<double, 2>& x) { return 0.1 + x[0] * x[0]; }));
+  const auto g3 = sltk::uniformBox<3>(31, -1.0, 1.0);
+  check(sltktest::sampleNodes<3>(g3, 1, [](const std::array<double, 3>& x) { return radius<3>(x) - 0.6; }),
+    sltktest::sampleNodes<3>(g3, 1, [](const std::array<double, 3>& x) { return 0.1 + x[1] * x[1]; }));
   sltk::EnergyOptions bad;
   bad.SecondP = 0.5;
   sltk::EnergyResult r;
-  EXPECT_FALSE(sltk::energyFunctional(sample<2>(g2, [](const std::array<double, 2>& x) { return x[0]; }),
-    sample<2>(g2, [](const std::array<double, 2>&) { return 1.0; }), sltk::Context{}, r, bad)
-                 .isOk());
+  EXPECT_FALSE(
+    sltk::energyFunctional(sltktest::sampleNodes<2>(g2, 1, [](const std::array<double, 2>& x) { return x[0]; }),
+      sltktest::sampleNodes<2>(g2, 1, [](const std::array<double, 2>&) { return 1.0; }), sltk::Context{}, r, bad)
+      .isOk());
 }

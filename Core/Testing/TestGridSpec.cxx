@@ -5,14 +5,10 @@
 
 namespace
 {
+/// [-2, 2]^2 with n nodes per axis.
 sltk::GridSpec<2> square(sltk::Index n, sltk::Boundary b = sltk::Boundary::Extrapolate)
 {
-  sltk::GridSpec<2> g;
-  g.Dims = { n, n };
-  g.Origin = { -2.0, -2.0 };
-  g.Spacing = { 4.0 / double(n - 1), 4.0 / double(n - 1) };
-  g.Bounds = { b, b };
-  return g;
+  return sltk::uniformBox<2>(n, -2.0, 2.0, b);
 }
 } // namespace
 

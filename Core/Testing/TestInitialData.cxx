@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/cloud/CloudSpacing.h"
 #include "sltk/interp/Q1.h"
 #include "sltk/recon/CloudInitialData.h"
-#include "sltk/cloud/CloudSpacing.h"
 #include "sltk/recon/DistanceFunction.h"
 
 #include "sltk/cloud/SyntheticClouds.h"
@@ -18,12 +18,6 @@ namespace
 using sltk::circleCloud;
 using sltk::sphereCloud;
 constexpr double Pi = 3.14159265358979323846;
-
-template <int D>
-sltk::GridSpec<D> cube(double half, sltk::Index n)
-{
-  return sltk::uniformBox<D>(n, -half, half);
-}
 
 /// Points every `step` along the segment from a to b.
 void segment(sltk::PointCloud<2>& c, double ax, double ay, double bx, double by, double step)
@@ -82,9 +76,9 @@ TEST(InitialData, CircleCloudEnclosedAtGammaP)
   const auto cloud = circleCloud(64, 1.0);
   double hP = 0.0;
   ASSERT_TRUE(sltk::cloudSpacing(cloud, sltk::Context{}, hP).isOk());
-  EXPECT_NEAR(hP, 0.0981, 1e-4); // 4.5.3
+  EXPECT_NEAR(hP, 0.0981, 1e-4);  // 4.5.3
   const double gammaP = 2.0 * hP; // K_P = 2 (4.5.2)
-  const auto g = cube<2>(1.6, 81);
+  const auto g = sltk::uniformBox<2>(81, -1.6, 1.6);
   const double dx = g.Spacing[0];
   sltk::GridField<2, double> d;
   ASSERT_TRUE(sltk::distanceToCloud(cloud, g, sltk::Context{}, d).isOk());
@@ -158,7 +152,7 @@ TEST(InitialData, MarkingFindsAxisAlignedPathsThroughABaffledBox)
   segment(cloud, -0.6, -0.6, 0.6, -0.6, h);
   segment(cloud, 0.6, -0.2, 0.6, 0.6, h);
   segment(cloud, -0.2, -0.1, 0.6, -0.1, h);
-  const auto g = cube<2>(1.0, 101);
+  const auto g = sltk::uniformBox<2>(101, -1.0, 1.0);
   sltk::GridField<2, double> d;
   ASSERT_TRUE(sltk::distanceToCloud(cloud, g, sltk::Context{}, d).isOk());
   const double gamma = 0.05;
@@ -198,7 +192,7 @@ TEST(InitialData, RandomCloudsMarkingEqualsFloodFill)
     {
       cloud.Points.push_back({ u(rng), u(rng) });
     }
-    const auto g = cube<2>(1.0, 61);
+    const auto g = sltk::uniformBox<2>(61, -1.0, 1.0);
     sltk::GridField<2, double> d;
     ASSERT_TRUE(sltk::distanceToCloud(cloud, g, sltk::Context{}, d).isOk());
     std::vector<std::uint8_t> ext;
@@ -213,7 +207,7 @@ TEST(InitialData, SphereCloud3D)
   double hP = 0.0;
   ASSERT_TRUE(sltk::cloudSpacing(cloud, sltk::Context{}, hP).isOk());
   const double gammaP = 2.0 * hP;
-  const auto g = cube<3>(1.6, 49);
+  const auto g = sltk::uniformBox<3>(49, -1.6, 1.6);
   const double dx = g.Spacing[0];
   sltk::GridField<3, double> d;
   ASSERT_TRUE(sltk::distanceToCloud(cloud, g, sltk::Context{}, d).isOk());
@@ -225,8 +219,8 @@ TEST(InitialData, SphereCloud3D)
   for (sltk::Index k = 0; k < g.nodeCount(); ++k)
   {
     const auto i = phi0.nodeIndex(k);
-    const double r = std::sqrt(std::pow(g.coordinate(0, i[0]), 2) + std::pow(g.coordinate(1, i[1]), 2) +
-      std::pow(g.coordinate(2, i[2]), 2));
+    const double r = std::sqrt(
+      std::pow(g.coordinate(0, i[0]), 2) + std::pow(g.coordinate(1, i[1]), 2) + std::pow(g.coordinate(2, i[2]), 2));
     if (r < 1.0 + gammaP - 2.0 * dx)
     {
       EXPECT_LT(phi0(i), 0.0);
@@ -260,8 +254,8 @@ TEST(InitialData, SphereCloud3D)
       ++counted;
     }
   }
-  std::printf("sphere: |phi0 - (r - 1 - gamma_P)| <= %.3f dx near the zero level; |grad| ok on %.1f%%\n",
-    worst / dx, 100.0 * good / counted);
+  std::printf("sphere: |phi0 - (r - 1 - gamma_P)| <= %.3f dx near the zero level; |grad| ok on %.1f%%\n", worst / dx,
+    100.0 * good / counted);
   EXPECT_LT(worst, 0.5 * dx);
   EXPECT_GT(good, 0.85 * counted);
   // Identical with threads.
@@ -348,7 +342,7 @@ TEST(InitialData, SphereAndEllipsoidGuessesEncloseTheCloud)
     EXPECT_LT(sltk::signedDistance(sphere, q.data()), -0.099);
     EXPECT_LT(sltk::signedDistance(ellipsoid, q.data()), -0.049);
   }
-  const auto g = cube<3>(1.5, 31);
+  const auto g = sltk::uniformBox<3>(31, -1.5, 1.5);
   sltk::GridField<3, double> phi0;
   ASSERT_TRUE(sltk::ellipsoidLevelSet(sphere, g, sltk::Context{}, phi0).isOk());
   for (sltk::Index k = 0; k < g.nodeCount(); k += 7)

@@ -13,12 +13,6 @@
 namespace
 {
 template <int D>
-sltk::GridSpec<D> cube(sltk::Index n)
-{
-  return sltk::uniformBox<D>(n, -1.0, 1.0);
-}
-
-template <int D>
 double radius(const double* x)
 {
   double r = 0.0;
@@ -57,7 +51,7 @@ template <int D, class Interp>
 double advanceSphere(sltk::Index n, int steps, double eta, double r0, bool distanceToSphere, double* dtOut = nullptr,
   sltk::ThreadPool* pool = nullptr, sltk::GridField<D>* result = nullptr, double dtOverDx = 1.0)
 {
-  const auto g = cube<D>(n);
+  const auto g = sltk::uniformBox<D>(n, -1.0, 1.0);
   const double dx = g.Spacing[0];
   auto phi = sltk::sampleField(g, 2, [&](const double* x) { return radius<D>(x) - r0; });
   // d = distance to a sphere of radius 0.3 (advection test) or 1 (curvature test: grad d = 0 away
@@ -138,7 +132,7 @@ TEST(LevelSetStep, SerialAndThreadedAreIdentical)
 
 TEST(LevelSetStep, WritesOnlyBandNodesAndUsesTheSingularFallback)
 {
-  const auto g = cube<2>(21);
+  const auto g = sltk::uniformBox<2>(21, -1.0, 1.0);
   // phi flat (|grad phi| = 0) on the left half: the fallback (4.26) averages neighbours.
   auto phi = sltk::sampleField(g, 2, [](const double* x) { return x[0] < 0.0 ? 0.0 : x[0]; });
   auto dist = sltk::sampleField(g, 1, [](const double*) { return 0.5; });
@@ -164,7 +158,7 @@ TEST(LevelSetStep, WritesOnlyBandNodesAndUsesTheSingularFallback)
 
 TEST(LevelSetStep, RejectsBadParameters)
 {
-  const auto g = cube<2>(11);
+  const auto g = sltk::uniformBox<2>(11, -1.0, 1.0);
   auto phi = sltk::sampleField(g, 1, [](const double* x) { return x[0]; });
   auto dist = sltk::sampleField(g, 1, [](const double*) { return 0.5; });
   sltk::LevelSetStepParameters par; // dt = 0

@@ -5,6 +5,8 @@
 #include "sltk/interp/Weno3.h"
 #include "sltk/sl/LinearSLStep.h"
 
+#include "TestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,32 +15,6 @@
 
 namespace
 {
-template <int D>
-sltk::GridSpec<D> box(sltk::Index n, double lo, double hi)
-{
-  sltk::GridSpec<D> g;
-  for (int a = 0; a < D; ++a)
-  {
-    g.Dims[a] = n;
-    g.Origin[a] = lo;
-    g.Spacing[a] = (hi - lo) / double(n - 1);
-    g.Bounds[a] = sltk::Boundary::Extrapolate;
-  }
-  return g;
-}
-
-template <int D, class F>
-sltk::GridField<D> sample(const sltk::GridSpec<D>& g, int ghost, F f)
-{
-  sltk::GridField<D> u(g, ghost);
-  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
-  {
-    const auto i = u.nodeIndex(k);
-    u(i) = f(sltk::nodePoint(g, i));
-  }
-  return u;
-}
-
 /// A manufactured solution that is linear in x, so that Q1 interpolates it
 /// exactly and only the feet (3.8) and the source quadrature (3.9) make errors:
 /// v = cos t + (1 + sin t) x0 [+ (0.5 - 0.3 t) x1], with a velocity that is
@@ -84,13 +60,13 @@ template <int D>
 void expectTimeOrders()
 {
   using M = LinearManufactured<D>;
-  const auto g = box<D>(11, -1.0, 1.0);
+  const auto g = sltk::uniformBox<D>(11, -1.0, 1.0);
   for (int order = 1; order <= 3; ++order)
   {
     double err[3];
     for (int level = 0; level < 3; ++level)
     {
-      auto u = sample(g, 1, [](const std::array<double, D>& x) { return M::value(0.0, x); });
+      auto u = sltktest::sampleNodes(g, 1, [](const std::array<double, D>& x) { return M::value(0.0, x); });
       sltk::LinearSLOptions opt;
       opt.Order = static_cast<sltk::RkOrder>(order);
       opt.FinalTime = 1.0;
@@ -128,8 +104,8 @@ std::array<double, 2> test1Velocity(double, const std::array<double, 2>& x)
 template <class Interp>
 double test1Error(sltk::Index n, const sltk::Context& ctx = sltk::Context{})
 {
-  const auto g = box<2>(n, 0.0, 1.0);
-  auto u = sample(g, 2, [](const std::array<double, 2>& x) { return sltk::rotatingBump(x[0], x[1]); });
+  const auto g = sltk::uniformBox<2>(n, 0.0, 1.0);
+  auto u = sltktest::sampleNodes(g, 2, [](const std::array<double, 2>& x) { return sltk::rotatingBump(x[0], x[1]); });
   sltk::LinearSLOptions opt;
   opt.Order = sltk::RkOrder::Kutta3;
   opt.FinalTime = 1.0;
@@ -245,7 +221,8 @@ TEST(LinearSLStep, ConstantAdvectionAtIntegerCourantIsExact)
   g.Origin[0] = 0.0;
   g.Spacing[0] = 0.05;
   g.Bounds[0] = sltk::Boundary::Periodic;
-  auto u = sample(g, 1, [](const std::array<double, 1>& x) { return std::sin(6.283185307179586 * x[0]) + x[0]; });
+  auto u = sltktest::sampleNodes(
+    g, 1, [](const std::array<double, 1>& x) { return std::sin(6.283185307179586 * x[0]) + x[0]; });
   const auto u0 = u;
   sltk::GridField<1> next;
   // c = 1, dt = 0.15: lambda = 3, feet 3 nodes upwind.
@@ -265,13 +242,12 @@ TEST(LinearSLStep, PeriodicSmoothProblemIsThirdOrderWithCubicInterpolation)
   // g = v_t + f v_x; RK3 + Simpson (2.45) and the cubic (CWENO's optimal polynomial, d = 1):
   // error Delta t^3 + Delta x^4 / Delta t (2.38) = O(Delta x^3) at lambda = 2.5.
   const double twoPi = 6.283185307179586;
-  auto exact = [twoPi](double t, const std::array<double, 1>& x) {
-    return std::sin(twoPi * x[0]) * std::cos(t) + 0.5 * std::sin(t);
-  };
-  auto f = [twoPi](double t, const std::array<double, 1>& x) {
-    return std::array<double, 1>{ 1.0 + 0.5 * std::sin(twoPi * x[0]) * std::cos(t) };
-  };
-  auto g = [&](double t, const std::array<double, 1>& x) {
+  auto exact = [twoPi](double t, const std::array<double, 1>& x)
+  { return std::sin(twoPi * x[0]) * std::cos(t) + 0.5 * std::sin(t); };
+  auto f = [twoPi](double t, const std::array<double, 1>& x)
+  { return std::array<double, 1>{ 1.0 + 0.5 * std::sin(twoPi * x[0]) * std::cos(t) }; };
+  auto g = [&](double t, const std::array<double, 1>& x)
+  {
     const double vt = -std::sin(twoPi * x[0]) * std::sin(t) + 0.5 * std::cos(t);
     const double vx = twoPi * std::cos(twoPi * x[0]) * std::cos(t);
     return vt + f(t, x)[0] * vx;
@@ -284,12 +260,12 @@ TEST(LinearSLStep, PeriodicSmoothProblemIsThirdOrderWithCubicInterpolation)
     grid.Origin[0] = 0.0;
     grid.Spacing[0] = 1.0 / double(grid.Dims[0]);
     grid.Bounds[0] = sltk::Boundary::Periodic;
-    auto u = sample(grid, 2, [&](const std::array<double, 1>& x) { return exact(0.0, x); });
+    auto u = sltktest::sampleNodes(grid, 2, [&](const std::array<double, 1>& x) { return exact(0.0, x); });
     sltk::LinearSLOptions opt;
     opt.FinalTime = 1.0;
     opt.MaxTimeStep = 2.5 * grid.Spacing[0];
-    const sltk::Status s = sltk::linearSLAdvance<sltk::CwenoInterpolator<1, sltk::CwenoVariant::Optimal>>(
-      sltk::Context{}, opt, u, f, g);
+    const sltk::Status s =
+      sltk::linearSLAdvance<sltk::CwenoInterpolator<1, sltk::CwenoVariant::Optimal>>(sltk::Context{}, opt, u, f, g);
     ASSERT_TRUE(s.isOk()) << s.toString();
     err[level] = 0.0;
     for (sltk::Index i = 0; i < grid.Dims[0]; ++i)
@@ -349,10 +325,10 @@ void expectSerialEqualsThreaded()
   sltk::Context serial, threaded;
   serial.Executor = &one;
   threaded.Executor = &two;
-  const auto g = box<2>(61, 0.0, 1.0);
+  const auto g = sltk::uniformBox<2>(61, 0.0, 1.0);
   auto init = [](const std::array<double, 2>& x) { return sltk::rotatingBump(x[0], x[1]); };
-  auto a = sample(g, 2, init);
-  auto b = sample(g, 2, init);
+  auto a = sltktest::sampleNodes(g, 2, init);
+  auto b = sltktest::sampleNodes(g, 2, init);
   sltk::LinearSLOptions opt;
   opt.FinalTime = 0.3;
   opt.MaxTimeStep = 3.0 * g.Spacing[0];
@@ -366,7 +342,7 @@ void expectSerialEqualsThreaded()
   }
   EXPECT_EQ(differing, 0u);
   // and the run did move the data
-  auto c = sample(g, 2, init);
+  auto c = sltktest::sampleNodes(g, 2, init);
   EXPECT_NE(a.storage(), c.storage());
 }
 
@@ -378,9 +354,9 @@ TEST(LinearSLStep, SerialAndThreadedResultsAreBitIdentical)
 
 TEST(LinearSLStep, InterrupterAbortsBetweenSteps)
 {
-  const auto g = box<2>(21, 0.0, 1.0);
+  const auto g = sltk::uniformBox<2>(21, 0.0, 1.0);
   auto init = [](const std::array<double, 2>& x) { return sltk::rotatingBump(x[0], x[1]); };
-  auto u = sample(g, 2, init);
+  auto u = sltktest::sampleNodes(g, 2, init);
   StopAfter stop(4);
   sltk::Context ctx;
   ctx.Progress = &stop;
@@ -388,7 +364,8 @@ TEST(LinearSLStep, InterrupterAbortsBetweenSteps)
   opt.FinalTime = 1.0;
   opt.MaxTimeStep = 0.1;
   sltk::Index steps = -1;
-  const sltk::Status s = sltk::linearSLAdvance<sltk::Q1Interpolator<2>>(ctx, opt, u, test1Velocity, sltk::NoSource{}, &steps);
+  const sltk::Status s =
+    sltk::linearSLAdvance<sltk::Q1Interpolator<2>>(ctx, opt, u, test1Velocity, sltk::NoSource{}, &steps);
   EXPECT_EQ(s.code(), sltk::StatusCode::Aborted);
   EXPECT_EQ(steps, 4);
   ASSERT_EQ(stop.Fractions.size(), 5u);
@@ -397,12 +374,13 @@ TEST(LinearSLStep, InterrupterAbortsBetweenSteps)
     EXPECT_DOUBLE_EQ(stop.Fractions[k], 0.1 * double(k));
   }
   // u holds the last completed step: the same as four single steps.
-  auto ref = sample(g, 2, init);
+  auto ref = sltktest::sampleNodes(g, 2, init);
   sltk::GridField<2> next;
   for (int n = 0; n < 4; ++n)
   {
     ASSERT_TRUE(sltk::linearSLStep<sltk::Q1Interpolator<2>>(
-      sltk::Context{}, opt.Order, ref, next, 0.1 * (n + 1), 0.1, test1Velocity).isOk());
+      sltk::Context{}, opt.Order, ref, next, 0.1 * (n + 1), 0.1, test1Velocity)
+                  .isOk());
     std::swap(ref, next);
   }
   for (sltk::Index k = 0; k < g.nodeCount(); ++k)
@@ -414,27 +392,31 @@ TEST(LinearSLStep, InterrupterAbortsBetweenSteps)
 
 TEST(LinearSLStep, ReportsNonFiniteValuesAndBadArguments)
 {
-  const auto g = box<2>(11, 0.0, 1.0);
-  auto u = sample(g, 1, [](const std::array<double, 2>& x) { return x[0]; });
+  const auto g = sltk::uniformBox<2>(11, 0.0, 1.0);
+  auto u = sltktest::sampleNodes(g, 1, [](const std::array<double, 2>& x) { return x[0]; });
   sltk::GridField<2> next;
   auto nanAtCorner = [](double, const std::array<double, 2>& x) {
     return std::array<double, 2>{ x[0] > 0.95 && x[1] > 0.95 ? std::nan("") : 0.1, 0.0 };
   };
-  sltk::Status s = sltk::linearSLStep<sltk::Q1Interpolator<2>>(sltk::Context{}, sltk::RkOrder::Heun, u, next, 0.1, 0.1, nanAtCorner);
+  sltk::Status s =
+    sltk::linearSLStep<sltk::Q1Interpolator<2>>(sltk::Context{}, sltk::RkOrder::Heun, u, next, 0.1, 0.1, nanAtCorner);
   EXPECT_EQ(s.code(), sltk::StatusCode::NumericalFailure) << s.toString();
   auto nanSource = [](double, const std::array<double, 2>& x) { return x[1] < 0.05 ? std::nan("") : 0.0; };
   auto still = [](double, const std::array<double, 2>&) { return std::array<double, 2>{ 0.0, 0.0 }; };
-  s = sltk::linearSLStep<sltk::Q1Interpolator<2>>(sltk::Context{}, sltk::RkOrder::Euler, u, next, 0.1, 0.1, still, nanSource);
+  s = sltk::linearSLStep<sltk::Q1Interpolator<2>>(
+    sltk::Context{}, sltk::RkOrder::Euler, u, next, 0.1, 0.1, still, nanSource);
   EXPECT_EQ(s.code(), sltk::StatusCode::NumericalFailure) << s.toString();
   s = sltk::linearSLStep<sltk::Q1Interpolator<2>>(sltk::Context{}, sltk::RkOrder::Euler, u, next, 0.1, 0.1, still);
   EXPECT_TRUE(s.isOk()) << s.toString();
 
   s = sltk::linearSLStep<sltk::Q1Interpolator<2>>(sltk::Context{}, sltk::RkOrder::Euler, u, next, 0.1, -0.1, still);
   EXPECT_EQ(s.code(), sltk::StatusCode::InvalidArgument);
-  s = sltk::linearSLStep<sltk::Q1Interpolator<2>>(sltk::Context{}, static_cast<sltk::RkOrder>(4), u, next, 0.1, 0.1, still);
+  s = sltk::linearSLStep<sltk::Q1Interpolator<2>>(
+    sltk::Context{}, static_cast<sltk::RkOrder>(4), u, next, 0.1, 0.1, still);
   EXPECT_EQ(s.code(), sltk::StatusCode::InvalidArgument);
-  auto noGhosts = sample(g, 0, [](const std::array<double, 2>& x) { return x[0]; });
-  s = sltk::linearSLStep<sltk::Q1Interpolator<2>>(sltk::Context{}, sltk::RkOrder::Euler, noGhosts, next, 0.1, 0.1, still);
+  auto noGhosts = sltktest::sampleNodes(g, 0, [](const std::array<double, 2>& x) { return x[0]; });
+  s =
+    sltk::linearSLStep<sltk::Q1Interpolator<2>>(sltk::Context{}, sltk::RkOrder::Euler, noGhosts, next, 0.1, 0.1, still);
   EXPECT_EQ(s.code(), sltk::StatusCode::InvalidArgument);
   sltk::LinearSLOptions opt;
   opt.MaxTimeStep = 0.0;

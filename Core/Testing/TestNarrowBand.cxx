@@ -8,12 +8,6 @@
 
 namespace
 {
-template <int D>
-sltk::GridSpec<D> cube(double half, sltk::Index n)
-{
-  return sltk::uniformBox<D>(n, -half, half);
-}
-
 /// Signed distance to the sphere of radius r centred at c.
 template <int D>
 sltk::GridField<D, double> sphereSdf(const sltk::GridSpec<D>& g, double r, double shift = 0.0)
@@ -81,7 +75,7 @@ TEST(NarrowBand, CutOffIsC1AndMonotone)
 
 TEST(NarrowBand, BandOfACircleHasExactlyTheNodesWithinGamma)
 {
-  const auto g = cube<2>(1.5, 61);
+  const auto g = sltk::uniformBox<2>(61, -1.5, 1.5);
   const auto phi = sphereSdf<2>(g, 0.8);
   const double gamma = 4.0 * g.Spacing[0];
   sltk::NodeList band;
@@ -104,7 +98,7 @@ TEST(NarrowBand, BandOfACircleHasExactlyTheNodesWithinGamma)
 
 TEST(NarrowBand, SphereBandIdenticalWithThreads)
 {
-  const auto g = cube<3>(1.2, 41);
+  const auto g = sltk::uniformBox<3>(41, -1.2, 1.2);
   const auto phi = sphereSdf<3>(g, 0.7);
   sltk::NodeList serial;
   sltk::NodeList threaded;
@@ -132,7 +126,7 @@ TEST(NarrowBand, SphereBandIdenticalWithThreads)
 
 TEST(NarrowBand, DilationMatchesBruteForce)
 {
-  const auto g = cube<2>(1.0, 31);
+  const auto g = sltk::uniformBox<2>(31, -1.0, 1.0);
   const auto phi = sphereSdf<2>(g, 0.5);
   sltk::NodeList band;
   sltk::collectBand(phi, 2.0 * g.Spacing[0], sltk::Context{}, band);
@@ -169,7 +163,7 @@ TEST(NarrowBand, DilationMatchesBruteForce)
 
 TEST(NarrowBand, Dilation3DAtTheGridBoundary)
 {
-  sltk::GridSpec<3> g = cube<3>(1.0, 6);
+  sltk::GridSpec<3> g = sltk::uniformBox<3>(6, -1.0, 1.0);
   sltk::NodeList corner{ 0 };
   std::vector<std::uint8_t> scratch;
   sltk::NodeList dilated;
@@ -185,7 +179,7 @@ TEST(NarrowBand, Dilation3DAtTheGridBoundary)
 TEST(NarrowBand, NextBandFilteredFromTheReinitBandAndCut)
 {
   // The front moves by less than a cell: B^{n+1} is inside B^n dilated by one cell (1.52).
-  const auto g = cube<2>(1.5, 61);
+  const auto g = sltk::uniformBox<2>(61, -1.5, 1.5);
   const double dx = g.Spacing[0];
   const auto w = sltk::BandWidths::forSpacing(dx);
   auto phi0 = sphereSdf<2>(g, 0.8);

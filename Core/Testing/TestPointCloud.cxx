@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/cloud/PointCloud.h"
 
+#include "sltk/cloud/SyntheticClouds.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,19 +10,6 @@
 
 namespace
 {
-sltk::PointCloud<3> sphere(int n, double radius = 1.0, double offset = 0.0)
-{
-  sltk::PointCloud<3> c;
-  for (int k = 0; k < n; ++k)
-  {
-    const double z = -1.0 + 2.0 * (k + 0.5) / n;
-    const double phi = 2.399963229728653 * k; // golden angle
-    const double r = std::sqrt(1.0 - z * z);
-    c.Points.push_back({ offset + radius * r * std::cos(phi), offset + radius * r * std::sin(phi), offset + radius * z });
-  }
-  return c;
-}
-
 std::string messageOf(const sltk::PointCloud<3>& c)
 {
   return sltk::validateCloud(c).message();
@@ -29,7 +18,7 @@ std::string messageOf(const sltk::PointCloud<3>& c)
 
 TEST(PointCloud, SphereIsValidAndBoxed)
 {
-  auto c = sphere(500);
+  auto c = sltk::sphereCloud(500);
   EXPECT_TRUE(sltk::validateCloud(c).isOk()) << messageOf(c);
   auto box = sltk::boundingBox(c);
   EXPECT_NEAR(box.Min[2], -1.0, 0.01);
@@ -52,10 +41,10 @@ TEST(PointCloud, TooFewPointsAreRefused)
 
 TEST(PointCloud, NonFiniteCoordinatesAreNamed)
 {
-  auto c = sphere(100);
+  auto c = sltk::sphereCloud(100);
   c.Points[42][1] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(messageOf(c).find("point 42"), std::string::npos) << messageOf(c);
-  c = sphere(100);
+  c = sltk::sphereCloud(100);
   c.Points[7][2] = std::numeric_limits<double>::infinity();
   EXPECT_NE(messageOf(c).find("point 7"), std::string::npos) << messageOf(c);
 }
@@ -90,15 +79,15 @@ TEST(PointCloud, CollinearPointsAreRefusedIn2D)
 
 TEST(PointCloud, HugeOffsetsAreRefusedWithAFix)
 {
-  auto c = sphere(100, 1e-3, 1e9);
+  auto c = sltk::sphereCloud(100, 1e-3, { 1e9, 1e9, 1e9 });
   EXPECT_NE(messageOf(c).find("translate"), std::string::npos) << messageOf(c);
-  auto ok = sphere(100, 1.0, 1e6); // 1e-6 relative extent is fine
+  auto ok = sltk::sphereCloud(100, 1.0, { 1e6, 1e6, 1e6 }); // 1e-6 relative extent is fine
   EXPECT_TRUE(sltk::validateCloud(ok).isOk()) << messageOf(ok);
 }
 
 TEST(PointCloud, DuplicatePointsAreAccepted)
 {
-  auto c = sphere(100);
+  auto c = sltk::sphereCloud(100);
   auto copy = c.Points;
   c.Points.insert(c.Points.end(), copy.begin(), copy.end());
   EXPECT_TRUE(sltk::validateCloud(c).isOk());

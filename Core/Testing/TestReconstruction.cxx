@@ -9,16 +9,6 @@
 
 namespace
 {
-sltk::PointCloud<2> circle(int n, double radius = 1.0)
-{
-  return sltk::circleCloud(n, radius);
-}
-
-sltk::PointCloud<3> sphere(int n, double radius = 1.0, double offset = 0.0)
-{
-  return sltk::sphereCloud(n, radius, { offset, offset, offset });
-}
-
 /// L1 error of phi against the exact signed distance |x| - R, over the nodes within gamma of the circle.
 double bandL1Error(const sltk::GridField<2>& phi, double radius)
 {
@@ -46,15 +36,14 @@ TEST(Reconstruction, CircleOf64PointsMatchesTable42)
   options.Interpolator = sltk::InterpolatorKind::Weno3;
   sltk::ReconstructionResult<2> result;
   sltk::Context ctx;
-  ASSERT_TRUE(sltk::reconstruct(circle(64), options, ctx, result).isOk());
+  ASSERT_TRUE(sltk::reconstruct(sltk::circleCloud(64), options, ctx, result).isOk());
   ASSERT_EQ(result.Runs.size(), 3u);
   EXPECT_NEAR(result.CloudSpacing, 2.0 * std::sin(M_PI / 64), 1e-12);
   for (int r = 0; r < 3; ++r)
   {
     const auto& run = result.Runs[static_cast<size_t>(r)];
-    std::cout << "run " << r + 1 << ": grid " << run.Grid.Dims[0] << ", " << run.Iterations
-              << " iterations, Err_P " << run.CloudError << " (thesis " << thesis[r] << "), E_2 " << run.Energy
-              << "\n";
+    std::cout << "run " << r + 1 << ": grid " << run.Grid.Dims[0] << ", " << run.Iterations << " iterations, Err_P "
+              << run.CloudError << " (thesis " << thesis[r] << "), E_2 " << run.Energy << "\n";
     EXPECT_LT(run.CloudError, 1.5 * thesis[r]) << "run " << r + 1;
     EXPECT_GE(run.Iterations, options.MinIterations);
   }
@@ -75,8 +64,8 @@ TEST(Reconstruction, SphereInUserUnitsAndAnyOffset)
   sltk::Context ctx;
   ctx.Executor = &pool;
   sltk::ReconstructionResult<3> unit, moved;
-  ASSERT_TRUE(sltk::reconstruct(sphere(1000), options, ctx, unit).isOk());
-  ASSERT_TRUE(sltk::reconstruct(sphere(1000, 0.01, 50.0), options, ctx, moved).isOk());
+  ASSERT_TRUE(sltk::reconstruct(sltk::sphereCloud(1000), options, ctx, unit).isOk());
+  ASSERT_TRUE(sltk::reconstruct(sltk::sphereCloud(1000, 0.01, { 50.0, 50.0, 50.0 }), options, ctx, moved).isOk());
   ASSERT_EQ(unit.Runs.size(), 2u);
   EXPECT_LT(unit.Runs[1].CloudError, 0.01);
   EXPECT_NEAR(moved.Runs[1].CloudError, 0.01 * unit.Runs[1].CloudError, 1e-3 * unit.Runs[1].CloudError);
@@ -94,12 +83,11 @@ TEST(Reconstruction, UpdateNormVanishesAtSteadyState)
   options.Runs = 1;
   sltk::ReconstructionResult<2> result;
   sltk::Context ctx;
-  ASSERT_TRUE(sltk::reconstruct(circle(64), options, ctx, result).isOk());
+  ASSERT_TRUE(sltk::reconstruct(sltk::circleCloud(64), options, ctx, result).isOk());
   ASSERT_GE(result.History.size(), 10u);
   const double first = result.History.front().Change;
   const double last = result.History.back().Change;
-  std::cout << "eps_1: first " << first << ", last " << last << " after " << result.History.size()
-            << " iterations\n";
+  std::cout << "eps_1: first " << first << ", last " << last << " after " << result.History.size() << " iterations\n";
   EXPECT_GT(first, 0.0);
   EXPECT_LT(last, 0.1 * first);
   EXPECT_LT(last, 0.01);
@@ -113,8 +101,8 @@ TEST(Reconstruction, SerialAndThreadedAreIdentical)
   sltk::Context serial, threaded;
   threaded.Executor = &pool;
   sltk::ReconstructionResult<3> a, b;
-  ASSERT_TRUE(sltk::reconstruct(sphere(600), options, serial, a).isOk());
-  ASSERT_TRUE(sltk::reconstruct(sphere(600), options, threaded, b).isOk());
+  ASSERT_TRUE(sltk::reconstruct(sltk::sphereCloud(600), options, serial, a).isOk());
+  ASSERT_TRUE(sltk::reconstruct(sltk::sphereCloud(600), options, threaded, b).isOk());
   EXPECT_TRUE(a.SignedDistance.storage() == b.SignedDistance.storage());
   EXPECT_EQ(a.History.size(), b.History.size());
 }
@@ -129,7 +117,7 @@ TEST(Reconstruction, AbortsThroughTheInterrupter)
   sltk::Context ctx;
   ctx.Progress = &stop;
   sltk::ReconstructionResult<2> result;
-  EXPECT_EQ(sltk::reconstruct(circle(64), {}, ctx, result).code(), sltk::StatusCode::Aborted);
+  EXPECT_EQ(sltk::reconstruct(sltk::circleCloud(64), {}, ctx, result).code(), sltk::StatusCode::Aborted);
   EXPECT_LT(result.History.size(), 3u) << "stopped at the first checks, long before the 46 iterations of a full run";
 }
 
@@ -141,10 +129,10 @@ TEST(Reconstruction, RefusesBadInputAndAbsurdGrids)
   EXPECT_EQ(sltk::reconstruct(empty, {}, ctx, result).code(), sltk::StatusCode::InvalidArgument);
   sltk::ReconstructionOptions options;
   options.MemoryBudget = 1000000; // 1 MB
-  const auto s = sltk::reconstruct(sphere(500), options, ctx, result);
+  const auto s = sltk::reconstruct(sltk::sphereCloud(500), options, ctx, result);
   EXPECT_EQ(s.code(), sltk::StatusCode::OutOfMemory);
   EXPECT_NE(s.message().find("C_dx"), std::string::npos) << s.message();
   options = {};
   options.GammaFactor = 1.0; // gamma < beta
-  EXPECT_EQ(sltk::reconstruct(sphere(500), options, ctx, result).code(), sltk::StatusCode::InvalidArgument);
+  EXPECT_EQ(sltk::reconstruct(sltk::sphereCloud(500), options, ctx, result).code(), sltk::StatusCode::InvalidArgument);
 }

@@ -5,10 +5,11 @@
 #include "sltk/grid/SampleField.h"
 #include "sltk/levelset/ReinitInterface.h"
 
+#include "TestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -26,13 +27,6 @@ using sltk::ReinitScheme;
 constexpr double Pi = 3.14159265358979323846;
 constexpr double Radius = 0.5;
 constexpr double BandCells = 5.0; // gamma + dx with gamma = 4 dx (4.4.6, (1.52))
-
-/// [-1, 1]^D with n nodes per axis, linear extrapolation.
-template <int D>
-GridSpec<D> grid(Index n)
-{
-  return sltk::uniformBox<D>(n, -1.0, 1.0);
-}
 
 /// Signed distance to the circle / sphere of radius Radius centred slightly off the grid nodes.
 template <int D>
@@ -66,17 +60,6 @@ GridField<D> distortedSphere(const GridSpec<D>& g)
   return sltk::sampleField(g, 1, [](const double* x) { return distortion<D>(x) * sphereDistance<D>(x); });
 }
 
-template <int D>
-std::array<double, D> coordinates(const GridSpec<D>& g, const std::array<Index, D>& i)
-{
-  std::array<double, D> x{};
-  for (int a = 0; a < D; ++a)
-  {
-    x[a] = g.coordinate(a, i[a]);
-  }
-  return x;
-}
-
 /// Test band: nodes within `cells` grid cells of the exact front.
 template <int D>
 std::vector<Index> sphereBand(const GridField<D>& u, double cells)
@@ -85,7 +68,7 @@ std::vector<Index> sphereBand(const GridField<D>& u, double cells)
   std::vector<Index> band;
   for (Index k = 0; k < g.nodeCount(); ++k)
   {
-    const auto x = coordinates<D>(g, u.nodeIndex(k));
+    const auto x = sltktest::nodeCoordinates<D>(g, u.nodeIndex(k));
     if (std::fabs(sphereDistance<D>(x.data())) < cells * g.Spacing[0])
     {
       band.push_back(k);
@@ -123,7 +106,7 @@ Deviation gradientDeviation(const GridField<D>& u, const std::vector<Index>& ban
   for (Index k : band)
   {
     const auto i = u.nodeIndex(k);
-    const auto x = coordinates<D>(g, i);
+    const auto x = sltktest::nodeCoordinates<D>(g, i);
     bool inner = std::fabs(sphereDistance<D>(x.data())) < cells * g.Spacing[0];
     for (int a = 0; a < D; ++a)
     {
@@ -158,7 +141,7 @@ Deviation distanceError(const GridField<D>& u, const std::vector<Index>& band, d
   for (Index k : band)
   {
     const auto i = u.nodeIndex(k);
-    const auto x = coordinates<D>(u.spec(), i);
+    const auto x = sltktest::nodeCoordinates<D>(u.spec(), i);
     const double exact = sphereDistance<D>(x.data());
     if (std::fabs(exact) < cells * dx)
     {
@@ -253,7 +236,7 @@ struct Outcome
 template <int D>
 Outcome run(Index n, const ReinitOptions& o, const sltk::Context& ctx = sltk::Context())
 {
-  const auto g = grid<D>(n);
+  const auto g = sltk::uniformBox<D>(n, -1.0, 1.0);
   const GridField<D> initial = distortedSphere<D>(g);
   GridField<D> phi = initial;
   const auto band = sphereBand<D>(phi, BandCells);
@@ -321,7 +304,7 @@ TEST(Reinit, ExplicitStepExactOnLinearData)
   // node whose upwind data lie in the grid: the front crosses the grid lines
   // through the node inside the grid. Elsewhere (the front leaves the grid
   // upwind) the values only have to stay finite (ReinitStencil::axes).
-  const auto g = grid<2>(41);
+  const auto g = sltk::uniformBox<2>(41, -1.0, 1.0);
   const double n[2] = { 0.6, -0.8 };
   auto sdf = [&](const double* x) { return n[0] * x[0] + n[1] * x[1] - 0.1234; };
   const GridField<2> initial = sltk::sampleField(g, 1, [&](const double* x) { return 3.0 * sdf(x); });
@@ -345,7 +328,7 @@ TEST(Reinit, ExplicitStepExactOnLinearData)
     for (Index k = 0; k < g.nodeCount(); ++k)
     {
       const auto i = phi.nodeIndex(k);
-      const auto x = coordinates<2>(g, i);
+      const auto x = sltktest::nodeCoordinates<2>(g, i);
       const double e = std::fabs(phi(i) - sdf(x.data()));
       bool inside = true;
       for (int a = 0; a < 2; ++a)
@@ -384,7 +367,7 @@ TEST(Reinit, ExplicitStepExactOnLinearData)
 TEST(Reinit, CurvatureSplitsTheFrontNodes)
 {
   // (1.45) with phi < 0 inside: convex front, kappa > 0, so R1 is the inside.
-  const auto g = grid<2>(41);
+  const auto g = sltk::uniformBox<2>(41, -1.0, 1.0);
   const GridField<2> phi = distortedSphere<2>(g);
   const sltk::ReinitStencil<2> stencil(phi);
   const double inv[2] = { 1.0 / g.Spacing[0], 1.0 / g.Spacing[1] };
@@ -410,7 +393,7 @@ TEST(Reinit, CurvatureSplitsTheFrontNodes)
 TEST(Reinit, DistanceGradientAndFront2D)
 {
   const Index n = 81;
-  const auto g = grid<2>(n);
+  const auto g = sltk::uniformBox<2>(n, -1.0, 1.0);
   const GridField<2> initial = distortedSphere<2>(g);
   const auto band = sphereBand<2>(initial, BandCells);
   const Deviation start = gradientDeviation<2>(initial, band, InnerCells - 1.0);
@@ -487,7 +470,7 @@ TEST(Reinit, UpwindAndGodunovSchemes2D)
   // (1.32) and (1.35) differ only where both one-sided differences along an axis
   // are upwind (phi has an extremum along the grid line: here inside the circle,
   // on the lines through its centre); there (1.32) adds both and overestimates |grad phi|.
-  const auto g = grid<2>(81);
+  const auto g = sltk::uniformBox<2>(81, -1.0, 1.0);
   const GridField<2> initial = distortedSphere<2>(g);
   const auto band = sphereBand<2>(initial, BandCells);
   GridField<2> phi[2] = { initial, initial };
@@ -508,7 +491,7 @@ TEST(Reinit, UpwindAndGodunovSchemes2D)
     {
       continue;
     }
-    const auto x = coordinates<2>(g, i);
+    const auto x = sltktest::nodeCoordinates<2>(g, i);
     for (int m = 0; m < 2; ++m)
     {
       accumulate(error[m], std::fabs(phi[m](i) - sphereDistance<2>(x.data())) / g.Spacing[0]);
@@ -570,7 +553,7 @@ TEST(Reinit, DistanceGradientAndFront3D)
 
 TEST(Reinit, OnlyBandNodesAreWritten)
 {
-  const auto g = grid<3>(33);
+  const auto g = sltk::uniformBox<3>(33, -1.0, 1.0);
   GridField<3> phi = distortedSphere<3>(g);
   const GridField<3> initial = phi;
   const auto band = sphereBand<3>(phi, BandCells);
@@ -598,7 +581,7 @@ TEST(Reinit, OnlyBandNodesAreWritten)
 
 TEST(Reinit, SerialAndThreadedAreBitIdentical)
 {
-  const auto g = grid<3>(65);
+  const auto g = sltk::uniformBox<3>(65, -1.0, 1.0);
   const GridField<3> initial = distortedSphere<3>(g);
   const auto band = sphereBand<3>(initial, BandCells);
   ASSERT_GT(band.size(), 8u * 2048u); // several chunks
@@ -617,8 +600,8 @@ TEST(Reinit, SerialAndThreadedAreBitIdentical)
     ASSERT_TRUE(sltk::reinitialise<3>(threaded, band, o, ctx, &b).isOk());
     EXPECT_EQ(a.Iterations, b.Iterations);
     EXPECT_EQ(a.InterfaceNodes, b.InterfaceNodes);
-    EXPECT_EQ(std::memcmp(serial.storage().data(), threaded.storage().data(), serial.storage().size() * sizeof(double)),
-      0)
+    EXPECT_EQ(
+      std::memcmp(serial.storage().data(), threaded.storage().data(), serial.storage().size() * sizeof(double)), 0)
       << name(method);
   }
 }
@@ -633,8 +616,8 @@ TEST(Reinit, PeriodicAndExtrapolatedBoundaries)
   g.Spacing = { 1.0 / 24.0, 1.0 / 32.0 };
   g.Bounds = { sltk::Boundary::Extrapolate, sltk::Boundary::Periodic };
   const double x0 = 0.4321;
-  GridField<2> phi = sltk::sampleField(g, 0,
-    [&](const double* x) { return (x[0] - x0) * (1.5 + 0.5 * std::sin(2.0 * Pi * x[1])); });
+  GridField<2> phi =
+    sltk::sampleField(g, 0, [&](const double* x) { return (x[0] - x0) * (1.5 + 0.5 * std::sin(2.0 * Pi * x[1])); });
   std::vector<Index> all(static_cast<size_t>(g.nodeCount()));
   for (Index k = 0; k < g.nodeCount(); ++k)
   {
@@ -661,12 +644,12 @@ TEST(Reinit, PeriodicAndExtrapolatedBoundaries)
 
 TEST(Reinit, RejectsInvalidInput)
 {
-  const auto g = grid<2>(11);
+  const auto g = sltk::uniformBox<2>(11, -1.0, 1.0);
   GridField<2> phi = distortedSphere<2>(g);
   const GridField<2> initial = phi;
   std::vector<Index> band = { 3, 4, g.nodeCount() };
-  EXPECT_EQ(sltk::reinitialise<2>(phi, band, ReinitOptions(), sltk::Context()).code(),
-    sltk::StatusCode::InvalidArgument);
+  EXPECT_EQ(
+    sltk::reinitialise<2>(phi, band, ReinitOptions(), sltk::Context()).code(), sltk::StatusCode::InvalidArgument);
   band = { 3, 4 };
   ReinitOptions o;
   o.Courant = 0.8; // above 1/sqrt(2)
@@ -687,7 +670,7 @@ TEST(Reinit, RejectsInvalidInput)
 
 TEST(Reinit, ReportsAbortAndNonFiniteValues)
 {
-  const auto g = grid<2>(41);
+  const auto g = sltk::uniformBox<2>(41, -1.0, 1.0);
   const GridField<2> initial = distortedSphere<2>(g);
   const auto band = sphereBand<2>(initial, BandCells);
 
@@ -718,55 +701,4 @@ TEST(Reinit, ReportsAbortAndNonFiniteValues)
   EXPECT_EQ(sltk::reinitialise<2>(phi, band, options(ReinitMethod::Plain), sltk::Context(), &report).code(),
     sltk::StatusCode::NumericalFailure);
   EXPECT_EQ(report.Iterations, 1);
-}
-
-TEST(Reinit, Timing3D_Long)
-{
-  // A band of about 1e6 nodes: sphere of radius 0.7 on a 256^3 grid, |SDF| < 5 dx.
-  const auto g = grid<3>(256);
-  const GridField<3> initial = sltk::sampleField(g, 1, [](const double* x) {
-    const double r = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-    return distortion<3>(x) * (r - 0.7);
-  });
-  std::vector<Index> band;
-  for (Index k = 0; k < g.nodeCount(); ++k)
-  {
-    const auto i = initial.nodeIndex(k);
-    const auto x = coordinates<3>(g, i);
-    if (std::fabs(std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) - 0.7) < BandCells * g.Spacing[0])
-    {
-      band.push_back(k);
-    }
-  }
-  for (int threads : { 1, 2 })
-  {
-    sltk::ThreadPool pool(threads);
-    sltk::Context ctx;
-    ctx.Executor = &pool;
-    for (int steps : { 0, 20 })
-    {
-      GridField<3> phi = initial;
-      ReinitOptions o;
-      o.MaxIterations = steps;
-      o.Tolerance = 0.0;
-      sltk::ReinitReport report;
-      const auto t0 = std::chrono::steady_clock::now();
-      ASSERT_TRUE(sltk::reinitialise<3>(phi, band, o, ctx, &report).isOk());
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      std::printf("3D band %zu nodes (|X| = %lld), %d thread(s): %2d steps in %.3f s\n", band.size(),
-        static_cast<long long>(report.InterfaceNodes), threads, report.Iterations, seconds);
-      if (steps > 0)
-      {
-        // 20 steps settle the 5-cell band: the mean deviation from the SDF is small.
-        double sum = 0.0;
-        for (Index k : band)
-        {
-          const auto i = phi.nodeIndex(k);
-          const auto x = coordinates<3>(g, i);
-          sum += std::fabs(phi(i) - (std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) - 0.7));
-        }
-        EXPECT_LT(sum / double(band.size()), 0.1 * g.Spacing[0]);
-      }
-    }
-  }
 }

@@ -6,6 +6,8 @@
 // |grad d| < 0.5 lets it go down the slot.
 #include "sltk/recon/Reconstruction.h"
 
+#include "sltk/cloud/SyntheticClouds.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,36 +17,11 @@
 
 namespace
 {
-/// Points every h along the closed polygon `corners`.
-sltk::PointCloud<2> polygonCloud(const std::vector<std::array<double, 2>>& corners, double h)
-{
-  sltk::PointCloud<2> cloud;
-  for (size_t k = 0; k < corners.size(); ++k)
-  {
-    const auto& a = corners[k];
-    const auto& b = corners[(k + 1) % corners.size()];
-    const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
-    const int n = static_cast<int>(std::ceil(length / h));
-    for (int j = 0; j < n; ++j)
-    {
-      const double s = static_cast<double>(j) / n;
-      cloud.Points.push_back({ a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]) });
-    }
-  }
-  return cloud;
-}
-
 /// The square [-1, 1]^2 with a slot of width 2w from the top edge down to y = bottom.
 sltk::PointCloud<2> slottedSquare(double w, double bottom, double h)
 {
-  return polygonCloud({ { -1.0, -1.0 },
-                        { 1.0, -1.0 },
-                        { 1.0, 1.0 },
-                        { w, 1.0 },
-                        { w, bottom },
-                        { -w, bottom },
-                        { -w, 1.0 },
-                        { -1.0, 1.0 } },
+  return sltk::polygonCloud({ { -1.0, -1.0 }, { 1.0, -1.0 }, { 1.0, 1.0 }, { w, 1.0 }, { w, bottom }, { -w, bottom },
+                              { -w, 1.0 }, { -1.0, 1.0 } },
     h);
 }
 

@@ -30,17 +30,6 @@ sltk::GridSpec<D> grid(sltk::Index cells, sltk::Boundary b = sltk::Boundary::Ext
   return g;
 }
 
-/// Uniform 1D grid on [lo, hi] with n nodes.
-sltk::GridSpec<1> line(double lo, double hi, sltk::Index n)
-{
-  sltk::GridSpec<1> g;
-  g.Dims[0] = n;
-  g.Origin[0] = lo;
-  g.Spacing[0] = (hi - lo) / double(n - 1);
-  g.Bounds[0] = sltk::Boundary::Extrapolate;
-  return g;
-}
-
 template <int D, class F>
 sltk::GridField<D> sample(const sltk::GridSpec<D>& g, F f)
 {
@@ -80,8 +69,8 @@ double maxError(sltk::Index cells, F f, int count, sltk::Boundary b = sltk::Boun
 
 /// Errors on three grids (cells, 2 cells, 4 cells), printed with the observed orders.
 template <int D, class F>
-void expectOrder(const char* name, sltk::Index cells, F f, double expected, int count,
-  sltk::Boundary b = sltk::Boundary::Extrapolate)
+void expectOrder(
+  const char* name, sltk::Index cells, F f, double expected, int count, sltk::Boundary b = sltk::Boundary::Extrapolate)
 {
   double err[3];
   for (int level = 0; level < 3; ++level)
@@ -142,8 +131,10 @@ TEST(Weno3, ReproducesQuadratics)
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> box(-0.7, 0.7);
   auto f1 = [](const double* x) { return 0.3 - 1.7 * x[0] + 2.5 * x[0] * x[0]; };
-  auto f2 = [](const double* x) { return 1.0 + x[0] - 3.0 * x[1] * x[1] + 2.0 * x[0] * x[0] * x[1] * x[1] - x[0] * x[1]; };
-  auto f3 = [](const double* x) { return x[0] * x[0] * x[1] - 2.0 * x[2] * x[2] * x[0] + x[1] * x[1] * x[2] * x[2] + 0.5; };
+  auto f2 = [](const double* x)
+  { return 1.0 + x[0] - 3.0 * x[1] * x[1] + 2.0 * x[0] * x[0] * x[1] * x[1] - x[0] * x[1]; };
+  auto f3 = [](const double* x)
+  { return x[0] * x[0] * x[1] - 2.0 * x[2] * x[2] * x[0] + x[1] * x[1] * x[2] * x[2] + 0.5; };
   auto g1 = grid<1>(9);
   auto g2 = grid<2>(9);
   auto g3 = grid<3>(9);
@@ -253,8 +244,9 @@ TEST(Weno3, SplitsAlongTheLastAxisFirst)
   {
     const double x[3] = { box(rng), box(rng), box(rng) };
     const auto loc = sltk::locate(g, x);
-    auto node = [&](int i, int j, int k)
-    { return u({ loc.Cell[0] - 1 + i, loc.Cell[1] - 1 + j, loc.Cell[2] - 1 + k }); };
+    auto node = [&](int i, int j, int k) {
+      return u({ loc.Cell[0] - 1 + i, loc.Cell[1] - 1 + j, loc.Cell[2] - 1 + k });
+    };
     const auto& t = loc.Local;
     double zyx[4], xyz[4];
     for (int i = 0; i < 4; ++i)
@@ -320,9 +312,9 @@ struct Singular1D
 {
   const char* Name;
   double (*F)(double);
-  double Min, Max;       // range of the exact function on the grid's domain
-  double Where[2];       // singular points (kinks or jumps), at nodes or mid-cells
-  bool CubicOscillates;  // does the cubic Lagrange Q (linear weights) leave [Min, Max] here?
+  double Min, Max;      // range of the exact function on the grid's domain
+  double Where[2];      // singular points (kinks or jumps), at nodes or mid-cells
+  bool CubicOscillates; // does the cubic Lagrange Q (linear weights) leave [Min, Max] here?
 };
 
 /// Does the open interval (a, b) contain one of the singular points (beyond rounding of the nodes)?
@@ -341,7 +333,7 @@ TEST(Weno3, NonOscillatory1D)
     { "kink max(1 - x^2, 0)", [](double x) { return std::max(1.0 - x * x, 0.0); }, 0.0, 1.0, { -1.0, 1.0 }, true },
     { "jump at 0.35", [](double x) { return x > 0.35 ? 1.0 : 0.0; }, 0.0, 1.0, { 0.35, 0.35 }, true },
   };
-  const auto g = line(-2.0, 2.0, 41);
+  const auto g = sltk::uniformBox<1>(41, -2.0, 2.0);
   const double dx = g.Spacing[0];
   const double eps = dx * dx;
   for (const Singular1D& c : cases)
@@ -378,8 +370,8 @@ TEST(Weno3, NonOscillatory1D)
       }
     }
     std::cout << "WENO3 1D " << c.Name << ": overshoot " << overshoot << " (cubic Lagrange " << cubicOvershoot
-              << ", Q1 " << q1Overshoot << "), largest weight on a stencil crossing the singularity "
-              << worstWeight << "\n";
+              << ", Q1 " << q1Overshoot << "), largest weight on a stencil crossing the singularity " << worstWeight
+              << "\n";
     // No new extrema beyond 1e-6 of the range, where the cubic overshoots by more than 1e-3.
     const double range = c.Max - c.Min;
     EXPECT_LE(overshoot, 1e-6 * range) << c.Name;
@@ -425,10 +417,10 @@ TEST(Weno3, NonOscillatory2D)
   };
   const Case cases[] = {
     { "oblique jump", [](const double* x) { return x[0] + 0.6 * x[1] > 0.13 ? 1.0 : 0.0; }, 0.0, 1.0, true },
-    { "kink max(1 - r^2, 0)", [](const double* x) { return std::max(1.0 - x[0] * x[0] - x[1] * x[1], 0.0); }, 0.0,
-      1.0, true },
-    { "cone |r - c|", [](const double* x) { return std::hypot(x[0] - 0.03, x[1] + 0.07); }, 0.0,
-      std::hypot(1.63, 1.67), false },
+    { "kink max(1 - r^2, 0)", [](const double* x) { return std::max(1.0 - x[0] * x[0] - x[1] * x[1], 0.0); }, 0.0, 1.0,
+      true },
+    { "cone |r - c|", [](const double* x) { return std::hypot(x[0] - 0.03, x[1] + 0.07); }, 0.0, std::hypot(1.63, 1.67),
+      false },
   };
   for (const double dx : { 0.1, 0.05 })
   {
@@ -456,8 +448,8 @@ TEST(Weno3, NonOscillatory2D)
         cubicOvershoot = std::max({ cubicOvershoot, q - c.Max, c.Min - q });
         q1Overshoot = std::max({ q1Overshoot, l - c.Max, c.Min - l });
       }
-      std::cout << "WENO3 2D " << c.Name << ", dx = " << dx << ": overshoot " << overshoot
-                << " (tensor cubic Lagrange " << cubicOvershoot << ", Q1 " << q1Overshoot << ")\n";
+      std::cout << "WENO3 2D " << c.Name << ", dx = " << dx << ": overshoot " << overshoot << " (tensor cubic Lagrange "
+                << cubicOvershoot << ", Q1 " << q1Overshoot << ")\n";
       const double range = c.Max - c.Min;
       const double tol = 0.05 * dx * dx * range;
       EXPECT_LE(overshoot, tol) << c.Name << " dx " << dx;
@@ -597,8 +589,8 @@ TEST(Weno3, ConvergenceConditionAgainstQ1)
   }
   for (int d = 0; d < 3; ++d)
   {
-    std::cout << "WENO3 condition (3.31), " << d + 1 << "D: largest |I_r - I_1| / max|D2| = " << worst[d]
-              << " (bound " << bound[d] << ")\n";
+    std::cout << "WENO3 condition (3.31), " << d + 1 << "D: largest |I_r - I_1| / max|D2| = " << worst[d] << " (bound "
+              << bound[d] << ")\n";
     EXPECT_LE(worst[d], bound[d] * (1.0 + 1e-12));
     EXPECT_GT(worst[d], 0.0);
   }

@@ -1,13 +1,25 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file SyntheticClouds.h
-/// The synthetic clouds of the thesis's tests (4.5.3): n points evenly spaced
-/// on a circle, and an about-uniform (Fibonacci) sampling of a sphere. Used by
-/// tests, benchmarks and examples.
+/// The synthetic clouds of the thesis's tests (4.5.3, 4.5.4) with their exact
+/// signed distances (negative inside) and fine quadratures of the exact
+/// curves/surfaces, so that errors against the exact shape can be measured:
+///  - circle (4.5.3): n points evenly spaced; exact SDF circleSdf;
+///  - square rotated by 45 degrees (4.5.3): the diamond |x| + |y| = 1; rotatedSquareSdf;
+///  - sphere: Fibonacci points (sphereCloud) or a subdivided icosahedron
+///    (icosphereCloud, 4.5.4's 2562-point sphere); sphereSdf;
+///  - Cube&Spheres (4.5.4): CubeSpheres, cloud and SDF;
+///  - any closed polygon sampled every h (polygonCloud);
+///  - Gaussian noise on a cloud (the "10% noise" tests, Fig. 4.8, Fig. 4.11).
+/// Used by tests, benchmarks and examples.
 
 #include "sltk/cloud/PointCloud.h"
 
+#include <array>
 #include <cmath>
+#include <random>
+#include <utility>
+#include <vector>
 
 namespace sltk
 {
@@ -38,5 +50,105 @@ inline PointCloud<3> sphereCloud(int n, double r = 1.0, std::array<double, 3> c 
   }
   return cloud;
 }
+
+/// Signed distance to the circle of radius r centred at c.
+double circleSdf(const std::array<double, 2>& x, double r = 1.0, const std::array<double, 2>& c = { 0.0, 0.0 });
+
+/// Signed distance to the sphere of radius r centred at c.
+double sphereSdf(const std::array<double, 3>& x, double r = 1.0, const std::array<double, 3>& c = { 0.0, 0.0, 0.0 });
+
+/// Points on the closed polygon `corners`: each side of length L is cut into
+/// ceil(L / h) equal parts, whose start points are kept (corners included once).
+PointCloud<2> polygonCloud(const std::vector<std::array<double, 2>>& corners, double h);
+
+/// 4.5.3's square rotated by 45 degrees, in [-1, 1]^2: the diamond |x| + |y| = 1,
+/// each side cut into `segmentsPerSide` equal parts (4 * segmentsPerSide points,
+/// corners included; the thesis's 24 points are segmentsPerSide = 6, h_P = sqrt(2) / 6).
+PointCloud<2> rotatedSquareCloud(int segmentsPerSide = 6);
+
+/// Exact signed distance to the diamond |x| + |y| = 1: a box of half-side
+/// 1/sqrt(2) in the coordinates rotated by 45 degrees.
+double rotatedSquareSdf(const std::array<double, 2>& x);
+
+/// Icosahedron subdivided `levels` times (edge midpoints), vertices projected on
+/// the unit sphere: 10 * 4^levels + 2 points (4.5.4's sphere: levels = 4, 2562 points).
+PointCloud<3> icosphereCloud(int levels);
+
+/// Every coordinate of every point plus an independent N(0, sigma^2) draw
+/// (mt19937_64 seeded with `seed`: reproducible). The thesis's "10% of normally
+/// distributed noise" (4.5.3 Fig. 4.8, 4.5.4 Fig. 4.11) gives no formula; on the
+/// unit circle / sphere we read it as sigma = 0.1.
+template <int D>
+PointCloud<D> withGaussianNoise(PointCloud<D> cloud, double sigma, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal(0.0, sigma);
+  for (auto& p : cloud.Points)
+  {
+    for (double& x : p)
+    {
+      x += normal(rng);
+    }
+  }
+  return cloud;
+}
+
+/// 4.5.4 Cube&Spheres. In the object's own frame: the cube [-0.4, 0.4]^3 (edge
+/// 0.8), a sphere of radius 0.25 at the middle (0, 0.4, 0.4) of an edge and
+/// spheres of radius 0.15 at the vertices (+-0.4, -0.4, -0.4) of the opposite
+/// edge. The object is rotated (about z by 30, y by 25, x by 15 degrees, so that
+/// no face or edge is aligned with a grid); cloud() then centres and scales it so
+/// that the cloud's bounding box has half-extent 1, and sdf() is the exact
+/// signed distance in that unit-box frame.
+class CubeSpheres
+{
+public:
+  CubeSpheres();
+
+  /// Quasi-uniform samples of the union's surface, `target` points where
+  /// possible (4.5.4: 2346), mapped to the unit box; fixes the frame of sdf().
+  PointCloud<3> cloud(int target);
+
+  /// Signed distance at a point of the unit-box frame (exact outside the union;
+  /// inside, near the junction curves, an under-estimate of |phi*|).
+  double sdf(const std::array<double, 3>& x) const;
+
+private:
+  struct Ball
+  {
+    std::array<double, 3> C;
+    double R;
+  };
+  double objectSdf(const std::array<double, 3>& p) const;
+  std::array<double, 3> toWorld(const std::array<double, 3>& p) const;
+  std::vector<std::array<double, 3>> sample(double spacing, int extra) const;
+
+  Ball Balls[3] = { { { 0.0, 0.4, 0.4 }, 0.25 }, { { 0.4, -0.4, -0.4 }, 0.15 }, { { -0.4, -0.4, -0.4 }, 0.15 } };
+  double Rot[3][3]{};             ///< object frame -> world
+  std::array<double, 3> Centre{}; ///< world bounding-box centre (before scaling)
+  double Scale = 1.0;             ///< world half-extent
+};
+
+/// Quadrature nodes and weights of a curve (D = 2) or surface (D = 3).
+template <int D>
+using ShapeQuadrature = std::vector<std::pair<std::array<double, D>, double>>;
+
+/// Midpoint rule with n equal arcs of the unit circle.
+ShapeQuadrature<2> circleQuadrature(int n);
+
+/// Midpoint rule with `perSide` equal parts on each side of the diamond |x| + |y| = 1.
+ShapeQuadrature<2> rotatedSquareQuadrature(int perSide);
+
+/// n Fibonacci points on the unit sphere, equal weights 4 pi / n.
+ShapeQuadrature<3> sphereQuadrature(int n);
+
+/// E_2 of a shape (4.1) with p = 2: sqrt(sum w d_P(x)^2) over a quadrature
+/// (x, w) of it, d_P the distance to the cloud by brute force. The thesis quotes
+/// about 7.10e-2 for the unit circle and 64 points (4.5.3, dashed line of Fig. 4.7).
+template <int D>
+double shapeEnergy(const PointCloud<D>& cloud, const ShapeQuadrature<D>& quadrature);
+
+extern template double shapeEnergy<2>(const PointCloud<2>&, const ShapeQuadrature<2>&);
+extern template double shapeEnergy<3>(const PointCloud<3>&, const ShapeQuadrature<3>&);
 
 } // namespace sltk

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file TestSupport.h
+/// Small helpers shared by the Core tests: node coordinates and nodal sampling
+/// of functions of a point. Grids are sltk::uniformBox (sltk/grid/GridSpec.h),
+/// fields with ghost values filled by the boundary policy are
+/// sltk::sampleField (sltk/grid/SampleField.h), synthetic clouds and exact
+/// distances are in sltk/cloud/SyntheticClouds.h.
+
+#include "sltk/grid/GridField.h"
+
+#include <array>
+
+namespace sltktest
+{
+
+/// The coordinates of node i.
+template <int D>
+std::array<double, D> nodeCoordinates(const sltk::GridSpec<D>& g, const std::array<sltk::Index, D>& i)
+{
+  std::array<double, D> x{};
+  for (int a = 0; a < D; ++a)
+  {
+    x[a] = g.coordinate(a, i[a]);
+  }
+  return x;
+}
+
+/// The coordinates of the node of flat index k of a field.
+template <int D, class T>
+std::array<double, D> nodeCoordinates(const sltk::GridField<D, T>& f, sltk::Index k)
+{
+  return nodeCoordinates<D>(f.spec(), f.nodeIndex(k));
+}
+
+/// A field with `ghost` layers holding f(x) at the nodes, f taking the node's
+/// std::array<double, D> coordinates; the ghost values are left at zero.
+template <int D, class F>
+sltk::GridField<D> sampleNodes(const sltk::GridSpec<D>& g, int ghost, F f)
+{
+  sltk::GridField<D> u(g, ghost);
+  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
+  {
+    const auto i = u.nodeIndex(k);
+    u(i) = f(nodeCoordinates<D>(g, i));
+  }
+  return u;
+}
+
+} // namespace sltktest
