@@ -124,14 +124,4 @@ Status makePresetSolver(const PresetRunOptions& options, std::unique_ptr<HjbSolv
   return Status::invalidArgument("unknown preset");
 }
 
-Status runPreset(const PresetRunOptions& options, const Context& ctx, HjbRunResult& result)
-{
-  result = HjbRunResult{};
-  std::unique_ptr<HjbSolver> solver;
-  SLTK_RETURN_IF_ERROR(makePresetSolver(options, solver));
-  SLTK_RETURN_IF_ERROR(solver->advanceTo(solver->finalTime(), ctx));
-  solver->result(result);
-  return Status::ok();
-}
-
 } // namespace sltk
