@@ -51,18 +51,10 @@ Status presetSolver(const Problem& problem, HjbSetup<Problem::Dim> setup, const 
   }
   Index steps = 0;
   double dt = 0.0;
-  if (setup.Options.FinalTime > setup.Options.StartTime)
-  {
-    SLTK_RETURN_IF_ERROR(planTimeSteps("the HJB solver", setup.Options.StartTime, setup.Options.FinalTime,
-      setup.Options.MaxTimeStep, steps, dt));
-  }
-  else
-  {
-    dt = setup.Options.MaxTimeStep; // T = 0: the initial datum, no step
-  }
+  SLTK_RETURN_IF_ERROR(hjbPlanTimeSteps(setup.Options, steps, dt, true)); // T = 0: the initial datum, no step
   const bool reachable = options.Preset == HjbPreset::Test5Zermelo;
-  solver = makeHjbSolverOf<Problem>(options.Interpolator, problem, setup.Grid, setup.Options, steps, dt, reachable,
-    Problem::HasExact);
+  solver = makeHjbSolverOf<std::decay_t<decltype(problem)>>(
+    options.Interpolator, problem, setup.Grid, setup.Options, steps, dt, reachable, Problem::HasExact);
   return solver ? Status::ok() : Status::invalidArgument("unknown interpolator");
 }
 } // namespace
