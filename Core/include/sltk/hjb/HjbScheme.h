@@ -201,7 +201,7 @@ void hjbKernel(const Context& ctx, const ButcherTableau<S>& tableau, const Minim
 
 /// Problems may fix the cell-cache size at compile time (static constexpr int
 /// CellCacheSize; 0 = the automatic size), which instantiates one kernel
-/// instead of five; -1: HjbOptions::CellCacheSize chooses at run time.
+/// instead of four; -1: HjbOptions::CellCacheSize chooses at run time.
 template <class Problem, class = void>
 struct FixedCellCache : std::integral_constant<int, -1>
 {
@@ -209,6 +209,19 @@ struct FixedCellCache : std::integral_constant<int, -1>
 template <class Problem>
 struct FixedCellCache<Problem, std::void_t<decltype(Problem::CellCacheSize)>>
   : std::integral_constant<int, Problem::CellCacheSize>
+{
+};
+
+/// Problems may fix the RK order at compile time (static constexpr RkOrder
+/// FixedOrder), which instantiates the kernels of one stage count instead of
+/// three; HjbOptions::Order must then be that order. 0: any order (withTableau()).
+template <class Problem, class = void>
+struct FixedRkOrder : std::integral_constant<int, 0>
+{
+};
+template <class Problem>
+struct FixedRkOrder<Problem, std::void_t<decltype(Problem::FixedOrder)>>
+  : std::integral_constant<int, static_cast<int>(Problem::FixedOrder)>
 {
 };
 
@@ -259,6 +272,25 @@ Status hjbDispatchCache(const Context& ctx, const HjbOptions& options, const But
 
 } // namespace detail
 
+/// `Problem` compiled for one RK order (detail::FixedRkOrder) and, unless
+/// CacheSize is -1, one cell-cache size (detail::FixedCellCache; 0: automatic):
+/// the solver then instantiates one kernel of (3.7) per interpolator instead
+/// of one per order and cache size. HjbOptions::Order must be O, and with a
+/// fixed cache size HjbOptions::CellCacheSize is not read.
+template <class Problem, RkOrder O, int CacheSize = 0>
+struct FixedSchemeProblem : Problem
+{
+  static constexpr RkOrder FixedOrder = O;
+  static constexpr int CellCacheSize = CacheSize;
+};
+
+/// The same problem as a FixedSchemeProblem, e.g. withFixedOrder<RkOrder::Euler>(p).
+template <RkOrder O, int CacheSize = 0, class Problem>
+FixedSchemeProblem<Problem, O, CacheSize> withFixedOrder(const Problem& problem)
+{
+  return { problem };
+}
+
 /// Checks the options of hjbStep()/hjbAdvance() and the problem's control set.
 template <class Interp, class Problem>
 Status hjbValidate(const HjbOptions& options, const Problem& problem, const GridField<Interp::Dim, double>& u)
@@ -269,6 +301,12 @@ Status hjbValidate(const HjbOptions& options, const Problem& problem, const Grid
   {
     return Status::invalidArgument(
       "RK order must be 1, 2 or 3, got " + std::to_string(static_cast<int>(options.Order)));
+  }
+  constexpr int fixedOrder = detail::FixedRkOrder<Problem>::value;
+  if (fixedOrder > 0 && static_cast<int>(options.Order) != fixedOrder)
+  {
+    return Status::invalidArgument("this problem is compiled for RK order " + std::to_string(fixedOrder) +
+      " only, got " + std::to_string(static_cast<int>(options.Order)));
   }
   if (u.ghost() < Interp::GhostWidth)
   {
@@ -316,11 +354,17 @@ Status hjbStep(const Context& ctx, const HjbOptions& options, const Problem& pro
   }
   current.fillGhosts();
   std::array<double, 3> work{};
-  const Status status = withTableau(options.Order,
-    [&](const auto& tableau) {
-      return detail::hjbDispatchCache<Interp>(ctx, options, tableau, problem, current, next, tNext, dt, argmins, work);
-    });
-  SLTK_RETURN_IF_ERROR(status);
+  auto run = [&](const auto& tableau)
+  { return detail::hjbDispatchCache<Interp>(ctx, options, tableau, problem, current, next, tNext, dt, argmins, work); };
+  constexpr int fixedOrder = detail::FixedRkOrder<Problem>::value;
+  if constexpr (fixedOrder > 0)
+  {
+    SLTK_RETURN_IF_ERROR(run(rkTableau<static_cast<RkOrder>(fixedOrder)>()));
+  }
+  else
+  {
+    SLTK_RETURN_IF_ERROR(withTableau(options.Order, run));
+  }
   if (stats)
   {
     stats->Steps += 1;
