@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The HJB scheme (3.7) with obstacles (3.39) and reachable sets (3.40), and
 // the thesis's Tests 1-5 (3.5) against Tables 3.1, 3.3, 3.5, 3.7 and 3.9.
-// The presets are compiled for their setups' RK orders and the automatic cell
-// cache (withFixedOrder(), as makePresetSolver() does): the same kernels, a
-// fraction of the compile time. The cache-size test keeps the run-time cache
-// choice; RejectsBadArguments and the closed-form test the run-time order.
+// Every problem is compiled for the one RK order it is run with and the
+// automatic cell cache (withFixedOrder(), as makePresetSolver() does): the
+// same kernels, a fraction of the compile time. The cache-size tests keep the
+// run-time cache choice; the run-time order is tested by the expression
+// solvers (TestHjbExpressionSolver.cxx), which compile every order.
 #include "sltk/hjb/HjbError.h"
 #include "sltk/hjb/HjbScheme.h"
 #include "sltk/hjb/Presets.h"
@@ -314,11 +315,11 @@ auto linearProblem()
 
 TEST(HjbScheme, ClosedFormFeedbackAgreesWithTheSearch)
 {
-  const auto searched = linearProblem();
-  const auto closed = sltk::withFeedback(searched,
+  const auto searched = sltk::withFixedOrder<sltk::RkOrder::Euler>(linearProblem());
+  const auto closed = sltk::withFixedOrder<sltk::RkOrder::Euler>(sltk::withFeedback(linearProblem(),
     [](double, const std::array<double, 2>&) {
       return std::array<double, 2>{ 0.6, -0.9 };
-    });
+    }));
   const auto grid = sltk::hjbpreset::boxGrid<2>(21, -1.0, 1.0);
   sltk::HjbOptions opt;
   opt.Order = sltk::RkOrder::Euler;
@@ -431,7 +432,7 @@ TEST(HjbScheme, InterrupterAbortsBetweenSteps)
 
 TEST(HjbScheme, RejectsBadArguments)
 {
-  const auto problem = sltk::test2Problem();
+  const auto problem = sltk::withFixedOrder<sltk::Test2Order, -1>(sltk::test2Problem()); // cache size: run time
   auto setup = sltk::test2Setup(41);
   sltk::GridField<1> u(setup.Grid, 2);
   sltk::hjbInitialize(problem, u);
