@@ -3,7 +3,9 @@
 
 #include "SLTKBridge.h"
 
+#include "sltk/hjb/HjbResult.h"
 #include "sltk/hjb/HjbSolver.h"
+#include "sltk/hjb/PresetRun.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"

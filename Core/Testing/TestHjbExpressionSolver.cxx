@@ -244,6 +244,27 @@ TEST(HjbExpressionSolver, ThreeDimensionalTransportWithControls)
   EXPECT_LT(r.LinfError, 2e-2) << "L1 " << r.L1Error;
 }
 
+TEST(HjbPresetSolver, EveryPresetStepsWithEveryInterpolator)
+{
+  // Each preset is compiled for its setup's RK order only (PresetRun.cxx): all
+  // of them build and step, with the values staying finite.
+  for (int p = 1; p <= 5; ++p)
+  {
+    for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
+    {
+      sltk::PresetRunOptions o;
+      o.Preset = static_cast<sltk::HjbPreset>(p);
+      o.Nodes = 11;
+      o.Interpolator = info.Kind;
+      std::unique_ptr<sltk::HjbSolver> solver;
+      ASSERT_TRUE(sltk::makePresetSolver(o, solver).isOk()) << "Test " << p << " " << info.Name;
+      const sltk::Status s = solver->advanceTo(solver->startTime() + solver->timeStep(), sltk::Context{});
+      EXPECT_TRUE(s.isOk()) << "Test " << p << " " << info.Name << ": " << s.message();
+      EXPECT_EQ(solver->stepsDone(), 1);
+    }
+  }
+}
+
 TEST(HjbExpressionSolver, AdvancesStepByStepAndRestartsForEarlierTimes)
 {
   sltk::HjbExpressionSpec s = rotation(21);

@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The HJB scheme (3.7) with obstacles (3.39) and reachable sets (3.40), and
 // the thesis's Tests 1-5 (3.5) against Tables 3.1, 3.3, 3.5, 3.7 and 3.9.
+// Every problem is compiled for the one RK order it is run with and the
+// automatic cell cache (withFixedOrder(), as makePresetSolver() does): the
+// same kernels, a fraction of the compile time. The cache-size tests keep the
+// run-time cache choice; the run-time order is tested by the expression
+// solvers (TestHjbExpressionSolver.cxx), which compile every order.
 #include "sltk/hjb/HjbError.h"
 #include "sltk/hjb/HjbScheme.h"
 #include "sltk/hjb/Presets.h"
@@ -63,7 +68,7 @@ double order(double coarse, double fine, Index nCoarse, Index nFine)
 
 TEST(HjbScheme, PureTransportEqualsTheLinearSLStep)
 {
-  const auto problem = sltk::test1Problem();
+  const auto problem = sltk::withFixedOrder<sltk::Test1Order>(sltk::test1Problem());
   const auto setup = sltk::test1Setup(31);
   sltk::GridField<2> u(setup.Grid, 2);
   sltk::hjbInitialize(problem, u);
@@ -71,7 +76,8 @@ TEST(HjbScheme, PureTransportEqualsTheLinearSLStep)
   sltk::HjbStats stats;
   ASSERT_TRUE(sltk::hjbAdvance<Cweno2>(sltk::Context{}, setup.Options, problem, u, &stats).isOk());
   // The linear step takes the PDE velocity f = -f_D (Characteristics.h).
-  auto velocity = [](double t, const std::array<double, 2>& x) {
+  auto velocity = [](double t, const std::array<double, 2>& x)
+  {
     const auto fD = sltk::test1Problem().Dynamics(t, x, std::array<double, 1>{});
     return std::array<double, 2>{ -fD[0], -fD[1] };
   };
@@ -93,7 +99,7 @@ TEST(HjbScheme, PureTransportEqualsTheLinearSLStep)
 TEST(HjbScheme, Test1MatchesTable31)
 {
   // Table 3.1, N = 41 and 81 (WENO, CWENO, CWENOZ).
-  const auto problem = sltk::test1Problem();
+  const auto problem = sltk::withFixedOrder<sltk::Test1Order>(sltk::test1Problem());
   const HjbRun w41 = solve<Weno2>(problem, sltk::test1Setup(41));
   const HjbRun c41 = solve<Cweno2>(problem, sltk::test1Setup(41));
   const HjbRun z41 = solve<CwenoZ2>(problem, sltk::test1Setup(41));
@@ -109,7 +115,7 @@ TEST(HjbScheme, Test1MatchesTable31)
 
 TEST(HjbScheme, Test2MatchesTable33)
 {
-  const auto problem = sltk::test2Problem();
+  const auto problem = sltk::withFixedOrder<sltk::Test2Order>(sltk::test2Problem());
   const double thesis[3][2] = { { 3.56e-6, 2.83e-7 }, { 2.24e-6, 1.80e-7 }, { 1.78e-6, 1.44e-7 } };
   HjbRun r[3][2];
   const Index n[2] = { 81, 161 };
@@ -137,7 +143,7 @@ TEST(HjbScheme, Test2MatchesTable33)
 
 TEST(HjbScheme, Test2MatchesTable33_Long)
 {
-  const auto problem = sltk::test2Problem();
+  const auto problem = sltk::withFixedOrder<sltk::Test2Order>(sltk::test2Problem());
   const HjbRun w321 = solve<Weno1>(problem, sltk::test2Setup(321));
   const HjbRun w641 = solve<Weno1>(problem, sltk::test2Setup(641));
   const HjbRun z641 = solve<CwenoZ1>(problem, sltk::test2Setup(641));
@@ -150,7 +156,7 @@ TEST(HjbScheme, Test2MatchesTable33_Long)
 
 TEST(HjbScheme, Test3MatchesTable35)
 {
-  const auto problem = sltk::test3Problem();
+  const auto problem = sltk::withFixedOrder<sltk::Test3Order>(sltk::test3Problem());
   const HjbRun w = solve<Weno1>(problem, sltk::test3Setup(126));
   const HjbRun c = solve<Cweno1>(problem, sltk::test3Setup(126));
   expectWithin(w.Error, 1.28e-5, 0.2, "Test 3 WENO N=126");
@@ -164,7 +170,7 @@ TEST(HjbScheme, Test3MatchesTable35)
 
 TEST(HjbScheme, Test3MatchesTable35_Long)
 {
-  const auto problem = sltk::test3Problem();
+  const auto problem = sltk::withFixedOrder<sltk::Test3Order>(sltk::test3Problem());
   const HjbRun z252 = solve<CwenoZ1>(problem, sltk::test3Setup(252));
   const HjbRun z503 = solve<CwenoZ1>(problem, sltk::test3Setup(503));
   expectWithin(z252.Error, 1.70e-6, 0.2, "Test 3 CWENOZ N=252");
@@ -176,7 +182,7 @@ TEST(HjbScheme, Test3MatchesTable35_Long)
 
 TEST(HjbScheme, Test4MatchesTables37And39)
 {
-  const auto problem = sltk::test4Problem();
+  const auto problem = sltk::withFixedOrder<sltk::Test4Order>(sltk::test4Problem());
   const HjbRun w = solve<Weno2>(problem, sltk::test4Setup(41));
   const HjbRun c = solve<Cweno2>(problem, sltk::test4Setup(41));
   expectWithin(w.Error, 4.02e-2, 0.2, "Test 4 WENO N=41");
@@ -192,7 +198,7 @@ TEST(HjbScheme, Test4WarmStartMatchesTheFullTabulation)
 {
   // The preset warm-starts each node's minimisation from its previous argmin;
   // the thesis's procedure tabulates A (33 x 33) at every node and step.
-  const auto problem = sltk::test4Problem();
+  const auto problem = sltk::withFixedOrder<sltk::Test4Order>(sltk::test4Problem());
   auto cold = sltk::test4Setup(41);
   cold.Options.Minimizer.WarmTabulationPoints = 0;
   const HjbRun full = solve<Cweno2>(problem, cold);
@@ -217,7 +223,7 @@ TEST(HjbScheme, Test4WarmStartMatchesTheFullTabulation)
 
 TEST(HjbScheme, Test4MatchesTables37And39_Long)
 {
-  const auto problem = sltk::test4Problem();
+  const auto problem = sltk::withFixedOrder<sltk::Test4Order>(sltk::test4Problem());
   const HjbRun w = solve<Weno2>(problem, sltk::test4Setup(81));
   const HjbRun z = solve<CwenoZ2>(problem, sltk::test4Setup(81));
   expectWithin(w.Error, 2.25e-2, 0.2, "Test 4 WENO N=81");
@@ -230,7 +236,7 @@ TEST(HjbScheme, Test4MatchesTables37And39_Long)
 
 TEST(HjbScheme, ObstacleIsRespectedAndReachableSetGrows)
 {
-  const auto problem = sltk::test5Problem();
+  const auto problem = sltk::withFixedOrder<sltk::Test5Order>(sltk::test5Problem());
   auto setup = sltk::test5Setup(51, 1.0); // dx = 0.1, 10 steps
   setup.Options.Minimizer.TabulationPoints = 16;
   sltk::GridField<2> u(setup.Grid, 2);
@@ -282,7 +288,8 @@ TEST(HjbScheme, ObstacleIsRespectedAndReachableSetGrows)
   EXPECT_GT(reachedLater, 5 * inTarget); // the swimmer gets there from far upstream
   // Upstream (left, where the current pushes towards the target) is reached, downstream is not.
   const sltk::GridSpec<2>& g = setup.Grid;
-  auto at = [&](double x, double y) {
+  auto at = [&](double x, double y)
+  {
     const std::array<Index, 2> i{ Index(std::lround((x - g.Origin[0]) / g.Spacing[0])),
       Index(std::lround((y - g.Origin[1]) / g.Spacing[1])) };
     return reach(i);
@@ -300,19 +307,19 @@ auto linearProblem()
   auto dynamics = [](double, const std::array<double, 2>&, const std::array<double, 2>& a) {
     return std::array<double, 2>{ -a[0], -a[1] };
   };
-  auto cost = [](double, const std::array<double, 2>&, const std::array<double, 2>& a) {
-    return 0.5 * (a[0] * a[0] + a[1] * a[1]);
-  };
+  auto cost = [](double, const std::array<double, 2>&, const std::array<double, 2>& a)
+  { return 0.5 * (a[0] * a[0] + a[1] * a[1]); };
   auto initial = [](const std::array<double, 2>& x) { return 0.6 * x[0] - 0.9 * x[1]; };
   return sltk::makeHjbProblem<2, 2>(sltk::ControlSet<2>::ball({ 0.0, 0.0 }, 2.0), dynamics, cost, initial);
 }
 
 TEST(HjbScheme, ClosedFormFeedbackAgreesWithTheSearch)
 {
-  const auto searched = linearProblem();
-  const auto closed = sltk::withFeedback(searched, [](double, const std::array<double, 2>&) {
-    return std::array<double, 2>{ 0.6, -0.9 };
-  });
+  const auto searched = sltk::withFixedOrder<sltk::RkOrder::Euler>(linearProblem());
+  const auto closed = sltk::withFixedOrder<sltk::RkOrder::Euler>(sltk::withFeedback(linearProblem(),
+    [](double, const std::array<double, 2>&) {
+      return std::array<double, 2>{ 0.6, -0.9 };
+    }));
   const auto grid = sltk::hjbpreset::boxGrid<2>(21, -1.0, 1.0);
   sltk::HjbOptions opt;
   opt.Order = sltk::RkOrder::Euler;
@@ -357,7 +364,7 @@ public:
 
 TEST(HjbScheme, SerialAndThreadedAreBitIdenticalAndCacheSizeIsInvisible)
 {
-  const auto problem = sltk::test4Problem();
+  const auto problem = sltk::withFixedOrder<sltk::Test4Order, -1>(sltk::test4Problem()); // cache size: run time
   auto setup = sltk::test4Setup(21);
   setup.Options.Minimizer.TabulationPoints = 9;
   sltk::GridField<2> serial(setup.Grid, 2);
@@ -396,7 +403,7 @@ TEST(HjbScheme, SerialAndThreadedAreBitIdenticalAndCacheSizeIsInvisible)
 
 TEST(HjbScheme, InterrupterAbortsBetweenSteps)
 {
-  const auto problem = sltk::test2Problem();
+  const auto problem = sltk::withFixedOrder<sltk::Test2Order>(sltk::test2Problem());
   const auto setup = sltk::test2Setup(81); // 2 steps
   auto opt = setup.Options;
   opt.MaxTimeStep = 0.1; // 10 steps
@@ -425,7 +432,7 @@ TEST(HjbScheme, InterrupterAbortsBetweenSteps)
 
 TEST(HjbScheme, RejectsBadArguments)
 {
-  const auto problem = sltk::test2Problem();
+  const auto problem = sltk::withFixedOrder<sltk::Test2Order, -1>(sltk::test2Problem()); // cache size: run time
   auto setup = sltk::test2Setup(41);
   sltk::GridField<1> u(setup.Grid, 2);
   sltk::hjbInitialize(problem, u);
@@ -436,11 +443,17 @@ TEST(HjbScheme, RejectsBadArguments)
   opt.MaxTimeStep = 0.0;
   EXPECT_EQ(sltk::hjbAdvance<Weno1>(sltk::Context{}, opt, problem, u).code(), sltk::StatusCode::InvalidArgument);
   sltk::GridField<1> thin(setup.Grid, 1);
-  EXPECT_EQ(sltk::hjbAdvance<Weno1>(sltk::Context{}, setup.Options, problem, thin).code(),
-    sltk::StatusCode::InvalidArgument);
+  EXPECT_EQ(
+    sltk::hjbAdvance<Weno1>(sltk::Context{}, setup.Options, problem, thin).code(), sltk::StatusCode::InvalidArgument);
   auto bad = problem;
   bad.Controls = sltk::ControlSet<1>::box({ 1.0 }, { -1.0 });
   EXPECT_EQ(sltk::hjbAdvance<Weno1>(sltk::Context{}, setup.Options, bad, u).code(), sltk::StatusCode::InvalidArgument);
+  // A problem compiled for one RK order refuses the others.
+  const auto euler = sltk::withFixedOrder<sltk::RkOrder::Euler>(problem);
+  opt = setup.Options;
+  EXPECT_TRUE(sltk::hjbAdvance<Weno1>(sltk::Context{}, opt, euler, u).isOk());
+  opt.Order = sltk::RkOrder::Heun;
+  EXPECT_EQ(sltk::hjbAdvance<Weno1>(sltk::Context{}, opt, euler, u).code(), sltk::StatusCode::InvalidArgument);
 }
 
 } // namespace

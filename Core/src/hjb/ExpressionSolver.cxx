@@ -219,11 +219,7 @@ Status makeForDimension(
   in.Options.FinalTime = spec.FinalTime;
   in.Options.MaxTimeStep = spec.CourantNumber * dx;
   in.Options.Minimizer = spec.Minimizer;
-  in.Dt = in.Options.MaxTimeStep;
-  if (spec.FinalTime > 0.0)
-  {
-    SLTK_RETURN_IF_ERROR(planTimeSteps("the HJB solver", 0.0, spec.FinalTime, in.Options.MaxTimeStep, in.Steps, in.Dt));
-  }
+  SLTK_RETURN_IF_ERROR(hjbPlanTimeSteps(in.Options, in.Steps, in.Dt, true)); // T = 0: the initial datum, no step
   in.Reachable = spec.ReachableSet || expressions->HasObstacle;
   // Pure transport: no minimisation, one unused control slot.
   in.ControlDimension = spec.Controls == ControlKind::None ? 1 : spec.ControlDimension;

@@ -3,7 +3,7 @@
 /// \file HjbSolverOf.h (private)
 /// HjbSolver for one compile-time problem type and interpolator: holds u^k,
 /// the reachable set (3.40) and the work counters, and steps (3.7) with
-/// hjbStep() from u^k to the requested time.
+/// hjbStepTo() (the time loop of hjbAdvance()) from u^k to the requested time.
 
 #include "sltk/hjb/HjbError.h"
 #include "sltk/hjb/HjbScheme.h"
@@ -19,7 +19,7 @@
 namespace sltk
 {
 
-template<int D>
+template <int D>
 HjbGrid toHjbGrid(const GridSpec<D>& g)
 {
   HjbGrid p;
@@ -37,7 +37,7 @@ HjbGrid toHjbGrid(const GridSpec<D>& g)
   return p;
 }
 
-template<class Interp, class Problem>
+template <class Interp, class Problem>
 class HjbSolverOf final : public HjbSolver
 {
 public:
@@ -45,14 +45,8 @@ public:
 
   /// `initialValues` (x fastest) replaces v_0 when not empty; `exactKnown`
   /// says whether Problem::Exact may be called.
-  HjbSolverOf(Problem problem,
-    const GridSpec<D>& spec,
-    const HjbOptions& options,
-    Index steps,
-    double dt,
-    bool reachable,
-    bool exactKnown,
-    std::vector<double> initialValues = {})
+  HjbSolverOf(Problem problem, const GridSpec<D>& spec, const HjbOptions& options, Index steps, double dt,
+    bool reachable, bool exactKnown, std::vector<double> initialValues = {})
     : P(std::move(problem))
     , Spec(spec)
     , Options(options)
@@ -83,40 +77,8 @@ public:
     {
       ++target;
     }
-    if (target == this->Done)
-    {
-      return Status::ok();
-    }
-    Interrupter& progress = ctx.interrupter();
-    progress.start("HJB semi-Lagrangian scheme (3.7)");
-    const Index first = this->Done;
-    Status status;
-    while (this->Done < target)
-    {
-      if (progress.wasInterrupted(static_cast<double>(this->Done - first) / static_cast<double>(target - first)))
-      {
-        status = Status::aborted();
-        break;
-      }
-      const double tNext = this->startTime() + static_cast<double>(this->Done + 1) * this->Dt;
-      status = hjbStep<Interp>(
-        ctx, this->Options, this->P, this->U, this->Next, tNext, this->Dt, &this->Stats, &this->Argmins);
-      if (status.isOk() || status.code() == StatusCode::NumericalFailure)
-      {
-        std::swap(this->U, this->Next);
-        ++this->Done;
-        if (this->Reachable)
-        {
-          hjbMarkReached<D>(&this->Next, tNext - this->Dt, this->U, this->Reach, tNext); // Next: u^k after the swap
-        }
-      }
-      if (!status.isOk())
-      {
-        break;
-      }
-    }
-    progress.end();
-    return status;
+    return hjbStepTo<Interp>(ctx, this->Options, this->P, this->Dt, target, this->U, this->Next, this->Done,
+      &this->Stats, &this->Argmins, this->Reachable ? &this->Reach : nullptr);
   }
 
   void result(HjbRunResult& out) const override
@@ -175,8 +137,7 @@ private:
     this->Done = 0;
     if (this->Reachable)
     {
-      this->Reach.resize(this->Spec, 0, NotReached);
-      hjbMarkReached<D>(nullptr, this->startTime(), this->U, this->Reach, this->startTime());
+      hjbStartReached<D>(this->U, this->Reach, this->startTime());
     }
   }
 
@@ -212,12 +173,12 @@ private:
 };
 
 /// Builds the solver for the interpolator chosen at run time.
-template<class Problem, class... Args>
+template <class Problem, class... Args>
 std::unique_ptr<HjbSolver> makeHjbSolverOf(InterpolatorKind kind, Args&&... args)
 {
-  return withInterpolator<Problem::Dim>(kind, [&](auto tag) -> std::unique_ptr<HjbSolver> {
-    return std::make_unique<HjbSolverOf<typename decltype(tag)::type, Problem>>(std::forward<Args>(args)...);
-  });
+  return withInterpolator<Problem::Dim>(kind,
+    [&](auto tag) -> std::unique_ptr<HjbSolver>
+    { return std::make_unique<HjbSolverOf<typename decltype(tag)::type, Problem>>(std::forward<Args>(args)...); });
 }
 
 } // namespace sltk

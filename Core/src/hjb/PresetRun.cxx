@@ -36,11 +36,16 @@ HjbSetup<2> setupOf<2>(HjbPreset preset, Index n, double finalTime)
   return test5Setup(n, finalTime >= 0.0 ? finalTime : 3.0);
 }
 
-/// The solver of `problem` on the preset's grid, with the user's final time and Courant number.
-template <class Problem>
-Status presetSolver(const Problem& problem, HjbSetup<Problem::Dim> setup, const PresetRunOptions& options,
+/// The solver of `base` on the preset's grid, with the user's final time and
+/// Courant number. A user cannot choose the RK order (O, the setup's) or the
+/// cell cache (automatic) of a preset (PresetRunOptions): both are fixed at
+/// compile time (withFixedOrder()), one kernel of (3.7) per interpolator.
+template <RkOrder O, class Problem>
+Status presetSolver(const Problem& base, HjbSetup<Problem::Dim> setup, const PresetRunOptions& options,
   std::unique_ptr<HjbSolver>& solver)
 {
+  using Fixed = FixedSchemeProblem<Problem, O>;
+  const Fixed problem = withFixedOrder<O>(base);
   if (options.FinalTime >= 0.0)
   {
     setup.Options.FinalTime = options.FinalTime;
@@ -51,18 +56,10 @@ Status presetSolver(const Problem& problem, HjbSetup<Problem::Dim> setup, const 
   }
   Index steps = 0;
   double dt = 0.0;
-  if (setup.Options.FinalTime > setup.Options.StartTime)
-  {
-    SLTK_RETURN_IF_ERROR(planTimeSteps("the HJB solver", setup.Options.StartTime, setup.Options.FinalTime,
-      setup.Options.MaxTimeStep, steps, dt));
-  }
-  else
-  {
-    dt = setup.Options.MaxTimeStep; // T = 0: the initial datum, no step
-  }
+  SLTK_RETURN_IF_ERROR(hjbPlanTimeSteps(setup.Options, steps, dt, true)); // T = 0: the initial datum, no step
   const bool reachable = options.Preset == HjbPreset::Test5Zermelo;
-  solver = makeHjbSolverOf<Problem>(options.Interpolator, problem, setup.Grid, setup.Options, steps, dt, reachable,
-    Problem::HasExact);
+  solver = makeHjbSolverOf<Fixed>(
+    options.Interpolator, problem, setup.Grid, setup.Options, steps, dt, reachable, Problem::HasExact);
   return solver ? Status::ok() : Status::invalidArgument("unknown interpolator");
 }
 } // namespace
@@ -111,27 +108,17 @@ Status makePresetSolver(const PresetRunOptions& options, std::unique_ptr<HjbSolv
   switch (options.Preset)
   {
     case HjbPreset::Test1Rotation:
-      return presetSolver(test1Problem(), setupOf<2>(options.Preset, n, t), options, solver);
+      return presetSolver<Test1Order>(test1Problem(), setupOf<2>(options.Preset, n, t), options, solver);
     case HjbPreset::Test2SemiConcave:
-      return presetSolver(test2Problem(), setupOf<1>(options.Preset, n, t), options, solver);
+      return presetSolver<Test2Order>(test2Problem(), setupOf<1>(options.Preset, n, t), options, solver);
     case HjbPreset::Test3Eikonal:
-      return presetSolver(test3Problem(), setupOf<1>(options.Preset, n, t), options, solver);
+      return presetSolver<Test3Order>(test3Problem(), setupOf<1>(options.Preset, n, t), options, solver);
     case HjbPreset::Test4Quadratic:
-      return presetSolver(test4Problem(), setupOf<2>(options.Preset, n, t), options, solver);
+      return presetSolver<Test4Order>(test4Problem(), setupOf<2>(options.Preset, n, t), options, solver);
     case HjbPreset::Test5Zermelo:
-      return presetSolver(test5Problem(), setupOf<2>(options.Preset, n, t), options, solver);
+      return presetSolver<Test5Order>(test5Problem(), setupOf<2>(options.Preset, n, t), options, solver);
   }
   return Status::invalidArgument("unknown preset");
-}
-
-Status runPreset(const PresetRunOptions& options, const Context& ctx, HjbRunResult& result)
-{
-  result = HjbRunResult{};
-  std::unique_ptr<HjbSolver> solver;
-  SLTK_RETURN_IF_ERROR(makePresetSolver(options, solver));
-  SLTK_RETURN_IF_ERROR(solver->advanceTo(solver->finalTime(), ctx));
-  solver->result(result);
-  return Status::ok();
 }
 
 } // namespace sltk

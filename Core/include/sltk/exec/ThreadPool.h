@@ -9,6 +9,8 @@
 /// the chunk partials in chunk order. Hence results are bit-identical between
 /// 1 and N threads.
 
+#include "sltk/core/Index.h"
+
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -18,8 +20,6 @@
 
 namespace sltk
 {
-
-using Index = std::int64_t;
 
 class ThreadPool
 {

@@ -9,6 +9,7 @@
 ///    the domain are projected (clipped) onto it before interpolation;
 ///  - Periodic: N distinct nodes, dx = L / N, node N is node 0.
 
+#include "sltk/core/Index.h"
 #include "sltk/core/Status.h"
 
 #include <array>
@@ -18,8 +19,6 @@
 
 namespace sltk
 {
-
-using Index = std::int64_t;
 
 enum class Boundary : std::uint8_t
 {

@@ -17,6 +17,7 @@
 /// theta, a = Center + Radius (cos theta, sin theta), so that every p is
 /// admissible; a sphere in R^3 uses a in R^3 projected radially onto it.
 
+#include "sltk/core/Index.h"
 #include "sltk/core/Status.h"
 
 #include <array>
@@ -109,8 +110,8 @@ struct ControlSet
       case ControlKind::Sphere:
         if (!(this->Radius > 0.0) || !std::isfinite(this->Radius))
         {
-          return Status::invalidArgument("control ball/sphere radius must be positive and finite, got " +
-            std::to_string(this->Radius));
+          return Status::invalidArgument(
+            "control ball/sphere radius must be positive and finite, got " + std::to_string(this->Radius));
         }
         if (this->Kind == ControlKind::Sphere && M == 1)
         {
@@ -353,7 +354,8 @@ struct ControlSet
       {
         const Index i = rest % n;
         rest /= n;
-        a[j] = n == 1 ? 0.5 * (lo[j] + hi[j]) : lo[j] + (hi[j] - lo[j]) * static_cast<double>(i) / static_cast<double>(n - 1);
+        a[j] = n == 1 ? 0.5 * (lo[j] + hi[j])
+                      : lo[j] + (hi[j] - lo[j]) * static_cast<double>(i) / static_cast<double>(n - 1);
       }
       if (this->Kind == ControlKind::Ball && !this->contains(a, 1e-12 * this->Radius))
       {
@@ -397,8 +399,6 @@ struct ControlSet
   }
 
 private:
-  using Index = long long;
-
   double distanceToCenter(const Control& a) const { return std::sqrt(squaredDistance(a, this->Center)); }
   static double squaredDistance(const Control& a, const Control& b)
   {

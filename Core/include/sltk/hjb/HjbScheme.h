@@ -22,10 +22,10 @@
 #include "sltk/core/Status.h"
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
-#include "sltk/interp/CellCache.h"
 #include "sltk/hjb/HjbArgmins.h"
 #include "sltk/hjb/HjbProblem.h"
 #include "sltk/hjb/Minimizer.h"
+#include "sltk/interp/CellCache.h"
 #include "sltk/sl/Characteristics.h"
 #include "sltk/sl/LinearSLStep.h"
 
@@ -201,7 +201,7 @@ void hjbKernel(const Context& ctx, const ButcherTableau<S>& tableau, const Minim
 
 /// Problems may fix the cell-cache size at compile time (static constexpr int
 /// CellCacheSize; 0 = the automatic size), which instantiates one kernel
-/// instead of five; -1: HjbOptions::CellCacheSize chooses at run time.
+/// instead of four; -1: HjbOptions::CellCacheSize chooses at run time.
 template <class Problem, class = void>
 struct FixedCellCache : std::integral_constant<int, -1>
 {
@@ -209,6 +209,19 @@ struct FixedCellCache : std::integral_constant<int, -1>
 template <class Problem>
 struct FixedCellCache<Problem, std::void_t<decltype(Problem::CellCacheSize)>>
   : std::integral_constant<int, Problem::CellCacheSize>
+{
+};
+
+/// Problems may fix the RK order at compile time (static constexpr RkOrder
+/// FixedOrder), which instantiates the kernels of one stage count instead of
+/// three; HjbOptions::Order must then be that order. 0: any order (withTableau()).
+template <class Problem, class = void>
+struct FixedRkOrder : std::integral_constant<int, 0>
+{
+};
+template <class Problem>
+struct FixedRkOrder<Problem, std::void_t<decltype(Problem::FixedOrder)>>
+  : std::integral_constant<int, static_cast<int>(Problem::FixedOrder)>
 {
 };
 
@@ -259,6 +272,25 @@ Status hjbDispatchCache(const Context& ctx, const HjbOptions& options, const But
 
 } // namespace detail
 
+/// `Problem` compiled for one RK order (detail::FixedRkOrder) and, unless
+/// CacheSize is -1, one cell-cache size (detail::FixedCellCache; 0: automatic):
+/// the solver then instantiates one kernel of (3.7) per interpolator instead
+/// of one per order and cache size. HjbOptions::Order must be O, and with a
+/// fixed cache size HjbOptions::CellCacheSize is not read.
+template <class Problem, RkOrder O, int CacheSize = 0>
+struct FixedSchemeProblem : Problem
+{
+  static constexpr RkOrder FixedOrder = O;
+  static constexpr int CellCacheSize = CacheSize;
+};
+
+/// The same problem as a FixedSchemeProblem, e.g. withFixedOrder<RkOrder::Euler>(p).
+template <RkOrder O, int CacheSize = 0, class Problem>
+FixedSchemeProblem<Problem, O, CacheSize> withFixedOrder(const Problem& problem)
+{
+  return { problem };
+}
+
 /// Checks the options of hjbStep()/hjbAdvance() and the problem's control set.
 template <class Interp, class Problem>
 Status hjbValidate(const HjbOptions& options, const Problem& problem, const GridField<Interp::Dim, double>& u)
@@ -269,6 +301,12 @@ Status hjbValidate(const HjbOptions& options, const Problem& problem, const Grid
   {
     return Status::invalidArgument(
       "RK order must be 1, 2 or 3, got " + std::to_string(static_cast<int>(options.Order)));
+  }
+  constexpr int fixedOrder = detail::FixedRkOrder<Problem>::value;
+  if (fixedOrder > 0 && static_cast<int>(options.Order) != fixedOrder)
+  {
+    return Status::invalidArgument("this problem is compiled for RK order " + std::to_string(fixedOrder) +
+      " only, got " + std::to_string(static_cast<int>(options.Order)));
   }
   if (u.ghost() < Interp::GhostWidth)
   {
@@ -316,11 +354,17 @@ Status hjbStep(const Context& ctx, const HjbOptions& options, const Problem& pro
   }
   current.fillGhosts();
   std::array<double, 3> work{};
-  const Status status = withTableau(options.Order,
-    [&](const auto& tableau) {
-      return detail::hjbDispatchCache<Interp>(ctx, options, tableau, problem, current, next, tNext, dt, argmins, work);
-    });
-  SLTK_RETURN_IF_ERROR(status);
+  auto run = [&](const auto& tableau)
+  { return detail::hjbDispatchCache<Interp>(ctx, options, tableau, problem, current, next, tNext, dt, argmins, work); };
+  constexpr int fixedOrder = detail::FixedRkOrder<Problem>::value;
+  if constexpr (fixedOrder > 0)
+  {
+    SLTK_RETURN_IF_ERROR(run(rkTableau<static_cast<RkOrder>(fixedOrder)>()));
+  }
+  else
+  {
+    SLTK_RETURN_IF_ERROR(withTableau(options.Order, run));
+  }
   if (stats)
   {
     stats->Steps += 1;
@@ -360,6 +404,78 @@ void hjbMarkReached(const GridField<D, double>* before, double tBefore, const Gr
   }
 }
 
+/// Starts the reachable set (3.40) at t0 from u^0: `reach` gets u's grid
+/// without ghosts, t0 where u_i^0 <= 0 and NotReached elsewhere.
+template <int D>
+void hjbStartReached(const GridField<D, double>& u, GridField<D, double>& reach, double t0)
+{
+  reach.resize(u.spec(), 0, NotReached);
+  hjbMarkReached<D>(nullptr, t0, u, reach, t0);
+}
+
+/// The time steps of (3.7) from StartTime to FinalTime (planTimeSteps()):
+/// dt = (T - t0) / ceil((T - t0) / MaxTimeStep). With `allowNoStep`, T <= t0
+/// means no step (the initial datum) and dt = MaxTimeStep; otherwise it is an error.
+inline Status hjbPlanTimeSteps(const HjbOptions& options, Index& steps, double& dt, bool allowNoStep = false)
+{
+  if (allowNoStep && !(options.FinalTime > options.StartTime))
+  {
+    steps = 0;
+    dt = options.MaxTimeStep;
+    return Status::ok();
+  }
+  return planTimeSteps("the HJB solver", options.StartTime, options.FinalTime, options.MaxTimeStep, steps, dt);
+}
+
+/// The time loop of (3.7), shared by hjbAdvance() and the run-time solvers
+/// (HjbSolver.h): steps u from u^done to u^target, t_k = StartTime + k dt.
+/// Asks ctx.interrupter() before every step and returns Status::aborted()
+/// when told to stop. After every computed step (also one that returns
+/// numericalFailure, which ends the loop) u holds the new state, `next` the
+/// previous one, `done` counts it and, when `reach` is given (started by
+/// hjbStartReached()), the nodes reached are added to (3.40). `argmins`
+/// carries the warm starts from step to step (hjbStep()).
+template <class Interp, class Problem>
+Status hjbStepTo(const Context& ctx, const HjbOptions& options, const Problem& problem, double dt, Index target,
+  GridField<Interp::Dim, double>& u, GridField<Interp::Dim, double>& next, Index& done, HjbStats* stats,
+  HjbArgmins* argmins, GridField<Interp::Dim, double>* reach)
+{
+  if (target <= done)
+  {
+    return Status::ok();
+  }
+  Interrupter& progress = ctx.interrupter();
+  progress.start("HJB semi-Lagrangian scheme (3.7)");
+  const Index first = done;
+  Status status;
+  while (done < target)
+  {
+    if (progress.wasInterrupted(static_cast<double>(done - first) / static_cast<double>(target - first)))
+    {
+      status = Status::aborted();
+      break;
+    }
+    // t_{k+1} = t_0 + (k + 1) dt, not an accumulated sum.
+    const double tNext = options.StartTime + static_cast<double>(done + 1) * dt;
+    status = hjbStep<Interp>(ctx, options, problem, u, next, tNext, dt, stats, argmins);
+    if (status.isOk() || status.code() == StatusCode::NumericalFailure) // the step was computed
+    {
+      std::swap(u, next);
+      ++done;
+      if (reach)
+      {
+        hjbMarkReached<Interp::Dim>(&next, tNext - dt, u, *reach, tNext); // next: u^k after the swap
+      }
+    }
+    if (!status.isOk())
+    {
+      break;
+    }
+  }
+  progress.end();
+  return status;
+}
+
 /// Advances u (holding u^0, e.g. from hjbInitialize()) from StartTime to
 /// FinalTime with (3.7). When `reach` is given it receives (3.40): the first
 /// t_k at which u_i^k <= 0, NotReached otherwise (same grid, no ghosts).
@@ -370,7 +486,6 @@ Status hjbAdvance(const Context& ctx, const HjbOptions& options, const Problem& 
   GridField<Interp::Dim, double>& u, HjbStats* stats = nullptr, GridField<Interp::Dim, double>* reach = nullptr,
   Index* stepsDone = nullptr)
 {
-  constexpr int D = Interp::Dim;
   if (stepsDone)
   {
     *stepsDone = 0;
@@ -378,46 +493,19 @@ Status hjbAdvance(const Context& ctx, const HjbOptions& options, const Problem& 
   SLTK_RETURN_IF_ERROR(hjbValidate<Interp>(options, problem, u));
   Index steps = 0;
   double dt = 0.0;
-  SLTK_RETURN_IF_ERROR(
-    planTimeSteps("the HJB solver", options.StartTime, options.FinalTime, options.MaxTimeStep, steps, dt));
-  const GridSpec<D>& spec = u.spec();
+  SLTK_RETURN_IF_ERROR(hjbPlanTimeSteps(options, steps, dt));
   if (reach)
   {
-    reach->resize(spec, 0, NotReached);
-    hjbMarkReached<D>(nullptr, options.StartTime, u, *reach, options.StartTime);
+    hjbStartReached<Interp::Dim>(u, *reach, options.StartTime);
   }
-  GridField<D, double> next(spec, u.ghost());
+  GridField<Interp::Dim, double> next(u.spec(), u.ghost());
   HjbArgmins argmins; // warm starts (MinimizerOptions::WarmTabulationPoints)
-  Interrupter& progress = ctx.interrupter();
-  progress.start("HJB semi-Lagrangian scheme (3.7)");
-  Status status;
-  for (Index n = 0; n < steps; ++n)
+  Index done = 0;
+  const Status status = hjbStepTo<Interp>(ctx, options, problem, dt, steps, u, next, done, stats, &argmins, reach);
+  if (stepsDone)
   {
-    if (progress.wasInterrupted(static_cast<double>(n) / static_cast<double>(steps)))
-    {
-      status = Status::aborted();
-      break;
-    }
-    const double tNext = options.StartTime + static_cast<double>(n + 1) * dt;
-    status = hjbStep<Interp>(ctx, options, problem, u, next, tNext, dt, stats, &argmins);
-    if (status.isOk() || status.code() == StatusCode::NumericalFailure)
-    {
-      std::swap(u, next);
-      if (stepsDone)
-      {
-        *stepsDone = n + 1;
-      }
-      if (reach)
-      {
-        hjbMarkReached<D>(&next, tNext - dt, u, *reach, tNext); // next: u^n after the swap
-      }
-    }
-    if (!status.isOk())
-    {
-      break;
-    }
+    *stepsDone = done;
   }
-  progress.end();
   return status;
 }
 

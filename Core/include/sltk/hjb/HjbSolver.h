@@ -10,6 +10,7 @@
 
 #include "sltk/exec/Context.h"
 #include "sltk/hjb/ExpressionProblem.h"
+#include "sltk/hjb/HjbResult.h"
 #include "sltk/hjb/PresetRun.h"
 
 #include <memory>

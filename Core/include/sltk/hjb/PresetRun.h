@@ -1,19 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file PresetRun.h
-/// The thesis's HJB tests (Presets.h) behind a run-time interface, for the VTK
-/// filter and the CLI: choose a test, N, the interpolator and optionally the
-/// final time and Courant number; get the grid and the value function at T
-/// (and, for Test 5, the first time each node is reached (3.40)).
+/// The thesis's HJB tests (Presets.h) as run-time choices, for the VTK filter
+/// and the CLI: choose a test, N, the interpolator and optionally the final
+/// time and Courant number; makePresetSolver() (HjbSolver.h) builds the solver
+/// (for Test 5 it also keeps the first time each node is reached (3.40)).
 
+#include "sltk/core/Index.h"
 #include "sltk/core/Status.h"
-#include "sltk/exec/Context.h"
-#include "sltk/grid/GridSpec.h"
+#include "sltk/hjb/HjbResult.h"
 #include "sltk/interp/InterpolatorKind.h"
-
-#include <array>
-#include <limits>
-#include <vector>
 
 namespace sltk
 {
@@ -25,6 +21,7 @@ enum class HjbPreset : int
   Test3Eikonal = 3,     ///< 3.5.3, 1D periodic, per-stage controls
   Test4Quadratic = 4,   ///< 3.5.4, 2D
   Test5Zermelo = 5      ///< 3.5.5, 2D with obstacles, reachable set
+<<<<<<< HEAD
 };
 
 /// Grid of a preset as three axes (unused axes: one node).
@@ -34,6 +31,8 @@ struct HjbGrid
   std::array<long long, 3> Dims{ 1, 1, 1 };
   std::array<double, 3> Origin{ 0.0, 0.0, 0.0 };
   std::array<double, 3> Spacing{ 1.0, 1.0, 1.0 };
+=======
+>>>>>>> hjbtidy
 };
 
 struct PresetRunOptions
@@ -45,6 +44,7 @@ struct PresetRunOptions
   InterpolatorKind Interpolator = InterpolatorKind::CwenoZ;
 };
 
+<<<<<<< HEAD
 struct HjbRunResult
 {
   HjbGrid Grid;
@@ -57,10 +57,9 @@ struct HjbRunResult
   double EvaluationsPerNode = 0.0;
 };
 
+=======
+>>>>>>> hjbtidy
 /// The grid a preset uses for N nodes (checks N).
 Status presetGrid(HjbPreset preset, Index nodes, HjbGrid& grid);
-
-/// Solves the preset to its final time (0: the initial datum).
-Status runPreset(const PresetRunOptions& options, const Context& ctx, HjbRunResult& result);
 
 } // namespace sltk

@@ -52,7 +52,8 @@ inline GridSpec<D> boxGrid(Index n, double lo, double hi)
 
 inline auto test1Problem()
 {
-  auto dynamics = [](double, const std::array<double, 2>& x, const std::array<double, 1>&) {
+  auto dynamics = [](double, const std::array<double, 2>& x, const std::array<double, 1>&)
+  {
     constexpr double twoPi = 6.283185307179586;
     return std::array<double, 2>{ -twoPi * (x[1] - 0.5), twoPi * (x[0] - 0.5) };
   };
@@ -62,11 +63,15 @@ inline auto test1Problem()
   return withExact(makeHjbProblem<2, 1>(ControlSet<1>::none(), dynamics, NoCost{}, initial), exact);
 }
 
+/// The RK order of test1Setup(), a compile-time constant so that the run-time
+/// solver (makePresetSolver()) compiles the kernel of (3.7) for it only.
+inline constexpr RkOrder Test1Order = RkOrder::Kutta3;
+
 inline HjbSetup<2> test1Setup(Index n)
 {
   HjbSetup<2> s;
   s.Grid = hjbpreset::boxGrid<2>(n, 0.0, 1.0);
-  s.Options.Order = RkOrder::Kutta3;
+  s.Options.Order = Test1Order;
   s.Options.FinalTime = 1.0;
   s.Options.MaxTimeStep = 3.0 * s.Grid.Spacing[0];
   return s;
@@ -77,20 +82,21 @@ inline HjbSetup<2> test1Setup(Index n)
 inline auto test2Problem()
 {
   constexpr double halfPi = 1.5707963267948966;
-  auto dynamics = [](double, const std::array<double, 1>&, const std::array<double, 1>& a) {
-    return std::array<double, 1>{ -a[0] };
-  };
+  auto dynamics = [](double, const std::array<double, 1>&, const std::array<double, 1>& a)
+  { return std::array<double, 1>{ -a[0] }; };
   auto cost = [](double, const std::array<double, 1>&, const std::array<double, 1>& a) { return 0.5 * a[0] * a[0]; };
   auto initial = [](const std::array<double, 1>& x) { return semiConcaveCosine(x[0]); };
   auto exact = [](double t, const std::array<double, 1>& x) { return semiConcaveCosineExact(t, x[0]); };
   return withExact(makeHjbProblem<1, 1>(ControlSet<1>::box({ -halfPi }, { halfPi }), dynamics, cost, initial), exact);
 }
 
+inline constexpr RkOrder Test2Order = RkOrder::Euler; ///< the RK order of test2Setup()
+
 inline HjbSetup<1> test2Setup(Index n)
 {
   HjbSetup<1> s;
   s.Grid = hjbpreset::boxGrid<1>(n, -2.0, 2.0);
-  s.Options.Order = RkOrder::Euler; // affine characteristics: RK1 is exact (3.5.2)
+  s.Options.Order = Test2Order; // affine characteristics: RK1 is exact (3.5.2)
   s.Options.FinalTime = 1.0;
   s.Options.MaxTimeStep = 10.0 * s.Grid.Spacing[0];
   s.Options.Minimizer.TabulationPoints = 64;
@@ -103,17 +109,17 @@ inline HjbSetup<1> test2Setup(Index n)
 
 inline auto test3Problem()
 {
-  auto dynamics = [](double, const std::array<double, 1>&, const std::array<double, 1>& a) {
-    return std::array<double, 1>{ -a[0] };
-  };
+  auto dynamics = [](double, const std::array<double, 1>&, const std::array<double, 1>& a)
+  { return std::array<double, 1>{ -a[0] }; };
   // f_C = a^2/2 + f(t, x): H = max_a { a p - a^2/2 } - f = p^2/2 - f, (3.36).
-  auto cost = [](double t, const std::array<double, 1>& x, const std::array<double, 1>& a) {
-    return 0.5 * a[0] * a[0] + eikonalSource(t, x[0]);
-  };
+  auto cost = [](double t, const std::array<double, 1>& x, const std::array<double, 1>& a)
+  { return 0.5 * a[0] * a[0] + eikonalSource(t, x[0]); };
   auto initial = [](const std::array<double, 1>& x) { return eikonalExact(0.0, x[0]); };
   auto exact = [](double t, const std::array<double, 1>& x) { return eikonalExact(t, x[0]); };
   return withExact(makeHjbProblem<1, 1>(ControlSet<1>::box({ -2.0 }, { 2.0 }), dynamics, cost, initial), exact);
 }
+
+inline constexpr RkOrder Test3Order = RkOrder::Kutta3; ///< the RK order of test3Setup()
 
 inline HjbSetup<1> test3Setup(Index n, double finalTime = 1.0)
 {
@@ -122,7 +128,7 @@ inline HjbSetup<1> test3Setup(Index n, double finalTime = 1.0)
   s.Grid.Origin[0] = 0.0;
   s.Grid.Spacing[0] = 6.283185307179586 / static_cast<double>(n);
   s.Grid.Bounds[0] = Boundary::Periodic;
-  s.Options.Order = RkOrder::Kutta3;
+  s.Options.Order = Test3Order;
   s.Options.FinalTime = finalTime;
   s.Options.MaxTimeStep = s.Grid.Spacing[0];
   s.Options.Minimizer.TabulationPoints = 64;
@@ -139,19 +145,20 @@ inline auto test4Problem()
   auto dynamics = [](double, const std::array<double, 2>&, const std::array<double, 2>& a) {
     return std::array<double, 2>{ -a[0], -a[1] };
   };
-  auto cost = [](double, const std::array<double, 2>&, const std::array<double, 2>& a) {
-    return 0.5 * (a[0] * a[0] + a[1] * a[1]);
-  };
+  auto cost = [](double, const std::array<double, 2>&, const std::array<double, 2>& a)
+  { return 0.5 * (a[0] * a[0] + a[1] * a[1]); };
   auto initial = [](const std::array<double, 2>& x) { return semiConvexCap(x[0], x[1]); };
   auto exact = [](double t, const std::array<double, 2>& x) { return semiConvexCapExact(t, x[0], x[1]); };
   return withExact(makeHjbProblem<2, 2>(ControlSet<2>::ball({ 0.0, 0.0 }, 2.2), dynamics, cost, initial), exact);
 }
 
+inline constexpr RkOrder Test4Order = RkOrder::Euler; ///< the RK order of test4Setup()
+
 inline HjbSetup<2> test4Setup(Index n)
 {
   HjbSetup<2> s;
   s.Grid = hjbpreset::boxGrid<2>(n, -2.0, 2.0);
-  s.Options.Order = RkOrder::Euler; // H independent of (t, x): affine characteristics
+  s.Options.Order = Test4Order; // H independent of (t, x): affine characteristics
   s.Options.FinalTime = 0.5;
   s.Options.MaxTimeStep = 1.25 * s.Grid.Spacing[0];
   s.Options.Minimizer.TabulationPoints = 33;
@@ -176,9 +183,11 @@ inline auto test5Problem()
   };
   auto initial = [](const std::array<double, 2>& x) { return zermeloTarget(x[0], x[1]); };
   auto obstacle = [](const std::array<double, 2>& x) { return zermeloObstacles(x[0], x[1]); };
-  return withObstacle(makeHjbProblem<2, 2>(ControlSet<2>::sphere({ 0.0, 0.0 }, 1.0), dynamics, NoCost{}, initial),
-    obstacle);
+  return withObstacle(
+    makeHjbProblem<2, 2>(ControlSet<2>::sphere({ 0.0, 0.0 }, 1.0), dynamics, NoCost{}, initial), obstacle);
 }
+
+inline constexpr RkOrder Test5Order = RkOrder::Kutta3; ///< the RK order of test5Setup()
 
 /// nx nodes along x on [-3, 2], ny = 4 (nx - 1) / 5 + 1 along y on [-2, 2] (126 x 101, ...).
 inline HjbSetup<2> test5Setup(Index nx, double finalTime = 3.0)
@@ -189,7 +198,7 @@ inline HjbSetup<2> test5Setup(Index nx, double finalTime = 3.0)
   s.Grid.Origin = { -3.0, -2.0 };
   s.Grid.Spacing = { 5.0 / static_cast<double>(nx - 1), 4.0 / static_cast<double>(ny - 1) };
   s.Grid.Bounds = { Boundary::Extrapolate, Boundary::Extrapolate };
-  s.Options.Order = RkOrder::Kutta3;
+  s.Options.Order = Test5Order;
   s.Options.FinalTime = finalTime;
   s.Options.MaxTimeStep = s.Grid.Spacing[0];
   s.Options.Minimizer.TabulationPoints = 32;
