@@ -21,18 +21,6 @@ enum class HjbPreset : int
   Test3Eikonal = 3,     ///< 3.5.3, 1D periodic, per-stage controls
   Test4Quadratic = 4,   ///< 3.5.4, 2D
   Test5Zermelo = 5      ///< 3.5.5, 2D with obstacles, reachable set
-<<<<<<< HEAD
-};
-
-/// Grid of a preset as three axes (unused axes: one node).
-struct HjbGrid
-{
-  int Dimension = 2;
-  std::array<long long, 3> Dims{ 1, 1, 1 };
-  std::array<double, 3> Origin{ 0.0, 0.0, 0.0 };
-  std::array<double, 3> Spacing{ 1.0, 1.0, 1.0 };
-=======
->>>>>>> hjbtidy
 };
 
 struct PresetRunOptions
@@ -44,21 +32,6 @@ struct PresetRunOptions
   InterpolatorKind Interpolator = InterpolatorKind::CwenoZ;
 };
 
-<<<<<<< HEAD
-struct HjbRunResult
-{
-  HjbGrid Grid;
-  std::vector<double> Value;     ///< u at T, x fastest
-  std::vector<double> ReachTime; ///< Test 5: first t_k with u <= 0 (+inf: never); else empty
-  double FinalTime = 0.0;
-  double L1Error = std::numeric_limits<double>::quiet_NaN(); ///< when an exact solution is known
-  double LinfError = std::numeric_limits<double>::quiet_NaN();
-  Index Steps = 0;
-  double EvaluationsPerNode = 0.0;
-};
-
-=======
->>>>>>> hjbtidy
 /// The grid a preset uses for N nodes (checks N).
 Status presetGrid(HjbPreset preset, Index nodes, HjbGrid& grid);
 
