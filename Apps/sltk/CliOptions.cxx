@@ -76,16 +76,6 @@ CLI::Validator namedCheck(
 
 } // namespace
 
-std::string orList(const std::vector<std::string>& names)
-{
-  std::string list;
-  for (size_t k = 0; k < names.size(); ++k)
-  {
-    list += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + names[k];
-  }
-  return list;
-}
-
 CLI::Option* addNumber(CLI::App* app, const std::string& name, double& value, const std::string& description)
 {
   return app->add_option(name, value, description)->transform(numberText(false));
@@ -151,7 +141,7 @@ CLI::Option* addChoice(CLI::App* app, const std::string& name, const std::string
       [names, chosen](const std::string& text)
       { chosen(static_cast<size_t>(std::find(names.begin(), names.end(), text) - names.begin())); },
       description)
-    ->check(namedCheck(what, known, orList(names)));
+    ->check(namedCheck(what, known, sltk::orList(names)));
 }
 
 CLI::Option* addInterpolatorOption(CLI::App* app, sltk::InterpolatorKind& kind, const std::string& defaultName)

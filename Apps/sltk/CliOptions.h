@@ -7,6 +7,7 @@
 /// of a reconstruction plan (`sltk info` and `sltk reconstruct`). CLI11 reports a
 /// failed check as "--option: message"; main() prints it and exits 2.
 
+#include "sltk/core/OrList.h"
 #include "sltk/recon/ReconstructionOptions.h"
 
 #include <CLI/CLI.hpp>
@@ -18,9 +19,6 @@
 
 namespace sltkcli
 {
-
-/// "a, b or c": names for a message.
-std::string orList(const std::vector<std::string>& names);
 
 /// A number option bound to `value`: "--cdx: expects a number, got '0.02abc'" unless
 /// the whole text is a finite number (a whole one for an int).

@@ -71,7 +71,7 @@ int main(int argc, char** argv)
         names.push_back(command.Parser->get_name());
       }
       return sltkcli::fail(
-        std::string("unknown command '") + argv[1] + "': use " + sltkcli::orList(names) + " (see sltk --help)", 2);
+        std::string("unknown command '") + argv[1] + "': use " + sltk::orList(names) + " (see sltk --help)", 2);
     }
     // CLI11 says "--cdx: 1 required FLOAT missing" when an option ends the command line.
     static const std::regex missing("(\\S+): [0-9]+ required \\S* ?missing");

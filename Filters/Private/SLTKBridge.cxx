@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SLTKBridge.h"
 
+#include "sltk/core/OrList.h"
+
 #include "vtkAlgorithm.h"
 #include "vtkLogger.h"
 #include "vtkPointSet.h"
@@ -40,13 +42,13 @@ Status interpolatorOf(int code, InterpolatorKind& kind)
   {
     return Status::ok();
   }
-  std::string valid;
-  for (int k = 0; k < interpolatorCount(); ++k)
+  std::vector<std::string> valid;
+  for (const InterpolatorInfo& info : Interpolators)
   {
-    valid += k == 0 ? "" : (k + 1 == interpolatorCount() ? " or " : ", ");
-    valid += std::to_string(k) + " (" + Interpolators[static_cast<size_t>(k)].Label + ")";
+    valid.push_back(std::to_string(static_cast<int>(info.Kind)) + " (" + info.Label + ")");
   }
-  return Status::invalidArgument("Interpolator " + std::to_string(code) + " is not an interpolator: use " + valid);
+  return Status::invalidArgument(
+    "Interpolator " + std::to_string(code) + " is not an interpolator: use " + orList(valid));
 }
 
 void AlgorithmInterrupter::start(const std::string& phase)

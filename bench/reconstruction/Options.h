@@ -34,34 +34,17 @@ struct ReconstructionBenchOptions
   int Padding = -1;                ///< cells of padding per side; < 0: the library's default
 };
 
-/// The interpolator of a benchmark name (q1, weno3 or weno, cweno, cwenoz) and
-/// its column key in thesis_tables.json ("Q1", "WENO"; "" for the CWENO family,
-/// which the thesis's chapter 4 does not use). False for an unknown name.
+/// The interpolator of a benchmark name (a registry name, InterpolatorKind.h, or
+/// "weno" for weno3) and its column key in thesis_tables.json ("Q1", "WENO"; ""
+/// for the CWENO family, which the thesis's chapter 4 does not use). False for
+/// an unknown name.
 inline bool interpolatorOf(const std::string& name, sltk::InterpolatorKind& kind, std::string& thesisKey)
 {
-  thesisKey = "";
-  if (name == "q1")
-  {
-    kind = sltk::InterpolatorKind::Q1;
-    thesisKey = "Q1";
-  }
-  else if (name == "weno3" || name == "weno")
-  {
-    kind = sltk::InterpolatorKind::Weno3;
-    thesisKey = "WENO";
-  }
-  else if (name == "cweno")
-  {
-    kind = sltk::InterpolatorKind::Cweno;
-  }
-  else if (name == "cwenoz")
-  {
-    kind = sltk::InterpolatorKind::CwenoZ;
-  }
-  else
+  if (!sltk::parseInterpolator(name == "weno" ? "weno3" : name, kind))
   {
     return false;
   }
+  thesisKey = kind == sltk::InterpolatorKind::Q1 ? "Q1" : kind == sltk::InterpolatorKind::Weno3 ? "WENO" : "";
   return true;
 }
 

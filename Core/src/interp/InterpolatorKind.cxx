@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/interp/InterpolatorKind.h"
 
+#include "sltk/core/OrList.h"
+
 #include <algorithm>
 #include <cctype>
+#include <vector>
 
 namespace sltk
 {
@@ -32,13 +35,12 @@ bool parseInterpolator(const std::string& name, InterpolatorKind& kind)
 
 std::string interpolatorNameList()
 {
-  std::string list;
-  for (int k = 0; k < interpolatorCount(); ++k)
+  std::vector<std::string> names;
+  for (const InterpolatorInfo& info : Interpolators)
   {
-    list += k == 0 ? "" : (k + 1 == interpolatorCount() ? " or " : ", ");
-    list += Interpolators[static_cast<std::size_t>(k)].Name;
+    names.emplace_back(info.Name);
   }
-  return list;
+  return orList(names);
 }
 
 } // namespace sltk

@@ -195,6 +195,13 @@ int main()
     check(recon->GetExecutive()->Update() == 0, "a schedule row with p < 1 is refused");
     recon->RemoveAllRunParameters();
     check(recon->GetNumberOfRunParameters() == 0, "RemoveAllRunParameters empties the schedule");
+    recon->SetInterpolator(7);
+    check(recon->GetInterpolator() == 7 && recon->GetExecutive()->Update() == 0,
+      "an Interpolator outside the registry is refused, not clamped");
+    vtkNew<vtkCWENOHJBSolver> badHjb;
+    badHjb->SetInterpolator(-1);
+    badHjb->UpdateWholeExtent();
+    check(badHjb->GetExecutive()->Update() == 0, "the HJB solver refuses an Interpolator outside the registry");
   }
 
   // Octree: a real vtkHyperTreeGrid output type, never the input type.
