@@ -82,6 +82,12 @@ sltk::Status optionsOf(vtkSLLevelSetReconstruct* self, sltk::ReconstructionOptio
     // Table 4.1 with eta of runs >= 3 replaced (noisy data: Fig. 4.8, 4.11).
     o.Schedule = { sltk::table41(1), sltk::table41(2), { sltk::table41(3).P, self->GetFinalEta() } };
   }
+  if (self->GetMemoryBudget() < 0)
+  {
+    return sltk::Status::invalidArgument("MemoryBudget must be >= 0 MB (0: automatic)");
+  }
+  o.MemoryBudget = static_cast<std::uint64_t>(self->GetMemoryBudget()) << 20;
+  o.Cleaning.Automatic = self->GetAutomaticCleaning();
   o.Cleaning.RemoveOutliers = self->GetRemoveOutliers();
   o.Cleaning.Outliers.Deviations = self->GetOutlierDeviations();
   o.Cleaning.ThinningFactor = self->GetThinningFactor();
@@ -131,7 +137,7 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
     return 0;
   }
   sltk::ReconstructionResult<D> result;
-  status = sltk::reconstruct(plan, options, ctx, result);
+  status = sltk::reconstruct(plan, ctx, result);
   if (!status.isOk())
   {
     vtkErrorWithObjectMacro(self, "Reconstruction failed: " << status.message());
@@ -201,6 +207,7 @@ int vtkSLLevelSetReconstruct::RequestData(
     return 0;
   }
   sltk::vtkbridge::zeroLevelSet(image, surface);
+  sltk::vtkbridge::transferCloudAttributes(input, surface);
   markOutputsComplete(outputVector);
   return 1;
 }
@@ -247,6 +254,8 @@ void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfRuns: " << this->NumberOfRuns << "\n";
   os << indent << "CellSizeFactor: " << this->CellSizeFactor << "\n";
   os << indent << "OutsideThresholdFactor: " << this->OutsideThresholdFactor << "\n";
+  os << indent << "MemoryBudget: " << this->MemoryBudget << " MB\n";
+  os << indent << "AutomaticCleaning: " << this->AutomaticCleaning << "\n";
   os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "Padding: " << this->Padding << "\n";

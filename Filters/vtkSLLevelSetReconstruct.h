@@ -61,14 +61,19 @@ public:
   ///@}
 
   ///@{
-  /// C_dx: grid spacing of the first run in units of h_P (4.36). Default 1 (the thesis's), range 0.05-100.
-  vtkSetClampMacro(CellSizeFactor, double, 0.05, 100.0);
+  /// C_dx: grid spacing of the first run in units of h_P (4.36). Default 0:
+  /// automatic (1, the thesis's, unless the finest grid would exceed
+  /// MemoryBudget; sltk/recon/AutomaticParameters.h); otherwise 0.05-100
+  /// (other values are refused when the filter runs).
+  vtkSetMacro(CellSizeFactor, double);
   vtkGetMacro(CellSizeFactor, double);
   ///@}
 
   ///@{
-  /// K_P: the outside-marking threshold K_P h_P of the initial data (4.4.4). Default 2, range 0.1-100.
-  vtkSetClampMacro(OutsideThresholdFactor, double, 0.1, 100.0);
+  /// K_P: the outside-marking threshold K_P h_P of the initial data (4.4.4).
+  /// Default 0: automatic (the K_P of 2-32 whose initial surface encloses the
+  /// most; the thesis uses 2, and 10 for scans with holes); otherwise 0.1-100.
+  vtkSetMacro(OutsideThresholdFactor, double);
   vtkGetMacro(OutsideThresholdFactor, double);
   ///@}
 
@@ -126,13 +131,25 @@ public:
   ///@}
 
   ///@{
-  /// Pre-processing of merged range scans (sltk/cloud/CloudCleaning.h), off by
-  /// default. RemoveOutliers drops points whose mean distance to their 8 nearest
+  /// Memory budget of the automatic CellSizeFactor in MB; 0 (default): 1024 MB.
+  /// With an explicit CellSizeFactor, 0 means the memory available.
+  vtkSetMacro(MemoryBudget, int);
+  vtkGetMacro(MemoryBudget, int);
+  ///@}
+
+  ///@{
+  /// Pre-processing of merged range scans (sltk/cloud/CloudCleaning.h).
+  /// AutomaticCleaning (default on) removes gross outliers only and thins a
+  /// cloud denser than the finest grid; it is off as soon as RemoveOutliers or
+  /// ThinningFactor is set. RemoveOutliers drops points whose mean distance to their 8 nearest
   /// neighbours exceeds the mean by OutlierDeviations standard deviations
   /// (default 3, range 0.5-100). ThinningFactor > 0 replaces the points of each
   /// voxel (edge ThinningFactor times the density spacing) by their mean
   /// (default 0: no thinning, range 0-100). The field data of port 0 report
   /// InputPoints, OutliersRemoved, ThinningCell and ReconstructedPoints.
+  vtkSetMacro(AutomaticCleaning, bool);
+  vtkGetMacro(AutomaticCleaning, bool);
+  vtkBooleanMacro(AutomaticCleaning, bool);
   vtkSetMacro(RemoveOutliers, bool);
   vtkGetMacro(RemoveOutliers, bool);
   vtkBooleanMacro(RemoveOutliers, bool);
@@ -169,8 +186,10 @@ protected:
 
   int Interpolator = WENO3;
   int NumberOfRuns = 3;
-  double CellSizeFactor = 1.0;
-  double OutsideThresholdFactor = 2.0;
+  double CellSizeFactor = 0.0;
+  double OutsideThresholdFactor = 0.0;
+  int MemoryBudget = 0;
+  bool AutomaticCleaning = true;
   int MaximumNumberOfIterations = 100;
   double Tolerance = 1e-4;
   int Padding = 10;

@@ -181,23 +181,38 @@ CLI::App* addCloudCommand(CLI::App& sltk, const std::string& name, const std::st
 void addPlanOptions(CLI::App* app, sltk::ReconstructionOptions& options)
 {
   addNumber(app, "--runs", options.Runs, "runs, each halving the cell size (default 3)")->option_text("R");
-  addNumber(app, "--cdx", options.CellSizeFactor, "C_dx of (4.36): first-run cell size in units of h_P (default 1)")
+  addNumber(app, "--cdx", options.CellSizeFactor,
+    "C_dx of (4.36): first-run cell size in units of h_P (default:\nautomatic, 1 or the smallest that fits "
+    "--memory-budget)")
     ->option_text("C");
   addNumber(app, "--kp", options.OutsideThresholdFactor,
-    "K_P: initial surface at K h_P from the cloud; run 1's grid holds it\n(default 2; 10 for scans with holes)")
+    "K_P: initial surface at K h_P from the cloud (default: automatic,\nthe K of 2-32 that encloses the most; the "
+    "thesis: 2, 10 for scans\nwith holes)")
     ->option_text("K");
+  app
+    ->add_option_function<double>(
+      "--memory-budget", [&options](double mb) { options.MemoryBudget = static_cast<std::uint64_t>(mb * 1048576.0); },
+      "MB for the automatic C_dx (default 1024); with --cdx, grids beyond it\nare refused (default: the memory "
+      "available)")
+    ->transform(numberText(false))
+    ->check(within(16, 1e8))
+    ->option_text("MB");
+  app->add_flag_callback(
+    "--no-cleaning", [&options]() { options.Cleaning.Automatic = false; },
+    "use the cloud as given (no automatic outlier removal or thinning)");
   addChoice(
     app, "--initial", "initial guess", { "outside", "sphere", "ellipsoid" }, // InitialGuess values 0, 1, 2
     [&options](size_t k) { options.Guess = static_cast<sltk::InitialGuess>(k); },
     "initial surface: outside (4.4.4: external marking) | sphere | ellipsoid\naround the cloud (default outside)")
     ->option_text("NAME");
   app->add_flag("--remove-outliers", options.Cleaning.RemoveOutliers,
-    "drop points whose mean distance to 8 neighbours is above mean + S sigma");
+    "drop points whose mean distance to 8 neighbours is above mean + S sigma\n(default: only when gross outliers "
+    "exist)");
   addNumber(app, "--outlier-sigma", options.Cleaning.Outliers.Deviations, "the S of --remove-outliers (default 3)")
     ->option_text("S");
   addNumber(app, "--thin", options.Cleaning.ThinningFactor,
     "average the points in voxels of F x the density spacing (merged,\noverlapping scans: h_P (4.36) is then taken "
-    "on the thinned cloud);\n0 = off (default)")
+    "on the thinned cloud);\ndefault: 2.5 when the cloud is denser than the finest grid")
     ->option_text("F");
 }
 

@@ -61,7 +61,7 @@ int printPlan(const std::string& path, long long read, sltk::PointCloud<D> cloud
   const double spacing = plan.userCloudSpacing();
   std::printf("cloud        %s\n", path.c_str());
   std::printf("points       %lld%s\n", read, D == 2 ? "   (no z extent: reconstructed in 2D)" : "");
-  if (options.Cleaning.RemoveOutliers || options.Cleaning.ThinningFactor > 0.0)
+  if (plan.Cleaning.OutliersRemoved > 0 || plan.Cleaning.ThinningCell > 0.0)
   {
     std::printf("cleaned      %lld points (%lld outliers removed, thinning cell %.4g)\n",
       static_cast<long long>(plan.Cloud.size()), static_cast<long long>(plan.Cleaning.OutliersRemoved),
@@ -74,12 +74,16 @@ int printPlan(const std::string& path, long long read, sltk::PointCloud<D> cloud
     std::printf("%s[%.6g, %.6g]", a ? " x " : " ", plan.Box.Centre[a] + plan.Box.Scale * unitBounds.Min[a],
       plan.Box.Centre[a] + plan.Box.Scale * unitBounds.Max[a]);
   }
-  std::printf("\nh_P          %.6g   (C_dx = %g, K_P = %g, padding %d cells)\n", spacing, options.CellSizeFactor,
-    options.OutsideThresholdFactor, options.Padding);
+  std::printf("\nh_P          %.6g   (C_dx = %.3g, K_P = %g, padding %d cells)\n", spacing, plan.Options.CellSizeFactor,
+    plan.Options.OutsideThresholdFactor, options.Padding);
+  for (const std::string& choice : plan.Choices)
+  {
+    std::printf("automatic    %s\n", choice.c_str());
+  }
   std::printf("density      %.6g   (spacing from the 16-neighbour radius)\n", density);
   std::printf("\n run        dx                 grid            nodes    memory (est.)\n");
   nlohmann::ordered_json runs = nlohmann::ordered_json::array();
-  for (int r = 1; r <= options.Runs; ++r)
+  for (int r = 1; r <= plan.Options.Runs; ++r)
   {
     const sltk::GridSpec<D> g = plan.userGrid(r);
     std::vector<long long> dims(3, 1);
@@ -100,7 +104,8 @@ int printPlan(const std::string& path, long long read, sltk::PointCloud<D> cloud
   const nlohmann::ordered_json summary = { { "cloud", path }, { "points", read }, { "dimension", D },
     { "points_cleaned", static_cast<long long>(plan.Cloud.size()) },
     { "outliers_removed", static_cast<long long>(plan.Cleaning.OutliersRemoved) }, { "h_P", spacing },
-    { "density_spacing", density }, { "seconds", seconds },
+    { "density_spacing", density }, { "cdx", plan.Options.CellSizeFactor },
+    { "kp", plan.Options.OutsideThresholdFactor }, { "automatic_choices", plan.Choices }, { "seconds", seconds },
     { "peak_memory_mb", static_cast<double>(sltk::peakResidentBytes()) / 1e6 }, { "runs", runs } };
   status = writeJsonFile(*json, summary);
   return status.isOk() ? 0 : fail(status.message());

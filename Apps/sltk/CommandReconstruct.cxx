@@ -24,6 +24,7 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSLLevelSetReconstruct.h>
+#include <vtkStringArray.h>
 #include <vtkTable.h>
 
 #include <nlohmann/json.hpp>
@@ -104,6 +105,20 @@ struct Reconstruct
   int run() const;
 };
 
+/// The values of a string array of the image's field data (empty when absent).
+std::vector<std::string> stringValues(vtkFieldData* fd, const char* name)
+{
+  std::vector<std::string> values;
+  if (auto* a = vtkStringArray::SafeDownCast(fd->GetAbstractArray(name)))
+  {
+    for (vtkIdType k = 0; k < a->GetNumberOfValues(); ++k)
+    {
+      values.push_back(a->GetValue(k));
+    }
+  }
+  return values;
+}
+
 int Reconstruct::run() const
 {
   if (this->given("--eta") && this->given("--schedule"))
@@ -162,6 +177,8 @@ int Reconstruct::run() const
   {
     filter->AddRunParameters(run.P, run.Eta);
   }
+  filter->SetMemoryBudget(static_cast<int>(o.MemoryBudget >> 20));
+  filter->SetAutomaticCleaning(o.Cleaning.Automatic);
   filter->SetRemoveOutliers(o.Cleaning.RemoveOutliers);
   filter->SetOutlierDeviations(o.Cleaning.Outliers.Deviations);
   filter->SetThinningFactor(o.Cleaning.ThinningFactor);
@@ -192,7 +209,17 @@ int Reconstruct::run() const
   const auto fieldValue = [fd](const char* name) { return fd->GetArray(name)->GetTuple1(0); };
   const long long reconstructed = static_cast<long long>(fieldValue("ReconstructedPoints"));
   const long long outliers = static_cast<long long>(fieldValue("OutliersRemoved"));
-  if (o.Cleaning.RemoveOutliers || o.Cleaning.ThinningFactor > 0.0)
+  const std::vector<std::string> choices = stringValues(fd, "AutomaticChoices");
+  const std::vector<std::string> recoveries = stringValues(fd, "Recoveries");
+  for (const std::string& choice : choices)
+  {
+    std::printf("automatic  %s\n", choice.c_str());
+  }
+  for (const std::string& recovery : recoveries)
+  {
+    std::printf("recovered  %s\n", recovery.c_str());
+  }
+  if (outliers > 0 || fieldValue("ThinningCell") > 0.0)
   {
     std::printf("cleaning   %lld outliers removed, thinning cell %.4g: %lld points reconstructed\n", outliers,
       fieldValue("ThinningCell"), reconstructed);
@@ -282,9 +309,10 @@ int Reconstruct::run() const
     nlohmann::ordered_json summary = { { "cloud", path },
       { "points", static_cast<long long>(cloud->GetNumberOfPoints()) }, { "outliers_removed", outliers },
       { "thinning_cell", fieldValue("ThinningCell") }, { "points_reconstructed", reconstructed }, { "h_P", hP },
-      { "seconds", seconds }, { "peak_memory_mb", peakMb },
-      { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) }, { "surface_pieces", topology.Pieces },
-      { "euler_characteristic", topology.Euler }, { "runs", runRecords } };
+      { "cdx", fieldValue("CellSizeFactor") }, { "kp", fieldValue("OutsideThresholdFactor") },
+      { "automatic_choices", choices }, { "recoveries", recoveries }, { "seconds", seconds },
+      { "peak_memory_mb", peakMb }, { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) },
+      { "surface_pieces", topology.Pieces }, { "euler_characteristic", topology.Euler }, { "runs", runRecords } };
     if (this->given("--reference"))
     {
       summary["reference"] = this->Reference;
@@ -322,7 +350,8 @@ Command addReconstructCommand(CLI::App& sltk)
     ->option_text("FILE");
   app
     ->add_option("--json", command->Json,
-      "summary: points, points_reconstructed, outliers_removed, seconds,\npeak_memory_mb, surface_pieces, "
+      "summary: points, points_reconstructed, outliers_removed, cdx, kp,\nautomatic_choices, recoveries, seconds, "
+      "peak_memory_mb, surface_pieces, "
       "euler_characteristic,\nruns [grid, iterations, energy, err_cloud]")
     ->option_text("FILE");
   addInterpolatorOption(app, o.Interpolator, "weno3");

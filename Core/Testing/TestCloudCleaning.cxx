@@ -61,7 +61,7 @@ TEST(CloudCleaning, ReconstructionIgnoresTheOutlier)
   // the run is the one of the clean sphere.
   sltk::PointCloud<3> noisy = sltk::sphereCloud(1500);
   noisy.Points.push_back({ 4.0, 0.0, 0.0 });
-  sltk::ReconstructionOptions options;
+  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
   options.Runs = 1;
   options.Interpolator = sltk::InterpolatorKind::Q1;
   sltk::Context ctx;
@@ -78,7 +78,7 @@ TEST(CloudCleaning, ReconstructionIgnoresTheOutlier)
 TEST(CloudCleaning, RefusesBadOptionsAndOverThinning)
 {
   sltk::Context ctx;
-  sltk::ReconstructionOptions options;
+  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
   sltk::ReconstructionResult<3> result;
   options.Cleaning.ThinningFactor = -1.0;
   EXPECT_EQ(sltk::reconstruct(sltk::sphereCloud(500), options, ctx, result).code(), sltk::StatusCode::InvalidArgument);
@@ -137,7 +137,7 @@ TEST(CloudCleaning, StanfordScansReconstruct_Long)
   {
     GTEST_SKIP() << "the Stanford scans (/work/shared) are not available";
   }
-  sltk::ReconstructionOptions options;
+  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
   options.Cleaning.RemoveOutliers = true;
   options.Cleaning.ThinningFactor = 2.5;
   options.CellSizeFactor = 3.3;

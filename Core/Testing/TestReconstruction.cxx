@@ -32,7 +32,7 @@ TEST(Reconstruction, CircleOf64PointsMatchesTable42)
 {
   // Thesis Table 4.2, WENO: Err_P 0.012, 0.00386, 0.000505 after runs 1-3 (grids 42, 58, 99).
   const double thesis[3] = { 0.012, 0.00386, 0.000505 };
-  sltk::ReconstructionOptions options;
+  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
   options.Interpolator = sltk::InterpolatorKind::Weno3;
   sltk::ReconstructionResult<2> result;
   sltk::Context ctx;
@@ -57,7 +57,7 @@ TEST(Reconstruction, CircleOf64PointsMatchesTable42)
 TEST(Reconstruction, SphereInUserUnitsAndAnyOffset)
 {
   // The same sphere far from the origin and 100 times smaller: results scale with it.
-  sltk::ReconstructionOptions options;
+  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
   options.Runs = 2;
   options.Interpolator = sltk::InterpolatorKind::Q1;
   sltk::ThreadPool pool(2);
@@ -79,7 +79,7 @@ TEST(Reconstruction, UpdateNormVanishesAtSteadyState)
   // eps_1 (4.34) compares successive iterates: once E_2 has stalled (4.33) the
   // reinitialised phi barely moves. (Measured before the reinitialisation it
   // stayed about 0.3: the step transports the band, the reinitialisation undoes it.)
-  sltk::ReconstructionOptions options;
+  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
   options.Runs = 1;
   sltk::ReconstructionResult<2> result;
   sltk::Context ctx;
@@ -95,7 +95,7 @@ TEST(Reconstruction, UpdateNormVanishesAtSteadyState)
 
 TEST(Reconstruction, SerialAndThreadedAreIdentical)
 {
-  sltk::ReconstructionOptions options;
+  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
   options.Runs = 2;
   sltk::ThreadPool pool(2);
   sltk::Context serial, threaded;
@@ -127,7 +127,7 @@ TEST(Reconstruction, RefusesBadInputAndAbsurdGrids)
   sltk::ReconstructionResult<3> result;
   sltk::PointCloud<3> empty;
   EXPECT_EQ(sltk::reconstruct(empty, {}, ctx, result).code(), sltk::StatusCode::InvalidArgument);
-  sltk::ReconstructionOptions options;
+  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
   options.MemoryBudget = 1000000; // 1 MB
   const auto s = sltk::reconstruct(sltk::sphereCloud(500), options, ctx, result);
   EXPECT_EQ(s.code(), sltk::StatusCode::OutOfMemory);

@@ -46,7 +46,7 @@ struct SlotRun
 
 SlotRun slotRun(double halfWidth, bool detect)
 {
-  sltk::ReconstructionOptions options;
+  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
   options.Runs = 2;
   options.DetectTunnels = detect;
   sltk::ReconstructionResult<2> result;

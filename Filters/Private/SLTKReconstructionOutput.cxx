@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SLTKReconstructionOutput.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFlyingEdges2D.h"
@@ -8,12 +9,21 @@
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
 #include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPointSet.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkStaticPointLocator.h"
+#include "vtkStringArray.h"
 #include "vtkTable.h"
 
+#include <cmath>
+#include <string>
 #include <utility>
+#include <vector>
 
 namespace sltk
 {
@@ -22,8 +32,10 @@ namespace vtkbridge
 
 namespace
 {
+/// The field's node values (without ghosts) as a VTK array; the field is freed
+/// afterwards, so a result and its image never hold two copies of both fields.
 template <int D>
-vtkSmartPointer<vtkDoubleArray> nodeValues(const GridField<D>& field, const char* name)
+vtkSmartPointer<vtkDoubleArray> moveNodeValues(GridField<D>& field, const char* name)
 {
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
   array->SetName(name);
@@ -34,14 +46,15 @@ vtkSmartPointer<vtkDoubleArray> nodeValues(const GridField<D>& field, const char
   {
     out[k] = field(field.nodeIndex(k));
   }
+  field = GridField<D>();
   return array;
 }
 } // namespace
 
 template <int D>
-void toImage(const ReconstructionResult<D>& result, double z, vtkImageData* image)
+void toImage(ReconstructionResult<D>& result, double z, vtkImageData* image)
 {
-  const GridSpec<D>& g = result.SignedDistance.spec();
+  const GridSpec<D> g = result.SignedDistance.spec();
   int dims[3] = { 1, 1, 1 };
   double origin[3] = { 0.0, 0.0, z };
   double spacing[3] = { 1.0, 1.0, 1.0 };
@@ -58,8 +71,8 @@ void toImage(const ReconstructionResult<D>& result, double z, vtkImageData* imag
   image->SetDimensions(dims);
   image->SetOrigin(origin);
   image->SetSpacing(spacing);
-  image->GetPointData()->SetScalars(nodeValues(result.SignedDistance, "SignedDistance"));
-  image->GetPointData()->AddArray(nodeValues(result.Distance, "DistanceToCloud"));
+  image->GetPointData()->SetScalars(moveNodeValues(result.SignedDistance, "SignedDistance"));
+  image->GetPointData()->AddArray(moveNodeValues(result.Distance, "DistanceToCloud"));
 }
 
 template <int D>
@@ -91,12 +104,29 @@ void runSummary(const ReconstructionResult<D>& result, vtkImageData* image)
   }
   vtkFieldData* fd = image->GetFieldData();
   // The pre-processing (CloudCleaning.h): counts as doubles (exact below 2^53).
-  const std::pair<const char*, double> cleaning[4] = {
+  // and the parameters used (chosen when automatic: AutomaticParameters.h).
+  const std::pair<const char*, double> cleaning[6] = {
     { "InputPoints", static_cast<double>(result.Cleaning.InputPoints) },
     { "OutliersRemoved", static_cast<double>(result.Cleaning.OutliersRemoved) },
     { "ThinningCell", result.Cleaning.ThinningCell },
     { "ReconstructedPoints", static_cast<double>(result.Cleaning.OutputPoints) },
+    { "CellSizeFactor", result.CellSizeFactor },
+    { "OutsideThresholdFactor", result.OutsideThresholdFactor },
   };
+  const std::pair<const char*, const std::vector<std::string>*> notes[2] = {
+    { "AutomaticChoices", &result.Choices },
+    { "Recoveries", &result.Recoveries },
+  };
+  for (const auto& entry : notes)
+  {
+    vtkNew<vtkStringArray> a;
+    a->SetName(entry.first);
+    for (const std::string& note : *entry.second)
+    {
+      a->InsertNextValue(note);
+    }
+    image->GetFieldData()->AddArray(a);
+  }
   for (const auto& entry : cleaning)
   {
     vtkNew<vtkDoubleArray> a;
@@ -134,6 +164,56 @@ void zeroLevelSet(vtkImageData* image, vtkPolyData* surface)
   surface->ShallowCopy(contour->GetOutput());
 }
 
+void transferCloudAttributes(vtkPointSet* cloud, vtkPolyData* surface)
+{
+  const vtkIdType vertices = surface->GetNumberOfPoints();
+  if (vertices == 0 || cloud->GetNumberOfPoints() == 0)
+  {
+    return;
+  }
+  vtkNew<vtkStaticPointLocator> locator;
+  locator->SetDataSet(cloud);
+  locator->BuildLocator();
+  std::vector<vtkIdType> nearest(static_cast<size_t>(vertices));
+  vtkNew<vtkDoubleArray> distance;
+  distance->SetName("DistanceToCloud");
+  distance->SetNumberOfTuples(vertices);
+  vtkSMPTools::For(0, vertices,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double x[3], q[3];
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        surface->GetPoint(k, x);
+        const vtkIdType id = locator->FindClosestPoint(x);
+        cloud->GetPoint(id, q);
+        nearest[static_cast<size_t>(k)] = id;
+        distance->SetValue(k, std::sqrt(vtkMath::Distance2BetweenPoints(x, q)));
+      }
+    });
+  vtkPointData* out = surface->GetPointData();
+  vtkPointData* in = cloud->GetPointData();
+  for (int a = 0; a < in->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* from = in->GetAbstractArray(a);
+    if (!from || !from->GetName())
+    {
+      continue;
+    }
+    vtkSmartPointer<vtkAbstractArray> to = vtk::TakeSmartPointer(from->NewInstance());
+    const std::string name = from->GetName();
+    to->SetName((out->HasArray(name.c_str()) ? "Cloud" + name : name).c_str());
+    to->SetNumberOfComponents(from->GetNumberOfComponents());
+    to->SetNumberOfTuples(vertices);
+    for (vtkIdType k = 0; k < vertices; ++k)
+    {
+      to->SetTuple(k, nearest[static_cast<size_t>(k)], from);
+    }
+    out->AddArray(to);
+  }
+  out->AddArray(distance);
+}
+
 void historyTable(const std::vector<IterationRecord>& history, vtkTable* table)
 {
   vtkNew<vtkIntArray> run, iteration;
@@ -165,8 +245,8 @@ void historyTable(const std::vector<IterationRecord>& history, vtkTable* table)
   table->AddColumn(seconds);
 }
 
-template void toImage(const ReconstructionResult<2>&, double, vtkImageData*);
-template void toImage(const ReconstructionResult<3>&, double, vtkImageData*);
+template void toImage(ReconstructionResult<2>&, double, vtkImageData*);
+template void toImage(ReconstructionResult<3>&, double, vtkImageData*);
 template void runSummary(const ReconstructionResult<2>&, vtkImageData*);
 template void runSummary(const ReconstructionResult<3>&, vtkImageData*);
 

@@ -9,6 +9,7 @@
 #include "sltk/recon/Reconstruction.h"
 
 class vtkImageData;
+class vtkPointSet;
 class vtkPolyData;
 class vtkTable;
 
@@ -17,12 +18,16 @@ namespace sltk
 namespace vtkbridge
 {
 
-/// Copies phi ("SignedDistance", active scalars) and d ("DistanceToCloud") into
-/// `image`; a 2D result becomes an image with one z layer at height z.
+/// Moves phi ("SignedDistance", active scalars) and d ("DistanceToCloud") into
+/// `image` (the result's fields are freed one by one as they are copied, so the
+/// peak memory holds three fields, not four); a 2D result becomes an image with
+/// one z layer at height z.
 template <int D>
-void toImage(const ReconstructionResult<D>& result, double z, vtkImageData* image);
+void toImage(ReconstructionResult<D>& result, double z, vtkImageData* image);
 
-/// Per-run summary as field data of the image: CloudSpacing (h_P), and one
+/// Per-run summary as field data of the image: CloudSpacing (h_P), the cleaning
+/// counts, CellSizeFactor and OutsideThresholdFactor used, AutomaticChoices and
+/// Recoveries (strings, AutomaticParameters.h), and one
 /// tuple per run in RunGridDimensions (3 components), RunIterations,
 /// RunEnergy (E_2), RunCloudError (Err_P), RunSeconds.
 template <int D>
@@ -32,12 +37,20 @@ void runSummary(const ReconstructionResult<D>& result, vtkImageData* image);
 /// or line segments (2D).
 void zeroLevelSet(vtkImageData* image, vtkPolyData* surface);
 
+/// Per-vertex data for users (beyond the thesis): "DistanceToCloud", the
+/// distance from every surface vertex to its nearest cloud point (large where
+/// the surface spans a hole of the sampling: threshold it to trim), and every
+/// point array of the cloud (colours, normals, intensities) copied from that
+/// nearest point, under its own name ("Cloud" + name when the surface already
+/// has one, e.g. CloudNormals).
+void transferCloudAttributes(vtkPointSet* cloud, vtkPolyData* surface);
+
 /// The convergence history: Run, Iteration, Energy (E_2), Change (eps_1),
 /// CloudError (Err_P), BandSize, Seconds.
 void historyTable(const std::vector<IterationRecord>& history, vtkTable* table);
 
-extern template void toImage(const ReconstructionResult<2>&, double, vtkImageData*);
-extern template void toImage(const ReconstructionResult<3>&, double, vtkImageData*);
+extern template void toImage(ReconstructionResult<2>&, double, vtkImageData*);
+extern template void toImage(ReconstructionResult<3>&, double, vtkImageData*);
 extern template void runSummary(const ReconstructionResult<2>&, vtkImageData*);
 extern template void runSummary(const ReconstructionResult<3>&, vtkImageData*);
 

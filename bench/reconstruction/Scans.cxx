@@ -66,7 +66,7 @@ void runScan(const ScanCase& c, const std::vector<std::string>& interps, const R
   const auto thesisMinutes = thesis.numbers({ "table_4_9_minutes", c.GridKey });
   for (const std::string& name : interps)
   {
-    sltk::ReconstructionOptions options;
+    sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
     std::string key;
     if (!selectInterpolator(name, options, key))
     {

@@ -77,7 +77,7 @@ void runSynthetic(const SyntheticCase<D>& c, const std::vector<std::string>& int
   }
   for (const std::string& name : interps)
   {
-    sltk::ReconstructionOptions options;
+    sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
     std::string key;
     if (!selectInterpolator(name, options, key))
     {

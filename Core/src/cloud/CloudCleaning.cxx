@@ -20,18 +20,35 @@ Status cleanCloud(
   {
     return Status::invalidArgument("cloud cleaning: the thinning factor must be >= 0 and finite, k >= 1");
   }
-  if (options.RemoveOutliers)
+  const bool automatic = automaticCleaning(options);
+  if (options.RemoveOutliers || automatic)
   {
+    OutlierOptions outlierOptions = options.Outliers;
+    if (automatic)
+    {
+      outlierOptions.GrossRatio = GrossOutlierRatio;
+    }
     OutlierReport outliers;
-    SLTK_RETURN_IF_ERROR(removeOutliers(cloud, options.Outliers, ctx, cloud, outliers));
+    SLTK_RETURN_IF_ERROR(removeOutliers(cloud, outlierOptions, ctx, cloud, outliers));
     report.OutliersRemoved = outliers.Removed;
+    report.AutomaticOutliers = automatic && outliers.Removed > 0;
+    if (automatic && outliers.Removed == 0)
+    {
+      report.OutputPoints = cloud.size();
+      return Status::ok(); // no gross outlier: the cloud is used as given
+    }
     std::ostringstream log;
+    if (automatic)
+    {
+      log << "gross outliers (a point " << outliers.LargestRatio
+          << " times farther from its neighbours than the median point): automatic ";
+    }
     log << "outlier removal: " << outliers.Removed << " of " << report.InputPoints
         << " points removed (mean distance to " << options.Outliers.Neighbours << " neighbours above "
         << outliers.Threshold << ", mean " << outliers.MeanNeighbourDistance << ")";
     ctx.logger().log(LogLevel::Info, log.str());
   }
-  if (options.ThinningFactor > 0.0 && cloud.size() > options.DensityNeighbours)
+  if (!automatic && options.ThinningFactor > 0.0 && cloud.size() > options.DensityNeighbours)
   {
     CloudSpacingOptions so;
     so.DensityNeighbours = options.DensityNeighbours;

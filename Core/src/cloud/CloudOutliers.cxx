@@ -3,6 +3,7 @@
 
 #include "sltk/cloud/PointLocator.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sltk
@@ -25,19 +26,21 @@ Status removeOutliers(const PointCloud<D>& cloud, const OutlierOptions& options,
   }
   const PointLocator<D> locator(cloud);
   std::vector<double> meanDistance(static_cast<size_t>(n), 0.0);
-  ctx.parallelFor(0, n, [&](Index b, Index e) {
-    std::vector<typename PointLocator<D>::Hit> hits;
-    for (Index i = b; i < e; ++i)
+  ctx.parallelFor(0, n,
+    [&](Index b, Index e)
     {
-      locator.nearest(cloud.Points[static_cast<size_t>(i)], options.Neighbours, i, hits);
-      double s = 0.0;
-      for (const auto& h : hits)
+      std::vector<typename PointLocator<D>::Hit> hits;
+      for (Index i = b; i < e; ++i)
       {
-        s += h.Distance;
+        locator.nearest(cloud.Points[static_cast<size_t>(i)], options.Neighbours, i, hits);
+        double s = 0.0;
+        for (const auto& h : hits)
+        {
+          s += h.Distance;
+        }
+        meanDistance[static_cast<size_t>(i)] = s / static_cast<double>(hits.size());
       }
-      meanDistance[static_cast<size_t>(i)] = s / static_cast<double>(hits.size());
-    }
-  });
+    });
   // Serial sums: the same threshold for any number of threads.
   double sum = 0.0;
   for (double m : meanDistance)
@@ -52,6 +55,16 @@ Status removeOutliers(const PointCloud<D>& cloud, const OutlierOptions& options,
   }
   report.MeanNeighbourDistance = mean;
   report.Threshold = mean + options.Deviations * std::sqrt(var / static_cast<double>(n));
+  std::vector<double> sorted = meanDistance;
+  std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
+  const double median = sorted[static_cast<size_t>(n / 2)];
+  const double largest = *std::max_element(meanDistance.begin(), meanDistance.end());
+  report.LargestRatio = median > 0.0 ? largest / median : 0.0;
+  if (options.GrossRatio > 0.0 && !(report.LargestRatio > options.GrossRatio))
+  {
+    kept = cloud;
+    return Status::ok();
+  }
   PointCloud<D> out;
   out.Points.reserve(cloud.Points.size());
   for (std::int64_t i = 0; i < n; ++i)

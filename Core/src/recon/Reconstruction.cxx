@@ -117,8 +117,9 @@ bool energyStalled(const std::vector<double>& energies, int window, double toler
 /// The iterations of one run on its grid (Algorithm 1, step 4).
 template <int D, class Interp>
 Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options, int run, const Context& ctx,
-  ExactDistanceCache<D>& exact, GridField<D>& phi, GridField<D>& dist, ReconstructionResult<D>& result)
+  ExactDistanceCache<D>& exact, GridField<D>& phi, GridField<D>& dist, ReconstructionResult<D>& result, bool& vanished)
 {
+  vanished = false;
   const auto start = std::chrono::steady_clock::now();
   const GridSpec<D>& grid = phi.spec();
   const double dx = grid.Spacing[0];
@@ -165,6 +166,7 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     }
     if (ep.FrontCells == 0)
     {
+      vanished = true;
       return Status::numericalFailure("run " + std::to_string(run) +
         ": the zero level set vanished (no front cell); try a larger K_P or a larger eta");
     }
@@ -239,9 +241,10 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
 /// Initial data of a run: run 1 from the cloud (4.4.4) or an ellipsoid, later
 /// runs from the previous result; cut (1.49) and made a distance near the front.
 template <int D>
-Status initialData(const ReconstructionPlan<D>& plan, const ReconstructionOptions& options, const GridField<D>& dist,
+Status initialData(const ReconstructionPlan<D>& plan, double outsideFactor, const GridField<D>& dist,
   const GridField<D>* previous, const Context& ctx, GridField<D>& phi)
 {
+  const ReconstructionOptions& options = plan.Options;
   const GridSpec<D>& grid = dist.spec();
   const double gamma = options.GammaFactor * grid.Spacing[0];
   if (previous)
@@ -256,7 +259,7 @@ Status initialData(const ReconstructionPlan<D>& plan, const ReconstructionOption
   {
     InitialDataOptions io;
     io.Ghost = PhiGhost;
-    SLTK_RETURN_IF_ERROR(cloudInitialData(dist, options.OutsideThresholdFactor * plan.CloudSpacing, ctx, phi, io));
+    SLTK_RETURN_IF_ERROR(cloudInitialData(dist, outsideFactor * plan.CloudSpacing, ctx, phi, io));
   }
   cutLevelSet(phi, gamma, ctx);
   if (previous)
@@ -272,13 +275,31 @@ Status initialData(const ReconstructionPlan<D>& plan, const ReconstructionOption
   return Status::ok();
 }
 
-template <int D, class Interp>
-Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& options, const Context& ctx,
-  ReconstructionResult<D>& result)
+/// Drops the history of `run`: a run that lost its zero level set and is redone or replaced.
+template <int D>
+void forgetRun(int run, ReconstructionResult<D>& result)
 {
+  auto& h = result.History;
+  h.erase(std::remove_if(h.begin(), h.end(), [run](const IterationRecord& it) { return it.Run == run; }), h.end());
+}
+
+template <int D>
+void recover(const std::string& what, const Context& ctx, ReconstructionResult<D>& result)
+{
+  ctx.logger().log(LogLevel::Warning, what);
+  result.Recoveries.push_back(what);
+}
+
+template <int D, class Interp>
+Status runAll(const ReconstructionPlan<D>& plan, const Context& ctx, ReconstructionResult<D>& result)
+{
+  const ReconstructionOptions& options = plan.Options;
   const PointCloud<D>& cloud = plan.Cloud;
   ExactDistanceCache<D> exact(cloud, *plan.Locator);
   GridField<D> phi, previous, dist, previousDist;
+  double outsideFactor = options.OutsideThresholdFactor;
+  // An automatic K_P may be raised when run 1 loses its zero level set (AutomaticParameters.h).
+  const double outsideRoom = plan.Enclosure ? outsideFactorWithRestarts(outsideFactor) : outsideFactor;
   for (int run = 1; run <= options.Runs; ++run)
   {
     const GridSpec<D>& grid = plan.Grids.Runs[static_cast<size_t>(run - 1)];
@@ -295,17 +316,41 @@ Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& op
       // Later runs: d interpolated from the previous run; exact values follow the band.
       transfer(previousDist, grid, ctx, dist);
       dist.fillGhosts();
-      previousDist = GridField<D>();
     }
     const double distanceSeconds = secondsSince(setup);
-    SLTK_RETURN_IF_ERROR(initialData(plan, options, dist, run > 1 ? &previous : nullptr, ctx, phi));
-    previous = GridField<D>(); // free the coarse field before iterating
+    SLTK_RETURN_IF_ERROR(initialData(plan, outsideFactor, dist, run > 1 ? &previous : nullptr, ctx, phi));
     std::ostringstream log;
     log << "run " << run << ": grid " << grid.nodeCount() << " nodes, distance " << distanceSeconds
         << " s, initial data " << secondsSince(setup) - distanceSeconds << " s";
     ctx.logger().log(LogLevel::Info, log.str());
-    const Status status = iterate<D, Interp>(cloud, options, run, ctx, exact, phi, dist, result);
+    bool vanished = false;
+    const Status status = iterate<D, Interp>(cloud, options, run, ctx, exact, phi, dist, result, vanished);
     ctx.interrupter().end();
+    if (vanished && run == 1 && nextOutsideFactor(outsideFactor) > 0.0 &&
+      nextOutsideFactor(outsideFactor) <= outsideRoom)
+    {
+      // The initial surface leaked through a hole: start run 1 again from a wider one.
+      const double wider = nextOutsideFactor(outsideFactor);
+      recover("run 1 lost its zero level set with the automatic K_P = " + std::to_string(outsideFactor) +
+          "; restarted with K_P = " + std::to_string(wider),
+        ctx, result);
+      forgetRun(1, result);
+      outsideFactor = wider;
+      result.OutsideThresholdFactor = wider;
+      run = 0;
+      continue;
+    }
+    if (vanished && run > 1)
+    {
+      // Keep the last run that held a surface rather than fail (its grid is coarser).
+      recover("run " + std::to_string(run) + " lost its zero level set; the result is run " + std::to_string(run - 1) +
+          "'s, on its grid (try a smaller eta in later runs, --schedule)",
+        ctx, result);
+      forgetRun(run, result);
+      result.SignedDistance = std::move(previous);
+      result.Distance = std::move(previousDist);
+      return Status::ok();
+    }
     if (!status.isOk())
     {
       result.SignedDistance = std::move(phi);
@@ -345,18 +390,20 @@ void recordsToUser(const UnitBox<D>& box, ReconstructionResult<D>& result)
 } // namespace
 
 template <int D>
-Status reconstruct(const ReconstructionPlan<D>& plan, const ReconstructionOptions& options, const Context& ctx,
-  ReconstructionResult<D>& result)
+Status reconstruct(const ReconstructionPlan<D>& plan, const Context& ctx, ReconstructionResult<D>& result)
 {
   result = ReconstructionResult<D>{};
-  if (!plan.Locator || plan.Grids.Runs.size() != static_cast<size_t>(options.Runs))
+  if (!plan.Locator || plan.Grids.Runs.size() != static_cast<size_t>(plan.Options.Runs))
   {
-    return Status::invalidArgument("reconstruct: the plan was not made with these options (planReconstruction)");
+    return Status::invalidArgument("reconstruct: the plan is incomplete (planReconstruction failed or was not called)");
   }
   result.CloudSpacing = plan.userCloudSpacing();
   result.Cleaning = plan.Cleaning;
-  const Status status = withInterpolator<D>(options.Interpolator,
-    [&](auto tag) { return runAll<D, typename decltype(tag)::type>(plan, options, ctx, result); });
+  result.CellSizeFactor = plan.Options.CellSizeFactor;
+  result.OutsideThresholdFactor = plan.Options.OutsideThresholdFactor;
+  result.Choices = plan.Choices;
+  const Status status = withInterpolator<D>(
+    plan.Options.Interpolator, [&](auto tag) { return runAll<D, typename decltype(tag)::type>(plan, ctx, result); });
   recordsToUser(plan.Box, result);
   return status;
 }
@@ -368,16 +415,14 @@ Status reconstruct(
   result = ReconstructionResult<D>{};
   ReconstructionPlan<D> plan;
   SLTK_RETURN_IF_ERROR(planReconstruction(cloud, options, ctx, plan));
-  return reconstruct(plan, options, ctx, result);
+  return reconstruct(plan, ctx, result);
 }
 
 template Status reconstruct(
   const PointCloud<2>&, const ReconstructionOptions&, const Context&, ReconstructionResult<2>&);
 template Status reconstruct(
   const PointCloud<3>&, const ReconstructionOptions&, const Context&, ReconstructionResult<3>&);
-template Status reconstruct(
-  const ReconstructionPlan<2>&, const ReconstructionOptions&, const Context&, ReconstructionResult<2>&);
-template Status reconstruct(
-  const ReconstructionPlan<3>&, const ReconstructionOptions&, const Context&, ReconstructionResult<3>&);
+template Status reconstruct(const ReconstructionPlan<2>&, const Context&, ReconstructionResult<2>&);
+template Status reconstruct(const ReconstructionPlan<3>&, const Context&, ReconstructionResult<3>&);
 
 } // namespace sltk

@@ -2,8 +2,11 @@
 #include "sltk/recon/ReconstructionPlan.h"
 
 #include "sltk/cloud/CloudSpacing.h"
+#include "sltk/cloud/CloudThinning.h"
+#include "sltk/recon/AutomaticParameters.h"
 #include "sltk/recon/CloudInitialData.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -56,15 +59,90 @@ template <int D>
 Status validateReconstructionOptions(const ReconstructionOptions& options)
 {
   if (options.Runs < 1 || options.MaxIterations < 1 || options.MinIterations < 0 || options.EnergyWindow < 1 ||
-    !(options.OutsideThresholdFactor > 0.0) || !(options.Tolerance >= 0.0) || options.ReinitDilation < 1 ||
-    !(options.BetaFactor > 0.0) || !(options.GammaFactor > options.BetaFactor))
+    !(options.OutsideThresholdFactor >= 0.0) || !(options.CellSizeFactor >= 0.0) ||
+    !std::isfinite(options.OutsideThresholdFactor) || !std::isfinite(options.CellSizeFactor) ||
+    !(options.Tolerance >= 0.0) || options.ReinitDilation < 1 || !(options.BetaFactor > 0.0) ||
+    !(options.GammaFactor > options.BetaFactor))
   {
     return Status::invalidArgument("reconstruction options out of range: need runs >= 1, iterations >= 1, "
-                                   "K_P > 0, tolerance >= 0, 0 < beta < gamma");
+                                   "K_P >= 0 and C_dx >= 0 (0: automatic), tolerance >= 0, 0 < beta < gamma");
+  }
+  const auto automaticOr = [](double v, double low, double high) { return v == 0.0 || (v >= low && v <= high); };
+  if (!automaticOr(options.CellSizeFactor, 0.05, 100.0) || !automaticOr(options.OutsideThresholdFactor, 0.1, 100.0))
+  {
+    std::ostringstream m;
+    m << "C_dx = " << options.CellSizeFactor << ", K_P = " << options.OutsideThresholdFactor
+      << ": C_dx must be 0 (automatic) or in [0.05, 100], K_P 0 (automatic) or in [0.1, 100]";
+    return Status::invalidArgument(m.str());
   }
   SLTK_RETURN_IF_ERROR(validateSchedule(options.Schedule));
   return options.Reinit.validate<D>();
 }
+
+namespace
+{
+/// Steps 3-4: the cloud into the unit box, its locator and h_P (4.36).
+template <int D>
+Status locate(PointCloud<D> cloud, ReconstructionPlan<D>& plan, const Context& ctx)
+{
+  plan.Locator.reset();
+  plan.Box = UnitBox<D>(boundingBox(cloud));
+  plan.Box.toUnit(cloud);
+  plan.Cloud = std::move(cloud);
+  plan.Locator = std::make_unique<const PointLocator<D>>(plan.Cloud, PointsPerBucket);
+  return cloudSpacing(*plan.Locator, ctx, plan.CloudSpacing); // h_P (4.36)
+}
+
+std::string number(double value)
+{
+  std::ostringstream s;
+  s.precision(3);
+  s << value;
+  return s.str();
+}
+
+/// An automatic C_dx: 1, or the smallest that fits the budget (AutomaticParameters.h).
+template <int D>
+Status chooseCellSize(ReconstructionPlan<D>& plan, const GridPlanOptions& po)
+{
+  double cdx = 1.0;
+  SLTK_RETURN_IF_ERROR(chooseCellSizeFactor(boundingBox(plan.Cloud), plan.CloudSpacing, po, cdx));
+  plan.Options.CellSizeFactor = cdx;
+  return Status::ok();
+}
+
+/// Automatic thinning of a cloud denser than its finest grid (AutomaticParameters.h).
+template <int D>
+Status thinIfDenserThanGrid(ReconstructionPlan<D>& plan, const GridPlanOptions& po, const Context& ctx)
+{
+  CloudSpacingOptions so;
+  so.DensityNeighbours = plan.Options.Cleaning.DensityNeighbours;
+  double density = 0.0;
+  if (plan.Cloud.size() <= so.DensityNeighbours || !cloudSpacing(*plan.Locator, ctx, density, so).isOk())
+  {
+    return Status::ok();
+  }
+  const double finestDx = plan.Options.CellSizeFactor * plan.CloudSpacing / std::ldexp(1.0, plan.Options.Runs - 1);
+  if (!(density < finestDx))
+  {
+    return Status::ok();
+  }
+  PointCloud<D> cloud = std::move(plan.Cloud);
+  plan.Locator.reset();
+  PointCloud<D> thinned;
+  SLTK_RETURN_IF_ERROR(thinCloud(cloud, AutomaticThinningFactor * density, thinned));
+  plan.Box.toUser(thinned);
+  plan.Cleaning.AutomaticThinning = true;
+  plan.Cleaning.ThinningCell = AutomaticThinningFactor * density * plan.Box.Scale;
+  plan.Cleaning.OutputPoints = thinned.size();
+  plan.Choices.push_back("thinning: the density spacing " + number(density * plan.Box.Scale) +
+    " is below the finest cell " + number(finestDx * plan.Box.Scale) + ", so the cloud is averaged over cells of " +
+    number(AutomaticThinningFactor) + " density spacings: " + std::to_string(cloud.size()) + " -> " +
+    std::to_string(thinned.size()) + " points (--no-cleaning keeps every point)");
+  SLTK_RETURN_IF_ERROR(locate(std::move(thinned), plan, ctx));
+  return chooseCellSize(plan, po);
+}
+} // namespace
 
 template <int D>
 Status planReconstruction(
@@ -76,6 +154,9 @@ Status planReconstruction(
   plan.CloudSpacing = 0.0;
   plan.InitialEllipsoid.reset();
   plan.Grids = GridPlan<D>{};
+  plan.Options = options;
+  plan.Choices.clear();
+  plan.Enclosure.reset();
   SLTK_RETURN_IF_ERROR(validateReconstructionOptions<D>(options));
   SLTK_RETURN_IF_ERROR(validateCloud(cloud));
   // Cleaning comes before the unit box (4.5): an outlier would otherwise set its scale.
@@ -85,13 +166,61 @@ Status planReconstruction(
   {
     return Status::invalidArgument("after cleaning: " + valid.message() + "; relax outlier removal or thinning");
   }
-  plan.Box = UnitBox<D>(boundingBox(cloud));
-  plan.Box.toUnit(cloud);
-  plan.Cloud = std::move(cloud);
-  plan.Locator = std::make_unique<const PointLocator<D>>(plan.Cloud, PointsPerBucket);
-  SLTK_RETURN_IF_ERROR(cloudSpacing(*plan.Locator, ctx, plan.CloudSpacing)); // h_P (4.36)
+  if (plan.Cleaning.AutomaticOutliers)
+  {
+    plan.Choices.push_back("outliers: gross ones found, " + std::to_string(plan.Cleaning.OutliersRemoved) +
+      " points removed (3 sigma; --no-cleaning keeps them)");
+  }
+  SLTK_RETURN_IF_ERROR(locate(std::move(cloud), plan, ctx));
 
-  const double farDistance = options.OutsideThresholdFactor * plan.CloudSpacing; // K_P h_P (4.4.4)
+  const bool automaticCellSize = !(options.CellSizeFactor > 0.0);
+  GridPlanOptions po;
+  po.Runs = options.Runs;
+  po.Padding = options.Padding;
+  po.BytesPerNode = ReconstructionBytesPerNode;
+  po.MemoryBudget = options.MemoryBudget ? options.MemoryBudget : automaticCellSize ? AutomaticMemoryBudget : 0;
+  if (automaticCellSize)
+  {
+    SLTK_RETURN_IF_ERROR(chooseCellSize(plan, po));
+    if (automaticCleaning(options.Cleaning))
+    {
+      SLTK_RETURN_IF_ERROR(thinIfDenserThanGrid(plan, po, ctx));
+    }
+    plan.Choices.push_back("C_dx = " + number(plan.Options.CellSizeFactor) +
+      (plan.Options.CellSizeFactor > 1.0 ? ": the smallest whose finest grid fits the " +
+            std::to_string(po.MemoryBudget >> 20) + " MB budget (--memory-budget)"
+                                         : ": the thesis's default, within the memory budget"));
+  }
+  const double dx1 = plan.Options.CellSizeFactor * plan.CloudSpacing; // run 1 (4.36)
+  const Box<D> bounds = boundingBox(plan.Cloud);
+  double roomFactor = plan.Options.OutsideThresholdFactor;
+  if (!(options.OutsideThresholdFactor > 0.0))
+  {
+    plan.Options.OutsideThresholdFactor = 2.0; // the thesis's default for the sphere/ellipsoid margins
+    if (options.Guess == InitialGuess::OutsideMarking)
+    {
+      OutsideFactorChoice choice;
+      SLTK_RETURN_IF_ERROR(chooseOutsideFactor(*plan.Locator, bounds, plan.CloudSpacing, dx1, ctx, choice));
+      plan.Options.OutsideThresholdFactor = choice.Factor;
+      const auto& ladder = outsideFactorLadder();
+      const size_t best = static_cast<size_t>(std::find(ladder.begin(), ladder.end(), choice.Factor) - ladder.begin());
+      plan.Choices.push_back("K_P = " + number(choice.Factor) + ": its initial surface encloses " +
+        std::to_string(choice.EnclosedNodes[best]) + " nodes of a " + std::to_string(choice.ProbeNodes) +
+        "-node grid, the most of K_P = 2..32 (" +
+        (best > 0 ? "K_P = " + number(ladder[best - 1]) + " encloses " +
+              std::to_string(choice.EnclosedNodes[best - 1]) + ": the sampling has holes it does not bridge"
+                  : "no holes to bridge") +
+        ")");
+      plan.Enclosure = std::move(choice);
+    }
+    roomFactor = outsideFactorWithRestarts(plan.Options.OutsideThresholdFactor);
+  }
+  for (const std::string& choice : plan.Choices)
+  {
+    ctx.logger().log(LogLevel::Info, "automatic " + choice);
+  }
+
+  const double farDistance = plan.Options.OutsideThresholdFactor * plan.CloudSpacing; // K_P h_P (4.4.4)
   if (options.Guess == InitialGuess::BoundingSphere)
   {
     plan.InitialEllipsoid = boundingSphere(plan.Cloud, farDistance);
@@ -100,17 +229,12 @@ Status planReconstruction(
   {
     plan.InitialEllipsoid = boundingEllipsoid(plan.Cloud, farDistance);
   }
-  GridPlanOptions po;
-  po.Runs = options.Runs;
-  po.CellSizeFactor = options.CellSizeFactor;
-  po.Padding = options.Padding;
-  // Run 1 must hold the initial surface, plus the band gamma and two cells, inside the grid.
-  const Box<D> bounds = boundingBox(plan.Cloud);
-  const double dx1 = options.CellSizeFactor * plan.CloudSpacing;
-  po.FirstRunPadding = static_cast<int>(
-    std::ceil(initialReach(bounds, farDistance, plan.InitialEllipsoid) / dx1 + options.GammaFactor + 2.0));
-  po.BytesPerNode = ReconstructionBytesPerNode;
-  po.MemoryBudget = options.MemoryBudget;
+  po.CellSizeFactor = plan.Options.CellSizeFactor;
+  // Run 1 must hold the initial surface (at the K_P of a restart, when automatic),
+  // plus the band gamma and two cells, inside the grid.
+  const double reach =
+    initialReach(bounds, std::max(farDistance, roomFactor * plan.CloudSpacing), plan.InitialEllipsoid);
+  po.FirstRunPadding = static_cast<int>(std::ceil(reach / dx1 + options.GammaFactor + 2.0));
   return planGrids(bounds, plan.CloudSpacing, po, plan.Grids);
 }
 

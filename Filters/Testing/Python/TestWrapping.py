@@ -20,8 +20,21 @@ assert lo == 0.0 and abs(hi - 0.15) < 0.01, (lo, hi)
 recon = sltk.vtkSLLevelSetReconstruct()
 recon.SetInterpolator(sltk.vtkSLLevelSetReconstruct.CWENOZ)
 assert recon.GetInterpolator() == 3
+assert recon.GetCellSizeFactor() == 0.0 and recon.GetOutsideThresholdFactor() == 0.0, "automatic by default"
+from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+points = vtkPoints()
+for k in range(200):
+    points.InsertNextPoint(k % 7, (k // 7) % 5, k // 35)
+cloud = vtkPolyData()
+cloud.SetPoints(points)
+errors = []
+recon.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
+recon.SetInputData(cloud)
 recon.SetCellSizeFactor(1e9)
-assert recon.GetCellSizeFactor() == 100.0, "CellSizeFactor clamps to its documented range"
+assert recon.GetCellSizeFactor() == 1e9, "kept as given, not clamped"
+recon.Update()
+assert errors, "an out-of-range CellSizeFactor is refused when the filter runs"
 assert "NumberOfRuns: 3" in str(recon)
 
 octree = sltk.vtkOctreeSDF()

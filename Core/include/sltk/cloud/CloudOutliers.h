@@ -10,16 +10,19 @@
 /// For every point Q, m(Q) is the mean distance to its k nearest neighbours;
 /// Q is an outlier when m(Q) > mean(m) + s * std(m) over the cloud.
 
-#include "sltk/exec/Context.h"
 #include "sltk/cloud/PointCloud.h"
+#include "sltk/exec/Context.h"
 
 namespace sltk
 {
 
 struct OutlierOptions
 {
-  int Neighbours = 8;        ///< k
-  double Deviations = 3.0;   ///< s: the threshold in standard deviations above the mean
+  int Neighbours = 8;      ///< k
+  double Deviations = 3.0; ///< s: the threshold in standard deviations above the mean
+  /// > 0: remove nothing unless some m(Q) exceeds this multiple of the median of
+  /// m (the cloud has gross outliers); the automatic cleaning's gate.
+  double GrossRatio = 0.0;
 };
 
 struct OutlierReport
@@ -27,6 +30,7 @@ struct OutlierReport
   std::int64_t Removed = 0;
   double MeanNeighbourDistance = 0.0; ///< mean of m(Q) over the cloud
   double Threshold = 0.0;             ///< mean + s std
+  double LargestRatio = 0.0;          ///< max m(Q) / median m(Q)
 };
 
 /// Copies the points of `cloud` that are not outliers into `kept`, in their

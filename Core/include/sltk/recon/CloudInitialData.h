@@ -23,8 +23,8 @@
 ///
 /// Also the sphere/ellipsoid guesses of the knot test (Ellipsoid.h).
 
-#include "sltk/levelset/Ellipsoid.h"
 #include "sltk/cloud/PointCloud.h"
+#include "sltk/levelset/Ellipsoid.h"
 
 #include <cstdint>
 #include <vector>
@@ -40,9 +40,9 @@ struct InitialDataOptions
 
 struct InitialDataReport
 {
-  Index ExternalNodes = 0;    ///< nodes marked external
+  Index ExternalNodes = 0;          ///< nodes marked external
   Index BoundaryBelowThreshold = 0; ///< boundary nodes with d < gamma_P (the cloud touches the boundary)
-  int MarkingRounds = 0;      ///< rounds of passes over all axes (the last one changed nothing)
+  int MarkingRounds = 0;            ///< rounds of passes over all axes (the last one changed nothing)
   int SweepCycles = 0;
 };
 
@@ -50,6 +50,16 @@ struct InitialDataReport
 template <int D>
 Status markExternal(const GridField<D, double>& distance, double threshold, const Context& ctx,
   std::vector<std::uint8_t>& external, int* rounds = nullptr);
+
+/// The widest way out of every node: the largest threshold t for which the
+/// marking of step 1 with gamma_P = t reaches it, i.e. the maximum over
+/// axis-aligned node paths from the grid's boundary of the minimum of d along
+/// the path (+infinity on the boundary). markExternal with threshold t marks
+/// exactly the nodes with bottleneck >= t, so one computation answers every
+/// K_P at once (AutomaticParameters.h). Same passes and cost as markExternal.
+template <int D>
+Status outsideBottleneck(
+  const GridField<D, double>& distance, const Context& ctx, std::vector<double>& bottleneck, int* rounds = nullptr);
 
 /// Steps 1-2: phi0 from the distance to the cloud and gamma_P = threshold > 0.
 template <int D>
@@ -66,10 +76,12 @@ Ellipsoid<D> boundingSphere(const PointCloud<D>& cloud, double margin);
 template <int D>
 Ellipsoid<D> boundingEllipsoid(const PointCloud<D>& cloud, double margin);
 
-extern template Status markExternal(const GridField<2, double>&, double, const Context&, std::vector<std::uint8_t>&,
-  int*);
-extern template Status markExternal(const GridField<3, double>&, double, const Context&, std::vector<std::uint8_t>&,
-  int*);
+extern template Status markExternal(
+  const GridField<2, double>&, double, const Context&, std::vector<std::uint8_t>&, int*);
+extern template Status markExternal(
+  const GridField<3, double>&, double, const Context&, std::vector<std::uint8_t>&, int*);
+extern template Status outsideBottleneck(const GridField<2, double>&, const Context&, std::vector<double>&, int*);
+extern template Status outsideBottleneck(const GridField<3, double>&, const Context&, std::vector<double>&, int*);
 extern template Status cloudInitialData(const GridField<2, double>&, double, const Context&, GridField<2, double>&,
   const InitialDataOptions&, InitialDataReport*);
 extern template Status cloudInitialData(const GridField<3, double>&, double, const Context&, GridField<3, double>&,

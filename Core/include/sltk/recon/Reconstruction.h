@@ -20,18 +20,25 @@
 #include "sltk/recon/ReconstructionOptions.h"
 #include "sltk/recon/ReconstructionPlan.h"
 
+#include <string>
+#include <vector>
+
 namespace sltk
 {
 
 template <int D>
 struct ReconstructionResult
 {
-  GridField<D> SignedDistance;  ///< phi of the last run (negative inside), cut at +-gamma far away
-  GridField<D> Distance;        ///< d of the last run (4.4.2)
-  double CloudSpacing = 0.0;    ///< h_P (of the cleaned cloud)
-  CloudCleaningReport Cleaning; ///< what the pre-processing removed and merged
+  GridField<D> SignedDistance;         ///< phi of the last run (negative inside), cut at +-gamma far away
+  GridField<D> Distance;               ///< d of the last run (4.4.2)
+  double CloudSpacing = 0.0;           ///< h_P (of the cleaned cloud)
+  double CellSizeFactor = 0.0;         ///< C_dx used (chosen when automatic)
+  double OutsideThresholdFactor = 0.0; ///< K_P used (raised when run 1 was restarted)
+  std::vector<std::string> Choices;    ///< the plan's automatic choices and their reasons
+  CloudCleaningReport Cleaning;        ///< what the pre-processing removed and merged
   std::vector<RunRecord<D>> Runs;
   std::vector<IterationRecord> History;
+  std::vector<std::string> Recoveries; ///< runs that lost their zero level set and what was done instead
 };
 
 /// Runs Algorithm 1. The cloud is validated first, then cleaned when
@@ -43,18 +50,19 @@ template <int D>
 Status reconstruct(const PointCloud<D>& cloud, const ReconstructionOptions& options, const Context& ctx,
   ReconstructionResult<D>& result);
 
-/// Runs Algorithm 1 on a plan that planReconstruction() made with the same options.
+/// Runs Algorithm 1 on a plan (planReconstruction(), with its chosen options plan.Options).
+/// Beyond the thesis, a run that loses its zero level set is recovered rather
+/// than failed when it can be (Recoveries says how): run 1 with an automatic
+/// K_P restarts with the ladder's next K_P (up to two rungs); a later run is
+/// replaced by the previous run's result.
 template <int D>
-Status reconstruct(const ReconstructionPlan<D>& plan, const ReconstructionOptions& options, const Context& ctx,
-  ReconstructionResult<D>& result);
+Status reconstruct(const ReconstructionPlan<D>& plan, const Context& ctx, ReconstructionResult<D>& result);
 
 extern template Status reconstruct(
   const PointCloud<2>&, const ReconstructionOptions&, const Context&, ReconstructionResult<2>&);
 extern template Status reconstruct(
   const PointCloud<3>&, const ReconstructionOptions&, const Context&, ReconstructionResult<3>&);
-extern template Status reconstruct(
-  const ReconstructionPlan<2>&, const ReconstructionOptions&, const Context&, ReconstructionResult<2>&);
-extern template Status reconstruct(
-  const ReconstructionPlan<3>&, const ReconstructionOptions&, const Context&, ReconstructionResult<3>&);
+extern template Status reconstruct(const ReconstructionPlan<2>&, const Context&, ReconstructionResult<2>&);
+extern template Status reconstruct(const ReconstructionPlan<3>&, const Context&, ReconstructionResult<3>&);
 
 } // namespace sltk

@@ -3,10 +3,10 @@
 /// \file ReconstructionOptions.h
 /// Parameters of Algorithm 1 (thesis 4.3-4.5) and the records it returns.
 
+#include "sltk/cloud/CloudCleaning.h"
 #include "sltk/grid/GridSpec.h"
 #include "sltk/interp/InterpolatorKind.h"
 #include "sltk/levelset/ReinitOptions.h"
-#include "sltk/cloud/CloudCleaning.h"
 
 #include <vector>
 
@@ -44,34 +44,52 @@ inline RunParameters table41(int run)
 
 struct ReconstructionOptions
 {
-  int Runs = 3;                         ///< runs of Algorithm 1, each halving dx (4.36)
-  double CellSizeFactor = 1.0;          ///< C_dx (4.36); 1 unless otherwise specified
-  double OutsideThresholdFactor = 2.0;  ///< K_P: gamma_P = K_P h_P (4.4.4)
-  int Padding = 10;                     ///< empty cells around the cloud per side
-  int MaxIterations = 100;              ///< iteration cap per run (4.33)
-  int MinIterations = 10;               ///< iterations forced before (4.33) may stop a run
-  double Tolerance = 1e-4;              ///< threshold of Delta_E (4.33)
-  int EnergyWindow = 10;                ///< k = min(n, EnergyWindow) of (4.33)
+  int Runs = 3; ///< runs of Algorithm 1, each halving dx (4.36)
+  /// C_dx (4.36); 0: automatic, 1 (the thesis's default) unless the finest grid
+  /// would not fit the memory budget (AutomaticParameters.h).
+  double CellSizeFactor = 0.0;
+  /// K_P: gamma_P = K_P h_P (4.4.4; the thesis: 2, 10 for scans with holes);
+  /// 0: automatic, the K_P whose initial surface encloses the most (AutomaticParameters.h).
+  double OutsideThresholdFactor = 0.0;
+  int Padding = 10;        ///< empty cells around the cloud per side
+  int MaxIterations = 100; ///< iteration cap per run (4.33)
+  int MinIterations = 10;  ///< iterations forced before (4.33) may stop a run
+  double Tolerance = 1e-4; ///< threshold of Delta_E (4.33)
+  int EnergyWindow = 10;   ///< k = min(n, EnergyWindow) of (4.33)
   InterpolatorKind Interpolator = InterpolatorKind::Weno3;
   InitialGuess Guess = InitialGuess::OutsideMarking;
   /// Per-run p and eta; empty: Table 4.1. Run r uses entry min(r, size) - 1.
   std::vector<RunParameters> Schedule;
-  double BetaFactor = 2.0;              ///< beta = 2 dx (4.4.6)
-  double GammaFactor = 4.0;             ///< gamma = 4 dx (4.4.6)
-  int ReinitDilation = 1;               ///< k of the reinitialisation band (1.53)
+  double BetaFactor = 2.0;  ///< beta = 2 dx (4.4.6)
+  double GammaFactor = 4.0; ///< gamma = 4 dx (4.4.6)
+  int ReinitDilation = 1;   ///< k of the reinitialisation band (1.53)
   /// Constrained reinitialisation (4.4.5); 10 pseudo-time steps (dtau = dx/2) carry
   /// information across the band (gamma + k dx = 5 dx) once, which was enough on the
   /// bunny (same Err_P to 3 digits as 50 steps, half the time).
-  ReinitOptions Reinit = [] {
+  ReinitOptions Reinit = []
+  {
     ReinitOptions r;
     r.MaxIterations = 10;
     return r;
   }();
-  std::uint64_t MemoryBudget = 0;       ///< bytes; 0: the memory available
-  bool DetectTunnels = false;           ///< 4.5.6: follow grad phi where 0.6 h_P < d < 2 dx and |grad d| < 0.5
-  /// Pre-processing of merged, noisy scans (CloudCleaning.h): off by default, so
-  /// the thesis's clouds are reconstructed as given.
+  /// Bytes; 0: AutomaticMemoryBudget (1 GiB) when C_dx is automatic, the memory available otherwise.
+  std::uint64_t MemoryBudget = 0;
+  bool DetectTunnels = false; ///< 4.5.6: follow grad phi where 0.6 h_P < d < 2 dx and |grad d| < 0.5
+  /// Pre-processing of merged, noisy scans (CloudCleaning.h): automatic by
+  /// default (gross outliers only, thinning only when the cloud is denser than
+  /// the finest grid), so the thesis's clouds are reconstructed as given.
   CloudCleaningOptions Cleaning;
+
+  /// The thesis's parameters (4.5.2): C_dx = 1, K_P = 2, no cleaning; the
+  /// reproductions of its tables start from these.
+  static ReconstructionOptions thesis()
+  {
+    ReconstructionOptions o;
+    o.CellSizeFactor = 1.0;
+    o.OutsideThresholdFactor = 2.0;
+    o.Cleaning.Automatic = false;
+    return o;
+  }
 
   RunParameters parameters(int run) const
   {
@@ -79,8 +97,8 @@ struct ReconstructionOptions
     {
       return table41(run);
     }
-    const size_t i = static_cast<size_t>(run) < this->Schedule.size() ? static_cast<size_t>(run) - 1
-                                                                        : this->Schedule.size() - 1;
+    const size_t i =
+      static_cast<size_t>(run) < this->Schedule.size() ? static_cast<size_t>(run) - 1 : this->Schedule.size() - 1;
     return this->Schedule[i];
   }
 };

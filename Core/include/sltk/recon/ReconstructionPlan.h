@@ -10,22 +10,28 @@
 ///  3. it is moved into the unit box [-1, 1]^D (4.5, UnitBox.h);
 ///  4. one point locator is built on it, used for h_P (4.36), the distance d
 ///     (4.4.2) and the exact distances near the band (ExactDistanceCache.h);
-///  5. h_P (4.36), run 1's initial ellipsoid when one is asked for, and the
+///  5. the automatic parameters: C_dx against the memory budget, thinning of
+///     a cloud denser than the finest grid, K_P from the enclosure of the
+///     initial surface (AutomaticParameters.h), each logged with its reason;
+///  6. h_P (4.36), run 1's initial ellipsoid when one is asked for, and the
 ///     grid of every run, dx^(r) = C_dx h_P / 2^(r-1) (4.36), run 1 padded so
 ///     that the initial surface K_P h_P outside the cloud (4.4.4) fits;
-///  6. the memory of the finest grid against the budget (refused with a C_dx
+///  7. the memory of the finest grid against the budget (refused with a C_dx
 ///     that fits).
 
 #include "sltk/cloud/CloudCleaning.h"
 #include "sltk/cloud/PointLocator.h"
 #include "sltk/exec/Context.h"
 #include "sltk/levelset/Ellipsoid.h"
+#include "sltk/recon/AutomaticParameters.h"
 #include "sltk/recon/GridPlan.h"
 #include "sltk/recon/ReconstructionOptions.h"
 #include "sltk/recon/UnitBox.h"
 
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace sltk
 {
@@ -37,6 +43,9 @@ constexpr double ReconstructionBytesPerNode = 40.0;
 template <int D>
 struct ReconstructionPlan
 {
+  ReconstructionOptions Options;                  ///< the options given, every automatic value chosen
+  std::vector<std::string> Choices;               ///< what was chosen automatically, and why (logged)
+  std::optional<OutsideFactorChoice> Enclosure;   ///< how an automatic K_P was chosen
   PointCloud<D> Cloud;                            ///< cleaned, in the unit box (4.5)
   UnitBox<D> Box;                                 ///< unit box <-> the user's units
   CloudCleaningReport Cleaning;                   ///< what the cleaning removed and merged
@@ -69,7 +78,7 @@ Status validateSchedule(const std::vector<RunParameters>& schedule);
 template <int D>
 Status validateReconstructionOptions(const ReconstructionOptions& options);
 
-/// Steps 1-6 above on `cloud` (taken by value: moved in, cleaned and rescaled in place).
+/// Steps 1-7 above on `cloud` (taken by value: moved in, cleaned and rescaled in place).
 template <int D>
 Status planReconstruction(
   PointCloud<D> cloud, const ReconstructionOptions& options, const Context& ctx, ReconstructionPlan<D>& plan);

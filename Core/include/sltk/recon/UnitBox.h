@@ -44,6 +44,18 @@ struct UnitBox
     }
   }
 
+  /// Moves the points of `cloud` back to the user's units, in place.
+  void toUser(PointCloud<D>& cloud) const
+  {
+    for (auto& p : cloud.Points)
+    {
+      for (int a = 0; a < D; ++a)
+      {
+        p[a] = this->Centre[a] + this->Scale * p[a];
+      }
+    }
+  }
+
   GridSpec<D> toUser(GridSpec<D> g) const
   {
     for (int a = 0; a < D; ++a)

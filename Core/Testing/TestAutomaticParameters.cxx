@@ -1,0 +1,176 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/recon/AutomaticParameters.h"
+
+#include "sltk/cloud/SyntheticClouds.h"
+#include "sltk/recon/CloudInitialData.h"
+#include "sltk/recon/DistanceFunction.h"
+#include "sltk/recon/Reconstruction.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+/// A Fibonacci sphere of radius 0.8 with the cap z > cut removed: a hole whose
+/// rim has radius 0.8 sqrt(1 - (cut / 0.8)^2).
+sltk::PointCloud<3> sphereWithHole(int n, double cut)
+{
+  sltk::PointCloud<3> cloud;
+  for (const auto& p : sltk::sphereCloud(n, 0.8).Points)
+  {
+    if (p[2] < cut)
+    {
+      cloud.Points.push_back(p);
+    }
+  }
+  return cloud;
+}
+
+sltk::GridSpec<3> cubeGrid(int nodes, double half)
+{
+  sltk::GridSpec<3> g;
+  for (int a = 0; a < 3; ++a)
+  {
+    g.Dims[a] = nodes;
+    g.Origin[a] = -half;
+    g.Spacing[a] = 2.0 * half / (nodes - 1);
+  }
+  return g;
+}
+} // namespace
+
+TEST(AutomaticParameters, BottleneckAnswersEveryMarking)
+{
+  // markExternal(t) marks exactly the nodes whose bottleneck is >= t.
+  const sltk::PointCloud<3> cloud = sphereWithHole(1500, 0.5);
+  sltk::Context ctx;
+  sltk::GridField<3, double> d;
+  ASSERT_TRUE(sltk::distanceToCloud(cloud, cubeGrid(41, 1.2), ctx, d).isOk());
+  std::vector<double> bottleneck;
+  ASSERT_TRUE(sltk::outsideBottleneck(d, ctx, bottleneck).isOk());
+  for (double t : { 0.05, 0.1, 0.2, 0.3, 0.45 })
+  {
+    std::vector<std::uint8_t> external;
+    ASSERT_TRUE(sltk::markExternal(d, t, ctx, external).isOk());
+    for (size_t k = 0; k < external.size(); ++k)
+    {
+      ASSERT_EQ(external[k] != 0, bottleneck[k] >= t) << "node " << k << " at threshold " << t;
+    }
+  }
+}
+
+TEST(AutomaticParameters, OutsideFactorBridgesHolesAndNoMore)
+{
+  sltk::Context ctx;
+  for (double cut : { 2.0, 0.6 }) // closed sphere; a hole of radius 0.53
+  {
+    sltk::ReconstructionPlan<3> plan;
+    sltk::ReconstructionOptions options; // automatic
+    options.Runs = 1;
+    ASSERT_TRUE(sltk::planReconstruction(sphereWithHole(4000, cut), options, ctx, plan).isOk());
+    ASSERT_TRUE(plan.Enclosure.has_value());
+    const double k = plan.Options.OutsideThresholdFactor;
+    if (cut > 1.0)
+    {
+      EXPECT_EQ(k, 2.0) << "a closed sampling keeps the thesis's K_P";
+    }
+    else
+    {
+      // The initial surface must span the hole: 2 K_P h_P at least its diameter's
+      // worth of closing (radius 0.53 -> about 0.53 / h_P), and no rung below does.
+      EXPECT_GT(k * plan.CloudSpacing, 0.35) << "K_P = " << k << ", h_P = " << plan.CloudSpacing;
+      const auto& ladder = sltk::outsideFactorLadder();
+      const size_t best = static_cast<size_t>(std::find(ladder.begin(), ladder.end(), k) - ladder.begin());
+      ASSERT_GT(best, 0u);
+      EXPECT_LT(plan.Enclosure->EnclosedNodes[best - 1], plan.Enclosure->EnclosedNodes[best] / 10);
+    }
+  }
+}
+
+TEST(AutomaticParameters, OpenHoleReconstructsClosedWithDefaults)
+{
+  // The thesis's K_P = 2 loses the surface through the hole; the automatic K_P closes it.
+  const sltk::PointCloud<3> cloud = sphereWithHole(3000, 0.6);
+  sltk::Context ctx;
+  sltk::ReconstructionOptions thesis = sltk::ReconstructionOptions::thesis();
+  thesis.Runs = 1;
+  sltk::ReconstructionResult<3> failed;
+  EXPECT_FALSE(sltk::reconstruct(cloud, thesis, ctx, failed).isOk());
+  sltk::ReconstructionOptions automatic;
+  automatic.Runs = 1;
+  sltk::ReconstructionResult<3> result;
+  const sltk::Status status = sltk::reconstruct(cloud, automatic, ctx, result);
+  ASSERT_TRUE(status.isOk()) << status.message();
+  EXPECT_GT(result.OutsideThresholdFactor, 2.0);
+  EXPECT_LT(result.Runs.back().CloudError, result.CloudSpacing);
+  // The centre is inside.
+  const auto& phi = result.SignedDistance;
+  const auto& g = phi.spec();
+  std::array<sltk::Index, 3> centre;
+  for (int a = 0; a < 3; ++a)
+  {
+    centre[a] = static_cast<sltk::Index>(std::lround(-g.Origin[a] / g.Spacing[a]));
+  }
+  EXPECT_LT(phi(centre), 0.0);
+}
+
+TEST(AutomaticParameters, CellSizeFollowsTheBudget)
+{
+  const sltk::PointCloud<3> cloud = sltk::sphereCloud(5000);
+  sltk::Context ctx;
+  sltk::ReconstructionOptions options;
+  sltk::ReconstructionPlan<3> roomy, tight;
+  ASSERT_TRUE(sltk::planReconstruction(cloud, options, ctx, roomy).isOk());
+  EXPECT_EQ(roomy.Options.CellSizeFactor, 1.0) << "the thesis's C_dx when it fits";
+  options.MemoryBudget = 64u << 20;
+  ASSERT_TRUE(sltk::planReconstruction(cloud, options, ctx, tight).isOk());
+  EXPECT_GT(tight.Options.CellSizeFactor, 1.0);
+  EXPECT_LE(tight.memoryEstimate(3), 64.0 * (1 << 20));
+  EXPECT_GT(tight.memoryEstimate(3), 0.8 * 64.0 * (1 << 20)) << "the smallest C_dx that fits, within 2% steps";
+  // Given explicitly, C_dx is used as given and a grid beyond the budget is refused.
+  options.CellSizeFactor = 1.0;
+  sltk::ReconstructionPlan<3> refused;
+  EXPECT_EQ(sltk::planReconstruction(cloud, options, ctx, refused).code(), sltk::StatusCode::OutOfMemory);
+}
+
+TEST(AutomaticParameters, CleaningRemovesOnlyGrossOutliers)
+{
+  sltk::PointCloud<3> cloud = sltk::sphereCloud(3000);
+  sltk::Context ctx;
+  sltk::CloudCleaningReport report;
+  sltk::PointCloud<3> clean = cloud;
+  ASSERT_TRUE(sltk::cleanCloud(clean, {}, ctx, report).isOk());
+  EXPECT_EQ(report.OutliersRemoved, 0);
+  cloud.Points.push_back({ 30.0, 0.0, 0.0 });
+  ASSERT_TRUE(sltk::cleanCloud(cloud, {}, ctx, report).isOk());
+  EXPECT_TRUE(report.AutomaticOutliers);
+  EXPECT_GE(report.OutliersRemoved, 1);
+  for (const auto& p : cloud.Points)
+  {
+    EXPECT_LT(p[0], 2.0);
+  }
+  sltk::CloudCleaningOptions asGiven;
+  asGiven.Automatic = false;
+  sltk::PointCloud<3> kept = sltk::sphereCloud(3000);
+  kept.Points.push_back({ 30.0, 0.0, 0.0 });
+  ASSERT_TRUE(sltk::cleanCloud(kept, asGiven, ctx, report).isOk());
+  EXPECT_EQ(kept.size(), 3001);
+}
+
+TEST(AutomaticParameters, DenseCloudIsThinnedToTheGrid)
+{
+  // 200,000 points on a sphere under a 16 MB budget: far denser than the finest grid.
+  sltk::Context ctx;
+  sltk::ReconstructionOptions options;
+  options.MemoryBudget = 16u << 20;
+  sltk::ReconstructionPlan<3> plan;
+  ASSERT_TRUE(sltk::planReconstruction(sltk::sphereCloud(200000), options, ctx, plan).isOk());
+  EXPECT_TRUE(plan.Cleaning.AutomaticThinning);
+  EXPECT_LT(plan.Cloud.size(), 50000);
+  EXPECT_LE(plan.memoryEstimate(3), 16.0 * (1 << 20));
+  options.Cleaning.Automatic = false;
+  sltk::ReconstructionPlan<3> asGiven;
+  ASSERT_TRUE(sltk::planReconstruction(sltk::sphereCloud(200000), options, ctx, asGiven).isOk());
+  EXPECT_EQ(asGiven.Cloud.size(), 200000);
+}

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file AutomaticParameters.h
+/// Beyond the thesis: the parameters a user leaves at 0 ("automatic") are
+/// chosen from the cloud by the reconstruction plan (ReconstructionPlan.h), and
+/// the choices are logged with their reasons (Documentation/Numerics.md,
+/// "Automatic parameters"). Given explicitly, every value is used as given, so
+/// the thesis's tables are reproduced with the thesis's parameters.
+///
+///  - C_dx (4.36): 1, the thesis's default, unless the finest grid would not fit
+///    the memory budget (AutomaticMemoryBudget unless one is given); then the
+///    smallest C_dx that fits.
+///  - Thinning: a cloud denser than the finest grid (its density spacing below
+///    the finest dx) is thinned with a cell of AutomaticThinningFactor density
+///    spacings (CloudThinning.h); the grids then follow from its h_P.
+///  - K_P (4.4.4): the initial surface d = K_P h_P must enclose the object. Where
+///    the sampling has holes wider than about 2 K_P h_P the external marking
+///    leaks inside and phi0 is a thin shell around the points, which the first
+///    iterations destroy ("the zero level set vanished"); a K_P larger than
+///    needed closes handles narrower than 2 K_P h_P. For every K of a ladder,
+///    the nodes enclosed by the initial surface (d >= K h_P but not reached by
+///    the marking) are counted on run 1's grid from one bottleneck computation
+///    (outsideBottleneck); the K enclosing the most nodes is chosen: the
+///    smallest K past the closing of the holes, since a larger K only erodes
+///    the enclosed volume. A cloud that encloses nothing at any K (an open
+///    sheet, a thin tube) keeps the thesis's K_P = 2.
+
+#include "sltk/cloud/PointLocator.h"
+#include "sltk/exec/Context.h"
+#include "sltk/recon/GridPlan.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace sltk
+{
+
+/// The default memory budget when C_dx is automatic: a laptop's share with room
+/// for ParaView (the Stanford bunny: C_dx about 2.1, 0.95 GB peak).
+constexpr std::uint64_t AutomaticMemoryBudget = std::uint64_t(1) << 30;
+
+/// Thinning cell in density spacings (CloudSpacing.h) of an automatic thinning:
+/// the value chosen by hand on the merged Stanford bunny scans.
+constexpr double AutomaticThinningFactor = 2.5;
+
+/// The K_P tried, from the thesis's default 2 to 32.
+const std::vector<double>& outsideFactorLadder();
+
+/// The ladder's next K_P above `factor` (a run that lost its zero level set
+/// restarts with it), or 0 when there is none.
+double nextOutsideFactor(double factor);
+
+/// The K_P for which run 1's grid must leave room (two rungs above `factor`, so
+/// that a restart fits).
+double outsideFactorWithRestarts(double factor);
+
+struct OutsideFactorChoice
+{
+  double Factor = 2.0;              ///< the chosen K_P
+  std::vector<Index> EnclosedNodes; ///< per ladder K: nodes with d >= K h_P the marking does not reach
+  Index ProbeNodes = 0;             ///< nodes of the grid it was measured on
+  double ProbeSpacing = 0.0;        ///< its dx
+};
+
+/// Chooses K_P for the cloud of `locator` (unit box, spacing h_P) on a grid of
+/// spacing dx around `bounds` (run 1's: dx = C_dx h_P).
+template <int D>
+Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds, double cloudSpacing, double dx,
+  const Context& ctx, OutsideFactorChoice& choice);
+
+/// The smallest C_dx >= 1 (in steps of 2%) whose grids `options` (budget
+/// included) accepts; fails when none up to 1e4 does.
+template <int D>
+Status chooseCellSizeFactor(const Box<D>& bounds, double cloudSpacing, GridPlanOptions options, double& cellSizeFactor);
+
+extern template Status chooseOutsideFactor(
+  const PointLocator<2>&, const Box<2>&, double, double, const Context&, OutsideFactorChoice&);
+extern template Status chooseOutsideFactor(
+  const PointLocator<3>&, const Box<3>&, double, double, const Context&, OutsideFactorChoice&);
+extern template Status chooseCellSizeFactor(const Box<2>&, double, GridPlanOptions, double&);
+extern template Status chooseCellSizeFactor(const Box<3>&, double, GridPlanOptions, double&);
+
+} // namespace sltk

@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/recon/AutomaticParameters.h"
+
+#include "sltk/recon/CloudInitialData.h"
+#include "sltk/recon/DistanceFunction.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sltk
+{
+
+namespace
+{
+/// The probe grid's nodes at most: coarser probes are made by doubling dx.
+constexpr double MaximumProbeNodes = 16e6;
+} // namespace
+
+const std::vector<double>& outsideFactorLadder()
+{
+  static const std::vector<double> ladder = { 2, 2.5, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32 };
+  return ladder;
+}
+
+double nextOutsideFactor(double factor)
+{
+  for (double k : outsideFactorLadder())
+  {
+    if (k > factor)
+    {
+      return k;
+    }
+  }
+  return 0.0;
+}
+
+double outsideFactorWithRestarts(double factor)
+{
+  double room = factor;
+  for (int restart = 0; restart < 2; ++restart)
+  {
+    room = std::max(room, nextOutsideFactor(room));
+  }
+  return room;
+}
+
+template <int D>
+Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds, double cloudSpacing, double dx,
+  const Context& ctx, OutsideFactorChoice& choice)
+{
+  choice = OutsideFactorChoice{};
+  const std::vector<double>& ladder = outsideFactorLadder();
+  GridPlanOptions po;
+  po.Runs = 1;
+  po.MemoryBudget = std::numeric_limits<std::uint64_t>::max(); // the probe is bounded below instead
+  GridPlan<D> probe;
+  for (;;)
+  {
+    po.CellSizeFactor = dx / cloudSpacing;
+    // Room for the largest K's surface, the marking's boundary layer and a margin.
+    po.Padding = static_cast<int>(std::ceil(ladder.back() * cloudSpacing / dx)) + 4;
+    SLTK_RETURN_IF_ERROR(planGrids(bounds, cloudSpacing, po, probe));
+    if (static_cast<double>(probe.Runs[0].nodeCount()) <= MaximumProbeNodes)
+    {
+      break;
+    }
+    dx *= 2.0;
+  }
+  const GridSpec<D>& grid = probe.Runs[0];
+  GridField<D, double> distance;
+  DistanceOptions dopt;
+  dopt.Ghost = 0;
+  SLTK_RETURN_IF_ERROR(distanceToCloud(locator, grid, ctx, distance, dopt)); // (4.4.2)
+  std::vector<double> bottleneck;
+  SLTK_RETURN_IF_ERROR(outsideBottleneck(distance, ctx, bottleneck));
+  const size_t rungs = ladder.size();
+  std::vector<double> enclosed(rungs, 0.0);
+  for (size_t r = 0; r < rungs; ++r)
+  {
+    const double threshold = ladder[r] * cloudSpacing; // gamma_P = K h_P (4.4.4)
+    enclosed[r] = ctx.parallelSum(0, grid.nodeCount(),
+      [&](Index b, Index e)
+      {
+        double count = 0.0;
+        for (Index k = b; k < e; ++k)
+        {
+          const double d = distance(distance.nodeIndex(k));
+          count += d >= threshold && bottleneck[static_cast<size_t>(k)] < threshold ? 1.0 : 0.0;
+        }
+        return count;
+      });
+  }
+  size_t best = 0;
+  for (size_t r = 1; r < rungs; ++r)
+  {
+    best = enclosed[r] > enclosed[best] ? r : best;
+  }
+  choice.Factor = ladder[best];
+  for (double count : enclosed)
+  {
+    choice.EnclosedNodes.push_back(static_cast<Index>(count));
+  }
+  choice.ProbeNodes = grid.nodeCount();
+  choice.ProbeSpacing = grid.Spacing[0];
+  return Status::ok();
+}
+
+template <int D>
+Status chooseCellSizeFactor(const Box<D>& bounds, double cloudSpacing, GridPlanOptions options, double& cellSizeFactor)
+{
+  GridPlan<D> plan;
+  for (double c = 1.0; c <= 1e4; c *= 1.02)
+  {
+    options.CellSizeFactor = c;
+    const Status status = planGrids(bounds, cloudSpacing, options, plan);
+    if (status.isOk())
+    {
+      cellSizeFactor = c;
+      return status;
+    }
+    if (status.code() != StatusCode::OutOfMemory)
+    {
+      return status;
+    }
+  }
+  return Status::outOfMemory("no C_dx up to 1e4 gives grids within the memory budget: raise the budget");
+}
+
+template Status chooseOutsideFactor(
+  const PointLocator<2>&, const Box<2>&, double, double, const Context&, OutsideFactorChoice&);
+template Status chooseOutsideFactor(
+  const PointLocator<3>&, const Box<3>&, double, double, const Context&, OutsideFactorChoice&);
+template Status chooseCellSizeFactor(const Box<2>&, double, GridPlanOptions, double&);
+template Status chooseCellSizeFactor(const Box<3>&, double, GridPlanOptions, double&);
+
+} // namespace sltk
