@@ -5,7 +5,9 @@
 # a signed distance (.vti), a surface (.ply) and a picture (.png).
 # This bunny is sparse (its ears are about one point spacing thick) and open at
 # the bottom: K_P = 10 as in the thesis for scans with holes, and a first run at
-# half the point spacing (C_dx = 0.5, two runs) so the ears survive run 1.
+# half the point spacing (C_dx = 0.5, two runs) so the ears survive run 1. With no
+# options (automatic K_P = 2, C_dx = 1) it is closed and one piece, but the ears,
+# thinner than one cell of run 1, are lost (issue 13's note).
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${SLTK_BUILD_DIR:-$repo/build}

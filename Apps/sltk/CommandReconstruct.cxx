@@ -204,6 +204,7 @@ int Reconstruct::run() const
   auto* energy = fd->GetArray("RunEnergy");
   auto* cloudError = fd->GetArray("RunCloudError");
   auto* runSeconds = fd->GetArray("RunSeconds");
+  auto* farPoints = fd->GetArray("RunFarPoints");
   std::printf("cloud      %s (%lld points, h_P = %.6g)\n", path.c_str(),
     static_cast<long long>(cloud->GetNumberOfPoints()), fd->GetArray("CloudSpacing")->GetTuple1(0));
   const auto fieldValue = [fd](const char* name) { return fd->GetArray(name)->GetTuple1(0); };
@@ -234,7 +235,8 @@ int Reconstruct::run() const
     runRecords.push_back({ { "run", r + 1 },
       { "grid", { static_cast<long long>(g[0]), static_cast<long long>(g[1]), static_cast<long long>(g[2]) } },
       { "iterations", static_cast<long long>(its->GetTuple1(r)) }, { "energy", energy->GetTuple1(r) },
-      { "err_cloud", cloudError->GetTuple1(r) }, { "seconds", runSeconds->GetTuple1(r) } });
+      { "err_cloud", cloudError->GetTuple1(r) }, { "far_points", farPoints->GetTuple1(r) },
+      { "seconds", runSeconds->GetTuple1(r) } });
   }
   const double hP = fd->GetArray("CloudSpacing")->GetTuple1(0);
   const double finalError =
@@ -245,6 +247,14 @@ int Reconstruct::run() const
       "sltk: warning: the surface ends %.1f h_P from the cloud on average: it did not reach the points; try a "
       "larger --kp (scans with holes), a smaller --cdx or --initial sphere\n",
       finalError / hP);
+  }
+  const double lost = farPoints->GetNumberOfTuples() ? farPoints->GetTuple1(farPoints->GetNumberOfTuples() - 1) : 0.0;
+  if (lost > 0.01) // Reconstruction.cxx, FarPointWarning
+  {
+    std::fprintf(stderr,
+      "sltk: warning: %.1f%% of the points lie more than h_P from the surface: features thinner than a cell of "
+      "run 1 were lost; try --cdx 0.5 with one run fewer (the same finest grid)\n",
+      100.0 * lost);
   }
   const SurfaceTopology topology = surfaceTopology(surface);
   std::printf("\nsurface    %lld points, %lld cells, %lld piece(s), Euler characteristic %lld\n",

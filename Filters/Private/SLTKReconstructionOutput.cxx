@@ -85,7 +85,8 @@ void runSummary(const ReconstructionResult<D>& result, vtkImageData* image)
   grids->SetName("RunGridDimensions");
   grids->SetNumberOfComponents(3);
   iterations->SetName("RunIterations");
-  vtkNew<vtkDoubleArray> energy, cloudError, seconds;
+  vtkNew<vtkDoubleArray> energy, cloudError, farPoints, seconds;
+  farPoints->SetName("RunFarPoints");
   energy->SetName("RunEnergy");
   cloudError->SetName("RunCloudError");
   seconds->SetName("RunSeconds");
@@ -100,6 +101,7 @@ void runSummary(const ReconstructionResult<D>& result, vtkImageData* image)
     iterations->InsertNextValue(run.Iterations);
     energy->InsertNextValue(run.Energy);
     cloudError->InsertNextValue(run.CloudError);
+    farPoints->InsertNextValue(run.FarPoints);
     seconds->InsertNextValue(run.Seconds);
   }
   vtkFieldData* fd = image->GetFieldData();
@@ -139,6 +141,7 @@ void runSummary(const ReconstructionResult<D>& result, vtkImageData* image)
   fd->AddArray(iterations);
   fd->AddArray(energy);
   fd->AddArray(cloudError);
+  fd->AddArray(farPoints);
   fd->AddArray(seconds);
 }
 

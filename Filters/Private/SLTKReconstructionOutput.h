@@ -29,7 +29,8 @@ void toImage(ReconstructionResult<D>& result, double z, vtkImageData* image);
 /// counts, CellSizeFactor and OutsideThresholdFactor used, AutomaticChoices and
 /// Recoveries (strings, AutomaticParameters.h), and one
 /// tuple per run in RunGridDimensions (3 components), RunIterations,
-/// RunEnergy (E_2), RunCloudError (Err_P), RunSeconds.
+/// RunEnergy (E_2), RunCloudError (Err_P), RunFarPoints (fraction of the points
+/// more than h_P from the surface), RunSeconds.
 template <int D>
 void runSummary(const ReconstructionResult<D>& result, vtkImageData* image);
 

@@ -124,6 +124,7 @@ struct RunRecord
   int Iterations = 0;
   double Energy = 0.0;
   double CloudError = 0.0;
+  double FarPoints = 0.0; ///< fraction of the points more than h_P from the surface at the end of the run
   double Seconds = 0.0;
   Index MeanBandSize = 0;
 };
