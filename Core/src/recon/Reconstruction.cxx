@@ -324,10 +324,12 @@ void recover(const std::string& what, const Context& ctx, ReconstructionResult<D
   result.Recoveries.push_back(what);
 }
 
+/// The runs of Algorithm 1 on `grids` (options.Runs of them) with `options`
+/// (the plan's, or a finer start: reconstruct()).
 template <int D, class Interp>
-Status runAll(const ReconstructionPlan<D>& plan, const Context& ctx, ReconstructionResult<D>& result)
+Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& options,
+  const std::vector<GridSpec<D>>& grids, const Context& ctx, ReconstructionResult<D>& result)
 {
-  const ReconstructionOptions& options = plan.Options;
   const PointCloud<D>& cloud = plan.Cloud;
   ExactDistanceCache<D> exact(cloud, *plan.Locator);
   GridField<D> phi, previous, dist, previousDist;
@@ -336,7 +338,7 @@ Status runAll(const ReconstructionPlan<D>& plan, const Context& ctx, Reconstruct
   const double outsideRoom = plan.Enclosure ? outsideFactorWithRestarts(outsideFactor) : outsideFactor;
   for (int run = 1; run <= options.Runs; ++run)
   {
-    const GridSpec<D>& grid = plan.Grids.Runs[static_cast<size_t>(run - 1)];
+    const GridSpec<D>& grid = grids[static_cast<size_t>(run - 1)];
     ctx.interrupter().start("run " + std::to_string(run) + "/" + std::to_string(options.Runs));
     const auto setup = std::chrono::steady_clock::now();
     if (run == 1)
@@ -431,13 +433,39 @@ Status reconstruct(const ReconstructionPlan<D>& plan, const Context& ctx, Recons
   {
     return Status::invalidArgument("reconstruct: the plan is incomplete (planReconstruction failed or was not called)");
   }
+  const auto runWith = [&](const ReconstructionOptions& options, const std::vector<GridSpec<D>>& grids)
+  {
+    result.OutsideThresholdFactor = options.OutsideThresholdFactor;
+    result.CellSizeFactor = options.CellSizeFactor;
+    return withInterpolator<D>(options.Interpolator,
+      [&](auto tag) { return runAll<D, typename decltype(tag)::type>(plan, options, grids, ctx, result); });
+  };
+  Status status = runWith(plan.Options, plan.Grids.Runs);
+  ReconstructionOptions finer = plan.Options;
+  finer.Runs -= 1;
+  finer.CellSizeFactor /= 2.0;
+  GridPlan<D> finerGrids;
+  if (status.isOk() && plan.AutomaticCellSize && finer.Runs >= 1 && !result.Runs.empty() &&
+    result.Runs.back().FarPoints > FarPointWarning &&
+    planRunGrids(plan, finer.Runs, finer.CellSizeFactor, finerGrids).isOk())
+  {
+    // Run 1 lost features thinner than its cells: start at half the cell size with
+    // one run fewer, which ends on the same finest grid (the same memory).
+    std::ostringstream what;
+    what << 100.0 * result.Runs.back().FarPoints
+         << "% of the points ended more than h_P from the surface with C_dx = " << plan.Options.CellSizeFactor
+         << ": reconstructed again from C_dx = " << finer.CellSizeFactor << " with " << finer.Runs
+         << " run(s), which end on the same finest grid";
+    ctx.logger().log(LogLevel::Warning, what.str());
+    std::vector<std::string> recoveries = std::move(result.Recoveries);
+    recoveries.push_back(what.str());
+    result = ReconstructionResult<D>{};
+    status = runWith(finer, finerGrids.Runs);
+    result.Recoveries.insert(result.Recoveries.begin(), recoveries.begin(), recoveries.end());
+  }
   result.CloudSpacing = plan.userCloudSpacing();
   result.Cleaning = plan.Cleaning;
-  result.CellSizeFactor = plan.Options.CellSizeFactor;
-  result.OutsideThresholdFactor = plan.Options.OutsideThresholdFactor;
   result.Choices = plan.Choices;
-  const Status status = withInterpolator<D>(
-    plan.Options.Interpolator, [&](auto tag) { return runAll<D, typename decltype(tag)::type>(plan, ctx, result); });
   recordsToUser(plan.Box, result);
   return status;
 }

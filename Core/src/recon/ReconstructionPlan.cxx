@@ -229,17 +229,33 @@ Status planReconstruction(
   {
     plan.InitialEllipsoid = boundingEllipsoid(plan.Cloud, farDistance);
   }
-  po.CellSizeFactor = plan.Options.CellSizeFactor;
-  // Run 1 must hold the initial surface (at the K_P of a restart, when automatic),
-  // plus the band gamma and two cells, inside the grid.
-  const double reach =
+  plan.Options.MemoryBudget = po.MemoryBudget;
+  plan.AutomaticCellSize = automaticCellSize;
+  // Run 1 must hold the initial surface (at the K_P of a restart, when automatic).
+  plan.FirstRunReach =
     initialReach(bounds, std::max(farDistance, roomFactor * plan.CloudSpacing), plan.InitialEllipsoid);
-  po.FirstRunPadding = static_cast<int>(std::ceil(reach / dx1 + options.GammaFactor + 2.0));
-  return planGrids(bounds, plan.CloudSpacing, po, plan.Grids);
+  return planRunGrids(plan, options.Runs, plan.Options.CellSizeFactor, plan.Grids);
+}
+
+template <int D>
+Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor, GridPlan<D>& grids)
+{
+  GridPlanOptions po;
+  po.Runs = runs;
+  po.CellSizeFactor = cellSizeFactor;
+  po.Padding = plan.Options.Padding;
+  po.BytesPerNode = ReconstructionBytesPerNode;
+  po.MemoryBudget = plan.Options.MemoryBudget;
+  // Room for run 1's initial surface, plus the band gamma and two cells.
+  const double dx1 = cellSizeFactor * plan.CloudSpacing; // (4.36)
+  po.FirstRunPadding = static_cast<int>(std::ceil(plan.FirstRunReach / dx1 + plan.Options.GammaFactor + 2.0));
+  return planGrids(boundingBox(plan.Cloud), plan.CloudSpacing, po, grids);
 }
 
 template Status validateReconstructionOptions<2>(const ReconstructionOptions&);
 template Status validateReconstructionOptions<3>(const ReconstructionOptions&);
+template Status planRunGrids(const ReconstructionPlan<2>&, int, double, GridPlan<2>&);
+template Status planRunGrids(const ReconstructionPlan<3>&, int, double, GridPlan<3>&);
 template Status planReconstruction(PointCloud<2>, const ReconstructionOptions&, const Context&, ReconstructionPlan<2>&);
 template Status planReconstruction(PointCloud<3>, const ReconstructionOptions&, const Context&, ReconstructionPlan<3>&);
 

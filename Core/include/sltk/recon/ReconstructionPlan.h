@@ -53,6 +53,8 @@ struct ReconstructionPlan
   double CloudSpacing = 0.0;                      ///< h_P (4.36) of Cloud, unit-box units
   std::optional<Ellipsoid<D>> InitialEllipsoid;   ///< run 1's surface for InitialGuess sphere/ellipsoid
   GridPlan<D> Grids;                              ///< unit-box grids of runs 1..R
+  bool AutomaticCellSize = false;                 ///< C_dx was chosen (the reconstruction may refine it)
+  double FirstRunReach = 0.0;                     ///< how far outside the cloud's box run 1's surface may lie
 
   ReconstructionPlan() = default;
   ReconstructionPlan(const ReconstructionPlan&) = delete; // the locator points at Cloud
@@ -83,6 +85,13 @@ template <int D>
 Status planReconstruction(
   PointCloud<D> cloud, const ReconstructionOptions& options, const Context& ctx, ReconstructionPlan<D>& plan);
 
+/// The grids of `runs` runs from C_dx = cellSizeFactor (4.36) for the plan's
+/// cloud, run 1 padded for FirstRunReach, against plan.Options.MemoryBudget.
+template <int D>
+Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor, GridPlan<D>& grids);
+
+extern template Status planRunGrids(const ReconstructionPlan<2>&, int, double, GridPlan<2>&);
+extern template Status planRunGrids(const ReconstructionPlan<3>&, int, double, GridPlan<3>&);
 extern template Status validateReconstructionOptions<2>(const ReconstructionOptions&);
 extern template Status validateReconstructionOptions<3>(const ReconstructionOptions&);
 extern template Status planReconstruction(
