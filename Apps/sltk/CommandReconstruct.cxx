@@ -252,8 +252,8 @@ int Reconstruct::run() const
   if (lost > 0.01) // Reconstruction.cxx, FarPointWarning
   {
     std::fprintf(stderr,
-      "sltk: warning: %.1f%% of the points lie more than h_P from the surface: features thinner than a cell of "
-      "run 1 were lost; try --cdx 0.5 with one run fewer (the same finest grid)\n",
+      "sltk: warning: %.1f%% of the points lie more than one cell of run 1 from the surface: features thinner "
+      "than that cell were lost; try --cdx 0.5 with one run fewer (the same finest grid)\n",
       100.0 * lost);
   }
   const SurfaceTopology topology = surfaceTopology(surface);

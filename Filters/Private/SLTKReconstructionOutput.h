@@ -30,7 +30,7 @@ void toImage(ReconstructionResult<D>& result, double z, vtkImageData* image);
 /// Recoveries (strings, AutomaticParameters.h), and one
 /// tuple per run in RunGridDimensions (3 components), RunIterations,
 /// RunEnergy (E_2), RunCloudError (Err_P), RunFarPoints (fraction of the points
-/// more than h_P from the surface), RunSeconds.
+/// more than one cell of run 1 from the surface), RunSeconds.
 template <int D>
 void runSummary(const ReconstructionResult<D>& result, vtkImageData* image);
 

@@ -124,7 +124,8 @@ struct RunRecord
   int Iterations = 0;
   double Energy = 0.0;
   double CloudError = 0.0;
-  double FarPoints = 0.0; ///< fraction of the points more than h_P from the surface at the end of the run
+  double FarPoints =
+    0.0; ///< fraction of the points more than one cell of run 1 (C_dx h_P, at least h_P) from the surface
   double Seconds = 0.0;
   Index MeanBandSize = 0;
 };
