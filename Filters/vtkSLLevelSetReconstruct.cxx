@@ -88,6 +88,7 @@ sltk::Status optionsOf(vtkSLLevelSetReconstruct* self, sltk::ReconstructionOptio
   }
   o.MemoryBudget = static_cast<std::uint64_t>(self->GetMemoryBudget()) << 20;
   o.Cleaning.Automatic = self->GetAutomaticCleaning();
+  o.LocalOffset = self->GetLocalOffset();
   o.Cleaning.RemoveOutliers = self->GetRemoveOutliers();
   o.Cleaning.Outliers.Deviations = self->GetOutlierDeviations();
   o.Cleaning.ThinningFactor = self->GetThinningFactor();
@@ -256,6 +257,7 @@ void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OutsideThresholdFactor: " << this->OutsideThresholdFactor << "\n";
   os << indent << "MemoryBudget: " << this->MemoryBudget << " MB\n";
   os << indent << "AutomaticCleaning: " << this->AutomaticCleaning << "\n";
+  os << indent << "LocalOffset: " << this->LocalOffset << "\n";
   os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "Padding: " << this->Padding << "\n";

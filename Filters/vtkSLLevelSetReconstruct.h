@@ -131,6 +131,15 @@ public:
   ///@}
 
   ///@{
+  /// LocalOffset (default on): run 1's initial surface lies K_P h_P rho(x) from
+  /// the cloud, rho the local sparsity of the sampling (1 where it is even, up to
+  /// 4; sltk/recon/LocalOffset.h); off: K_P h_P everywhere, as in the thesis.
+  vtkSetMacro(LocalOffset, bool);
+  vtkGetMacro(LocalOffset, bool);
+  vtkBooleanMacro(LocalOffset, bool);
+  ///@}
+
+  ///@{
   /// Memory budget of the automatic CellSizeFactor in MB; 0 (default): 1024 MB.
   /// With an explicit CellSizeFactor, 0 means the memory available.
   vtkSetMacro(MemoryBudget, int);
@@ -189,6 +198,7 @@ protected:
   double CellSizeFactor = 0.0;
   double OutsideThresholdFactor = 0.0;
   int MemoryBudget = 0;
+  bool LocalOffset = true;
   bool AutomaticCleaning = true;
   int MaximumNumberOfIterations = 100;
   double Tolerance = 1e-4;

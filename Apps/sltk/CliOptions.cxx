@@ -198,6 +198,9 @@ void addPlanOptions(CLI::App* app, sltk::ReconstructionOptions& options)
     ->check(within(16, 1e8))
     ->option_text("MB");
   app->add_flag_callback(
+    "--uniform-offset", [&options]() { options.LocalOffset = false; },
+    "run 1's initial surface at K_P h_P everywhere (the thesis), not K_P h_P\ntimes the local sparsity of the cloud");
+  app->add_flag_callback(
     "--no-cleaning", [&options]() { options.Cleaning.Automatic = false; },
     "use the cloud as given (no automatic outlier removal or thinning)");
   addChoice(

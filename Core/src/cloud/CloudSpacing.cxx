@@ -92,8 +92,7 @@ Status cloudSpacing(
   spacing = sum / static_cast<double>(used);
   if (kth > 0)
   {
-    // 1 / sqrt(rho): rho = k / (pi r_k^2) on a surface, k / (2 r_k) on a curve.
-    spacing *= D == 3 ? std::sqrt(3.14159265358979323846 / kth) : 2.0 / kth;
+    spacing = densitySpacing<D>(spacing, kth);
   }
   return Status::ok();
 }

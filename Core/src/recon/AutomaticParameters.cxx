@@ -3,6 +3,7 @@
 
 #include "sltk/recon/CloudInitialData.h"
 #include "sltk/recon/DistanceFunction.h"
+#include "sltk/recon/LocalOffset.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,7 +48,7 @@ double outsideFactorWithRestarts(double factor)
 
 template <int D>
 Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds, double cloudSpacing, double dx,
-  const Context& ctx, OutsideFactorChoice& choice)
+  const std::vector<double>& sparsity, const Context& ctx, OutsideFactorChoice& choice)
 {
   choice = OutsideFactorChoice{};
   const std::vector<double>& ladder = outsideFactorLadder();
@@ -55,11 +56,12 @@ Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds,
   po.Runs = 1;
   po.MemoryBudget = std::numeric_limits<std::uint64_t>::max(); // the probe is bounded below instead
   GridPlan<D> probe;
+  const double largest = sparsity.empty() ? 1.0 : *std::max_element(sparsity.begin(), sparsity.end());
   for (;;)
   {
     po.CellSizeFactor = dx / cloudSpacing;
     // Room for the largest K's surface, the marking's boundary layer and a margin.
-    po.Padding = static_cast<int>(std::ceil(ladder.back() * cloudSpacing / dx)) + 4;
+    po.Padding = static_cast<int>(std::ceil(largest * ladder.back() * cloudSpacing / dx)) + 4;
     SLTK_RETURN_IF_ERROR(planGrids(bounds, cloudSpacing, po, probe));
     if (static_cast<double>(probe.Runs[0].nodeCount()) <= MaximumProbeNodes)
     {
@@ -72,6 +74,13 @@ Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds,
   DistanceOptions dopt;
   dopt.Ghost = 0;
   SLTK_RETURN_IF_ERROR(distanceToCloud(locator, grid, ctx, distance, dopt)); // (4.4.2)
+  if (!sparsity.empty())
+  {
+    GridField<D, double> scaled;
+    const double reach = largest * ladder.back() * cloudSpacing;
+    SLTK_RETURN_IF_ERROR(locallyScaledDistance(distance, locator, sparsity, reach, ctx, scaled));
+    distance = std::move(scaled);
+  }
   std::vector<double> bottleneck;
   SLTK_RETURN_IF_ERROR(outsideBottleneck(distance, ctx, bottleneck));
   const size_t rungs = ladder.size();
@@ -127,10 +136,10 @@ Status chooseCellSizeFactor(const Box<D>& bounds, double cloudSpacing, GridPlanO
   return Status::outOfMemory("no C_dx up to 1e4 gives grids within the memory budget: raise the budget");
 }
 
-template Status chooseOutsideFactor(
-  const PointLocator<2>&, const Box<2>&, double, double, const Context&, OutsideFactorChoice&);
-template Status chooseOutsideFactor(
-  const PointLocator<3>&, const Box<3>&, double, double, const Context&, OutsideFactorChoice&);
+template Status chooseOutsideFactor(const PointLocator<2>&, const Box<2>&, double, double, const std::vector<double>&,
+  const Context&, OutsideFactorChoice&);
+template Status chooseOutsideFactor(const PointLocator<3>&, const Box<3>&, double, double, const std::vector<double>&,
+  const Context&, OutsideFactorChoice&);
 template Status chooseCellSizeFactor(const Box<2>&, double, GridPlanOptions, double&);
 template Status chooseCellSizeFactor(const Box<3>&, double, GridPlanOptions, double&);
 

@@ -9,6 +9,7 @@
 #include "sltk/recon/EnergyFunctional.h"
 #include "sltk/recon/ExactDistanceCache.h"
 #include "sltk/recon/LevelSetStep.h"
+#include "sltk/recon/LocalOffset.h"
 
 #include <algorithm>
 #include <chrono>
@@ -299,7 +300,19 @@ Status initialData(const ReconstructionPlan<D>& plan, double outsideFactor, cons
   {
     InitialDataOptions io;
     io.Ghost = PhiGhost;
-    SLTK_RETURN_IF_ERROR(cloudInitialData(dist, outsideFactor * plan.CloudSpacing, ctx, phi, io));
+    if (plan.Sparsity.empty())
+    {
+      SLTK_RETURN_IF_ERROR(cloudInitialData(dist, outsideFactor * plan.CloudSpacing, ctx, phi, io));
+    }
+    else
+    {
+      // The local offset K_P h_P rho(x) (LocalOffset.h): the marking and sweeping on u = d / rho.
+      const double sparsest = *std::max_element(plan.Sparsity.begin(), plan.Sparsity.end());
+      GridField<D> scaled;
+      SLTK_RETURN_IF_ERROR(locallyScaledDistance(
+        dist, *plan.Locator, plan.Sparsity, sparsest * outsideFactor * plan.CloudSpacing, ctx, scaled));
+      SLTK_RETURN_IF_ERROR(cloudInitialData(scaled, outsideFactor * plan.CloudSpacing, ctx, phi, io));
+    }
   }
   cutLevelSet(phi, gamma, ctx);
   if (previous)

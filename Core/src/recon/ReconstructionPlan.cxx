@@ -3,6 +3,7 @@
 
 #include "sltk/cloud/CloudSpacing.h"
 #include "sltk/cloud/CloudThinning.h"
+#include "sltk/cloud/LocalSpacing.h"
 #include "sltk/recon/AutomaticParameters.h"
 #include "sltk/recon/CloudInitialData.h"
 
@@ -193,6 +194,11 @@ Status planReconstruction(
   }
   const double dx1 = plan.Options.CellSizeFactor * plan.CloudSpacing; // run 1 (4.36)
   const Box<D> bounds = boundingBox(plan.Cloud);
+  if (options.LocalOffset && options.Guess == InitialGuess::OutsideMarking)
+  {
+    SLTK_RETURN_IF_ERROR(sparsityFactors(*plan.Locator, options.Cleaning.DensityNeighbours, ctx, plan.Sparsity));
+  }
+  const double sparsest = plan.Sparsity.empty() ? 1.0 : *std::max_element(plan.Sparsity.begin(), plan.Sparsity.end());
   double roomFactor = plan.Options.OutsideThresholdFactor;
   if (!(options.OutsideThresholdFactor > 0.0))
   {
@@ -200,7 +206,8 @@ Status planReconstruction(
     if (options.Guess == InitialGuess::OutsideMarking)
     {
       OutsideFactorChoice choice;
-      SLTK_RETURN_IF_ERROR(chooseOutsideFactor(*plan.Locator, bounds, plan.CloudSpacing, dx1, ctx, choice));
+      SLTK_RETURN_IF_ERROR(
+        chooseOutsideFactor(*plan.Locator, bounds, plan.CloudSpacing, dx1, plan.Sparsity, ctx, choice));
       plan.Options.OutsideThresholdFactor = choice.Factor;
       const auto& ladder = outsideFactorLadder();
       const size_t best = static_cast<size_t>(std::find(ladder.begin(), ladder.end(), choice.Factor) - ladder.begin());
@@ -233,7 +240,7 @@ Status planReconstruction(
   plan.AutomaticCellSize = automaticCellSize;
   // Run 1 must hold the initial surface (at the K_P of a restart, when automatic).
   plan.FirstRunReach =
-    initialReach(bounds, std::max(farDistance, roomFactor * plan.CloudSpacing), plan.InitialEllipsoid);
+    initialReach(bounds, sparsest * std::max(farDistance, roomFactor * plan.CloudSpacing), plan.InitialEllipsoid);
   return planRunGrids(plan, options.Runs, plan.Options.CellSizeFactor, plan.Grids);
 }
 

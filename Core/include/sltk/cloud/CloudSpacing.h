@@ -18,6 +18,8 @@
 #include "sltk/cloud/PointLocator.h"
 #include "sltk/exec/Context.h"
 
+#include <cmath>
+
 namespace sltk
 {
 
@@ -28,6 +30,14 @@ struct CloudSpacingOptions
   std::uint64_t Seed = 20240101;
   int DensityNeighbours = 0; ///< 0: h_P (4.36); k > 0: the density spacing at the k-th neighbour
 };
+
+/// The density spacing 1 / sqrt(rho) from r_k, the distance to the k-th
+/// neighbour: rho = k / (pi r_k^2) on a surface (D = 3), k / (2 r_k) on a curve.
+template <int D>
+double densitySpacing(double kthDistance, int k)
+{
+  return kthDistance * (D == 3 ? std::sqrt(3.14159265358979323846 / k) : 2.0 / k);
+}
 
 /// Computes h_P (or the density spacing); fails when the cloud has fewer than
 /// two distinct points (density spacing: fewer than k + 1 points).

@@ -63,20 +63,21 @@ struct OutsideFactorChoice
 };
 
 /// Chooses K_P for the cloud of `locator` (unit box, spacing h_P) on a grid of
-/// spacing dx around `bounds` (run 1's: dx = C_dx h_P).
+/// spacing dx around `bounds` (run 1's: dx = C_dx h_P); with one sparsity factor
+/// per point, for the local offset K_P h_P rho (LocalOffset.h).
 template <int D>
 Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds, double cloudSpacing, double dx,
-  const Context& ctx, OutsideFactorChoice& choice);
+  const std::vector<double>& sparsity, const Context& ctx, OutsideFactorChoice& choice);
 
 /// The smallest C_dx >= 1 (in steps of 2%) whose grids `options` (budget
 /// included) accepts; fails when none up to 1e4 does.
 template <int D>
 Status chooseCellSizeFactor(const Box<D>& bounds, double cloudSpacing, GridPlanOptions options, double& cellSizeFactor);
 
-extern template Status chooseOutsideFactor(
-  const PointLocator<2>&, const Box<2>&, double, double, const Context&, OutsideFactorChoice&);
-extern template Status chooseOutsideFactor(
-  const PointLocator<3>&, const Box<3>&, double, double, const Context&, OutsideFactorChoice&);
+extern template Status chooseOutsideFactor(const PointLocator<2>&, const Box<2>&, double, double,
+  const std::vector<double>&, const Context&, OutsideFactorChoice&);
+extern template Status chooseOutsideFactor(const PointLocator<3>&, const Box<3>&, double, double,
+  const std::vector<double>&, const Context&, OutsideFactorChoice&);
 extern template Status chooseCellSizeFactor(const Box<2>&, double, GridPlanOptions, double&);
 extern template Status chooseCellSizeFactor(const Box<3>&, double, GridPlanOptions, double&);
 

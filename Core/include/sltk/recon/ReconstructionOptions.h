@@ -72,6 +72,9 @@ struct ReconstructionOptions
     r.MaxIterations = 10;
     return r;
   }();
+  /// Beyond the thesis: run 1's initial surface at K_P h_P rho(x), rho the local
+  /// sparsity of the cloud (recon/LocalOffset.h); false: the thesis's K_P h_P.
+  bool LocalOffset = true;
   /// Bytes; 0: AutomaticMemoryBudget (1 GiB) when C_dx is automatic, the memory available otherwise.
   std::uint64_t MemoryBudget = 0;
   bool DetectTunnels = false; ///< 4.5.6: follow grad phi where 0.6 h_P < d < 2 dx and |grad d| < 0.5
@@ -88,6 +91,7 @@ struct ReconstructionOptions
     o.CellSizeFactor = 1.0;
     o.OutsideThresholdFactor = 2.0;
     o.Cleaning.Automatic = false;
+    o.LocalOffset = false;
     return o;
   }
 

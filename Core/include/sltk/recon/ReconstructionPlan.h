@@ -53,6 +53,7 @@ struct ReconstructionPlan
   double CloudSpacing = 0.0;                      ///< h_P (4.36) of Cloud, unit-box units
   std::optional<Ellipsoid<D>> InitialEllipsoid;   ///< run 1's surface for InitialGuess sphere/ellipsoid
   GridPlan<D> Grids;                              ///< unit-box grids of runs 1..R
+  std::vector<double> Sparsity;                   ///< rho per point of Cloud (LocalOffset); empty: uniform K_P h_P
   bool AutomaticCellSize = false;                 ///< C_dx was chosen (the reconstruction may refine it)
   double FirstRunReach = 0.0;                     ///< how far outside the cloud's box run 1's surface may lie
 

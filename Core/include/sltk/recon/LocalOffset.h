@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file LocalOffset.h
+/// Beyond the thesis: run 1's initial surface at K_P h_P rho(x) from the cloud
+/// instead of K_P h_P (4.4.4), rho the sparsity factor of the point nearest to
+/// x (cloud/LocalSpacing.h). The outside marking and the sweeping of
+/// CloudInitialData.h run unchanged on the scaled distance u = d / rho, whose
+/// level set u = K_P h_P is d = K_P h_P rho; where the cloud is evenly sampled
+/// rho = 1 and u = d (Documentation/Numerics.md, "Local offset").
+
+#include "sltk/cloud/PointLocator.h"
+#include "sltk/exec/Context.h"
+#include "sltk/grid/GridField.h"
+
+#include <vector>
+
+namespace sltk
+{
+
+/// u = d / rho(x) on every node of `distance` with d < reach, rho(x) the factor of
+/// the nearest point: queried within two cells of the cloud, carried outwards
+/// along the steepest descent of d beyond (O(n log n), no query far from the
+/// cloud); farther nodes get d / max(rho), at least reach / max(rho): pass reach
+/// = (largest K_P h_P) * max(rho) so that they stay outside every initial
+/// surface. `scaled` takes the grid and ghosts of `distance`.
+template <int D>
+Status locallyScaledDistance(const GridField<D, double>& distance, const PointLocator<D>& locator,
+  const std::vector<double>& sparsity, double reach, const Context& ctx, GridField<D, double>& scaled);
+
+extern template Status locallyScaledDistance(const GridField<2, double>&, const PointLocator<2>&,
+  const std::vector<double>&, double, const Context&, GridField<2, double>&);
+extern template Status locallyScaledDistance(const GridField<3, double>&, const PointLocator<3>&,
+  const std::vector<double>&, double, const Context&, GridField<3, double>&);
+
+} // namespace sltk
