@@ -36,14 +36,9 @@ double nextOutsideFactor(double factor)
   return 0.0;
 }
 
-double outsideFactorWithRestarts(double factor)
+double outsideFactorWithRestart(double factor)
 {
-  double room = factor;
-  for (int restart = 0; restart < 2; ++restart)
-  {
-    room = std::max(room, nextOutsideFactor(room));
-  }
-  return room;
+  return std::max(factor, nextOutsideFactor(factor));
 }
 
 template <int D>

@@ -61,23 +61,27 @@ Status planGrids(const Box<D>& bounds, double cloudSpacing, const GridPlanOption
     const int padding = r == 1 ? std::max(options.Padding, options.FirstRunPadding) : options.Padding;
     plan.Runs.push_back(runGrid(bounds, dx, padding));
   }
-  const GridSpec<D>& finest = plan.Runs.back();
-  double nodes = 1.0;
-  for (int a = 0; a < D; ++a)
+  // The largest grid (the finest, unless run 1's padding for its initial surface is wide).
+  double nodes = 0.0;
+  for (const GridSpec<D>& run : plan.Runs)
   {
-    nodes *= static_cast<double>(finest.Dims[a]);
+    double runNodes = 1.0;
+    for (int a = 0; a < D; ++a)
+    {
+      runNodes *= static_cast<double>(run.Dims[a]);
+    }
+    nodes = std::max(nodes, runNodes);
   }
-  const double budget = options.MemoryBudget ? static_cast<double>(options.MemoryBudget)
-                                             : static_cast<double>(availableMemoryBytes());
+  const double budget =
+    options.MemoryBudget ? static_cast<double>(options.MemoryBudget) : static_cast<double>(availableMemoryBytes());
   const double need = nodes * options.BytesPerNode;
   if (budget > 0.0 && need > budget)
   {
     // The node count scales as C_dx^-D: the factor that fits with 10% headroom.
     const double fit = options.CellSizeFactor * std::pow(need / (0.9 * budget), 1.0 / D);
     std::ostringstream m;
-    m << "the finest grid (run " << options.Runs << ") would have " << nodes << " nodes, about "
-      << need / 1e9 << " GB, more than the " << budget / 1e9 << " GB available: use C_dx >= " << fit
-      << " or fewer runs";
+    m << "the largest grid (of " << options.Runs << " runs) would have " << nodes << " nodes, about " << need / 1e9
+      << " GB, more than the " << budget / 1e9 << " GB available: use C_dx >= " << fit << " or fewer runs";
     plan.Runs.clear();
     return Status::outOfMemory(m.str());
   }

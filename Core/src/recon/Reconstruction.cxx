@@ -354,7 +354,7 @@ Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& op
   GridField<D> phi, previous, dist, previousDist;
   double outsideFactor = options.OutsideThresholdFactor;
   // An automatic K_P may be raised when run 1 loses its zero level set (AutomaticParameters.h).
-  const double outsideRoom = plan.Enclosure ? outsideFactorWithRestarts(outsideFactor) : outsideFactor;
+  const double outsideRoom = plan.Enclosure ? outsideFactorWithRestart(outsideFactor) : outsideFactor;
   for (int run = 1; run <= options.Runs; ++run)
   {
     const GridSpec<D>& grid = grids[static_cast<size_t>(run - 1)];

@@ -220,7 +220,7 @@ Status planReconstruction(
         ")");
       plan.Enclosure = std::move(choice);
     }
-    roomFactor = outsideFactorWithRestarts(plan.Options.OutsideThresholdFactor);
+    roomFactor = outsideFactorWithRestart(plan.Options.OutsideThresholdFactor);
   }
   for (const std::string& choice : plan.Choices)
   {

@@ -50,9 +50,9 @@ const std::vector<double>& outsideFactorLadder();
 /// restarts with it), or 0 when there is none.
 double nextOutsideFactor(double factor);
 
-/// The K_P for which run 1's grid must leave room (two rungs above `factor`, so
-/// that a restart fits).
-double outsideFactorWithRestarts(double factor);
+/// The K_P for which run 1's grid leaves room: the next rung above `factor`, so
+/// that one restart fits.
+double outsideFactorWithRestart(double factor);
 
 struct OutsideFactorChoice
 {

@@ -53,7 +53,7 @@ Status reconstruct(const PointCloud<D>& cloud, const ReconstructionOptions& opti
 /// Runs Algorithm 1 on a plan (planReconstruction(), with its chosen options plan.Options).
 /// Beyond the thesis, a run that loses its zero level set is recovered rather
 /// than failed when it can be (Recoveries says how): run 1 with an automatic
-/// K_P restarts with the ladder's next K_P (up to two rungs); a later run is
+/// K_P restarts with the ladder's next K_P (once); a later run is
 /// replaced by the previous run's result.
 template <int D>
 Status reconstruct(const ReconstructionPlan<D>& plan, const Context& ctx, ReconstructionResult<D>& result);
