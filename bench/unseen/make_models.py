@@ -1,0 +1,176 @@
+#!/usr/bin/python3
+"""Synthetic models of known genus for the unseen-cloud benchmark.
+
+usage: /usr/bin/python3 bench/unseen/make_models.py OUTDIR
+
+VTK from Python: ParaView 5.11's VTK is the system one (/usr/lib/python3/dist-packages/vtkmodules).
+`/usr/bin/python3` imports it directly (`import vtkmodules...`, `from paraview import vtk` works too);
+`pvpython` runs this script as well. A pyenv `python3` first on PATH does NOT see it, hence the
+explicit /usr/bin/python3.
+
+Each model is a signed distance function sampled on a regular grid, contoured at 0
+(vtkFlyingEdges3D) and cleaned. Written to OUTDIR: NAME.ply (the closed reference mesh), NAME.xyz
+(the cloud: the mesh's vertices) and models.json (name, genus, parts, points, reference).
+The *_cad models are decimated (vtkDecimatePro, topology kept): flat faces keep few, large
+triangles, curved ones many small ones; their cloud is the decimated mesh's vertices and their
+reference the fine mesh. Every reference mesh is checked: no boundary or non-manifold edges,
+the expected number of parts and V - E + F = 2 parts - 2 genus.
+"""
+import json
+import os
+import sys
+
+import numpy as np
+from vtkmodules.util import numpy_support
+from vtkmodules.vtkCommonDataModel import vtkImageData
+from vtkmodules.vtkFiltersCore import (vtkCleanPolyData, vtkDecimatePro, vtkFeatureEdges,
+                                       vtkFlyingEdges3D, vtkPolyDataConnectivityFilter,
+                                       vtkTriangleFilter)
+from vtkmodules.vtkIOPLY import vtkPLYWriter
+
+
+# Signed distance functions (negative inside) on arrays of coordinates.
+def sphere(x, y, z, c=(0.0, 0.0, 0.0), r=1.0):
+    return np.sqrt((x - c[0]) ** 2 + (y - c[1]) ** 2 + (z - c[2]) ** 2) - r
+
+
+def torus(x, y, z, cx=0.0, R=1.0, r=0.35):
+    return np.sqrt((np.sqrt((x - cx) ** 2 + y ** 2) - R) ** 2 + z ** 2) - r
+
+
+def smooth_min(a, b, k):
+    h = np.clip(0.5 + 0.5 * (b - a) / k, 0.0, 1.0)
+    return b + (a - b) * h - k * h * (1.0 - h)
+
+
+def double_torus(x, y, z):
+    # two tori (R = 1, r = 0.35) side by side, overlapping at the origin, smoothly joined
+    return smooth_min(torus(x, y, z, -1.0), torus(x, y, z, 1.0), 0.15)
+
+
+def rounded_box(x, y, z, half=(2.0, 0.8, 0.3), rounding=0.1):
+    qx, qy, qz = (np.abs(v) - (h - rounding) for v, h in zip((x, y, z), half))
+    outside = np.sqrt(np.maximum(qx, 0) ** 2 + np.maximum(qy, 0) ** 2 + np.maximum(qz, 0) ** 2)
+    return outside + np.minimum(np.maximum(qx, np.maximum(qy, qz)), 0.0) - rounding
+
+
+def part3(x, y, z):
+    # a 4 x 1.6 x 0.6 plate with rounded edges and 3 through-holes of radius 0.3 along z
+    d = rounded_box(x, y, z)
+    for cx in (-1.2, 0.0, 1.2):
+        d = np.maximum(d, 0.3 - np.sqrt((x - cx) ** 2 + y ** 2))
+    return d
+
+
+def two_spheres(x, y, z):
+    # radius 1, gap 0.3 between the surfaces
+    return np.minimum(sphere(x, y, z, (-1.15, 0, 0)), sphere(x, y, z, (1.15, 0, 0)))
+
+
+def contour(f, lo, hi, h):
+    """Zero level set of f sampled with spacing h on the box [lo, hi] (shifted by h/pi so that
+    no node lies exactly on the surface)."""
+    lo = np.asarray(lo, float) - h / np.pi
+    n = np.ceil((np.asarray(hi, float) - lo) / h).astype(int) + 1
+    axes = [lo[a] + h * np.arange(n[a]) for a in range(3)]
+    z, y, x = np.meshgrid(axes[2], axes[1], axes[0], indexing="ij")  # x fastest, as VTK
+    image = vtkImageData()
+    image.SetDimensions(*n)
+    image.SetOrigin(*lo)
+    image.SetSpacing(h, h, h)
+    image.GetPointData().SetScalars(numpy_support.numpy_to_vtk(f(x, y, z).ravel(), deep=True))
+    fe = vtkFlyingEdges3D()
+    fe.SetInputData(image)
+    fe.SetValue(0, 0.0)
+    fe.ComputeNormalsOff()
+    fe.ComputeGradientsOff()
+    clean = vtkCleanPolyData()
+    clean.SetInputConnection(fe.GetOutputPort())
+    tri = vtkTriangleFilter()  # also drops the lines/vertices clean may leave from degenerate cells
+    tri.PassLinesOff()
+    tri.PassVertsOff()
+    tri.SetInputConnection(clean.GetOutputPort())
+    tri.Update()
+    return tri.GetOutput()
+
+
+def decimate(mesh, reduction):
+    d = vtkDecimatePro()
+    d.SetInputData(mesh)
+    d.SetTargetReduction(reduction)
+    d.PreserveTopologyOn()
+    d.SplittingOff()
+    d.BoundaryVertexDeletionOff()
+    d.SetFeatureAngle(30)
+    d.Update()
+    return d.GetOutput()
+
+
+def topology(mesh):
+    """(parts, Euler characteristic, boundary edges, non-manifold edges) of a triangle mesh."""
+    tris = numpy_support.vtk_to_numpy(mesh.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    edges = np.sort(np.concatenate([tris[:, [0, 1]], tris[:, [1, 2]], tris[:, [2, 0]]]), axis=1)
+    n_edges = len(np.unique(edges, axis=0))
+    fe = vtkFeatureEdges()
+    fe.SetInputData(mesh)
+    fe.BoundaryEdgesOn()
+    fe.NonManifoldEdgesOff()
+    fe.FeatureEdgesOff()
+    fe.ManifoldEdgesOff()
+    fe.Update()
+    boundary = fe.GetOutput().GetNumberOfLines()
+    fe.BoundaryEdgesOff()
+    fe.NonManifoldEdgesOn()
+    fe.Update()
+    nonmanifold = fe.GetOutput().GetNumberOfLines()
+    conn = vtkPolyDataConnectivityFilter()
+    conn.SetInputData(mesh)
+    conn.SetExtractionModeToAllRegions()
+    conn.Update()
+    chi = mesh.GetNumberOfPoints() - n_edges + len(tris)
+    return conn.GetNumberOfExtractedRegions(), chi, boundary, nonmanifold
+
+
+# name: (function, box low, box high, grid spacing, genus, parts, decimation or None)
+MODELS = {
+    "sphere": (sphere, (-1.2,) * 3, (1.2,) * 3, 0.03, 0, 1, None),
+    "torus": (torus, (-1.5, -1.5, -0.5), (1.5, 1.5, 0.5), 0.03, 1, 1, None),
+    "double_torus": (double_torus, (-2.5, -1.5, -0.5), (2.5, 1.5, 0.5), 0.03, 2, 1, None),
+    "part3": (part3, (-2.2, -1.0, -0.5), (2.2, 1.0, 0.5), 0.025, 3, 1, None),
+    "two_spheres": (two_spheres, (-2.3, -1.2, -1.2), (2.3, 1.2, 1.2), 0.035, 0, 2, None),
+    "torus_cad": (torus, (-1.5, -1.5, -0.5), (1.5, 1.5, 0.5), 0.01, 1, 1, 0.9),
+    "part3_cad": (part3, (-2.2, -1.0, -0.5), (2.2, 1.0, 0.5), 0.01, 3, 1, 0.95),
+}
+
+
+def main(out):
+    os.makedirs(out, exist_ok=True)
+    listing, ok = [], True
+    for name, (f, lo, hi, h, genus, parts, reduction) in MODELS.items():
+        mesh = contour(f, lo, hi, h)
+        cloud = decimate(mesh, reduction) if reduction else mesh
+        writer = vtkPLYWriter()
+        writer.SetFileName(os.path.join(out, name + ".ply"))
+        writer.SetInputData(mesh)
+        writer.SetFileTypeToBinary()
+        writer.Write()
+        pts = numpy_support.vtk_to_numpy(cloud.GetPoints().GetData())
+        np.savetxt(os.path.join(out, name + ".xyz"), pts, fmt="%.7g")
+        got_parts, chi, boundary, nonmanifold = topology(mesh)
+        good = (boundary == 0 and nonmanifold == 0 and got_parts == parts
+                and chi == 2 * parts - 2 * genus and 5000 <= len(pts) <= 40000)
+        ok &= good
+        print(f"{name:13s} points {len(pts):6d}  reference: {mesh.GetNumberOfPoints():7d} vertices, "
+              f"{got_parts} part(s), chi {chi:3d}, boundary edges {boundary}, non-manifold "
+              f"{nonmanifold}  {'ok' if good else 'WRONG (expected genus %d, %d parts)' % (genus, parts)}")
+        listing.append({"name": name, "genus": genus, "parts": parts, "points": len(pts),
+                        "reference_vertices": mesh.GetNumberOfPoints(), "cad": bool(reduction)})
+    with open(os.path.join(out, "models.json"), "w") as fp:
+        json.dump(listing, fp, indent=2)
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    sys.exit(main(sys.argv[1]))
