@@ -361,9 +361,9 @@ Command addReconstructCommand(CLI::App& sltk)
     ->option_text("FILE");
   app
     ->add_option("--json", command->Json,
-      "summary: points, points_reconstructed, outliers_removed, cdx, kp,\nautomatic_choices, recoveries, seconds, "
-      "peak_memory_mb, surface_pieces, "
-      "euler_characteristic,\nruns [grid, iterations, energy, err_cloud]")
+      "summary: points, points_reconstructed, outliers_removed, cdx, kp,\n"
+      "automatic_choices, recoveries, seconds, peak_memory_mb, surface_pieces,\n"
+      "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points]")
     ->option_text("FILE");
   addInterpolatorOption(app, o.Interpolator, "weno3");
   addPlanOptions(app, o);

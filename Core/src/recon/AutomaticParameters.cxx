@@ -15,7 +15,7 @@ namespace sltk
 namespace
 {
 /// The probe grid's nodes at most: coarser probes are made by doubling dx.
-constexpr double MaximumProbeNodes = 16e6;
+constexpr double MaximumProbeNodes = 4e6;
 } // namespace
 
 const std::vector<double>& outsideFactorLadder()
