@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file BenchHjb.cxx
 /// The HJB tests of thesis 3.5 with the scheme (3.7) (sltk/hjb/HjbScheme.h)
-/// and the WENO3, CWENO and CWENOZ interpolators, run side by side:
+/// and the interpolators of the registry (sltk/interp/InterpolatorKind.h; by
+/// default the thesis's WENO3, CWENO and CWENOZ), run side by side:
 ///  - Tables 3.1, 3.3, 3.5, 3.7: L1 errors and orders, ours beside the thesis's;
 ///  - Table 3.9: min/max of Test 4;
 ///  - Tables 3.2, 3.4, 3.6, 3.8, 3.10: run times (median of --repeat runs,
-///    the three interpolators interleaved in each repetition) and the % gain
-///    of CWENO(Z) over WENO measured in the same run, beside the thesis's
+///    the interpolators interleaved in each repetition) and the % gain
+///    over WENO3 measured in the same run, beside the thesis's
 ///    (Galileo100 cluster: compare the gains, not the seconds);
 ///  - objective evaluations and cell builds (prepare()) per node and step.
 /// The thesis's numbers are read from a JSON transcription of its tables (--tables).
@@ -21,17 +22,18 @@
 ///   --threads executor size (default 1: the CPU time of one core)
 ///   --cache   cells per thread chunk (HjbOptions::CellCacheSize: 0 automatic (default), 1, 8, 256, 4096)
 ///   --warm    MinimizerOptions::WarmTabulationPoints (default -1: the preset's, 5 for Test 4; 0: off)
-///   --interp  comma list of weno,cweno,cwenoz (default all three; gains need weno)
+///   --interp  comma list of interpolators (q1, weno3 or weno, cweno, cwenoz; default
+///             weno3,cweno,cwenoz, the thesis's; gains need weno3)
 ///   --tables  path of thesis_tables.json (default /work/shared/reference/thesis_tables.json)
 
 #include "common/BenchCli.h"
+#include "common/ThesisNames.h"
 #include "common/ThesisTables.h"
 
 #include "sltk/hjb/HjbError.h"
 #include "sltk/hjb/HjbScheme.h"
 #include "sltk/hjb/Presets.h"
-#include "sltk/interp/Cweno.h"
-#include "sltk/interp/Weno3.h"
+#include "sltk/interp/Interpolators.h"
 
 #include <algorithm>
 #include <chrono>
@@ -45,27 +47,13 @@
 namespace
 {
 
+using sltkbench::formatValue;
 using sltkbench::ThesisTables;
 using Json = nlohmann::json;
 
-/// Thesis value at position of `n` in table/N (or table/grid), NaN when absent.
-double thesisValue(const ThesisTables& root, const std::string& table, const std::string& field, long long n)
-{
-  const Json* ns = root.find(table + "/N");
-  const Json* values = root.find(table + "/" + field);
-  if (!ns || !values || !ns->is_array() || !values->is_array())
-  {
-    return std::nan("");
-  }
-  for (size_t k = 0; k < ns->size() && k < values->size(); ++k)
-  {
-    if ((*ns)[k].is_number() && static_cast<long long>((*ns)[k].get<double>()) == n)
-    {
-      return (*values)[k].is_number() ? (*values)[k].get<double>() : std::nan("");
-    }
-  }
-  return std::nan("");
-}
+constexpr int KindCount = sltk::interpolatorCount();
+constexpr auto Weno3 = static_cast<size_t>(sltk::InterpolatorKind::Weno3);
+using PerKind = std::array<bool, KindCount>; // indexed by InterpolatorKind
 
 /// The leading integer of a grid entry ("126x101": 126), 0 for anything else.
 long long leadingNumber(const Json& entry)
@@ -116,18 +104,6 @@ std::vector<long long> tableNs(const ThesisTables& root, const std::vector<std::
   return ns;
 }
 
-std::string fmt(double v, const char* f = "%9.3e")
-{
-  char buf[64];
-  if (std::isnan(v)) // "-" right-aligned in the width of the format
-  {
-    const int width = std::snprintf(buf, sizeof buf, f, 0.0);
-    return std::string(static_cast<size_t>(width > 1 ? width - 1 : 0), ' ') + "-";
-  }
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
 // --- runs ----------------------------------------------------------------------------------------
 
 struct Measure
@@ -175,15 +151,13 @@ Measure runOnce(const Problem& problem, const sltk::HjbSetup<D>& setup, const sl
   return m;
 }
 
-const char* const Names[3] = { "WENO", "CWENO", "CWENOZ" };
-
-/// The three interpolators, interleaved `repeat` times; median seconds.
+/// The enabled interpolators, interleaved `repeat` times; median seconds.
 template <int D, class Problem>
-std::array<Measure, 3> runAll(const Problem& problem, const sltk::HjbSetup<D>& setup, int repeat,
-  const std::array<bool, 3>& enabled, const sltk::Context& ctx)
+std::array<Measure, KindCount> runAll(
+  const Problem& problem, const sltk::HjbSetup<D>& setup, int repeat, const PerKind& enabled, const sltk::Context& ctx)
 {
-  std::array<Measure, 3> out;
-  std::array<std::vector<double>, 3> seconds;
+  std::array<Measure, KindCount> out;
+  std::array<std::vector<double>, KindCount> seconds;
   // Runs shorter than 0.2 s are repeated and averaged, so that a timing is never a few ms of noise.
   auto timed = [&](auto run)
   {
@@ -202,29 +176,32 @@ std::array<Measure, 3> runAll(const Problem& problem, const sltk::HjbSetup<D>& s
   };
   for (int r = 0; r < repeat; ++r)
   {
-    if (enabled[0])
+    for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
     {
-      out[0] = timed([&] { return runOnce<sltk::Weno3Interpolator<D>>(problem, setup, ctx); });
-    }
-    if (enabled[1])
-    {
-      out[1] = timed([&] { return runOnce<sltk::CwenoInterpolator<D>>(problem, setup, ctx); });
-    }
-    if (enabled[2])
-    {
-      out[2] = timed([&] { return runOnce<sltk::CwenoZInterpolator<D>>(problem, setup, ctx); });
-    }
-    for (int m = 0; m < 3; ++m)
-    {
+      const auto m = static_cast<size_t>(info.Kind);
+      if (enabled[m])
+      {
+        out[m] = sltk::withInterpolator<D>(info.Kind,
+          [&](auto tag) { return timed([&] { return runOnce<typename decltype(tag)::type>(problem, setup, ctx); }); });
+      }
       seconds[m].push_back(enabled[m] ? out[m].Seconds : std::nan(""));
     }
   }
-  for (int m = 0; m < 3; ++m)
+  for (size_t m = 0; m < KindCount; ++m)
   {
     std::sort(seconds[m].begin(), seconds[m].end());
     out[m].Seconds = seconds[m][seconds[m].size() / 2];
   }
   return out;
+}
+
+/// The interpolators of the thesis's chapter 3: all but Q1.
+PerKind thesisKinds()
+{
+  PerKind kinds{};
+  kinds.fill(true);
+  kinds[static_cast<size_t>(sltk::InterpolatorKind::Q1)] = false;
+  return kinds;
 }
 
 struct Config
@@ -236,8 +213,8 @@ struct Config
   int Threads = 1;
   int Cache = 0;
   int Warm = -1;
-  std::array<bool, 3> Interps{ true, true, true }; // WENO, CWENO, CWENOZ
-  std::string Tables = "/work/shared/reference/thesis_tables.json";
+  PerKind Interps = thesisKinds();
+  std::string Tables = sltkbench::DefaultThesisTablesPath;
 };
 
 struct TestSpec
@@ -281,9 +258,9 @@ void runTable(const ThesisTables& tables, const TestSpec& spec, const Config& cf
   const long long maxN = cfg.MaxN > 0 ? cfg.MaxN : spec.DefaultMaxN;
   const bool errors = !spec.ErrTable.empty();
   printHeader(spec, errors);
-  std::array<double, 3> prevErr{ std::nan(""), std::nan(""), std::nan("") };
+  std::array<double, KindCount> prevErr{};
   long long prevN = 0;
-  std::vector<std::pair<long long, std::array<Measure, 3>>> all;
+  std::vector<std::pair<long long, std::array<Measure, KindCount>>> all;
   for (long long n : tableNs(tables, names))
   {
     if (n < cfg.MinN || n > maxN)
@@ -298,44 +275,40 @@ void runTable(const ThesisTables& tables, const TestSpec& spec, const Config& cf
     }
     const auto m = runAll<D>(problem, setup, cfg.Repeat, cfg.Interps, ctx);
     all.emplace_back(n, m);
-    for (int k = 0; k < 3; ++k)
+    for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
     {
+      const auto k = static_cast<size_t>(info.Kind);
       if (!cfg.Interps[k])
       {
         continue;
       }
-      const std::string name = Names[k];
-      const double gain = k == 0 ? std::nan("") : 100.0 * (1.0 - m[k].Seconds / m[0].Seconds);
-      double thesisCpu = 0.0, thesisGain = std::nan("");
+      const std::string key = sltkbench::thesisKey(info.Kind);
+      const bool againstWeno = k != Weno3 && cfg.Interps[Weno3];
+      const double gain = againstWeno ? 100.0 * (1.0 - m[k].Seconds / m[Weno3].Seconds) : std::nan("");
+      const double thesisCpu =
+        errors ? tables.valueAtN(spec.CpuTable, key, n) : thesisGridValue(tables, spec.CpuTable, key, n);
+      const double thesisGain = errors ? tables.valueAtN(spec.CpuTable, key + "_gain_pct", n)
+                                       : thesisGridValue(tables, spec.CpuTable, key + "_gain_pct", n);
       if (errors)
       {
-        thesisCpu = thesisValue(tables, spec.CpuTable, name, n);
-        thesisGain = k == 0 ? std::nan("") : thesisValue(tables, spec.CpuTable, name + "_gain_pct", n);
-      }
-      else
-      {
-        thesisCpu = thesisGridValue(tables, spec.CpuTable, name, n);
-        thesisGain = k == 0 ? std::nan("") : thesisGridValue(tables, spec.CpuTable, name + "_gain_pct", n);
-      }
-      if (errors)
-      {
-        const double thErr = thesisValue(tables, spec.ErrTable, name + "/l1", n);
-        const double thOrd = thesisValue(tables, spec.ErrTable, name + "/order", n);
+        const double thErr = tables.valueAtN(spec.ErrTable, key + "/l1", n);
+        const double thOrd = tables.valueAtN(spec.ErrTable, key + "/order", n);
         // Orders in the thesis use N - 1 intervals (N + factor for periodic grids).
         const double ord = prevN > 0 ? std::log(prevErr[k] / m[k].Error) /
             std::log((double(n) + nMinusOneFactor) / (double(prevN) + nMinusOneFactor))
                                      : std::nan("");
-        std::printf("%7lld | %-6s | %s %s | %s %s | %s %6s | %s %s | %s %s | %7.1f %6.2f\n", n, Names[k],
-          fmt(m[k].Error).c_str(), fmt(ord, "%5.2f").c_str(), fmt(thErr).c_str(), fmt(thOrd, "%5.2f").c_str(),
-          fmt(m[k].Error / thErr, "%9.3f").c_str(), "", fmt(m[k].Seconds).c_str(), fmt(gain, "%7.2f").c_str(),
-          fmt(thesisCpu).c_str(), fmt(thesisGain, "%7.2f").c_str(), m[k].EvalsPerNode, m[k].BuildsPerNode);
+        std::printf("%7lld | %-6s | %s %s | %s %s | %s %6s | %s %s | %s %s | %7.1f %6.2f\n", n, info.Label,
+          formatValue(m[k].Error).c_str(), formatValue(ord, "%5.2f").c_str(), formatValue(thErr).c_str(),
+          formatValue(thOrd, "%5.2f").c_str(), formatValue(m[k].Error / thErr, "%9.3f").c_str(), "",
+          formatValue(m[k].Seconds).c_str(), formatValue(gain, "%7.2f").c_str(), formatValue(thesisCpu).c_str(),
+          formatValue(thesisGain, "%7.2f").c_str(), m[k].EvalsPerNode, m[k].BuildsPerNode);
       }
       else
       {
         const long long ny = 4 * (n - 1) / 5 + 1;
-        std::printf("%3lldx%-3lld | %-6s | %s %s | %s %s | %7.1f %6.2f | %9lld\n", n, ny, Names[k],
-          fmt(m[k].Seconds).c_str(), fmt(gain, "%7.2f").c_str(), fmt(thesisCpu).c_str(),
-          fmt(thesisGain, "%7.2f").c_str(), m[k].EvalsPerNode, m[k].BuildsPerNode, m[k].Reached);
+        std::printf("%3lldx%-3lld | %-6s | %s %s | %s %s | %7.1f %6.2f | %9lld\n", n, ny, info.Label,
+          formatValue(m[k].Seconds).c_str(), formatValue(gain, "%7.2f").c_str(), formatValue(thesisCpu).c_str(),
+          formatValue(thesisGain, "%7.2f").c_str(), m[k].EvalsPerNode, m[k].BuildsPerNode, m[k].Reached);
       }
       prevErr[k] = m[k].Error;
     }
@@ -344,22 +317,23 @@ void runTable(const ThesisTables& tables, const TestSpec& spec, const Config& cf
   }
   if (minMaxTable && !all.empty())
   {
+    const std::string table = "table_3_9_test4_min_max";
     std::printf("\n--- Table 3.9: range of the Test 4 solution (exact range [0, 1]) ---\n");
     std::printf(
       "%7s | %-6s | %10s %10s | %10s %10s\n", "N", "interp", "min ours", "max ours", "min thesis", "max thesis");
     for (const auto& entry : all)
     {
-      for (int k = 0; k < 3; ++k)
+      for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
       {
+        const auto k = static_cast<size_t>(info.Kind);
         if (!cfg.Interps[k])
         {
           continue;
         }
-        const std::string base = std::string("table_3_9_test4_min_max");
-        std::printf("%7lld | %-6s | %10.3e %10.4f | %s %s\n", entry.first, Names[k], entry.second[k].Min,
-          entry.second[k].Max,
-          fmt(thesisValue(tables, base, std::string(Names[k]) + "/min", entry.first), "%10.3e").c_str(),
-          fmt(thesisValue(tables, base, std::string(Names[k]) + "/max", entry.first), "%10.4f").c_str());
+        const std::string key = sltkbench::thesisKey(info.Kind);
+        std::printf("%7lld | %-6s | %10.3e %10.4f | %s %s\n", entry.first, info.Label, entry.second[k].Min,
+          entry.second[k].Max, formatValue(tables.valueAtN(table, key + "/min", entry.first), "%10.3e").c_str(),
+          formatValue(tables.valueAtN(table, key + "/max", entry.first), "%10.4f").c_str());
       }
     }
   }
@@ -380,7 +354,8 @@ int main(int argc, char** argv)
   app.add_option("--threads", cfg.Threads, "executor size")->capture_default_str();
   app.add_option("--cache", cfg.Cache, "cells per thread chunk (0: automatic)")->capture_default_str();
   app.add_option("--warm", cfg.Warm, "warm tabulation points (-1: the preset's; 0: off)")->capture_default_str();
-  app.add_option("--interp", interps, "comma list of weno,cweno,cwenoz (default all three)");
+  app.add_option("--interp", interps,
+    "comma list of " + sltk::interpolatorNameList() + " (weno: weno3; default weno3,cweno,cwenoz)");
   app.add_option("--tables", cfg.Tables, "thesis_tables.json")->capture_default_str();
   if (const auto exit = sltkbench::parseCommandLine(app, argc, argv))
   {
@@ -389,9 +364,18 @@ int main(int argc, char** argv)
   cfg.Repeat = std::max(1, cfg.Repeat);
   if (app.count("--interp") > 0)
   {
-    const std::string list = "," + interps + ",";
-    cfg.Interps = { list.find(",weno,") != std::string::npos, list.find(",cweno,") != std::string::npos,
-      list.find(",cwenoz,") != std::string::npos };
+    cfg.Interps.fill(false);
+    for (const std::string& name : sltkbench::splitList(interps))
+    {
+      sltk::InterpolatorKind kind;
+      if (!sltkbench::parseBenchInterpolator(name, kind))
+      {
+        std::fprintf(
+          stderr, "--interp: unknown interpolator %s (%s)\n", name.c_str(), sltk::interpolatorNameList().c_str());
+        return 2;
+      }
+      cfg.Interps[static_cast<size_t>(kind)] = true;
+    }
   }
   const ThesisTables tables(cfg.Tables);
   if (!tables.loaded())

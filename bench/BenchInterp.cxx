@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file BenchInterp.cxx
-/// Reconstruction cost per kernel (Q1, WENO3, CWENO, CWENOZ) in 2D and 3D,
+/// Reconstruction cost per kernel of the interpolator registry
+/// (sltk/interp/InterpolatorKind.h: Q1, WENO3, CWENO, CWENOZ) in 2D and 3D,
 /// as a function of the number of evaluations per prepared cell (1, 4, 16, 64).
 ///
 /// The thesis's point (Remarks 3.1-3.2, Tables 3.2/3.4/3.6/3.8/3.10): CWENO
@@ -21,9 +22,7 @@
 
 #include "common/BenchCli.h"
 
-#include "sltk/interp/Cweno.h"
-#include "sltk/interp/Q1.h"
-#include "sltk/interp/Weno3.h"
+#include "sltk/interp/Interpolators.h"
 
 #include <algorithm>
 #include <chrono>
@@ -126,11 +125,21 @@ double median(std::vector<double> v)
   return v[v.size() / 2];
 }
 
-// Kernels, in table order. A new kernel implementing the Interpolator concept is one more
-// line in Names and one in runDimension's repetition loop.
-const char* const Names[] = { "Q1", "WENO3", "CWENO", "CWENOZ" };
-constexpr int KernelCount = 4;
-constexpr int Weno = 1;
+// Kernels: the registry's, in its order; a new kind is measured and printed without a change here.
+constexpr int KernelCount = sltk::interpolatorCount();
+constexpr auto Weno = static_cast<size_t>(sltk::InterpolatorKind::Weno3);
+
+/// One timing of the interpolator of `kind` on `u`.
+template <int D>
+double timeKind(sltk::InterpolatorKind kind, const sltk::GridField<D>& u, const Workload<D>& w, long cells, int evals)
+{
+  return sltk::withInterpolator<D>(kind,
+    [&](auto tag)
+    {
+      typename decltype(tag)::type interp(u);
+      return timeOnce(interp, w, cells, evals);
+    });
+}
 
 template <int D>
 void runDimension(sltk::Index n, long totalEvals, int reps)
@@ -141,10 +150,6 @@ void runDimension(sltk::Index n, long totalEvals, int reps)
   std::printf("\n%dD, %lld^%d nodes, %ld evaluations per measurement, median of %d\n", D, static_cast<long long>(n), D,
     totalEvals, reps);
   std::printf("%-8s %6s %14s %12s %16s\n", "kernel", "E/cell", "Mevals/s", "ns/eval", "time/WENO3 time");
-  sltk::Q1Interpolator<D> q1(u);
-  sltk::Weno3Interpolator<D> weno(u);
-  sltk::CwenoInterpolator<D> cweno(u);
-  sltk::CwenoZInterpolator<D> cwenoz(u);
   for (const int evals : EvalsPerCell)
   {
     const long cells = totalEvals / evals;
@@ -152,20 +157,21 @@ void runDimension(sltk::Index n, long totalEvals, int reps)
     std::vector<double> runs[KernelCount];
     for (int r = 0; r < reps; ++r)
     {
-      runs[0].push_back(timeOnce(q1, w, cells, evals));
-      runs[1].push_back(timeOnce(weno, w, cells, evals));
-      runs[2].push_back(timeOnce(cweno, w, cells, evals));
-      runs[3].push_back(timeOnce(cwenoz, w, cells, evals));
+      for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
+      {
+        runs[static_cast<size_t>(info.Kind)].push_back(timeKind<D>(info.Kind, u, w, cells, evals));
+      }
     }
     double seconds[KernelCount];
     for (int k = 0; k < KernelCount; ++k)
     {
       seconds[k] = median(runs[k]);
     }
-    for (int k = 0; k < KernelCount; ++k)
+    for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
     {
+      const auto k = static_cast<size_t>(info.Kind);
       const double count = double(cells) * evals;
-      std::printf("%-8s %6d %14.2f %12.1f %16.3f\n", Names[k], evals, count / seconds[k] * 1e-6,
+      std::printf("%-8s %6d %14.2f %12.1f %16.3f\n", info.Label, evals, count / seconds[k] * 1e-6,
         seconds[k] / count * 1e9, seconds[k] / seconds[Weno]);
     }
   }

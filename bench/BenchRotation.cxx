@@ -1,41 +1,44 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file BenchRotation.cxx
 /// Thesis Test 1 (3.5.1): rigid rotation of the C2 bump, one revolution, RK3
-/// feet, dt = 3 dx, with the linear SL step (2.36) and the WENO3, CWENO and
-/// CWENOZ interpolators (and Q1 for reference). Prints
+/// feet, dt = 3 dx, with the linear SL step (2.36) and every interpolator of
+/// the registry (sltk/interp/InterpolatorKind.h: Q1, WENO3, CWENO, CWENOZ) on
+/// the grids N = 21, 41, ..., 1281 of the thesis. Prints
 ///  - Table 3.1: L1 errors and orders, ours beside the thesis's;
-///  - Table 3.2: run times and the % gain of CWENO(Z) over WENO, ours beside
-///    the thesis's (Galileo100 cluster: compare ratios, not seconds).
+///  - Table 3.2: run times and the % gain over WENO3, ours beside the thesis's
+///    (Galileo100 cluster: compare the gains, not the seconds).
+/// The thesis's numbers are read from a JSON transcription of its tables
+/// (--tables; bench/common/ThesisTables.h); without the file, or for Q1 (not in
+/// the thesis's chapter 3), the thesis columns print '-'.
 ///
-/// Usage: sltkBenchRotation [--max-n N] [--threads T]
+/// Usage: sltkBenchRotation [--max-n N] [--threads T] [--tables PATH]
 ///   --max-n   largest grid of the table to run (default 641; 1281 takes minutes)
 ///   --threads executor size (default 1: the CPU time of one core)
+///   --tables  path of thesis_tables.json (default /work/shared/reference/thesis_tables.json)
 
 #include "common/BenchCli.h"
+#include "common/ThesisNames.h"
+#include "common/ThesisTables.h"
 
 #include "sltk/hjb/InitialData.h"
-#include "sltk/interp/Cweno.h"
-#include "sltk/interp/Q1.h"
-#include "sltk/interp/Weno3.h"
+#include "sltk/interp/Interpolators.h"
 #include "sltk/sl/LinearSLStep.h"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 namespace
 {
-// Thesis Table 3.1 (L1 errors of Test 1) and Table 3.2 (its CPU seconds on
-// the Galileo100 cluster).
-const sltk::Index ThesisN[] = { 21, 41, 81, 161, 321, 641, 1281 };
-const double ThesisErr[3][7] = { { 2.97e-3, 5.46e-4, 1.24e-4, 2.34e-5, 3.92e-6, 6.11e-7, 8.87e-8 },
-  { 2.98e-3, 4.88e-4, 8.18e-5, 1.22e-5, 1.72e-6, 2.27e-7, 2.92e-8 },
-  { 2.98e-3, 4.84e-4, 7.85e-5, 1.12e-5, 1.49e-6, 1.79e-7, 2.06e-8 } };
-const double ThesisCpu[3][7] = { { 1.05, 1.10, 7.84, 61.9, 486.0, 3870.0, 30900.0 },
-  { 0.722, 1.06, 5.42, 43.6, 338.0, 2700.0, 21200.0 }, { 0.101, 0.720, 5.46, 43.7, 336.0, 2670.0, 21200.0 } };
-const char* const Names[4] = { "WENO", "CWENO", "CWENOZ", "Q1" };
+using sltkbench::formatValue;
+
+constexpr int KindCount = sltk::interpolatorCount();
+constexpr auto Weno3 = static_cast<size_t>(sltk::InterpolatorKind::Weno3);
+const char* const ErrTable = "table_3_1_test1_errors";
+const char* const CpuTable = "table_3_2_test1_cpu_s";
 
 /// v_t - f_D . grad v = 0, f_D = (-2 pi (y - 0.5), 2 pi (x - 0.5)): PDE velocity f = -f_D.
 /// A function object, so that the kernel inlines it (a plain function would be called indirectly).
@@ -95,9 +98,38 @@ Result runTest1(sltk::Index n, const sltk::Context& ctx)
   return r;
 }
 
-double order(const std::vector<Result>& r, size_t l)
+/// The grids of Tables 3.1-3.2: N = 20 2^l + 1 nodes per side, up to maxN.
+std::vector<sltk::Index> gridSizes(long long maxN)
 {
-  return std::log(r[l - 1].Error / r[l].Error) / std::log(double(ThesisN[l] - 1) / double(ThesisN[l - 1] - 1));
+  std::vector<sltk::Index> ns;
+  for (sltk::Index n = 21; n <= maxN; n = 2 * n - 1)
+  {
+    ns.push_back(n);
+  }
+  return ns;
+}
+
+/// A table of a row per grid and a block per interpolator of the registry,
+/// headed by its label and `columns`; block(l, kind) is the text of the block
+/// of kind in row l.
+template <class Block>
+void printTable(const std::vector<sltk::Index>& ns, const char* columns, Block&& block)
+{
+  std::printf("%6s", "N");
+  for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
+  {
+    std::printf(" | %-8s %s", info.Label, columns);
+  }
+  std::printf("\n");
+  for (size_t l = 0; l < ns.size(); ++l)
+  {
+    std::printf("%6lld", static_cast<long long>(ns[l]));
+    for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
+    {
+      std::printf(" | %8s %s", "", block(l, info.Kind).c_str());
+    }
+    std::printf("\n");
+  }
 }
 } // namespace
 
@@ -105,73 +137,67 @@ int main(int argc, char** argv)
 {
   long long maxN = 641;
   int threads = 1;
+  std::string tablesPath = sltkbench::DefaultThesisTablesPath;
   CLI::App app(
     "Thesis Test 1 (3.5.1) with the linear SL step; see the header of bench/BenchRotation.cxx", "sltkBenchRotation");
   sltkbench::takeLastByDefault(app);
   app.add_option("--max-n", maxN, "largest grid of the table to run (1281 takes minutes)")->capture_default_str();
   app.add_option("--threads", threads, "executor size")->capture_default_str();
+  app.add_option("--tables", tablesPath, "thesis_tables.json")->capture_default_str();
   if (const auto exit = sltkbench::parseCommandLine(app, argc, argv))
   {
     return *exit;
+  }
+  const sltkbench::ThesisTables thesis(tablesPath);
+  if (!thesis.loaded())
+  {
+    std::fprintf(stderr, "cannot read %s: the thesis columns print '-'\n", tablesPath.c_str());
   }
   sltk::ThreadPool pool(threads);
   sltk::Context ctx;
   ctx.Executor = &pool;
 
-  size_t levels = 0;
-  while (levels < 7 && ThesisN[levels] <= maxN)
+  const std::vector<sltk::Index> ns = gridSizes(maxN);
+  std::vector<Result> res[KindCount];
+  for (const sltk::Index n : ns)
   {
-    ++levels;
-  }
-  std::vector<Result> res[4];
-  for (size_t l = 0; l < levels; ++l)
-  {
-    const sltk::Index n = ThesisN[l];
-    res[0].push_back(runTest1<sltk::Weno3Interpolator<2>>(n, ctx));
-    res[1].push_back(runTest1<sltk::CwenoInterpolator<2, sltk::CwenoVariant::Cweno>>(n, ctx));
-    res[2].push_back(runTest1<sltk::CwenoInterpolator<2, sltk::CwenoVariant::CwenoZ>>(n, ctx));
-    res[3].push_back(runTest1<sltk::Q1Interpolator<2>>(n, ctx));
+    for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
+    {
+      res[static_cast<size_t>(info.Kind)].push_back(
+        sltk::withInterpolator<2>(info.Kind, [&](auto tag) { return runTest1<typename decltype(tag)::type>(n, ctx); }));
+    }
     std::fprintf(stderr, "N = %lld done\n", static_cast<long long>(n));
   }
 
+  using sltk::InterpolatorKind;
   std::printf("Table 3.1, Test 1 (rotation, RK3 feet, dt = 3 dx, T = 1): L1 error / order, ours | thesis\n");
-  std::printf("%6s", "N");
-  for (int m = 0; m < 3; ++m)
-  {
-    std::printf(" | %-8s %9s %5s %9s %5s", Names[m], "ours", "ord", "thesis", "ord");
-  }
-  std::printf(" | %-3s %9s %5s\n", "Q1", "ours", "ord");
-  for (size_t l = 0; l < levels; ++l)
-  {
-    std::printf("%6lld", static_cast<long long>(ThesisN[l]));
-    // Orders of the first row print as "-".
-    char ours[4][8], thesis[3][8];
-    for (int m = 0; m < 4; ++m)
+  printTable(ns, "     ours   ord    thesis   ord",
+    [&](size_t l, InterpolatorKind kind)
     {
-      std::snprintf(ours[m], sizeof(ours[m]), l ? "%5.2f" : "    -", l ? order(res[m], l) : 0.0);
-    }
-    for (int m = 0; m < 3; ++m)
-    {
-      const double thesisOrder = l == 0 ? 0.0
-                                        : std::log(ThesisErr[m][l - 1] / ThesisErr[m][l]) /
-          std::log(double(ThesisN[l] - 1) / double(ThesisN[l - 1] - 1));
-      std::snprintf(thesis[m], sizeof(thesis[m]), l ? "%5.2f" : "    -", thesisOrder);
-      std::printf(" | %-8s %9.2e %s %9.2e %s", "", res[m][l].Error, ours[m], ThesisErr[m][l], thesis[m]);
-    }
-    std::printf(" | %-3s %9.2e %s\n", "", res[3][l].Error, ours[3]);
-  }
+      const std::vector<Result>& r = res[static_cast<size_t>(kind)];
+      const std::string key = sltkbench::thesisKey(kind);
+      // Orders over N - 1 intervals; the first row has none.
+      const double ord = l == 0
+        ? std::nan("")
+        : std::log(r[l - 1].Error / r[l].Error) / std::log(double(ns[l] - 1) / double(ns[l - 1] - 1));
+      return formatValue(r[l].Error, "%9.2e") + " " + formatValue(ord, "%5.2f") + " " +
+        formatValue(thesis.valueAtN(ErrTable, key + "/l1", ns[l]), "%9.2e") + " " +
+        formatValue(thesis.valueAtN(ErrTable, key + "/order", ns[l]), "%5.2f");
+    });
 
-  std::printf("\nTable 3.2, Test 1 run times in seconds (%d thread%s here; thesis: Galileo100) and %% gain over WENO\n",
-    threads, threads == 1 ? "" : "s");
-  std::printf("%6s | %9s %9s %6s %9s %6s | %9s %9s %6s %9s %6s | %9s\n", "N", "WENO", "CWENO", "gain", "CWENOZ", "gain",
-    "thesis W", "thesis C", "gain", "thesis CZ", "gain", "Q1");
-  for (size_t l = 0; l < levels; ++l)
-  {
-    const double w = res[0][l].Seconds, c = res[1][l].Seconds, z = res[2][l].Seconds;
-    const double tw = ThesisCpu[0][l], tc = ThesisCpu[1][l], tz = ThesisCpu[2][l];
-    std::printf("%6lld | %9.3e %9.3e %6.1f %9.3e %6.1f | %9.2e %9.2e %6.1f %9.2e %6.1f | %9.3e\n",
-      static_cast<long long>(ThesisN[l]), w, c, 100.0 * (w - c) / w, z, 100.0 * (w - z) / w, tw, tc,
-      100.0 * (tw - tc) / tw, tz, 100.0 * (tw - tz) / tw, res[3][l].Seconds);
-  }
+  std::printf(
+    "\nTable 3.2, Test 1 run times in seconds (%d thread%s here; thesis: Galileo100) and %% gain over WENO3\n", threads,
+    threads == 1 ? "" : "s");
+  printTable(ns, "     ours   gain    thesis   gain",
+    [&](size_t l, InterpolatorKind kind)
+    {
+      const double weno = res[Weno3][l].Seconds;
+      const double seconds = res[static_cast<size_t>(kind)][l].Seconds;
+      const std::string key = sltkbench::thesisKey(kind);
+      const double gain = kind == InterpolatorKind::Weno3 ? std::nan("") : 100.0 * (weno - seconds) / weno;
+      return formatValue(seconds, "%9.3e") + " " + formatValue(gain, "%6.1f") + " " +
+        formatValue(thesis.valueAtN(CpuTable, key, ns[l]), "%9.2e") + " " +
+        formatValue(thesis.valueAtN(CpuTable, key + "_gain_pct", ns[l]), "%6.1f");
+    });
   return 0;
 }

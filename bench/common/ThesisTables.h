@@ -4,11 +4,14 @@
 /// The thesis's numbers as transcribed in thesis_tables.json (one object per
 /// table, e.g. "table_4_2_circle_64pts": { "Q1": { "l1": [...] } }), read with
 /// nlohmann-json. A missing or malformed file leaves the tables empty:
-/// loaded() is false and every look-up finds nothing.
+/// loaded() is false and every look-up finds nothing. The file lies outside
+/// the repository: the benchmarks take its path with --tables (default
+/// DefaultThesisTablesPath) and print '-' (formatValue) for what they miss.
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -16,6 +19,24 @@
 
 namespace sltkbench
 {
+
+/// Where the benchmarks look for thesis_tables.json unless told (--tables).
+inline constexpr const char* DefaultThesisTablesPath = "/work/shared/reference/thesis_tables.json";
+
+/// `value` printed with the printf format `format` (one double), or "-"
+/// right-aligned in the width of that format when it is NaN (a thesis value
+/// the tables do not have, an order without a previous row).
+inline std::string formatValue(double value, const char* format = "%9.3e")
+{
+  char buf[64];
+  if (std::isnan(value))
+  {
+    const int width = std::snprintf(buf, sizeof buf, format, 0.0);
+    return std::string(static_cast<size_t>(width > 1 ? width - 1 : 0), ' ') + "-";
+  }
+  std::snprintf(buf, sizeof buf, format, value);
+  return buf;
+}
 
 class ThesisTables
 {
@@ -57,6 +78,26 @@ public:
       keys.push_back(key);
     }
     return this->find(keys);
+  }
+
+  /// The entry of `field` ("WENO", "CWENO/l1", a '/'-separated path below
+  /// `table`) in the row of `table` whose "N" is `n`; NaN when absent.
+  double valueAtN(const std::string& table, const std::string& field, long long n) const
+  {
+    const nlohmann::json* ns = this->find(table + "/N");
+    const nlohmann::json* values = this->find(table + "/" + field);
+    if (!ns || !values || !ns->is_array() || !values->is_array())
+    {
+      return std::nan("");
+    }
+    for (size_t k = 0; k < ns->size() && k < values->size(); ++k)
+    {
+      if ((*ns)[k].is_number() && static_cast<long long>((*ns)[k].get<double>()) == n)
+      {
+        return (*values)[k].is_number() ? (*values)[k].get<double>() : std::nan("");
+      }
+    }
+    return std::nan("");
   }
 
   /// The entries at `keys` as text (an array's items, or the single scalar):

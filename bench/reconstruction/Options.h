@@ -4,7 +4,8 @@
 /// The reconstruction benchmark's options (see the usage in
 /// bench/BenchReconstruction.cxx) and its interpolator names.
 
-#include "sltk/interp/InterpolatorKind.h"
+#include "common/ThesisNames.h"
+#include "common/ThesisTables.h"
 #include "sltk/recon/Reconstruction.h"
 
 #include <cstdio>
@@ -21,7 +22,7 @@ struct ReconstructionBenchOptions
   std::vector<std::string> Cases;
   std::vector<std::string> Interps;
   int Threads = 1;
-  std::string Tables = "/work/shared/reference/thesis_tables.json";
+  std::string Tables = DefaultThesisTablesPath;
   std::string Data = "/work/shared/data/clouds";
   bool Scans = false;
   double Cdx = std::nan("");
@@ -34,17 +35,17 @@ struct ReconstructionBenchOptions
   int Padding = -1;                ///< cells of padding per side; < 0: the library's default
 };
 
-/// The interpolator of a benchmark name (a registry name, InterpolatorKind.h, or
-/// "weno" for weno3) and its column key in thesis_tables.json ("Q1", "WENO"; ""
-/// for the CWENO family, which the thesis's chapter 4 does not use). False for
-/// an unknown name.
-inline bool interpolatorOf(const std::string& name, sltk::InterpolatorKind& kind, std::string& thesisKey)
+/// The interpolator of a benchmark name (ThesisNames.h: a registry name or
+/// "weno" for weno3) and its column key in thesis_tables.json ("Q1", "WENO";
+/// chapter 4's tables have no CWENO columns, so the CWENO family finds no
+/// thesis value). False for an unknown name.
+inline bool interpolatorOf(const std::string& name, sltk::InterpolatorKind& kind, std::string& key)
 {
-  if (!sltk::parseInterpolator(name == "weno" ? "weno3" : name, kind))
+  if (!parseBenchInterpolator(name, kind))
   {
     return false;
   }
-  thesisKey = kind == sltk::InterpolatorKind::Q1 ? "Q1" : kind == sltk::InterpolatorKind::Weno3 ? "WENO" : "";
+  key = thesisKey(kind);
   return true;
 }
 
