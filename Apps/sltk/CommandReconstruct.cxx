@@ -254,7 +254,8 @@ int Reconstruct::run() const
   {
     std::fprintf(stderr,
       "sltk: warning: %.1f%% of the points lie more than one cell of run 1 from the surface: features thinner "
-      "than that cell were lost; try --cdx 0.5 with one run fewer (the same finest grid)\n",
+      "than that cell were lost; try half the --cdx with one run fewer (the same finest grid;\n"
+      "automatic C_dx does this when run 1's grid then fits --memory-budget)\n",
       100.0 * lost);
   }
   const SurfaceTopology topology = surfaceTopology(surface);

@@ -260,7 +260,7 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     warning << "run " << run << ": " << 100.0 * record.FarPoints
             << "% of the points lie more than one cell of run 1 from the surface: features thinner than that cell "
             << "were lost; try "
-            << "a smaller C_dx (--cdx 0.5 with one run fewer keeps the finest grid)";
+            << "half the C_dx with one run fewer (the same finest grid)";
     ctx.logger().log(LogLevel::Warning, warning.str());
   }
   if (record.CloudError > 2.0 * spacing)
