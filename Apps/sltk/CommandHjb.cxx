@@ -4,6 +4,7 @@
 #include "Commands.h"
 #include "ErrorCollector.h"
 #include "HjbCustomProblem.h"
+#include "OutputPaths.h"
 #include "WriteAtomically.h"
 #include "WriteSurface.h"
 
@@ -65,6 +66,11 @@ int Hjb::run() const
     {
       return fail(option->get_name() + " belongs to a custom problem: give its dynamics with --fx (see --help)", 2);
     }
+  }
+  const std::string paths = outputPathsProblem({}, { { "-o", this->Output }, { "--json", this->Json } });
+  if (!paths.empty())
+  {
+    return fail(paths, 2);
   }
   const std::string presetName = custom ? "custom" : "test" + std::to_string(this->Preset);
   const int preset = custom ? vtkCWENOHJBSolver::CUSTOM : this->Preset;

@@ -3,6 +3,7 @@
 // from the same plan (ReconstructionPlan.h) that `sltk reconstruct` runs.
 #include "CliOptions.h"
 #include "Commands.h"
+#include "OutputPaths.h"
 #include "ReadPointCloud.h"
 #include "SLTKBridge.h"
 #include "WriteAtomically.h"
@@ -125,6 +126,11 @@ struct Info
 int Info::run() const
 {
   const std::string& path = this->Cloud;
+  const std::string paths = outputPathsProblem({ { "input cloud", path } }, { { "--json", this->Json } });
+  if (!paths.empty())
+  {
+    return fail(paths, 2);
+  }
   const auto start = std::chrono::steady_clock::now();
   vtkSmartPointer<vtkPointSet> input;
   sltk::Status status = readPointCloud(path, input); // (its messages name the file)

@@ -3,6 +3,7 @@
 #include "CliOptions.h"
 #include "Commands.h"
 #include "ErrorCollector.h"
+#include "OutputPaths.h"
 #include "ProgressBar.h"
 #include "ReadPointCloud.h"
 #include "RenderPng.h"
@@ -124,6 +125,14 @@ int Reconstruct::run() const
   if (this->given("--eta") && this->given("--schedule"))
   {
     return fail("give either --eta or --schedule (a schedule sets eta of every run)", 2);
+  }
+  const std::string paths =
+    outputPathsProblem({ { "input cloud", this->Cloud }, { "--reference mesh", this->Reference } },
+      { { "-o", this->Output }, { "--surface", this->Surface }, { "--png", this->Png }, { "--csv", this->Csv },
+        { "--json", this->Json } });
+  if (!paths.empty())
+  {
+    return fail(paths, 2);
   }
   if (this->given("--png"))
   {

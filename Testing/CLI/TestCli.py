@@ -79,6 +79,30 @@ big = os.path.join(tmp, "big.xyz")
 write_sphere(big, 120000)
 rc, _, err = run("info", big, "--cdx", "0.05", "--memory-budget", "16")
 expect(rc == 1 and "use C_dx >=" in err and "--thin 2.5" in err, "a large refused cloud gets the merged-scan hint: " + err.strip())
+# Outputs that would destroy an input, collide, or cannot be written: refused before any work.
+before = open(sphere).read()
+for option in ("-o", "--json", "--csv"):
+    rc, _, err = run("reconstruct", sphere, option, sphere)
+    expect(rc == 2 and "would be overwritten" in err and open(sphere).read() == before,
+           "%s naming the input cloud is refused, the cloud untouched: %s" % (option, err.strip()))
+points = [line for line in open(sphere).read().splitlines() if line.strip() and not line.startswith("#")]
+ply = os.path.join(tmp, "sphere.ply")
+with open(ply, "w") as f:
+    f.write("ply\nformat ascii 1.0\nelement vertex %d\nproperty float x\nproperty float y\nproperty float z\nend_header\n" % len(points))
+    f.write("\n".join(points) + "\n")
+ply_before = open(ply).read()
+rc, _, err = run("reconstruct", ply, "--surface", ply)
+expect(rc == 2 and "would be overwritten" in err and open(ply).read() == ply_before,
+       "--surface naming the input cloud is refused, the cloud untouched: " + err.strip())
+rc, _, err = run("info", sphere, "--json", sphere)
+expect(rc == 2 and "would be overwritten" in err and open(sphere).read() == before, "info --json naming the cloud is refused")
+clash = os.path.join(tmp, "clash.json")
+rc, _, err = run("reconstruct", sphere, "--json", clash, "--csv", clash)
+expect(rc == 2 and "both name" in err and not os.path.exists(clash), "two outputs naming one file are refused: " + err.strip())
+rc, _, err = run("reconstruct", sphere, "-o", os.path.join(tmp, "no-such-folder", "sdf.vti"))
+expect(rc == 2 and "does not exist" in err, "a missing output folder is found before the run: " + err.strip())
+rc, _, err = run("hjb", "--preset", "test1", "--n", "21", "-o", tmp)
+expect(rc == 2 and "is a folder" in err, "a folder as the output is refused: " + err.strip())
 rc, _, err = run("frobnicate")
 expect(rc == 2 and "frobnicate" in err, "an unknown command is usage error 2")
 rc, out, _ = run()

@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file OutputPaths.h
+/// Checks of the CLI's output files before any work: an output must not be
+/// one of the inputs (a scan overwritten by `-o scan.ply`), nor another
+/// output, and its folder must exist and be writable, so a long run never
+/// ends by failing to write or by destroying its data.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sltkcli
+{
+
+/// A file the command reads or writes: the option that names it and the path.
+using NamedPath = std::pair<std::string, std::string>;
+
+/// "" when every output is fine; otherwise the first problem, naming the
+/// options, the path and the fix. Empty paths (options not given) are skipped.
+std::string outputPathsProblem(const std::vector<NamedPath>& inputs, const std::vector<NamedPath>& outputs);
+
+} // namespace sltkcli
