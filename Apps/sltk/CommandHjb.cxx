@@ -67,7 +67,8 @@ int Hjb::run() const
       return fail(option->get_name() + " belongs to a custom problem: give its dynamics with --fx (see --help)", 2);
     }
   }
-  const std::string paths = outputPathsProblem({}, { { "-o", this->Output }, { "--json", this->Json } });
+  const std::string paths =
+    outputPathsProblem({}, { { "-o", this->Output, { "vti" } }, { "--json", this->Json, { "json" } } });
   if (!paths.empty())
   {
     return fail(paths, 2);

@@ -126,7 +126,7 @@ struct Info
 int Info::run() const
 {
   const std::string& path = this->Cloud;
-  const std::string paths = outputPathsProblem({ { "input cloud", path } }, { { "--json", this->Json } });
+  const std::string paths = outputPathsProblem({ { "input cloud", path } }, { { "--json", this->Json, { "json" } } });
   if (!paths.empty())
   {
     return fail(paths, 2);

@@ -128,8 +128,8 @@ int Reconstruct::run() const
   }
   const std::string paths =
     outputPathsProblem({ { "input cloud", this->Cloud }, { "--reference mesh", this->Reference } },
-      { { "-o", this->Output }, { "--surface", this->Surface }, { "--png", this->Png }, { "--csv", this->Csv },
-        { "--json", this->Json } });
+      { { "-o", this->Output, { "vti" } }, { "--surface", this->Surface, {} }, { "--png", this->Png, { "png" } },
+        { "--csv", this->Csv, { "csv", "txt" } }, { "--json", this->Json, { "json" } } });
   if (!paths.empty())
   {
     return fail(paths, 2);

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "OutputPaths.h"
 
+#include "FileNames.h"
+
+#include <algorithm>
+
 #include <filesystem>
 #include <system_error>
 
@@ -25,61 +29,81 @@ bool sameFile(const std::string& a, const std::string& b)
   return fs::weakly_canonical(a, ec) == fs::weakly_canonical(b, ec);
 }
 
-std::string folderProblem(const NamedPath& output)
+std::string folderProblem(const OutputFile& output)
 {
   std::error_code ec;
-  fs::path folder = fs::path(output.second).parent_path();
+  fs::path folder = fs::path(output.Path).parent_path();
   if (folder.empty())
   {
     folder = ".";
   }
-  if (fs::is_directory(output.second, ec))
+  if (fs::is_directory(output.Path, ec))
   {
-    return output.first + " '" + output.second + "' is a folder: give a file name";
+    return output.Option + " '" + output.Path + "' is a folder: give a file name";
   }
   if (!fs::is_directory(folder, ec))
   {
-    return output.first + " '" + output.second + "': the folder '" + folder.string() +
+    return output.Option + " '" + output.Path + "': the folder '" + folder.string() +
       "' does not exist: create it first";
   }
   if (access(folder.c_str(), W_OK) != 0)
   {
-    return output.first + " '" + output.second + "': the folder '" + folder.string() +
+    return output.Option + " '" + output.Path + "': the folder '" + folder.string() +
       "' is not writable: choose another folder";
   }
   return std::string();
 }
+
+std::string extensionProblem(const OutputFile& output)
+{
+  const std::vector<std::string>& allowed = output.Extensions;
+  if (allowed.empty() || std::find(allowed.begin(), allowed.end(), extensionOf(output.Path)) != allowed.end())
+  {
+    return std::string();
+  }
+  std::string list;
+  for (size_t k = 0; k < allowed.size(); ++k)
+  {
+    list += (k ? (k + 1 == allowed.size() ? " or ." : ", .") : ".") + allowed[k];
+  }
+  return output.Option + " '" + output.Path + "': the file written is " + list +
+    "; give it that extension (the format is not chosen by this name)";
+}
 } // namespace
 
-std::string outputPathsProblem(const std::vector<NamedPath>& inputs, const std::vector<NamedPath>& outputs)
+std::string outputPathsProblem(const std::vector<NamedPath>& inputs, const std::vector<OutputFile>& outputs)
 {
   for (size_t k = 0; k < outputs.size(); ++k)
   {
-    const NamedPath& out = outputs[k];
-    if (out.second.empty())
+    const OutputFile& out = outputs[k];
+    if (out.Path.empty())
     {
       continue;
     }
     for (const NamedPath& in : inputs)
     {
-      if (!in.second.empty() && sameFile(out.second, in.second))
+      if (!in.second.empty() && sameFile(out.Path, in.second))
       {
-        return out.first + " '" + out.second + "' is the " + in.first +
+        return out.Option + " '" + out.Path + "' is the " + in.first +
           ": it would be overwritten; write the result to another file";
       }
     }
     for (size_t j = 0; j < k; ++j)
     {
-      if (!outputs[j].second.empty() && sameFile(out.second, outputs[j].second))
+      if (!outputs[j].Path.empty() && sameFile(out.Path, outputs[j].Path))
       {
-        return out.first + " and " + outputs[j].first + " both name '" + out.second +
+        return out.Option + " and " + outputs[j].Option + " both name '" + out.Path +
           "': give each output its own file";
       }
     }
-    const std::string folder = folderProblem(out);
-    if (!folder.empty())
+    std::string problem = folderProblem(out);
+    if (problem.empty())
     {
-      return folder;
+      problem = extensionProblem(out);
+    }
+    if (!problem.empty())
+    {
+      return problem;
     }
   }
   return std::string();
