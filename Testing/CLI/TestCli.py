@@ -105,6 +105,23 @@ rc, _, err = run("hjb", "--preset", "test1", "--n", "21", "--json", os.path.join
 expect(rc == 2 and ".json" in err, "hjb --json with another extension is refused: " + err.strip())
 rc, _, err = run("hjb", "--preset", "test1", "--n", "21", "-o", tmp)
 expect(rc == 2 and "is a folder" in err, "a folder as the output is refused: " + err.strip())
+# SIGINT while the output is written: the temporary is removed, nothing half-written stays.
+import glob, signal, time
+interrupted = os.path.join(tmp, "interrupted.vti")
+writer = subprocess.Popen([sltk, "hjb", "--preset", "test1", "--n", "2001", "--final-time", "0.001", "-o", interrupted],
+                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+seen = False
+for _ in range(3000):
+    if glob.glob(os.path.join(tmp, "interrupted.part*")):
+        writer.send_signal(signal.SIGINT)
+        seen = True
+        break
+    if writer.poll() is not None:
+        break
+    time.sleep(0.005)
+writer.wait(timeout=120)
+expect(seen and not glob.glob(os.path.join(tmp, "interrupted*")),
+       "an interrupted write leaves no .part file and no output (caught the write: %s)" % seen)
 rc, _, err = run("frobnicate")
 expect(rc == 2 and "frobnicate" in err, "an unknown command is usage error 2")
 rc, out, _ = run()
