@@ -18,6 +18,7 @@
 #include "vtkTable.h"
 
 #include <algorithm>
+#include <sstream>
 
 vtkStandardNewMacro(vtkSLLevelSetReconstruct);
 
@@ -63,8 +64,41 @@ static_assert(vtkSLLevelSetReconstruct::Q1 == static_cast<int>(sltk::Interpolato
     vtkSLLevelSetReconstruct::CWENOZ == static_cast<int>(sltk::InterpolatorKind::CwenoZ),
   "the filter's InterpolatorType names the registry's codes (InterpolatorKind.h)");
 
+/// The properties' documented ranges (the plugin XML's domains): a value outside
+/// is refused with its name and range, never clamped.
+sltk::Status checkRanges(vtkSLLevelSetReconstruct* self)
+{
+  struct Range
+  {
+    const char* Name;
+    double Value, Low, High;
+  };
+  const Range ranges[] = {
+    { "NumberOfRuns", double(self->GetNumberOfRuns()), 1, 6 },
+    { "MaximumNumberOfIterations", double(self->GetMaximumNumberOfIterations()), 1, 100000 },
+    { "Tolerance", self->GetTolerance(), 0, 1 },
+    { "Padding", double(self->GetPadding()), 4, 1000 },
+    { "InitialGuess", double(self->GetInitialGuess()), 0, 2 },
+    { "FinalEta", self->GetFinalEta(), 0, 100 },
+    { "OutlierDeviations", self->GetOutlierDeviations(), 0.5, 100 },
+    { "ThinningFactor", self->GetThinningFactor(), 0, 100 },
+    { "NumberOfThreads", double(self->GetNumberOfThreads()), 0, 1024 },
+  };
+  for (const Range& r : ranges)
+  {
+    if (!(r.Value >= r.Low && r.Value <= r.High))
+    {
+      std::ostringstream m;
+      m << r.Name << " = " << r.Value << " is outside its range [" << r.Low << ", " << r.High << "]: set a value in it";
+      return sltk::Status::invalidArgument(m.str());
+    }
+  }
+  return sltk::Status::ok();
+}
+
 sltk::Status optionsOf(vtkSLLevelSetReconstruct* self, sltk::ReconstructionOptions& o)
 {
+  SLTK_RETURN_IF_ERROR(checkRanges(self));
   o = sltk::ReconstructionOptions{};
   o.Runs = self->GetNumberOfRuns();
   o.CellSizeFactor = self->GetCellSizeFactor();
@@ -191,6 +225,12 @@ int vtkSLLevelSetReconstruct::RequestData(
     return 0;
   }
 
+  const sltk::Status ranges = checkRanges(this); // before the thread pool takes NumberOfThreads
+  if (!ranges.isOk())
+  {
+    vtkErrorMacro(<< ranges.message());
+    return 0;
+  }
   sltk::ThreadPool pool(this->NumberOfThreads);
   sltk::vtkbridge::AlgorithmInterrupter progress(this);
   sltk::vtkbridge::VTKLogger logger;

@@ -54,9 +54,12 @@ public:
   vtkGetMacro(Interpolator, int);
   ///@}
 
+  // The properties below are not clamped: a value outside its documented range
+  // is refused, naming the property and the range, when the filter runs.
+
   ///@{
   /// Number of runs of the multi-run schedule, each halving dx (Table 4.1). Default 3, range 1-6.
-  vtkSetClampMacro(NumberOfRuns, int, 1, 6);
+  vtkSetMacro(NumberOfRuns, int);
   vtkGetMacro(NumberOfRuns, int);
   ///@}
 
@@ -79,19 +82,19 @@ public:
 
   ///@{
   /// Iteration cap per run (4.33). Default 100, range 1-100000.
-  vtkSetClampMacro(MaximumNumberOfIterations, int, 1, 100000);
+  vtkSetMacro(MaximumNumberOfIterations, int);
   vtkGetMacro(MaximumNumberOfIterations, int);
   ///@}
 
   ///@{
   /// Stopping tolerance on the relative energy change (4.33). Default 1e-4, range 0-1.
-  vtkSetClampMacro(Tolerance, double, 0.0, 1.0);
+  vtkSetMacro(Tolerance, double);
   vtkGetMacro(Tolerance, double);
   ///@}
 
   ///@{
   /// Empty cells added around the cloud's bounding box on every side. Default 10, range 4-1000.
-  vtkSetClampMacro(Padding, int, 4, 1000);
+  vtkSetMacro(Padding, int);
   vtkGetMacro(Padding, int);
   ///@}
 
@@ -105,14 +108,14 @@ public:
 
   ///@{
   /// Initial surface of the first run. Default OUTSIDE_MARKING.
-  vtkSetClampMacro(InitialGuess, int, OUTSIDE_MARKING, BOUNDING_ELLIPSOID);
+  vtkSetMacro(InitialGuess, int);
   vtkGetMacro(InitialGuess, int);
   ///@}
 
   ///@{
   /// eta of the runs r >= 3 (Table 4.1: 1). Larger values smooth noisy data
   /// (thesis Fig. 4.8, 4.11). Default 1, range 0-100.
-  vtkSetClampMacro(FinalEta, double, 0.0, 100.0);
+  vtkSetMacro(FinalEta, double);
   vtkGetMacro(FinalEta, double);
   ///@}
 
@@ -162,9 +165,9 @@ public:
   vtkSetMacro(RemoveOutliers, bool);
   vtkGetMacro(RemoveOutliers, bool);
   vtkBooleanMacro(RemoveOutliers, bool);
-  vtkSetClampMacro(OutlierDeviations, double, 0.5, 100.0);
+  vtkSetMacro(OutlierDeviations, double);
   vtkGetMacro(OutlierDeviations, double);
-  vtkSetClampMacro(ThinningFactor, double, 0.0, 100.0);
+  vtkSetMacro(ThinningFactor, double);
   vtkGetMacro(ThinningFactor, double);
   ///@}
 
@@ -179,7 +182,7 @@ public:
 
   ///@{
   /// Threads used by the solver; 0 means all hardware threads. Default 0.
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkSetMacro(NumberOfThreads, int);
   vtkGetMacro(NumberOfThreads, int);
   ///@}
 

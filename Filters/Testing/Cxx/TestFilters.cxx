@@ -140,7 +140,9 @@ int main()
     check(table && table->GetNumberOfRows() >= 2 && table->GetColumnByName("CloudError") != nullptr,
       "output 2 is the convergence history");
     recon->SetNumberOfRuns(99);
-    check(recon->GetNumberOfRuns() == 6, "NumberOfRuns is clamped to 6");
+    check(recon->GetNumberOfRuns() == 99 && recon->GetExecutive()->Update() == 0,
+      "NumberOfRuns outside 1-6 is refused, not clamped");
+    recon->SetNumberOfRuns(3);
 
     // A planar cloud (a circle at z = 0.5) is reconstructed in 2D.
     vtkNew<vtkPoints> ring;

@@ -35,6 +35,14 @@ recon.SetCellSizeFactor(1e9)
 assert recon.GetCellSizeFactor() == 1e9, "kept as given, not clamped"
 recon.Update()
 assert errors, "an out-of-range CellSizeFactor is refused when the filter runs"
+for name, bad in (("NumberOfRuns", 100), ("Padding", 1), ("ThinningFactor", -1.0), ("NumberOfThreads", 100000)):
+    recon.SetCellSizeFactor(0.0)
+    getattr(recon, "Set" + name)(bad)
+    assert getattr(recon, "Get" + name)() == bad, name + " is kept as given, not clamped"
+    del errors[:]
+    recon.Update()
+    assert errors, name + " out of range is refused when the filter runs"
+    getattr(recon, "Set" + name)({"NumberOfRuns": 3, "Padding": 10, "ThinningFactor": 0.0, "NumberOfThreads": 0}[name])
 assert "NumberOfRuns: 3" in str(recon)
 
 octree = sltk.vtkOctreeSDF()
