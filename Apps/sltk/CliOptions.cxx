@@ -165,7 +165,9 @@ CLI::Option* addInterpolatorOption(CLI::App* app, sltk::InterpolatorKind& kind, 
 
 CLI::Option* addThreadsOption(CLI::App* app, int& threads)
 {
-  return addNumber(app, "--threads", threads, "threads (default 0: all)")->check(within(0))->option_text("T");
+  return addNumber(app, "--threads", threads, "threads (default 0: all; at most 1024)")
+    ->check(within(0, 1024))
+    ->option_text("T");
 }
 
 CLI::App* addCloudCommand(CLI::App& sltk, const std::string& name, const std::string& description, std::string& cloud)

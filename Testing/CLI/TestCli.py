@@ -122,6 +122,8 @@ for _ in range(3000):
 writer.wait(timeout=120)
 expect(seen and not glob.glob(os.path.join(tmp, "interrupted*")),
        "an interrupted write leaves no .part file and no output (caught the write: %s)" % seen)
+rc, _, err = run("hjb", "--preset", "test1", "--n", "21", "--threads", "10000")
+expect(rc == 2 and "--threads" in err and "1024" in err, "--threads 10000 is a usage error: " + err.strip())
 rc, _, err = run("frobnicate")
 expect(rc == 2 and "frobnicate" in err, "an unknown command is usage error 2")
 rc, out, _ = run()
