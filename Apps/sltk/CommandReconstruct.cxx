@@ -3,6 +3,7 @@
 #include "CliOptions.h"
 #include "Commands.h"
 #include "ErrorCollector.h"
+#include "FileNames.h"
 #include "OutputPaths.h"
 #include "ProgressBar.h"
 #include "ReadPointCloud.h"
@@ -161,6 +162,15 @@ int Reconstruct::run() const
   {
     return fail(status.message());
   }
+  double bounds[6];
+  cloud->GetBounds(bounds);
+  const bool planar = cloud->GetNumberOfPoints() > 0 && bounds[4] == bounds[5]; // reconstructed in 2D
+  if (planar && this->given("--surface") && extensionOf(this->Surface) != "vtp")
+  {
+    return fail(path + " has no z extent, so its reconstruction is a curve, which " + extensionOf(this->Surface) +
+        " cannot hold: write --surface as .vtp",
+      2);
+  }
   if (this->Verbose)
   {
     vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_INFO);
@@ -268,9 +278,18 @@ int Reconstruct::run() const
       100.0 * lost);
   }
   const SurfaceTopology topology = surfaceTopology(surface);
-  std::printf("\nsurface    %lld points, %lld cells, %lld piece(s), Euler characteristic %lld\n",
-    static_cast<long long>(surface->GetNumberOfPoints()), static_cast<long long>(surface->GetNumberOfCells()),
-    topology.Pieces, topology.Euler);
+  if (planar)
+  {
+    std::printf("\ncurve      %lld points, %lld segments, %lld closed curve(s)\n",
+      static_cast<long long>(surface->GetNumberOfPoints()), static_cast<long long>(surface->GetNumberOfCells()),
+      topology.Pieces);
+  }
+  else
+  {
+    std::printf("\nsurface    %lld points, %lld cells, %lld piece(s), Euler characteristic %lld\n",
+      static_cast<long long>(surface->GetNumberOfPoints()), static_cast<long long>(surface->GetNumberOfCells()),
+      topology.Pieces, topology.Euler);
+  }
   std::printf("total      %.2f s, peak memory %.0f MB\n", seconds, peakMb);
   SurfaceDistances distances;
   if (this->given("--reference"))
@@ -333,7 +352,9 @@ int Reconstruct::run() const
       { "cdx", fieldValue("CellSizeFactor") }, { "kp", fieldValue("OutsideThresholdFactor") },
       { "automatic_choices", choices }, { "recoveries", recoveries }, { "seconds", seconds },
       { "peak_memory_mb", peakMb }, { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) },
-      { "surface_pieces", topology.Pieces }, { "euler_characteristic", topology.Euler }, { "runs", runRecords } };
+      { "surface_pieces", topology.Pieces },
+      { "euler_characteristic", planar ? nlohmann::ordered_json() : nlohmann::ordered_json(topology.Euler) },
+      { "runs", runRecords } };
     if (this->given("--reference"))
     {
       summary["reference"] = this->Reference;

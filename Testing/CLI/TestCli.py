@@ -124,6 +124,18 @@ expect(seen and not glob.glob(os.path.join(tmp, "interrupted*")),
        "an interrupted write leaves no .part file and no output (caught the write: %s)" % seen)
 rc, _, err = run("hjb", "--preset", "test1", "--n", "21", "--threads", "10000")
 expect(rc == 2 and "--threads" in err and "1024" in err, "--threads 10000 is a usage error: " + err.strip())
+flower = os.path.join(tmp, "flower.xyz")
+with open(flower, "w") as f:
+    for k in range(200):
+        t = 2 * math.pi * k / 200
+        f.write("%f %f 0\n" % ((1 + 0.3 * math.cos(3 * t)) * math.cos(t), math.sin(t)))
+rc, _, err = run("reconstruct", flower, "--surface", os.path.join(tmp, "flower.ply"))
+expect(rc == 2 and ".vtp" in err and not os.path.exists(os.path.join(tmp, "flower.ply")),
+       "a 2D curve written as .ply is refused before the run: " + err.strip())
+rc, out, err = run("reconstruct", flower, "--json", os.path.join(tmp, "flower.json"))
+summary = json.load(open(os.path.join(tmp, "flower.json"))) if rc == 0 else {}
+expect(rc == 0 and "1 closed curve(s)" in out and summary.get("euler_characteristic", 0) is None,
+       "a 2D result reports closed curves, no Euler characteristic")
 rc, _, err = run("frobnicate")
 expect(rc == 2 and "frobnicate" in err, "an unknown command is usage error 2")
 rc, out, _ = run()
