@@ -15,7 +15,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -31,9 +34,15 @@ sltk::Status readText(const std::string& path, vtkSmartPointer<vtkPointSet>& clo
   std::ifstream in(path);
   std::string line;
   long long lineNumber = 0;
+  bool headerSeen = false;
   while (std::getline(in, line))
   {
     ++lineNumber;
+    if (line.find('\0') != std::string::npos)
+    {
+      return sltk::Status::ioError(path + ":" + std::to_string(lineNumber) +
+        ": binary data in a text point cloud: give a text file of x y z lines (or a .ply/.vtp)");
+    }
     std::replace(line.begin(), line.end(), ',', ' ');
     std::replace(line.begin(), line.end(), ';', ' ');
     const auto first = line.find_first_not_of(" \t\r");
@@ -52,11 +61,22 @@ sltk::Status readText(const std::string& path, vtkSmartPointer<vtkPointSet>& clo
       {
         break;
       }
+      if (*end && !std::isspace(static_cast<unsigned char>(*end)))
+      {
+        const std::string token(static_cast<const char*>(p + std::strspn(p, " \t")),
+          static_cast<const char*>(end + std::strcspn(end, " \t")));
+        const bool printable = token.size() <= 40 &&
+          std::all_of(token.begin(), token.end(), [](unsigned char c) { return std::isprint(c) != 0; });
+        return sltk::Status::ioError(path + ":" + std::to_string(lineNumber) +
+          (printable ? ": '" + token + "' is not a number"
+                     : ": binary data in a text point cloud: give a text file of x y z lines (or a .ply/.vtp)"));
+      }
       p = end;
     }
-    if (got == 0 && points->GetNumberOfPoints() == 0)
+    if (got == 0 && points->GetNumberOfPoints() == 0 && !headerSeen)
     {
-      continue; // a header line such as "x,y,z"
+      headerSeen = true;
+      continue; // one header line such as "x,y,z"
     }
     if (got < 3)
     {
@@ -93,6 +113,11 @@ sltk::Status readWith(const std::string& path, vtkSmartPointer<vtkPointSet>& clo
 sltk::Status readPointCloud(const std::string& path, vtkSmartPointer<vtkPointSet>& cloud)
 {
   cloud = nullptr;
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+  {
+    return sltk::Status::ioError("'" + path + "' is a folder: give a point-cloud file");
+  }
   std::ifstream probe(path, std::ios::binary);
   if (!probe)
   {

@@ -136,6 +136,18 @@ rc, out, err = run("reconstruct", flower, "--json", os.path.join(tmp, "flower.js
 summary = json.load(open(os.path.join(tmp, "flower.json"))) if rc == 0 else {}
 expect(rc == 0 and "1 closed curve(s)" in out and summary.get("euler_characteristic", 0) is None,
        "a 2D result reports closed curves, no Euler characteristic")
+rc, _, err = run("info", tmp)
+expect(rc == 1 and "is a folder" in err, "a folder given as the cloud is named: " + err.strip())
+garbage = os.path.join(tmp, "garbage.xyz")
+with open(garbage, "wb") as f:
+    f.write(bytes((k * 37 + 11) % 256 for k in range(4000)))
+rc, _, err = run("info", garbage)
+expect(rc == 1 and ("binary data" in err or "expected three coordinates" in err), "binary garbage in a .xyz is named: " + err.strip())
+token = os.path.join(tmp, "token.xyz")
+with open(token, "w") as f:
+    f.write("0 0 0\n1 0 0\n0 1 0.02abc\n0 0 1\n")
+rc, _, err = run("info", token)
+expect(rc == 1 and "0.02abc" in err and ":3:" in err, "a token like 0.02abc is refused with its line: " + err.strip())
 rc, _, err = run("frobnicate")
 expect(rc == 2 and "frobnicate" in err, "an unknown command is usage error 2")
 rc, out, _ = run()
