@@ -174,3 +174,74 @@ TEST(AutomaticParameters, DenseCloudIsThinnedToTheGrid)
   ASSERT_TRUE(sltk::planReconstruction(sltk::sphereCloud(200000), options, ctx, asGiven).isOk());
   EXPECT_EQ(asGiven.Cloud.size(), 200000);
 }
+
+namespace
+{
+/// A disc of radius 0.5 with a fin 0.5 long and `thickness` thick on its +x side,
+/// its outline sampled every 0.01 (h_P about 0.01; in 2D run 1's cells are
+/// C_dx h_P, Table 4.1).
+sltk::PointCloud<2> discWithFin(double thickness)
+{
+  constexpr double pi = 3.14159265358979323846;
+  const double half = 0.5 * thickness, step = 0.01;
+  sltk::PointCloud<2> cloud;
+  for (int k = 0; k < 314; ++k)
+  {
+    const double a = 2.0 * pi * k / 314.0;
+    const std::array<double, 2> p{ 0.5 * std::cos(a), 0.5 * std::sin(a) };
+    if (!(p[0] > 0.0 && std::fabs(p[1]) < half))
+    {
+      cloud.Points.push_back(p);
+    }
+  }
+  for (double x = 0.5; x < 1.0; x += step)
+  {
+    cloud.Points.push_back({ x, half });
+    cloud.Points.push_back({ x, -half });
+  }
+  for (double y = -half; y <= half; y += step)
+  {
+    cloud.Points.push_back({ 1.0, y });
+  }
+  return cloud;
+}
+
+/// phi at the node nearest to p.
+double phiNear(const sltk::GridField<2>& phi, double x, double y)
+{
+  const auto& g = phi.spec();
+  const std::array<sltk::Index, 2> node{ static_cast<sltk::Index>(std::lround((x - g.Origin[0]) / g.Spacing[0])),
+    static_cast<sltk::Index>(std::lround((y - g.Origin[1]) / g.Spacing[1])) };
+  return phi(node);
+}
+} // namespace
+
+TEST(AutomaticParameters, ThinFeatureLostByRunOneIsRecovered)
+{
+  sltk::Context ctx;
+  const sltk::PointCloud<2> cloud = discWithFin(0.016);
+  // A fin 1.6 h_P thick. Given C_dx = 1, run 1 (cells of h_P) loses it, the later
+  // runs do not bring it back, and it is said (the far points of the last run).
+  sltk::ReconstructionOptions given;
+  given.CellSizeFactor = 1.0;
+  sltk::ReconstructionResult<2> lost;
+  ASSERT_TRUE(sltk::reconstruct(cloud, given, ctx, lost).isOk());
+  ASSERT_EQ(lost.Runs.size(), 3u);
+  EXPECT_GT(lost.Runs.back().FarPoints, 0.01) << "above the warning threshold";
+  EXPECT_GT(phiNear(lost.SignedDistance, 0.75, 0.0), 0.0) << "the fin was expected to be lost at C_dx = 1";
+  EXPECT_TRUE(lost.Recoveries.empty()) << "an explicit C_dx is used as given";
+
+  // Automatic C_dx: the same first attempt, then half the cell size with one run
+  // fewer, which keeps the fin and ends on the same finest grid.
+  sltk::ReconstructionResult<2> kept;
+  const sltk::Status status = sltk::reconstruct(cloud, sltk::ReconstructionOptions{}, ctx, kept);
+  ASSERT_TRUE(status.isOk()) << status.message();
+  ASSERT_EQ(kept.Recoveries.size(), 1u);
+  EXPECT_NE(kept.Recoveries[0].find("reconstructed again from C_dx = 0.5"), std::string::npos) << kept.Recoveries[0];
+  EXPECT_EQ(kept.CellSizeFactor, 0.5);
+  EXPECT_EQ(kept.Runs.size(), 2u);
+  EXPECT_LT(kept.Runs.back().FarPoints, 0.01);
+  EXPECT_LT(phiNear(kept.SignedDistance, 0.75, 0.0), 0.0) << "the fin's middle is inside";
+  EXPECT_GT(phiNear(kept.SignedDistance, 0.75, 0.1), 0.0) << "beside the fin is outside";
+  EXPECT_EQ(kept.SignedDistance.spec().Spacing[0], lost.SignedDistance.spec().Spacing[0]) << "the same finest grid";
+}
