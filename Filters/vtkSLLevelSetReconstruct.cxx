@@ -123,6 +123,7 @@ sltk::Status optionsOf(vtkSLLevelSetReconstruct* self, sltk::ReconstructionOptio
   o.MemoryBudget = static_cast<std::uint64_t>(self->GetMemoryBudget()) << 20;
   o.Cleaning.Automatic = self->GetAutomaticCleaning();
   o.LocalOffset = self->GetLocalOffset();
+  o.FollowFarPoints = self->GetFollowFarPoints();
   o.Cleaning.RemoveOutliers = self->GetRemoveOutliers();
   o.Cleaning.Outliers.Deviations = self->GetOutlierDeviations();
   o.Cleaning.ThinningFactor = self->GetThinningFactor();
@@ -298,6 +299,7 @@ void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MemoryBudget: " << this->MemoryBudget << " MB\n";
   os << indent << "AutomaticCleaning: " << this->AutomaticCleaning << "\n";
   os << indent << "LocalOffset: " << this->LocalOffset << "\n";
+  os << indent << "FollowFarPoints: " << this->FollowFarPoints << "\n";
   os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "Padding: " << this->Padding << "\n";

@@ -74,8 +74,9 @@ public:
 
   ///@{
   /// K_P: the outside-marking threshold K_P h_P of the initial data (4.4.4).
-  /// Default 0: automatic (the K_P of 2-32 whose initial surface encloses the
-  /// most; the thesis uses 2, and 10 for scans with holes); otherwise 0.1-100.
+  /// Default 0: automatic (the K_P of 2-32, at least 2 CellSizeFactor, whose
+  /// initial surface encloses the most; the thesis uses 2, and 10 for scans
+  /// with holes); otherwise 0.1-100.
   vtkSetMacro(OutsideThresholdFactor, double);
   vtkGetMacro(OutsideThresholdFactor, double);
   ///@}
@@ -143,6 +144,16 @@ public:
   ///@}
 
   ///@{
+  /// FollowFarPoints (default on): a run that the energy rule (4.33) would stop
+  /// goes on while more than 1% of the points lie over one cell of run 1 from
+  /// the surface and that fraction still falls (by 10% per 10 iterations), up
+  /// to MaximumNumberOfIterations; off: the thesis's rule alone.
+  vtkSetMacro(FollowFarPoints, bool);
+  vtkGetMacro(FollowFarPoints, bool);
+  vtkBooleanMacro(FollowFarPoints, bool);
+  ///@}
+
+  ///@{
   /// Memory budget of the automatic CellSizeFactor in MB; 0 (default): 1024 MB.
   /// With an explicit CellSizeFactor, 0 means the memory available.
   vtkSetMacro(MemoryBudget, int);
@@ -202,6 +213,7 @@ protected:
   double OutsideThresholdFactor = 0.0;
   int MemoryBudget = 0;
   bool LocalOffset = true;
+  bool FollowFarPoints = true;
   bool AutomaticCleaning = true;
   int MaximumNumberOfIterations = 100;
   double Tolerance = 1e-4;

@@ -188,7 +188,8 @@ void addPlanOptions(CLI::App* app, sltk::ReconstructionOptions& options)
     "--memory-budget)")
     ->option_text("C");
   addNumber(app, "--kp", options.OutsideThresholdFactor,
-    "K_P: initial surface at K h_P from the cloud (default: automatic,\nthe K of 2-32 that encloses the most; the "
+    "K_P: initial surface at K h_P from the cloud (default: automatic,\nthe K of 2-32, at least 2 C_dx, that encloses "
+    "the most; the "
     "thesis: 2, 10 for scans\nwith holes)")
     ->option_text("K");
   app
@@ -202,6 +203,9 @@ void addPlanOptions(CLI::App* app, sltk::ReconstructionOptions& options)
   app->add_flag_callback(
     "--uniform-offset", [&options]() { options.LocalOffset = false; },
     "run 1's initial surface at K_P h_P everywhere (the thesis), not K_P h_P\ntimes the local sparsity of the cloud");
+  app->add_flag_callback(
+    "--thesis-stopping", [&options]() { options.FollowFarPoints = false; },
+    "stop a run by the energy rule (4.33) alone, even while the surface is\nstill approaching points left far from it");
   app->add_flag_callback(
     "--no-cleaning", [&options]() { options.Cleaning.Automatic = false; },
     "use the cloud as given (no automatic outlier removal or thinning)");

@@ -199,6 +199,7 @@ int Reconstruct::run() const
   filter->SetMemoryBudget(static_cast<int>(o.MemoryBudget >> 20));
   filter->SetAutomaticCleaning(o.Cleaning.Automatic);
   filter->SetLocalOffset(o.LocalOffset);
+  filter->SetFollowFarPoints(o.FollowFarPoints);
   filter->SetRemoveOutliers(o.Cleaning.RemoveOutliers);
   filter->SetOutlierDeviations(o.Cleaning.Outliers.Deviations);
   filter->SetThinningFactor(o.Cleaning.ThinningFactor);

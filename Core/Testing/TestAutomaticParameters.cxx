@@ -128,10 +128,23 @@ TEST(AutomaticParameters, CellSizeFollowsTheBudget)
   EXPECT_GT(tight.Options.CellSizeFactor, 1.0);
   EXPECT_LE(tight.memoryEstimate(3), 64.0 * (1 << 20));
   EXPECT_GT(tight.memoryEstimate(3), 0.8 * 64.0 * (1 << 20)) << "the smallest C_dx that fits, within 2% steps";
+  // A coarser run 1 keeps the initial surface two of its cells from the cloud.
+  EXPECT_GE(tight.Options.OutsideThresholdFactor, 2.0 * tight.Options.CellSizeFactor);
+  EXPECT_EQ(roomy.Options.OutsideThresholdFactor, 2.0) << "C_dx = 1 starts the ladder at the thesis's K_P";
   // Given explicitly, C_dx is used as given and a grid beyond the budget is refused.
   options.CellSizeFactor = 1.0;
   sltk::ReconstructionPlan<3> refused;
   EXPECT_EQ(sltk::planReconstruction(cloud, options, ctx, refused).code(), sltk::StatusCode::OutOfMemory);
+}
+
+TEST(AutomaticParameters, LadderStartsTwoRunOneCellsOut)
+{
+  const auto& ladder = sltk::outsideFactorLadder();
+  EXPECT_EQ(ladder[sltk::firstOutsideRung(1.0)], 2.0);
+  EXPECT_EQ(ladder[sltk::firstOutsideRung(1.2)], 2.5);
+  EXPECT_EQ(ladder[sltk::firstOutsideRung(3.28)], 8.0);
+  EXPECT_EQ(ladder[sltk::firstOutsideRung(5.0)], 10.0);
+  EXPECT_EQ(sltk::firstOutsideRung(100.0), ladder.size() - 1) << "the last rung when none is that large";
 }
 
 TEST(AutomaticParameters, CleaningRemovesOnlyGrossOutliers)
@@ -244,4 +257,30 @@ TEST(AutomaticParameters, ThinFeatureLostByRunOneIsRecovered)
   EXPECT_LT(phiNear(kept.SignedDistance, 0.75, 0.0), 0.0) << "the fin's middle is inside";
   EXPECT_GT(phiNear(kept.SignedDistance, 0.75, 0.1), 0.0) << "beside the fin is outside";
   EXPECT_EQ(kept.SignedDistance.spec().Spacing[0], lost.SignedDistance.spec().Spacing[0]) << "the same finest grid";
+}
+
+TEST(AutomaticParameters, StalledRunFollowsFarPoints)
+{
+  // A loose energy tolerance stops the thesis's rule (4.33) after 2 iterations,
+  // while the initial surface, 10 h_P out, is still far from the points;
+  // following the far points goes on until the surface has reached them.
+  sltk::PointCloud<2> circle;
+  for (int k = 0; k < 300; ++k)
+  {
+    const double a = 2.0 * 3.14159265358979323846 * k / 300.0;
+    circle.Points.push_back({ 0.5 * std::cos(a), 0.5 * std::sin(a) });
+  }
+  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
+  options.OutsideThresholdFactor = 10.0;
+  options.Runs = 1;
+  options.Tolerance = 0.5;
+  options.MinIterations = 2;
+  sltk::Context ctx;
+  sltk::ReconstructionResult<2> energyOnly, following;
+  ASSERT_TRUE(sltk::reconstruct(circle, options, ctx, energyOnly).isOk());
+  options.FollowFarPoints = true;
+  ASSERT_TRUE(sltk::reconstruct(circle, options, ctx, following).isOk());
+  EXPECT_GT(energyOnly.Runs[0].FarPoints, 0.01);
+  EXPECT_GT(following.Runs[0].Iterations, energyOnly.Runs[0].Iterations);
+  EXPECT_LE(following.Runs[0].FarPoints, 0.01);
 }

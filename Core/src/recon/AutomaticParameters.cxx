@@ -52,6 +52,7 @@ Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds,
   po.MemoryBudget = std::numeric_limits<std::uint64_t>::max(); // the probe is bounded below instead
   GridPlan<D> probe;
   const double largest = sparsity.empty() ? 1.0 : *std::max_element(sparsity.begin(), sparsity.end());
+  const size_t first = firstOutsideRung(dx / cloudSpacing);
   for (;;)
   {
     po.CellSizeFactor = dx / cloudSpacing;
@@ -95,12 +96,13 @@ Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds,
         return count;
       });
   }
-  size_t best = 0;
-  for (size_t r = 1; r < rungs; ++r)
+  size_t best = first;
+  for (size_t r = first + 1; r < rungs; ++r)
   {
     best = enclosed[r] > enclosed[best] ? r : best;
   }
   choice.Factor = ladder[best];
+  choice.FirstRung = first;
   for (double count : enclosed)
   {
     choice.EnclosedNodes.push_back(static_cast<Index>(count));
@@ -108,6 +110,17 @@ Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds,
   choice.ProbeNodes = grid.nodeCount();
   choice.ProbeSpacing = grid.Spacing[0];
   return Status::ok();
+}
+
+size_t firstOutsideRung(double cellSizeFactor)
+{
+  const std::vector<double>& ladder = outsideFactorLadder();
+  size_t first = 0;
+  while (first + 1 < ladder.size() && ladder[first] < 2.0 * cellSizeFactor)
+  {
+    ++first;
+  }
+  return first;
 }
 
 template <int D>

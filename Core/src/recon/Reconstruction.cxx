@@ -30,6 +30,9 @@ constexpr int PhiGhost = 2; // WENO3 / CWENO stencils (Q1 needs 1)
 /// the merged scans 0.8% at one h_P but C_dx = 3 there; kitten, frog, fandisk,
 /// teapot: at most 0.4% at one h_P.
 constexpr double FarPointWarning = 0.01;
+/// ReconstructionOptions::FollowFarPoints: the relative fall of the far-point
+/// fraction over one energy window that keeps a stalled run going.
+constexpr double FarPointProgress = 0.1;
 
 double secondsSince(std::chrono::steady_clock::time_point start)
 {
@@ -165,6 +168,10 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
   step.TunnelDistance = 2.0 * dx; // 4.5.6
   step.TunnelMinDistance = 0.6 * cloudSpacing;
   const double gamma = step.Widths.Gamma;
+  // One cell of run 1, C_dx h_P (4.36), and at least h_P: farther points are "far".
+  const double far = std::max(dx * std::ldexp(1.0, run - 1), cloudSpacing);
+  double checkedFar = -1.0; // FollowFarPoints: the fraction at the last check, and when to check again
+  int nextFarCheck = 0;
 
   RunRecord<D> record;
   record.Grid = grid;
@@ -200,9 +207,21 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
         ": the zero level set vanished (no front cell); try a larger K_P or a larger eta");
     }
     energies.push_back(e2.Energy);
-    if (n >= options.MinIterations && energyStalled(energies, options.EnergyWindow, options.Tolerance))
+    if (n >= options.MinIterations && energyStalled(energies, options.EnergyWindow, options.Tolerance) &&
+      n >= nextFarCheck)
     {
-      break;
+      if (!options.FollowFarPoints)
+      {
+        break;
+      }
+      // Beyond the thesis: stalled by (4.33), but still approaching far points?
+      const double fraction = farPointFraction<D, Interp>(phi, cloud, far, ctx);
+      if (fraction <= FarPointWarning || (checkedFar >= 0.0 && fraction > (1.0 - FarPointProgress) * checkedFar))
+      {
+        break;
+      }
+      checkedFar = fraction;
+      nextFarCheck = n + options.EnergyWindow;
     }
     step.Energy = ep.Energy;
     phase[0] += secondsSince(clock);
@@ -251,8 +270,6 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     record.CloudError = cloudError<D, Interp>(phi, cloud, ctx);
   }
   const double spacing = cloudSpacing;
-  // One cell of run 1, C_dx h_P (4.36), and at least h_P.
-  const double far = std::max(dx * std::ldexp(1.0, run - 1), spacing);
   record.FarPoints = farPointFraction<D, Interp>(phi, cloud, far, ctx);
   if (run == options.Runs && record.FarPoints > FarPointWarning)
   {

@@ -211,13 +211,21 @@ Status planReconstruction(
       plan.Options.OutsideThresholdFactor = choice.Factor;
       const auto& ladder = outsideFactorLadder();
       const size_t best = static_cast<size_t>(std::find(ladder.begin(), ladder.end(), choice.Factor) - ladder.begin());
+      std::string why = "no holes to bridge";
+      if (best > choice.FirstRung)
+      {
+        why = "K_P = " + number(ladder[best - 1]) + " encloses " + std::to_string(choice.EnclosedNodes[best - 1]) +
+          ": the sampling has holes it does not bridge";
+      }
+      else if (choice.FirstRung > 0)
+      {
+        why = "K_P below " + number(ladder[choice.FirstRung]) +
+          " would put the initial surface less than two of run 1's cells (2 C_dx = " +
+          number(2.0 * plan.Options.CellSizeFactor) + " h_P) from the cloud";
+      }
       plan.Choices.push_back("K_P = " + number(choice.Factor) + ": its initial surface encloses " +
         std::to_string(choice.EnclosedNodes[best]) + " nodes of a " + std::to_string(choice.ProbeNodes) +
-        "-node grid, the most of K_P = 2..32 (" +
-        (best > 0 ? "K_P = " + number(ladder[best - 1]) + " encloses " +
-              std::to_string(choice.EnclosedNodes[best - 1]) + ": the sampling has holes it does not bridge"
-                  : "no holes to bridge") +
-        ")");
+        "-node grid, the most of K_P = " + number(ladder[choice.FirstRung]) + "..32 (" + why + ")");
       plan.Enclosure = std::move(choice);
     }
     roomFactor = outsideFactorWithRestart(plan.Options.OutsideThresholdFactor);

@@ -29,6 +29,7 @@
 #include "sltk/exec/Context.h"
 #include "sltk/recon/GridPlan.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -54,9 +55,18 @@ double nextOutsideFactor(double factor);
 /// that one restart fits.
 double outsideFactorWithRestart(double factor);
 
+/// The first rung tried for run 1's C_dx: the smallest K_P >= 2 C_dx, an
+/// initial surface at least two of run 1's cells from the cloud as the thesis's
+/// K_P = 2 at C_dx = 1 (4.4.4); when a memory budget coarsens the grid, a
+/// thinner one loses the features thinner than a cell (the dragon's spikes
+/// at C_dx 3.3: Documentation/Numerics.md, "Automatic parameters"). The last
+/// rung when none is that large.
+size_t firstOutsideRung(double cellSizeFactor);
+
 struct OutsideFactorChoice
 {
   double Factor = 2.0;              ///< the chosen K_P
+  size_t FirstRung = 0;             ///< the first rung tried (firstOutsideRung)
   std::vector<Index> EnclosedNodes; ///< per ladder K: nodes with d >= K h_P the marking does not reach
   Index ProbeNodes = 0;             ///< nodes of the grid it was measured on
   double ProbeSpacing = 0.0;        ///< its dx
@@ -64,7 +74,8 @@ struct OutsideFactorChoice
 
 /// Chooses K_P for the cloud of `locator` (unit box, spacing h_P) on a grid of
 /// spacing dx around `bounds` (run 1's: dx = C_dx h_P); with one sparsity factor
-/// per point, for the local offset K_P h_P rho (LocalOffset.h).
+/// per point, for the local offset K_P h_P rho (LocalOffset.h): the rung from
+/// firstOutsideRung(C_dx) on whose initial surface encloses the most nodes.
 template <int D>
 Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds, double cloudSpacing, double dx,
   const std::vector<double>& sparsity, const Context& ctx, OutsideFactorChoice& choice);

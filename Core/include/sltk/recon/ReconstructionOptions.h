@@ -75,6 +75,12 @@ struct ReconstructionOptions
   /// Beyond the thesis: run 1's initial surface at K_P h_P rho(x), rho the local
   /// sparsity of the cloud (recon/LocalOffset.h); false: the thesis's K_P h_P.
   bool LocalOffset = true;
+  /// Beyond the thesis: (4.33) stops a run only once the surface has reached
+  /// the cloud or stopped approaching it: while more than 1% of the points lie
+  /// over one cell of run 1 from the zero level set and that fraction fell by
+  /// 10% over the last EnergyWindow iterations, the run goes on (up to
+  /// MaxIterations). False: the thesis's rule alone.
+  bool FollowFarPoints = true;
   /// Bytes; 0: AutomaticMemoryBudget (1 GiB) when C_dx is automatic, the memory available otherwise.
   std::uint64_t MemoryBudget = 0;
   bool DetectTunnels = false; ///< 4.5.6: follow grad phi where 0.6 h_P < d < 2 dx and |grad d| < 0.5
@@ -83,7 +89,8 @@ struct ReconstructionOptions
   /// the finest grid), so the thesis's clouds are reconstructed as given.
   CloudCleaningOptions Cleaning;
 
-  /// The thesis's parameters (4.5.2): C_dx = 1, K_P = 2, no cleaning; the
+  /// The thesis's parameters (4.5.2): C_dx = 1, K_P = 2, no cleaning, its
+  /// stopping rule; the
   /// reproductions of its tables start from these.
   static ReconstructionOptions thesis()
   {
@@ -92,6 +99,7 @@ struct ReconstructionOptions
     o.OutsideThresholdFactor = 2.0;
     o.Cleaning.Automatic = false;
     o.LocalOffset = false;
+    o.FollowFarPoints = false;
     return o;
   }
 
