@@ -56,8 +56,12 @@ Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds,
   for (;;)
   {
     po.CellSizeFactor = dx / cloudSpacing;
-    // Room for the largest K's surface, the marking's boundary layer and a margin.
-    po.Padding = static_cast<int>(std::ceil(largest * ladder.back() * cloudSpacing / dx)) + 4;
+    // Room for the largest K's uniform offset and a margin. Not for its local
+    // offset (up to MaximumSparsity times more): the marking starts from the whole
+    // grid boundary (CloudInitialData.h), so a surface cut by the box encloses
+    // the same nodes, and a padding 4 times wider coarsened the probe grid 4
+    // times (teapot: K_P = 2 on a 1.6M-node probe, whose cells hide its holes).
+    po.Padding = static_cast<int>(std::ceil(ladder.back() * cloudSpacing / dx)) + 4;
     SLTK_RETURN_IF_ERROR(planGrids(bounds, cloudSpacing, po, probe));
     if (static_cast<double>(probe.Runs[0].nodeCount()) <= MaximumProbeNodes)
     {
