@@ -2,6 +2,7 @@
 #include "ReadPointCloud.h"
 
 #include "FileNames.h"
+#include "ReadVtkFile.h"
 
 #include <vtkDataSetReader.h>
 #include <vtkNew.h>
@@ -97,10 +98,9 @@ sltk::Status readText(const std::string& path, vtkSmartPointer<vtkPointSet>& clo
 template <class Reader>
 sltk::Status readWith(const std::string& path, vtkSmartPointer<vtkPointSet>& cloud)
 {
-  vtkNew<Reader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  auto* data = vtkPointSet::SafeDownCast(reader->GetOutputDataObject(0));
+  vtkSmartPointer<vtkDataObject> object;
+  SLTK_RETURN_IF_ERROR(readVtkFile<Reader>(path, object));
+  auto* data = vtkPointSet::SafeDownCast(object);
   if (!data || !data->GetPoints())
   {
     return sltk::Status::ioError("could not read points from " + path + " (is it a valid file of its type?)");

@@ -2,6 +2,7 @@
 #include "SurfaceDistance.h"
 
 #include "FileNames.h"
+#include "ReadVtkFile.h"
 
 #include <vtkGenericCell.h>
 #include <vtkNew.h>
@@ -71,10 +72,14 @@ sltk::Status readOff(const std::string& path, vtkPolyData* mesh)
 template <class Reader>
 sltk::Status readWith(const std::string& path, vtkPolyData* mesh)
 {
-  vtkNew<Reader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  mesh->ShallowCopy(reader->GetOutput());
+  vtkSmartPointer<vtkDataObject> data;
+  SLTK_RETURN_IF_ERROR(readVtkFile<Reader>(path, data));
+  auto* read = vtkPolyData::SafeDownCast(data);
+  if (!read)
+  {
+    return sltk::Status::ioError("could not read a surface mesh from " + path);
+  }
+  mesh->ShallowCopy(read);
   return sltk::Status::ok();
 }
 

@@ -148,6 +148,46 @@ with open(token, "w") as f:
     f.write("0 0 0\n1 0 0\n0 1 0.02abc\n0 0 1\n")
 rc, _, err = run("info", token)
 expect(rc == 1 and "0.02abc" in err and ":3:" in err, "a token like 0.02abc is refused with its line: " + err.strip())
+# Damaged PLY files (vtkPLYReader asserts, crashes or pads on them): checked before VTK reads.
+def ply_header(fmt, n, props="property float x\nproperty float y\nproperty float z\n", faces=0):
+    face = "element face %d\nproperty list uchar int vertex_indices\n" % faces if faces else ""
+    return "ply\nformat %s 1.0\nelement vertex %d\n%s%send_header\n" % (fmt, n, props, face)
+
+
+import struct
+corners = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)] * 25
+ascii_rows = "".join("%g %g %g\n" % p for p in corners)
+binary_rows = b"".join(struct.pack("<fff", *p) for p in corners)
+tetra_faces = struct.pack("<Biii", 3, 0, 1, 2) * 4
+damaged = {
+    "truncated ASCII": (ply_header("ascii", 100) + ascii_rows[: len(ascii_rows) // 2]).encode(),
+    "a short vertex line": (ply_header("ascii", 100) + "0 0\n" + ascii_rows.split("\n", 1)[1]).encode(),
+    "faces but no x/y/z": (ply_header("ascii", 3, "property float a\nproperty float b\n", 1) + "0 0\n1 0\n0 1\n3 0 1 2\n").encode(),
+    "only x": (ply_header("ascii", 3, "property float x\n", 1) + "0\n1\n2\n3 0 1 2\n").encode(),
+    "truncated binary": ply_header("binary_little_endian", 100).encode() + binary_rows[:601],
+    "truncated binary faces": ply_header("binary_little_endian", 100, faces=8).encode() + binary_rows + tetra_faces,
+    "no ply magic": b"solid cube\n",
+}
+whats = {"truncated ASCII": "50 of the 100 vertex", "a short vertex line": "vertex 0 has 2 numbers",
+         "faces but no x/y/z": "no scalar 'x'", "only x": "no scalar 'y'", "truncated binary": "50 of the 100 vertex",
+         "truncated binary faces": "4 of the 8 face", "no ply magic": "does not start with the line 'ply'"}
+for name, data in damaged.items():
+    path = os.path.join(tmp, "damaged.ply")
+    with open(path, "wb") as f:
+        f.write(data)
+    rc, _, err = run("info", path)
+    expect(rc == 1 and "damaged PLY file" in err and whats[name] in err, "a cloud PLY with %s is named: %s" % (name, err.strip()))
+    out_vti = os.path.join(tmp, "never.vti")
+    rc, _, err = run("reconstruct", sphere, "--reference", path, "-o", out_vti)
+    expect(rc == 1 and "damaged PLY file" in err and whats[name] in err and not os.path.exists(out_vti),
+           "a --reference PLY with %s is refused before the run" % name)
+good = os.path.join(tmp, "good.ply")
+with open(good, "wb") as f:
+    spread = [(math.cos(2.4 * k), math.sin(2.4 * k), -1 + 0.02 * k) for k in range(100)]
+    f.write(ply_header("binary_little_endian", 100, faces=4).encode() +
+            b"".join(struct.pack("<fff", *p) for p in spread) + tetra_faces)
+rc, out, err = run("info", good)
+expect(rc == 0 and "points       100" in out, "a whole binary PLY with faces is read: " + err.strip())
 rc, _, err = run("frobnicate")
 expect(rc == 2 and "frobnicate" in err, "an unknown command is usage error 2")
 rc, out, _ = run()

@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file CheckPly.h
+/// What vtkPLYReader does not check before it reads (Documentation/Architecture.md,
+/// "Reading files"): VTK 9.2's reader asserts on a truncated ASCII file, crashes
+/// on a vertex element without x, y and z, and pads a truncated binary file
+/// with copies of its last point. checkPlyFile reads the header and walks the
+/// data (binary: element by element, list counts included, against the file's
+/// size; ASCII: one non-empty line per element, as many numbers per vertex line
+/// as the vertex has scalar properties) and names what is wrong.
+
+#include "sltk/core/Status.h"
+
+#include <string>
+
+namespace sltkcli
+{
+
+/// Ok when `path` is a PLY file that vtkPLYReader can read whole: a "ply" magic
+/// line, a known format, a vertex element with scalar x, y and z, and all the
+/// data the header announces. Otherwise an I/O error naming the file, the
+/// problem and the fix.
+sltk::Status checkPlyFile(const std::string& path);
+
+} // namespace sltkcli
