@@ -37,7 +37,7 @@ namespace sltk
 {
 
 /// The default memory budget when C_dx is automatic: a laptop's share with room
-/// for ParaView (the Stanford bunny: C_dx about 2.1, 0.95 GB peak).
+/// for ParaView (the Stanford bunny: C_dx about 2.1, 0.74 GB peak).
 constexpr std::uint64_t AutomaticMemoryBudget = std::uint64_t(1) << 30;
 
 /// Thinning cell in density spacings (CloudSpacing.h) of an automatic thinning:
