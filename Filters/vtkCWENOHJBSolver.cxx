@@ -2,6 +2,7 @@
 #include "vtkCWENOHJBSolver.h"
 
 #include "SLTKBridge.h"
+#include "SLTKGuard.h"
 
 #include "sltk/hjb/HjbResult.h"
 #include "sltk/hjb/HjbSolver.h"
@@ -276,6 +277,14 @@ int vtkCWENOHJBSolver::RequestUpdateExtent(vtkInformation*, vtkInformationVector
   return 1;
 }
 
+vtkTypeBool vtkCWENOHJBSolver::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  return sltk::vtkbridge::guardedRequest(
+    this, [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); });
+}
+
+//------------------------------------------------------------------------------
 int vtkCWENOHJBSolver::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {

@@ -230,6 +230,8 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// Every request runs guarded: an exception becomes the filter's error (SLTKGuard.h).
+  vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Preset = TEST1_ROTATION;
   int NumberOfNodes = 81;

@@ -2,6 +2,7 @@
 #include "vtkSLLevelSetReconstruct.h"
 
 #include "SLTKBridge.h"
+#include "SLTKGuard.h"
 #include "SLTKReconstructionOutput.h"
 
 #include "sltk/recon/Reconstruction.h"
@@ -198,6 +199,14 @@ int vtkSLLevelSetReconstruct::RequestUpdateExtent(
   return 1;
 }
 
+vtkTypeBool vtkSLLevelSetReconstruct::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  return sltk::vtkbridge::guardedRequest(
+    this, [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); });
+}
+
+//------------------------------------------------------------------------------
 int vtkSLLevelSetReconstruct::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {

@@ -7,6 +7,7 @@
 
 #include <iostream>
 #include <memory>
+#include <new>
 #include <regex>
 #include <sstream>
 #include <vector>
@@ -85,7 +86,22 @@ int main(int argc, char** argv)
   {
     if (command.Parser->parsed())
     {
-      return command.Run();
+      // No exception leaves sltk (Documentation/Architecture.md, "Errors, logging, interrupts"):
+      // what the memory checks could not foresee ends the command with its error.
+      try
+      {
+        return command.Run();
+      }
+      catch (const std::bad_alloc&)
+      {
+        return sltkcli::fail("out of memory: the command needs more memory than this machine can give; use a "
+                             "coarser grid (fewer nodes, a larger --cdx) or a smaller problem",
+          1);
+      }
+      catch (const std::exception& e)
+      {
+        return sltkcli::fail(std::string("internal error: ") + e.what(), 1);
+      }
     }
   }
   return 2; // not reached: require_subcommand(1)

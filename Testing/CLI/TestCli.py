@@ -188,6 +188,19 @@ with open(good, "wb") as f:
             b"".join(struct.pack("<fff", *p) for p in spread) + tetra_faces)
 rc, out, err = run("info", good)
 expect(rc == 0 and "points       100" in out, "a whole binary PLY with faces is read: " + err.strip())
+# Allocations the memory checks cannot foresee (here an address-space limit they do not see)
+# end the command with an error, not an abort; and absurd step counts are refused up front.
+import resource
+limited = subprocess.run([sltk, "reconstruct", sphere, "--cdx", "0.5", "-o", os.path.join(tmp, "limited.vti")],
+                         capture_output=True, text=True, timeout=300,
+                         preexec_fn=lambda: resource.setrlimit(resource.RLIMIT_AS, (400 << 20, 400 << 20)))
+expect(limited.returncode == 1 and "out of memory" in limited.stderr and not os.path.exists(os.path.join(tmp, "limited.vti")),
+       "std::bad_alloc under a 400 MB address-space limit is an error, exit 1: " + limited.stderr.strip()[-160:])
+rc, _, err = run("hjb", "--preset", "test1", "--n", "41", "--final-time", "1e7")
+expect(rc == 1 and "more than 1e+06" in err and "final time" in err, "a final time of 1e7 steps is refused up front: " + err.strip())
+rc, _, err = run("hjb", "--fx", "a1", "--fy", "a2", "--controls", "box", "--control-dim", "2", "--v0", "x",
+                 "--nodes", "21,21", "--domain", "-1,1,-1,1", "--final-time", "1", "--courant", "1e-9")
+expect(rc == 1 and "Courant" in err and "1e+10 steps" in err, "a Courant number of 1e-9 is refused up front: " + err.strip())
 rc, _, err = run("frobnicate")
 expect(rc == 2 and "frobnicate" in err, "an unknown command is usage error 2")
 rc, out, _ = run()

@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -59,8 +60,15 @@ inline Index slStepCount(double span, double maxDt)
   return n < 1 ? 1 : n;
 }
 
+/// The most time steps a solver plans: every step is at least one pass over
+/// the grid, so more is hours of work on any grid (and ParaView's animation
+/// would list every t_k); a final time or a time step that asks for more is a
+/// mistake to name, not a run to start.
+constexpr double MaximumTimeSteps = 1e6;
+
 /// The uniform time steps from `start` to `final` (3.2): checks the interval
-/// and the largest step, then dt = span / slStepCount(span, maxDt). `solver`
+/// and the largest step (at most MaximumTimeSteps steps), then dt = span /
+/// slStepCount(span, maxDt). `solver`
 /// names the caller in the messages (e.g. "SL advection").
 inline Status planTimeSteps(
   const char* solver, double start, double final, double maxDt, Index& steps, double& dt)
@@ -74,6 +82,14 @@ inline Status planTimeSteps(
   if (!(maxDt > 0.0) || !std::isfinite(maxDt))
   {
     return Status::invalidArgument(std::string(solver) + " needs a positive MaxTimeStep, got " + std::to_string(maxDt));
+  }
+  if (span / maxDt > MaximumTimeSteps)
+  {
+    std::ostringstream what;
+    what << solver << ": a final time " << final << " with time steps of " << maxDt << " makes " << span / maxDt
+         << " steps, more than " << MaximumTimeSteps
+         << ": use a smaller final time or a larger Courant number (time step)";
+    return Status::invalidArgument(what.str());
   }
   steps = slStepCount(span, maxDt);
   dt = span / static_cast<double>(steps);
