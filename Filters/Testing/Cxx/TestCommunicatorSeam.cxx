@@ -2,6 +2,7 @@
 // The communicator seam from VTK's controllers (Filters/Private/SLTKCommunicator.h),
 // serially and under `mpiexec -n 2`: a vtkMPIController gives an MPI
 // communicator with its ranks, any other controller the serial one.
+#include "FilterTestCheck.h"
 #include "SLTKCommunicator.h"
 
 #include "vtkDummyController.h"
@@ -11,18 +12,7 @@
 #include <iostream>
 #include <string>
 
-namespace
-{
-int failures = 0;
-void check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << "\n";
-    ++failures;
-  }
-}
-} // namespace
+using sltktest::check;
 
 int main(int argc, char* argv[])
 {
@@ -55,7 +45,7 @@ int main(int argc, char* argv[])
   check(total == size, "the controller's own all-reduce after the seam's");
 
   int anyFailed = 0;
-  controller->AllReduce(&failures, &anyFailed, 1, vtkCommunicator::MAX_OP);
+  controller->AllReduce(&sltktest::failures(), &anyFailed, 1, vtkCommunicator::MAX_OP);
   comm.reset();
   vtkMultiProcessController::SetGlobalController(nullptr);
   controller->Finalize();
