@@ -11,6 +11,7 @@
 #include "common/ReadXyz.h"
 
 #include "sltk/exec/Memory.h"
+#include "sltk/exec/ThreadPool.h"
 #include "sltk/mpi/MpiCommunicator.h"
 #include "sltk/octree/CloudForest.h"
 
@@ -52,10 +53,11 @@ int main(int argc, char** argv)
   CLI::App app("Octree forest over a cloud: leaves vs the uniform grid, build time, rank invariance");
   sltkbench::takeLastByDefault(app);
   std::string cloudPath, levels = "6,7,8";
-  int minLevel = 2;
+  int minLevel = 2, threads = 1;
   app.add_option("--cloud", cloudPath, "x y z text cloud (read by rank 0)")->required();
   app.add_option("--levels", levels, "maximum levels L, comma-separated")->capture_default_str();
   app.add_option("--min-level", minLevel, "minimum level")->capture_default_str();
+  app.add_option("--threads", threads, "threads per rank (0: all hardware threads)")->capture_default_str();
   if (const auto code = sltkbench::parseCommandLine(app, argc, argv))
   {
     MPI_Finalize();
@@ -81,6 +83,9 @@ int main(int argc, char** argv)
       "leaves", "finest", "uniform", "%unif", "prep_s", "refine_s", "bal_s", "dist_s", "ghost_s", "peak_MB",
       "checksum");
   }
+  sltk::ThreadPool pool(threads);
+  sltk::Context ctx;
+  ctx.Executor = &pool;
   for (const std::string& item : sltkbench::splitList(levels))
   {
     sltk::octree::CloudForestOptions options;
@@ -88,7 +93,7 @@ int main(int argc, char** argv)
     options.MaximumLevel = std::stoi(item);
     std::unique_ptr<sltk::octree::CloudForest> forest;
     comm->barrier();
-    status = sltk::octree::CloudForest::build(*comm, cloud, options, sltk::Context{}, forest);
+    status = sltk::octree::CloudForest::build(*comm, cloud, options, ctx, forest);
     if (!status.isOk())
     {
       if (comm->rank() == 0)
