@@ -2,16 +2,59 @@
 #include "vtkOctreeSDF.h"
 
 #include "SLTKBridge.h"
+#include "SLTKCommunicator.h"
+#ifdef SLTK_HAS_OCTREE
+#include "SLTKOctreeOutput.h"
+#include "sltk/octree/CloudForest.h"
+#endif
+
+#include "sltk/exec/ThreadPool.h"
 
 #include "vtkDemandDrivenPipeline.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkHyperTreeGrid.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointSet.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include <sstream>
+
 vtkStandardNewMacro(vtkOctreeSDF);
+
+namespace
+{
+/// The properties' documented ranges (the plugin XML's domains): a value
+/// outside is refused with its name and range, never clamped.
+sltk::Status checkRanges(vtkOctreeSDF* self)
+{
+  SLTK_RETURN_IF_ERROR(sltk::vtkbridge::checkPropertyRanges({
+    { "MinimumLevel", double(self->GetMinimumLevel()), 0, 18 },
+    { "MaximumLevel", double(self->GetMaximumLevel()), 0, 18 },
+    { "NumberOfThreads", double(self->GetNumberOfThreads()), 0, 1024 },
+    { "MemoryBudget", double(self->GetMemoryBudget()), 0, 16777216 },
+  }));
+  if (self->GetMinimumLevel() > self->GetMaximumLevel())
+  {
+    std::ostringstream m;
+    m << "MinimumLevel (" << self->GetMinimumLevel() << ") exceeds MaximumLevel (" << self->GetMaximumLevel()
+      << "): lower MinimumLevel or raise MaximumLevel";
+    return sltk::Status::invalidArgument(m.str());
+  }
+  return sltk::Status::ok();
+}
+
+[[maybe_unused]] void addValue(vtkFieldData* fd, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->InsertNextValue(value);
+  fd->AddArray(a);
+}
+} // namespace
 
 vtkOctreeSDF::vtkOctreeSDF()
 {
@@ -52,26 +95,65 @@ vtkTypeBool vtkOctreeSDF::ProcessRequest(
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
 
-int vtkOctreeSDF::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+int vtkOctreeSDF::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  if (this->MinimumLevel > this->MaximumLevel)
+  vtkHyperTreeGrid* output = vtkHyperTreeGrid::GetData(outputVector, 0);
+  if (output)
   {
-    vtkErrorMacro("MinimumLevel (" << this->MinimumLevel << ") exceeds MaximumLevel (" << this->MaximumLevel
-                                   << "): lower MinimumLevel or raise MaximumLevel.");
-    return 0;
+    output->Initialize();
   }
-  vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
-  sltk::PointCloud<3> cloud;
-  const sltk::Status status = sltk::vtkbridge::toValidCloud(input, cloud);
+  // Every rank reaches the agreement below, whatever failed locally, so that
+  // an error on one rank ends every rank with it (Documentation/Octree.md).
+  std::unique_ptr<sltk::Communicator> comm;
+  sltk::Status status = sltk::vtkbridge::makeCommunicator(nullptr, comm);
   if (!status.isOk())
   {
-    vtkErrorMacro("Input point set rejected: " << status.message());
+    vtkErrorMacro(<< status.message());
     return 0;
   }
-  vtkErrorMacro("The input (" << cloud.size()
-                              << " points) is valid, but the octree level-set solver (thesis ch. 5) "
-                                 "is not implemented in this SLTK version; no output was produced.");
+  status = checkRanges(this);
+  sltk::PointCloud<3> points; // this rank's piece; may be empty
+  if (status.isOk())
+  {
+    status = sltk::vtkbridge::toCloud(vtkPointSet::GetData(inputVector[0], 0), points);
+  }
+#ifdef SLTK_HAS_OCTREE
+  status = comm->agree(status);
+  if (!status.isOk())
+  {
+    vtkErrorMacro(<< status.message());
+    return 0;
+  }
+  sltk::ThreadPool pool(this->NumberOfThreads);
+  sltk::vtkbridge::VTKLogger logger;
+  sltk::Context ctx;
+  ctx.Executor = &pool;
+  ctx.Log = &logger;
+  sltk::octree::CloudForestOptions options;
+  options.MinimumLevel = this->MinimumLevel;
+  options.MaximumLevel = this->MaximumLevel;
+  options.MemoryBudget = static_cast<std::uint64_t>(this->MemoryBudget) << 20;
+  std::unique_ptr<sltk::octree::CloudForest> forest;
+  status = sltk::octree::CloudForest::build(*comm, points, options, ctx, forest);
+  if (!status.isOk())
+  {
+    vtkErrorMacro(<< status.message());
+    return 0;
+  }
+  sltk::vtkbridge::forestToHyperTreeGrid(*forest, output);
+  vtkFieldData* fd = output->GetFieldData();
+  addValue(fd, "GlobalLeaves", static_cast<double>(forest->stats().GlobalLeaves));
+  addValue(fd, "UniformCells", forest->stats().UniformCells);
+  addValue(fd, "CloudSpacing", forest->cloudSpacing() * forest->unitBox().Scale);
+  return 1;
+#else
+  status = comm->agree(status.isOk()
+      ? sltk::Status::notImplemented("vtkOctreeSDF needs the p4est octree backend: this SLTK was built without it "
+                                     "(SLTK_ENABLE_OCTREE=OFF or p4est not found; install libp4est-dev)")
+      : status);
+  vtkErrorMacro(<< status.message());
   return 0;
+#endif
 }
 
 void vtkOctreeSDF::PrintSelf(ostream& os, vtkIndent indent)
@@ -80,4 +162,5 @@ void vtkOctreeSDF::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumLevel: " << this->MinimumLevel << "\n";
   os << indent << "MaximumLevel: " << this->MaximumLevel << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "MemoryBudget: " << this->MemoryBudget << "\n";
 }

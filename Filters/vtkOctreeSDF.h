@@ -1,16 +1,22 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkOctreeSDF
- * @brief   Signed distance to an unorganised point cloud on an adaptive
- *          octree (p4est), output as a vtkHyperTreeGrid (thesis ch. 5).
+ * @brief   The adaptive octree (p4est) of the reconstruction over an
+ *          unorganised point cloud, output as a vtkHyperTreeGrid (thesis ch. 5).
  *
- * Input: any vtkPointSet (points only). Output: vtkHyperTreeGrid with the
- * cell array "SignedDistance", refined from MinimumLevel near nothing to
- * MaximumLevel near the reconstructed surface.
+ * Input: any vtkPointSet (points only; under MPI every rank's points are
+ * gathered, and a rank may have none). Output: a vtkHyperTreeGrid whose trees
+ * are the p4est brick's, refined uniformly to MinimumLevel and to
+ * MaximumLevel in the band of the cloud, 2:1 balanced, with the cell arrays
+ * "DistanceToCloud" (distance from each leaf's centre to the cloud), "Level"
+ * and "Rank" (owning rank). Under MPI each rank outputs its own leaves; the
+ * leaves of other ranks met on the way are masked. Field data: GlobalLeaves,
+ * UniformCells (the uniform grid of the finest level), CloudSpacing (h_P).
+ * Documentation/Octree.md describes the forest.
  *
- * @warning This version validates the input and creates the output type; the
- * adaptive level-set solver is not built yet and the filter reports so as an
- * error.
+ * @warning The level-set solver on the octree is not built yet: there is no
+ * "SignedDistance" array and no zero level set. The output is the adaptive
+ * grid and the distance to the cloud only.
  */
 #ifndef vtkOctreeSDF_h
 #define vtkOctreeSDF_h
@@ -28,28 +34,39 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// Coarsest refinement level of the octree. Default 3, range 0-20.
-  vtkSetClampMacro(MinimumLevel, int, 0, 20);
+  /// Coarsest refinement level of the octree (every tree refined uniformly to
+  /// it). Default 3, range 0-18, at most MaximumLevel. Values outside are
+  /// refused when the filter runs, not clamped.
+  vtkSetMacro(MinimumLevel, int);
   vtkGetMacro(MinimumLevel, int);
   ///@}
 
   ///@{
-  /// Finest refinement level (near the surface). Default 7, range 1-20.
-  vtkSetClampMacro(MaximumLevel, int, 1, 20);
+  /// Finest refinement level L, reached in the band of the cloud; the finest
+  /// cell is the tree's edge / 2^L (5.1). Default 7, range 0-18.
+  vtkSetMacro(MaximumLevel, int);
   vtkGetMacro(MaximumLevel, int);
   ///@}
 
   ///@{
-  /// Threads; 0 means all hardware threads. Default 0.
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  /// Threads per rank; 0 means all hardware threads. Default 0, range 0-1024.
+  vtkSetMacro(NumberOfThreads, int);
   vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /// Memory the forest may take on all ranks together, in MB; 0 means the
+  /// memory available. A MaximumLevel whose forest would not fit is refused
+  /// with the level that fits. Default 0, range 0-16777216.
+  vtkSetMacro(MemoryBudget, int);
+  vtkGetMacro(MemoryBudget, int);
   ///@}
 
   /// The output data object.
   vtkHyperTreeGrid* GetOutput();
 
-  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  vtkTypeBool ProcessRequest(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
 protected:
   vtkOctreeSDF();
@@ -62,6 +79,7 @@ protected:
   int MinimumLevel = 3;
   int MaximumLevel = 7;
   int NumberOfThreads = 0;
+  int MemoryBudget = 0;
 
 private:
   vtkOctreeSDF(const vtkOctreeSDF&) = delete;

@@ -69,12 +69,7 @@ static_assert(vtkSLLevelSetReconstruct::Q1 == static_cast<int>(sltk::Interpolato
 /// is refused with its name and range, never clamped.
 sltk::Status checkRanges(vtkSLLevelSetReconstruct* self)
 {
-  struct Range
-  {
-    const char* Name;
-    double Value, Low, High;
-  };
-  const Range ranges[] = {
+  return sltk::vtkbridge::checkPropertyRanges({
     { "NumberOfRuns", double(self->GetNumberOfRuns()), 1, 6 },
     { "MaximumNumberOfIterations", double(self->GetMaximumNumberOfIterations()), 1, 100000 },
     { "Tolerance", self->GetTolerance(), 0, 1 },
@@ -84,17 +79,7 @@ sltk::Status checkRanges(vtkSLLevelSetReconstruct* self)
     { "OutlierDeviations", self->GetOutlierDeviations(), 0.5, 100 },
     { "ThinningFactor", self->GetThinningFactor(), 0, 100 },
     { "NumberOfThreads", double(self->GetNumberOfThreads()), 0, 1024 },
-  };
-  for (const Range& r : ranges)
-  {
-    if (!(r.Value >= r.Low && r.Value <= r.High))
-    {
-      std::ostringstream m;
-      m << r.Name << " = " << r.Value << " is outside its range [" << r.Low << ", " << r.High << "]: set a value in it";
-      return sltk::Status::invalidArgument(m.str());
-    }
-  }
-  return sltk::Status::ok();
+  });
 }
 
 sltk::Status optionsOf(vtkSLLevelSetReconstruct* self, sltk::ReconstructionOptions& o)

@@ -3,7 +3,7 @@
 # "CMake recipes"): ParaView first with RemotingCore only, then VTK.
 find_package(ParaView REQUIRED COMPONENTS RemotingCore)
 set(SLTK_VTK_COMPONENTS
-  CommonCore CommonDataModel CommonExecutionModel ParallelCore FiltersCore
+  CommonCore CommonDataModel CommonExecutionModel ParallelCore ParallelMPI FiltersCore
   IOXML IOPLY IOGeometry IOLegacy IOCore
   RenderingCore RenderingOpenGL2 IOImage FiltersGeneral) # the last line: sltk reconstruct --png
 find_package(VTK REQUIRED COMPONENTS ${SLTK_VTK_COMPONENTS})

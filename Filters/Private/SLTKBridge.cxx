@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SLTKBridge.h"
 
+#include <sstream>
+
 #include "sltk/core/OrList.h"
 
 #include "vtkAlgorithm.h"
@@ -34,6 +36,20 @@ Status toValidCloud(vtkPointSet* input, PointCloud<3>& cloud)
 {
   SLTK_RETURN_IF_ERROR(toCloud(input, cloud));
   return validateCloud(cloud);
+}
+
+Status checkPropertyRanges(std::initializer_list<PropertyRange> ranges)
+{
+  for (const PropertyRange& r : ranges)
+  {
+    if (!(r.Value >= r.Low && r.Value <= r.High))
+    {
+      std::ostringstream m;
+      m << r.Name << " = " << r.Value << " is outside its range [" << r.Low << ", " << r.High << "]: set a value in it";
+      return Status::invalidArgument(m.str());
+    }
+  }
+  return Status::ok();
 }
 
 Status interpolatorOf(int code, InterpolatorKind& kind)

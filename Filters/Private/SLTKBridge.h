@@ -10,6 +10,8 @@
 #include "sltk/exec/Logger.h"
 #include "sltk/interp/InterpolatorKind.h"
 
+#include <initializer_list>
+
 class vtkAlgorithm;
 class vtkPointSet;
 
@@ -29,6 +31,17 @@ Status toValidCloud(vtkPointSet* input, PointCloud<3>& cloud);
 /// The interpolator of a filter's Interpolator property (InterpolatorKind.h);
 /// fails with a message listing the valid values when `code` is out of range.
 Status interpolatorOf(int code, InterpolatorKind& kind);
+
+/// A filter property and its documented range (the plugin XML's domain).
+struct PropertyRange
+{
+  const char* Name;
+  double Value, Low, High;
+};
+
+/// The first property outside its range, refused with its name and range
+/// (a value is never clamped); ok when all are inside.
+Status checkPropertyRanges(std::initializer_list<PropertyRange> ranges);
 
 /// Progress and abort of a vtkAlgorithm: UpdateProgress + AbortExecute.
 class AlgorithmInterrupter final : public Interrupter

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // Runs serially and under `mpiexec -n 2`: the forest is partitioned, the
 // global octant count does not depend on the number of ranks.
+#include "sltk/mpi/MpiCommunicator.h"
 #include "sltk/octree/Forest.h"
 
 #include <gtest/gtest.h>
@@ -8,10 +9,12 @@
 
 TEST(Forest, UniformRefinementCountsOctants)
 {
+  std::unique_ptr<sltk::mpi::MpiCommunicator> world;
+  ASSERT_TRUE(sltk::mpi::MpiCommunicator::world(world).isOk());
   for (int level = 0; level <= 4; ++level)
   {
     std::unique_ptr<sltk::octree::Forest> forest;
-    ASSERT_TRUE(sltk::octree::Forest::createUniform(nullptr, level, forest).isOk());
+    ASSERT_TRUE(sltk::octree::Forest::createUniform(*world, level, forest).isOk());
     EXPECT_EQ(forest->globalOctants(), std::int64_t(1) << (3 * level));
     long long local = forest->localOctants(), sum = 0;
     MPI_Allreduce(&local, &sum, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
@@ -28,25 +31,7 @@ TEST(Forest, UniformRefinementCountsOctants)
 TEST(Forest, RejectsAbsurdLevels)
 {
   std::unique_ptr<sltk::octree::Forest> forest;
-  auto s = sltk::octree::Forest::createUniform(nullptr, 40, forest);
+  auto s = sltk::octree::Forest::createUniform(sltk::serialCommunicator(), 40, forest);
   EXPECT_EQ(s.code(), sltk::StatusCode::InvalidArgument);
   EXPECT_EQ(forest, nullptr);
-}
-
-int main(int argc, char** argv)
-{
-  MPI_Init(&argc, &argv);
-  ::testing::InitGoogleTest(&argc, argv);
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (rank != 0)
-  {
-    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
-    delete listeners.Release(listeners.default_result_printer());
-  }
-  int failed = RUN_ALL_TESTS();
-  int anyFailed = 0;
-  MPI_Allreduce(&failed, &anyFailed, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  MPI_Finalize();
-  return anyFailed;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "reconstruction/Scans.h"
 
+#include "common/ReadXyz.h"
 #include "reconstruction/Report.h"
 
 #include "sltk/exec/Memory.h"
@@ -17,28 +18,6 @@ namespace sltkbench
 namespace
 {
 const double NaN = std::nan("");
-
-/// x y z per line; other lines are skipped. False when nothing was read.
-bool readXyz(const std::string& path, sltk::PointCloud<3>& cloud)
-{
-  std::ifstream in(path);
-  if (!in)
-  {
-    return false;
-  }
-  std::string line;
-  while (std::getline(in, line))
-  {
-    std::istringstream s(line);
-    std::array<double, 3> p{};
-    if (s >> p[0] >> p[1] >> p[2])
-    {
-      cloud.Points.push_back(p);
-    }
-  }
-  return !cloud.Points.empty();
-}
-
 } // namespace
 
 void runScan(const ScanCase& c, const std::vector<std::string>& interps, const ReconstructionBenchOptions& args,

@@ -6,6 +6,7 @@
 #include "sltk/cloud/LocalSpacing.h"
 #include "sltk/recon/AutomaticParameters.h"
 #include "sltk/recon/CloudInitialData.h"
+#include "sltk/recon/CloudPreparation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,12 +17,6 @@ namespace sltk
 
 namespace
 {
-/// Coarser buckets than the locator's default (2 points): the first bands of run 1
-/// lie K_P h_P (4.4.4) from the cloud, where a fine bucket grid makes every
-/// nearest-point query scan thousands of empty buckets (K_P = 16 on merged
-/// scans: run 1 took 40% less time); the distances are the same exact ones.
-constexpr double PointsPerBucket = 16.0;
-
 /// How far outside the cloud's box run 1's initial surface reaches: K_P h_P
 /// (4.4.4), or the bounding ellipsoid's overhang.
 template <int D>
@@ -86,12 +81,7 @@ namespace
 template <int D>
 Status locate(PointCloud<D> cloud, ReconstructionPlan<D>& plan, const Context& ctx)
 {
-  plan.Locator.reset();
-  plan.Box = UnitBox<D>(boundingBox(cloud));
-  plan.Box.toUnit(cloud);
-  plan.Cloud = std::move(cloud);
-  plan.Locator = std::make_unique<const PointLocator<D>>(plan.Cloud, PointsPerBucket);
-  return cloudSpacing(*plan.Locator, ctx, plan.CloudSpacing); // h_P (4.36)
+  return placeInUnitBox(std::move(cloud), ctx, plan.Cloud, plan.Box, plan.Locator, plan.CloudSpacing);
 }
 
 std::string number(double value)
@@ -159,14 +149,7 @@ Status planReconstruction(
   plan.Choices.clear();
   plan.Enclosure.reset();
   SLTK_RETURN_IF_ERROR(validateReconstructionOptions<D>(options));
-  SLTK_RETURN_IF_ERROR(validateCloud(cloud));
-  // Cleaning comes before the unit box (4.5): an outlier would otherwise set its scale.
-  SLTK_RETURN_IF_ERROR(cleanCloud(cloud, options.Cleaning, ctx, plan.Cleaning));
-  const Status valid = validateCloud(cloud);
-  if (!valid.isOk())
-  {
-    return Status::invalidArgument("after cleaning: " + valid.message() + "; relax outlier removal or thinning");
-  }
+  SLTK_RETURN_IF_ERROR(checkAndCleanCloud(cloud, options.Cleaning, ctx, plan.Cleaning));
   if (plan.Cleaning.AutomaticOutliers)
   {
     plan.Choices.push_back("outliers: gross ones found, " + std::to_string(plan.Cleaning.OutliersRemoved) +

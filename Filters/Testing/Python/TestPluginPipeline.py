@@ -81,8 +81,28 @@ recon.UpdatePipeline()
 assert recon.GetDataInformation().GetNumberOfPoints() == 0, "p < 1 is refused"
 recon.RunParameters = []
 
-octree = OctreeSignedDistancefromPoints(Input=cloud)
+octree = OctreeSignedDistancefromPoints(Input=cloud, MinimumLevel=2, MaximumLevel=5)
 octree.UpdatePipeline()
 assert octree.GetDataInformation().GetDataClassName() == "vtkHyperTreeGrid", \
     octree.GetDataInformation().GetDataClassName()
+arrays = octree.CellData.keys()
+assert {"DistanceToCloud", "Level", "Rank"} <= set(arrays) and "SignedDistance" not in arrays, arrays
+assert octree.CellData["Level"].GetRange() == (0.0, 5.0), octree.CellData["Level"].GetRange()
+# VTK's own HyperTreeGrid filters take the output: the dual grid, contoured at a distance
+# of 0.1 from the sphere's points, gives two shells (inside and outside) around radius 1.
+dual = HyperTreeGridToDualGrid(Input=octree)
+shell = Contour(Input=dual, ContourBy=["POINTS", "DistanceToCloud"], Isosurfaces=[0.1])
+shell.UpdatePipeline()
+bounds = shell.GetDataInformation().GetBounds()
+assert shell.GetDataInformation().GetNumberOfCells() > 100 and abs(bounds[1] - 1.1) < 0.05, bounds
+# Saved as .htg and read back. DataMode Binary: ParaView 5.11's default (appended) writes an
+# unreadable header for hyper tree grids with several cell arrays (Documentation/Toolchain.md).
+import os, tempfile
+with tempfile.TemporaryDirectory() as folder:
+    saved = os.path.join(folder, "octree.htg")
+    SaveData(saved, proxy=octree, DataMode="Binary")
+    back = HyperTreeGridReader(FileNames=[saved])
+    back.UpdatePipeline()
+    assert back.GetDataInformation().GetNumberOfCells() == octree.GetDataInformation().GetNumberOfCells()
+    assert back.CellData["DistanceToCloud"].GetRange() == octree.CellData["DistanceToCloud"].GetRange()
 print("pvpython plugin pipeline ok")

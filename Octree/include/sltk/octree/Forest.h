@@ -5,10 +5,11 @@
 /// vtkOctreeSDF. This first piece owns the forest and refines it uniformly;
 /// the adaptive level-set machinery builds on it.
 ///
-/// The communicator is passed as an opaque handle (an MPI_Comm cast to
-/// void*), so this header needs neither mpi.h nor p4est headers.
+/// The ranks are those of a communicator seam (sltk/exec/Communicator.h:
+/// SLTK::Mpi's, or the serial one), so this header needs neither mpi.h nor
+/// p4est headers.
 
-#include "sltk/core/Status.h"
+#include "sltk/exec/Communicator.h"
 
 #include <cstdint>
 #include <memory>
@@ -22,8 +23,8 @@ class Forest
 {
 public:
   /// A single-tree unit cube [0,1]^3 forest on the communicator, refined
-  /// uniformly to `level`. MPI must be initialised by the caller.
-  static Status createUniform(void* mpiComm, int level, std::unique_ptr<Forest>& forest);
+  /// uniformly to `level`.
+  static Status createUniform(const Communicator& comm, int level, std::unique_ptr<Forest>& forest);
   ~Forest();
 
   std::int64_t globalOctants() const;

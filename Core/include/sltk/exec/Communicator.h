@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file Communicator.h
+/// The communicator seam (Documentation/Architecture.md, "Communicator
+/// seam"): the collective operations Core algorithms need across processes
+/// (MPI ranks), with a serial implementation as the default, so that Core is
+/// correct with one rank and no public header needs mpi.h. The MPI
+/// implementation is SLTK::Mpi (Mpi/include/sltk/mpi/MpiCommunicator.h); the
+/// filters build it from VTK's controller, the CLI from MPI directly.
+///
+/// Every operation is collective: all ranks call it, in the same order, with
+/// the same counts where a count is said to be the same. A rank that fails
+/// locally must still reach the next collective call; agree() is the call
+/// that turns a failure on one rank into the same error on every rank, so
+/// that no rank waits in a collective the failed rank never enters.
+
+#include "sltk/core/Status.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <type_traits>
+#include <vector>
+
+namespace sltk
+{
+
+enum class ReduceOp
+{
+  Sum,
+  Min,
+  Max
+};
+
+class Communicator
+{
+public:
+  virtual ~Communicator() = default;
+
+  virtual int rank() const = 0;
+  virtual int size() const = 0;
+  virtual void barrier() const = 0;
+
+  /// In place, element-wise over the ranks: values[i] = op_r values_r[i].
+  /// Every rank passes the same count. Sums of doubles are reduced in the
+  /// implementation's order (MPI: not necessarily rank order), so a sum can
+  /// differ in its last bits between rank counts; min and max are exact.
+  virtual void allReduce(double* values, std::size_t count, ReduceOp op) const = 0;
+  virtual void allReduce(std::int64_t* values, std::size_t count, ReduceOp op) const = 0;
+
+  /// Copies `count` bytes of rank `root` into `bytes` on every rank (the same count everywhere).
+  virtual void broadcast(void* bytes, std::size_t count, int root) const = 0;
+
+  /// out = the `count` bytes of rank 0, then of rank 1, ... (the same count
+  /// everywhere; out holds size() * count bytes).
+  virtual void allGather(const void* bytes, std::size_t count, void* out) const = 0;
+
+  /// out = every rank's bytes in rank order, counts[r] = bytes of rank r
+  /// (counts may differ, and be 0).
+  virtual void allGatherV(
+    const void* bytes, std::size_t count, std::vector<unsigned char>& out, std::vector<std::int64_t>& counts) const = 0;
+
+  /// The implementation's native handle (SLTK::Mpi: a pointer to its
+  /// MPI_Comm, which p4est takes); nullptr for the serial communicator.
+  virtual void* nativeHandle() const { return nullptr; }
+
+  /// One value reduced over the ranks.
+  double allReduce(double value, ReduceOp op) const
+  {
+    this->allReduce(&value, 1, op);
+    return value;
+  }
+  std::int64_t allReduce(std::int64_t value, ReduceOp op) const
+  {
+    this->allReduce(&value, 1, op);
+    return value;
+  }
+
+  /// Every rank's elements, in rank order (T trivially copyable);
+  /// `counts` (optional) receives the element count of every rank.
+  template <class T>
+  std::vector<T> allGatherV(const std::vector<T>& local, std::vector<std::int64_t>* counts = nullptr) const
+  {
+    static_assert(std::is_trivially_copyable<T>::value, "allGatherV sends raw bytes");
+    std::vector<unsigned char> bytes;
+    std::vector<std::int64_t> byteCounts;
+    this->allGatherV(local.data(), local.size() * sizeof(T), bytes, byteCounts);
+    std::vector<T> all(bytes.size() / sizeof(T));
+    if (!all.empty())
+    {
+      std::memcpy(static_cast<void*>(all.data()), bytes.data(), bytes.size());
+    }
+    if (counts)
+    {
+      counts->clear();
+      for (std::int64_t c : byteCounts)
+      {
+        counts->push_back(c / static_cast<std::int64_t>(sizeof(T)));
+      }
+    }
+    return all;
+  }
+
+  /// The collective status agreement: every rank passes its own status and
+  /// every rank receives the same one: ok when all are ok, otherwise the
+  /// error of the lowest failing rank (code and message, the message
+  /// prefixed with "rank R of N: " when there is more than one rank).
+  Status agree(const Status& local) const;
+};
+
+/// The one-rank communicator (no MPI): every collective is a copy or nothing.
+const Communicator& serialCommunicator();
+
+/// A new serial communicator, for owners that hold any communicator by pointer.
+std::unique_ptr<Communicator> newSerialCommunicator();
+
+} // namespace sltk

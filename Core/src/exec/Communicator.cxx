@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/exec/Communicator.h"
+
+#include <string>
+
+namespace sltk
+{
+
+Status Communicator::agree(const Status& local) const
+{
+  const int ranks = this->size();
+  if (ranks == 1)
+  {
+    return local;
+  }
+  // The lowest failing rank, or `ranks` when every rank is ok.
+  const std::int64_t first =
+    this->allReduce(static_cast<std::int64_t>(local.isOk() ? ranks : this->rank()), ReduceOp::Min);
+  if (first == ranks)
+  {
+    return Status::ok();
+  }
+  const int root = static_cast<int>(first);
+  std::int64_t header[2] = { static_cast<std::int64_t>(local.code()),
+    static_cast<std::int64_t>(local.message().size()) };
+  this->broadcast(header, sizeof(header), root);
+  std::string message(static_cast<size_t>(header[1]), '\0');
+  if (this->rank() == root)
+  {
+    message = local.message();
+  }
+  if (!message.empty())
+  {
+    this->broadcast(&message[0], message.size(), root);
+  }
+  return Status(static_cast<StatusCode>(header[0]),
+    "rank " + std::to_string(root) + " of " + std::to_string(ranks) + ": " + message);
+}
+
+namespace
+{
+class SerialCommunicator final : public Communicator
+{
+public:
+  int rank() const override { return 0; }
+  int size() const override { return 1; }
+  void barrier() const override {}
+  void allReduce(double*, std::size_t, ReduceOp) const override {}
+  void allReduce(std::int64_t*, std::size_t, ReduceOp) const override {}
+  void broadcast(void*, std::size_t, int) const override {}
+  void allGather(const void* bytes, std::size_t count, void* out) const override
+  {
+    if (count)
+    {
+      std::memcpy(out, bytes, count);
+    }
+  }
+  void allGatherV(const void* bytes, std::size_t count, std::vector<unsigned char>& out,
+    std::vector<std::int64_t>& counts) const override
+  {
+    const auto* b = static_cast<const unsigned char*>(bytes);
+    out.assign(b, b + count);
+    counts.assign(1, static_cast<std::int64_t>(count));
+  }
+};
+} // namespace
+
+const Communicator& serialCommunicator()
+{
+  static const SerialCommunicator serial;
+  return serial;
+}
+
+std::unique_ptr<Communicator> newSerialCommunicator()
+{
+  return std::make_unique<SerialCommunicator>();
+}
+
+} // namespace sltk
