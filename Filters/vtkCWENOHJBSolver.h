@@ -69,15 +69,17 @@ public:
   };
 
   ///@{
-  /// The thesis test to solve. Default TEST1_ROTATION.
-  vtkSetClampMacro(Preset, int, CUSTOM, TEST5_ZERMELO);
+  /// The thesis test to solve. Default TEST1_ROTATION. Like every property with
+  /// a range below, a value outside it is refused by the next update with its
+  /// name and range, never clamped.
+  vtkSetMacro(Preset, int);
   vtkGetMacro(Preset, int);
   ///@}
 
   ///@{
   /// N: nodes per direction, both ends included (Test 3: distinct periodic nodes;
   /// Test 5: along x, y follows the domain). Default 81, range 5-100000.
-  vtkSetClampMacro(NumberOfNodes, int, 5, 100000);
+  vtkSetMacro(NumberOfNodes, int);
   vtkGetMacro(NumberOfNodes, int);
   ///@}
 
@@ -90,7 +92,7 @@ public:
   ///@{
   /// Courant number lambda: dt = lambda dx (custom: the smallest spacing); 0: the
   /// preset's (Test 1: 3, Test 2: 10, Test 4: 1.25, Tests 3 and 5: 1; custom: 1). Default 0, range 0-100.
-  vtkSetClampMacro(CourantNumber, double, 0.0, 100.0);
+  vtkSetMacro(CourantNumber, double);
   vtkGetMacro(CourantNumber, double);
   ///@}
 
@@ -103,7 +105,7 @@ public:
 
   ///@{
   /// Threads; 0 means all hardware threads. Default 0.
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkSetMacro(NumberOfThreads, int);
   vtkGetMacro(NumberOfThreads, int);
   ///@}
 
@@ -168,9 +170,9 @@ public:
 
   ///@{
   /// Custom problem: the control set A and its dimension m (a1..am). Default NO_CONTROL, m = 1.
-  vtkSetClampMacro(ControlSet, int, NO_CONTROL, SPHERE);
+  vtkSetMacro(ControlSet, int);
   vtkGetMacro(ControlSet, int);
-  vtkSetClampMacro(ControlDimension, int, 1, 3);
+  vtkSetMacro(ControlDimension, int);
   vtkGetMacro(ControlDimension, int);
   vtkSetVector3Macro(ControlLowerBound, double);
   vtkGetVector3Macro(ControlLowerBound, double);
@@ -184,7 +186,7 @@ public:
 
   ///@{
   /// Custom problem: RK order of the feet (3.8) and of the cost quadrature (3.9). Default 3.
-  vtkSetClampMacro(RKOrder, int, 1, 3);
+  vtkSetMacro(RKOrder, int);
   vtkGetMacro(RKOrder, int);
   ///@}
 
@@ -192,7 +194,7 @@ public:
   /// Custom problem, minimisation over A (thesis 3.2): tabulation points per
   /// axis of A, then Nelder-Mead (golden section in 1D) to this tolerance on
   /// the control; one control per RK stage (A^nu) or one per step. Defaults 33, 1e-8, on.
-  vtkSetClampMacro(TabulationPoints, int, 1, 1000);
+  vtkSetMacro(TabulationPoints, int);
   vtkGetMacro(TabulationPoints, int);
   ///@}
 
@@ -203,9 +205,9 @@ public:
   /// control parameters): ~8x fewer evaluations where the optimal control
   /// moves continuously in time (Test 4), but it can miss the global minimum
   /// where the control jumps. 0..15.
-  vtkSetClampMacro(WarmStartPoints, int, 0, 15);
+  vtkSetMacro(WarmStartPoints, int);
   vtkGetMacro(WarmStartPoints, int);
-  vtkSetClampMacro(MinimizerTolerance, double, 0.0, 1.0);
+  vtkSetMacro(MinimizerTolerance, double);
   vtkGetMacro(MinimizerTolerance, double);
   vtkSetMacro(PerStageControls, vtkTypeBool);
   vtkGetMacro(PerStageControls, vtkTypeBool);

@@ -3,6 +3,7 @@
 
 #include "SLTKBridge.h"
 #include "SLTKCommunicator.h"
+#include "SLTKGuard.h"
 #ifdef SLTK_HAS_OCTREE
 #include "SLTKOctreeOutput.h"
 #include "sltk/octree/CloudForest.h"
@@ -90,7 +91,7 @@ vtkTypeBool vtkOctreeSDF::ProcessRequest(
   }
   if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
   {
-    return this->RequestData(request, inputVector, outputVector);
+    return sltk::vtkbridge::guardedRequest(this, [&] { return this->RequestData(request, inputVector, outputVector); });
   }
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }

@@ -6,6 +6,7 @@
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkHyperTreeGrid.h"
 #include "vtkImageData.h"
@@ -102,7 +103,8 @@ int main()
     solver->UpdateWholeExtent();
     check(solver->GetOutput()->GetPointData()->GetArray("ReachTime") != nullptr, "HJB Test 5 outputs ReachTime");
     solver->SetNumberOfNodes(1000000);
-    check(solver->GetNumberOfNodes() == 100000, "NumberOfNodes is clamped");
+    check(solver->GetNumberOfNodes() == 1000000, "NumberOfNodes is kept as given, not clamped");
+    check(solver->GetExecutive()->Update() == 0, "NumberOfNodes out of range is refused when the filter runs");
   }
 
   // Reconstruction: bad inputs fail cleanly; a sphere cloud gives a signed distance and a surface.

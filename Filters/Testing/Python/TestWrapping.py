@@ -45,6 +45,20 @@ for name, bad in (("NumberOfRuns", 100), ("Padding", 1), ("ThinningFactor", -1.0
     getattr(recon, "Set" + name)({"NumberOfRuns": 3, "Padding": 10, "ThinningFactor": 0.0, "NumberOfThreads": 0}[name])
 assert "NumberOfRuns: 3" in str(recon)
 
+hjb_errors = []
+solver.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: hjb_errors.append(event))
+for name, bad, good in (("NumberOfNodes", 3, 31), ("CourantNumber", -1.0, 0.0), ("TabulationPoints", 0, 33),
+                        ("NumberOfThreads", 100000, 0), ("Preset", 9, 1), ("FinalTime", 1e9, 0.0)):
+    getattr(solver, "Set" + name)(bad)
+    assert getattr(solver, "Get" + name)() == bad, name + " is kept as given, not clamped"
+    del hjb_errors[:]
+    solver.Update()  # a refused property (or 1e9 / dt steps) is an error, not a clamp, a crash or hours of work
+    assert hjb_errors, name + " out of range is refused when the HJB filter runs"
+    getattr(solver, "Set" + name)(good)
+del hjb_errors[:]
+solver.Update()
+assert not hjb_errors and solver.GetOutput().GetDimensions() == (31, 31, 1), "back in range, the filter runs"
+
 octree = sltk.vtkOctreeSDF()
 assert octree.GetOutputPortInformation(0).Get(vtkDataObject.DATA_TYPE_NAME()) == "vtkHyperTreeGrid"
 print("python wrapping ok")
