@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 vtkStandardNewMacro(vtkCWENOHJBSolver);
@@ -343,6 +344,20 @@ int vtkCWENOHJBSolver::RequestData(
   }
   sltk::HjbRunResult result;
   this->Solver->result(result);
+  if (!result.ExactNotFiniteAt.empty())
+  {
+    // The error norms would be NaN: say where the formula fails instead of dropping them.
+    std::ostringstream where;
+    const auto& at = result.ExactNotFiniteAt;
+    for (size_t a = 0; a + 1 < at.size(); ++a)
+    {
+      where << (a ? ", " : "") << "xyz"[a] << " = " << at[a];
+    }
+    vtkErrorMacro("ExactSolution '" << (this->ExactSolution ? this->ExactSolution : "") << "' (sltk hjb --exact) is "
+                                    << at.back() << " at t = " << result.FinalTime << ", " << where.str()
+                                    << ": give a formula that is finite on the whole domain");
+    return 0;
+  }
   vtkImageData* output = vtkImageData::GetData(outInfo);
   int extent[6];
   outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);

@@ -118,6 +118,31 @@ std::string HjbCustomProblem::apply(vtkCWENOHJBSolver* solver) const
   {
     return "--domain takes pairs lower,upper per axis, got " + std::to_string(this->Domain.size()) + " numbers";
   }
+  // Options for an axis or a control the problem does not have are mistakes, not ignored.
+  const size_t dimension = this->Nodes.size();
+  const std::string problem =
+    std::to_string(dimension) + "D problem (--nodes gives " + std::to_string(dimension) + " axes)";
+  if (!this->Domain.empty() && this->Domain.size() != 2 * dimension)
+  {
+    return "--domain gives " + std::to_string(this->Domain.size() / 2) + " axes for a " + problem +
+      ": give one lower,upper pair per axis";
+  }
+  const char* const components[3] = { "--fx", "--fy", "--fz" };
+  for (size_t a = dimension; a < 3; ++a)
+  {
+    if (this->Dynamics[a] != "0") // the default: an unused axis does not move
+    {
+      return std::string(components[a]) + " is given for a " + problem + ": drop it or add an axis to --nodes";
+    }
+  }
+  for (size_t k = static_cast<size_t>(this->ControlDimension); k < 3; ++k)
+  {
+    if (!this->Argmin[k].empty())
+    {
+      return "--argmin" + std::to_string(k + 1) + " is given for " + std::to_string(this->ControlDimension) +
+        " control(s) (--control-dim): drop it or raise --control-dim";
+    }
+  }
   int dims[3] = { 1, 1, 1 };
   for (size_t a = 0; a < this->Nodes.size(); ++a)
   {

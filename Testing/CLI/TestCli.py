@@ -201,6 +201,18 @@ expect(rc == 1 and "more than 1e+06" in err and "final time" in err, "a final ti
 rc, _, err = run("hjb", "--fx", "a1", "--fy", "a2", "--controls", "box", "--control-dim", "2", "--v0", "x",
                  "--nodes", "21,21", "--domain", "-1,1,-1,1", "--final-time", "1", "--courant", "1e-9")
 expect(rc == 1 and "Courant" in err and "1e+10 steps" in err, "a Courant number of 1e-9 is refused up front: " + err.strip())
+# Options for an axis or control the problem does not have, and an exact solution that is not a number.
+custom2d = ["hjb", "--fx", "a1", "--fy", "a2", "--controls", "box", "--control-dim", "2", "--v0", "x",
+            "--nodes", "21,21", "--final-time", "0.1"]
+rc, _, err = run(*custom2d, "--fz", "1")
+expect(rc == 2 and "--fz is given for a 2D problem" in err, "--fz in 2D is a usage error: " + err.strip())
+rc, _, err = run(*custom2d, "--domain", "-1,1,-1,1,-1,1")
+expect(rc == 2 and "--domain gives 3 axes for a 2D problem" in err, "a third --domain pair in 2D is a usage error: " + err.strip())
+rc, _, err = run(*custom2d, "--argmin3", "1")
+expect(rc == 2 and "--argmin3 is given for 2 control(s)" in err, "--argmin3 with 2 controls is a usage error: " + err.strip())
+rc, _, err = run(*custom2d, "--exact", "0/0", "--json", os.path.join(tmp, "exact.json"))
+expect(rc == 1 and "--exact" in err and "x = -1, y = -1" in err and not os.path.exists(os.path.join(tmp, "exact.json")),
+       "--exact 0/0 is an error naming where, not vanishing norms: " + err.strip())
 rc, _, err = run("frobnicate")
 expect(rc == 2 and "frobnicate" in err, "an unknown command is usage error 2")
 rc, out, _ = run()

@@ -147,10 +147,18 @@ private:
     const double t = this->time();
     out.L1Error = l1Error(this->U, [&](const std::array<double, D>& x) { return this->P.Exact(t, x); });
     double worst = 0.0;
+    out.ExactNotFiniteAt.clear();
     for (Index k = 0; k < this->Spec.nodeCount(); ++k)
     {
       const auto i = this->U.nodeIndex(k);
-      worst = std::max(worst, std::fabs(this->U(i) - this->P.Exact(t, nodePoint(this->Spec, i))));
+      const auto x = nodePoint(this->Spec, i);
+      const double exact = this->P.Exact(t, x);
+      if (!std::isfinite(exact) && out.ExactNotFiniteAt.empty())
+      {
+        out.ExactNotFiniteAt.assign(x.begin(), x.end());
+        out.ExactNotFiniteAt.push_back(exact);
+      }
+      worst = std::max(worst, std::fabs(this->U(i) - exact));
     }
     out.LinfError = worst;
   }

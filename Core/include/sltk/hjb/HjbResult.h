@@ -33,6 +33,9 @@ struct HjbRunResult
   double FinalTime = 0.0;
   double L1Error = std::numeric_limits<double>::quiet_NaN(); ///< when an exact solution is known
   double LinfError = std::numeric_limits<double>::quiet_NaN();
+  /// Where the exact solution first is not a finite number (NaN or +-inf), with
+  /// its value; empty when it is finite at every node (or unknown).
+  std::vector<double> ExactNotFiniteAt;
   Index Steps = 0;
   double EvaluationsPerNode = 0.0;
 };
