@@ -10,6 +10,7 @@
 #include "sltk/recon/ExactDistanceCache.h"
 #include "sltk/recon/LevelSetStep.h"
 #include "sltk/recon/LocalOffset.h"
+#include "sltk/recon/StoppingRule.h"
 
 #include <algorithm>
 #include <chrono>
@@ -22,18 +23,6 @@ namespace sltk
 namespace
 {
 constexpr int PhiGhost = 2; // WENO3 / CWENO stencils (Q1 needs 1)
-/// A point is far from the surface beyond one cell of run 1 (C_dx h_P, at least h_P); the last
-/// run warns (and reconstruct() starts finer, when C_dx is automatic) when more
-/// than FarPointWarning of the points are. Measured after the last run with the
-/// automatic parameters: the sparse npm bunny (1,839 points, C_dx = 1), whose
-/// ears (one spacing thick) collapse in run 1: 2.7%; the Stanford bunny 0.03%,
-/// the merged scans 0.8% at one h_P but C_dx = 3 there; kitten, frog, fandisk,
-/// teapot: at most 0.4% at one h_P.
-constexpr double FarPointWarning = 0.01;
-/// ReconstructionOptions::FollowFarPoints: the relative fall of the far-point
-/// fraction over one energy window that keeps a stalled run going.
-constexpr double FarPointProgress = 0.1;
-
 double secondsSince(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -125,27 +114,6 @@ void transfer(const GridField<D>& from, const GridSpec<D>& grid, const Context& 
     });
 }
 
-/// The stopping rule (4.33): Delta_E^n = |ebar_{n-1} - ebar_n| / ebar_n with the
-/// mean ebar_n of the last k = min(n, window) energies E_2.
-bool energyStalled(const std::vector<double>& energies, int window, double tolerance)
-{
-  const int n = static_cast<int>(energies.size());
-  if (n < 2)
-  {
-    return false;
-  }
-  const int k = std::min(n - 1, window);
-  double now = 0.0, before = 0.0;
-  for (int j = 0; j < k; ++j)
-  {
-    now += energies[static_cast<size_t>(n - 1 - j)];
-    before += energies[static_cast<size_t>(n - 2 - j)];
-  }
-  now /= k;
-  before /= k;
-  return now > 0.0 && std::fabs(before - now) / now < tolerance;
-}
-
 /// The iterations of one run on its grid (Algorithm 1, step 4).
 template <int D, class Interp>
 Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options, int run, const Context& ctx,
@@ -216,7 +184,7 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
       }
       // Beyond the thesis: stalled by (4.33), but still approaching far points?
       const double fraction = farPointFraction<D, Interp>(phi, cloud, far, ctx);
-      if (fraction <= FarPointWarning || (checkedFar >= 0.0 && fraction > (1.0 - FarPointProgress) * checkedFar))
+      if (!stillApproaching(fraction, checkedFar))
       {
         break;
       }
@@ -360,11 +328,11 @@ void recover(const std::string& what, const Context& ctx, ReconstructionResult<D
   result.Recoveries.push_back(what);
 }
 
-/// The runs of Algorithm 1 on `grids` (options.Runs of them) with `options`
+/// Runs 1..lastRun of Algorithm 1 on `grids` (options.Runs of them) with `options`
 /// (the plan's, or a finer start: reconstruct()).
 template <int D, class Interp>
 Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& options,
-  const std::vector<GridSpec<D>>& grids, const Context& ctx, ReconstructionResult<D>& result)
+  const std::vector<GridSpec<D>>& grids, const Context& ctx, ReconstructionResult<D>& result, int lastRun)
 {
   const PointCloud<D>& cloud = plan.Cloud;
   ExactDistanceCache<D> exact(cloud, *plan.Locator);
@@ -372,7 +340,7 @@ Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& op
   double outsideFactor = options.OutsideThresholdFactor;
   // An automatic K_P may be raised when run 1 loses its zero level set (AutomaticParameters.h).
   const double outsideRoom = plan.Enclosure ? outsideFactorWithRestart(outsideFactor) : outsideFactor;
-  for (int run = 1; run <= options.Runs; ++run)
+  for (int run = 1; run <= lastRun; ++run)
   {
     const GridSpec<D>& grid = grids[static_cast<size_t>(run - 1)];
     ctx.interrupter().start("run " + std::to_string(run) + "/" + std::to_string(options.Runs));
@@ -429,7 +397,7 @@ Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& op
       result.Distance = std::move(dist);
       return status;
     }
-    if (run < options.Runs)
+    if (run < lastRun)
     {
       previous = std::move(phi);
       previousDist = std::move(dist);
@@ -440,25 +408,6 @@ Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& op
   return Status::ok();
 }
 
-/// Records of a unit-box run in the user's units: E_2 ~ length^((2 + D - 1) / 2).
-template <int D>
-void recordsToUser(const UnitBox<D>& box, ReconstructionResult<D>& result)
-{
-  const double energyScale = std::pow(box.Scale, (2.0 + D - 1.0) / 2.0);
-  for (auto& it : result.History)
-  {
-    it.Energy *= energyScale;
-    it.CloudError *= box.Scale;
-  }
-  for (auto& run : result.Runs)
-  {
-    run.Grid = box.toUser(run.Grid);
-    run.Energy *= energyScale;
-    run.CloudError *= box.Scale;
-  }
-  box.toUser(result.SignedDistance);
-  box.toUser(result.Distance);
-}
 } // namespace
 
 template <int D>
@@ -474,7 +423,7 @@ Status reconstruct(const ReconstructionPlan<D>& plan, const Context& ctx, Recons
     result.OutsideThresholdFactor = options.OutsideThresholdFactor;
     result.CellSizeFactor = options.CellSizeFactor;
     return withInterpolator<D>(options.Interpolator,
-      [&](auto tag) { return runAll<D, typename decltype(tag)::type>(plan, options, grids, ctx, result); });
+      [&](auto tag) { return runAll<D, typename decltype(tag)::type>(plan, options, grids, ctx, result, options.Runs); });
   };
   Status status = runWith(plan.Options, plan.Grids.Runs);
   ReconstructionOptions finer = plan.Options;
@@ -503,7 +452,29 @@ Status reconstruct(const ReconstructionPlan<D>& plan, const Context& ctx, Recons
   result.Cleaning = plan.Cleaning;
   result.Choices = plan.Choices;
   recordsToUser(plan.Box, result);
+  plan.Box.toUser(result.SignedDistance);
+  plan.Box.toUser(result.Distance);
   return status;
+}
+
+template <int D>
+Status reconstructFirstRuns(const ReconstructionPlan<D>& plan, int runs, const Context& ctx, ReconstructionResult<D>& result)
+{
+  result = ReconstructionResult<D>{};
+  if (!plan.Locator || runs < 1 || runs > plan.Options.Runs ||
+    plan.Grids.Runs.size() != static_cast<size_t>(plan.Options.Runs))
+  {
+    return Status::invalidArgument("reconstructFirstRuns: the plan is incomplete or has fewer runs than asked");
+  }
+  result.OutsideThresholdFactor = plan.Options.OutsideThresholdFactor;
+  result.CellSizeFactor = plan.Options.CellSizeFactor;
+  result.CloudSpacing = plan.CloudSpacing;
+  result.Cleaning = plan.Cleaning;
+  result.Choices = plan.Choices;
+  return withInterpolator<D>(plan.Options.Interpolator,
+    [&](auto tag) {
+      return runAll<D, typename decltype(tag)::type>(plan, plan.Options, plan.Grids.Runs, ctx, result, runs);
+    });
 }
 
 template <int D>
@@ -521,6 +492,8 @@ template Status reconstruct(
 template Status reconstruct(
   const PointCloud<3>&, const ReconstructionOptions&, const Context&, ReconstructionResult<3>&);
 template Status reconstruct(const ReconstructionPlan<2>&, const Context&, ReconstructionResult<2>&);
+template Status reconstructFirstRuns(const ReconstructionPlan<2>&, int, const Context&, ReconstructionResult<2>&);
+template Status reconstructFirstRuns(const ReconstructionPlan<3>&, int, const Context&, ReconstructionResult<3>&);
 template Status reconstruct(const ReconstructionPlan<3>&, const Context&, ReconstructionResult<3>&);
 
 } // namespace sltk

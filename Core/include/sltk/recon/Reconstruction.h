@@ -20,6 +20,8 @@
 #include "sltk/recon/ReconstructionOptions.h"
 #include "sltk/recon/ReconstructionPlan.h"
 
+#include <cmath>
+
 #include <string>
 #include <vector>
 
@@ -58,11 +60,40 @@ Status reconstruct(const PointCloud<D>& cloud, const ReconstructionOptions& opti
 template <int D>
 Status reconstruct(const ReconstructionPlan<D>& plan, const Context& ctx, ReconstructionResult<D>& result);
 
+/// The records of a unit-box reconstruction (History and Runs) in the user's
+/// units: lengths times box.Scale, E_2 ~ length^((2 + D - 1) / 2). The fields
+/// are left as they are.
+template <int D>
+void recordsToUser(const UnitBox<D>& box, ReconstructionResult<D>& result)
+{
+  const double energyScale = std::pow(box.Scale, (2.0 + D - 1.0) / 2.0);
+  for (auto& it : result.History)
+  {
+    it.Energy *= energyScale;
+    it.CloudError *= box.Scale;
+  }
+  for (auto& run : result.Runs)
+  {
+    run.Grid = box.toUser(run.Grid);
+    run.Energy *= energyScale;
+    run.CloudError *= box.Scale;
+  }
+}
+
+/// Runs 1..`runs` of Algorithm 1 on the plan's uniform grids, with the same
+/// recoveries as reconstruct() for run 1 (a wider K_P) but not the finer
+/// restart, and leaves the result in unit-box units (4.5): the first run of
+/// the tiled reconstruction (tiled/TiledReconstruction.h).
+template <int D>
+Status reconstructFirstRuns(const ReconstructionPlan<D>& plan, int runs, const Context& ctx, ReconstructionResult<D>& result);
+
 extern template Status reconstruct(
   const PointCloud<2>&, const ReconstructionOptions&, const Context&, ReconstructionResult<2>&);
 extern template Status reconstruct(
   const PointCloud<3>&, const ReconstructionOptions&, const Context&, ReconstructionResult<3>&);
 extern template Status reconstruct(const ReconstructionPlan<2>&, const Context&, ReconstructionResult<2>&);
 extern template Status reconstruct(const ReconstructionPlan<3>&, const Context&, ReconstructionResult<3>&);
+extern template Status reconstructFirstRuns(const ReconstructionPlan<2>&, int, const Context&, ReconstructionResult<2>&);
+extern template Status reconstructFirstRuns(const ReconstructionPlan<3>&, int, const Context&, ReconstructionResult<3>&);
 
 } // namespace sltk

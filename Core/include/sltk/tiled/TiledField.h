@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file TiledField.h
+/// A level-set function and the distance to the cloud stored only near the
+/// front: the nodes of one run's uniform grid (thesis 4.36) grouped in tiles
+/// of 8^D nodes, of which only the tiles that hold or border the narrow band
+/// (1.48) are allocated (Documentation/Octree.md, "The tiled band").
+///
+/// Every other tile is a slot that records on which side of the front it lies:
+/// phi is +gamma there outside and -gamma inside, the value the cut-off (1.49)
+/// gives the uniform version's nodes away from the front. The slots form a
+/// dense grid over the run's grid (one int32 per 8^D nodes: 8 MB for the
+/// thesis's finest dragon grid of 295M nodes); the stored tiles cost 16 bytes
+/// a node. A band tile whose neighbours are all tiles has every node the
+/// semi-Lagrangian step can reach (its feet are checked, TiledReconstruction)
+/// in the 3^D block of tiles around it: scratch() copies that block into a
+/// uniform GridField, on which the uniform version's kernels run unchanged.
+
+#include "sltk/grid/GridField.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace sltk
+{
+
+constexpr int TileBits = 3;
+constexpr Index TileEdge = Index(1) << TileBits; ///< nodes per tile and axis
+
+template <int D>
+constexpr Index tileNodes()
+{
+  Index n = 1;
+  for (int a = 0; a < D; ++a)
+  {
+    n *= TileEdge;
+  }
+  return n;
+}
+
+template <int D>
+class TiledField
+{
+public:
+  static constexpr std::int32_t Outside = -1; ///< slot without a tile: phi = +gamma
+  static constexpr std::int32_t Inside = -2;  ///< slot without a tile: phi = -gamma
+  static constexpr Index Nodes = tileNodes<D>();
+
+  /// An empty field over `grid` (every slot Outside) with the cut-off value gamma.
+  void reset(const GridSpec<D>& grid, double gamma);
+
+  const GridSpec<D>& grid() const { return this->Grid; }
+  double gamma() const { return this->Gamma; }
+  const std::array<Index, D>& slotDims() const { return this->SlotDims; }
+  Index slotCount() const { return static_cast<Index>(this->Slots.size()); }
+  Index tileCount() const { return static_cast<Index>(this->Origins.size()); }
+
+  /// Slot of tile coordinates t (each in [0, slotDims)).
+  Index slotIndex(const std::array<Index, D>& t) const
+  {
+    Index s = 0;
+    for (int a = D - 1; a >= 0; --a)
+    {
+      s = s * this->SlotDims[a] + t[a];
+    }
+    return s;
+  }
+  std::int32_t slot(Index s) const { return this->Slots[static_cast<size_t>(s)]; }
+  void setSide(Index s, bool inside) { this->Slots[static_cast<size_t>(s)] = inside ? Inside : Outside; }
+  /// Tile coordinates of slot s.
+  std::array<Index, D> slotCoordinates(Index s) const;
+
+  /// Allocates a tile in slot s (when it has none): its phi is the slot's
+  /// +-gamma, its distance 0 until set. Returns the tile's id.
+  std::int32_t addTile(Index s);
+  /// Tile coordinates of tile `id`.
+  const std::array<Index, D>& tileOrigin(std::int32_t id) const { return this->Origins[static_cast<size_t>(id)]; }
+  Index tileSlot(std::int32_t id) const { return this->SlotOf[static_cast<size_t>(id)]; }
+
+  double* phi(std::int32_t id) { return this->Phi.data() + static_cast<size_t>(id) * Nodes; }
+  const double* phi(std::int32_t id) const { return this->Phi.data() + static_cast<size_t>(id) * Nodes; }
+  double* distance(std::int32_t id) { return this->Dist.data() + static_cast<size_t>(id) * Nodes; }
+  const double* distance(std::int32_t id) const { return this->Dist.data() + static_cast<size_t>(id) * Nodes; }
+
+  /// Grid index of node `local` (x fastest, in [0, Nodes)) of tile `id`.
+  std::array<Index, D> node(std::int32_t id, Index local) const
+  {
+    std::array<Index, D> i{};
+    for (int a = 0; a < D; ++a)
+    {
+      i[a] = this->Origins[static_cast<size_t>(id)][a] * TileEdge + ((local >> (TileBits * a)) & (TileEdge - 1));
+    }
+    return i;
+  }
+  std::array<double, D> position(const std::array<Index, D>& i) const
+  {
+    std::array<double, D> x{};
+    for (int a = 0; a < D; ++a)
+    {
+      x[a] = this->Grid.coordinate(a, i[a]);
+    }
+    return x;
+  }
+
+  /// phi at grid index i (any integers: beyond the slots, +gamma).
+  double value(const std::array<Index, D>& i) const;
+
+  /// Whether all 3^D - 1 neighbours of tile `id` are tiles (those beyond the
+  /// slots count as present: phi is +gamma there).
+  bool surrounded(std::int32_t id) const;
+
+  /// Tile `id` and `halo` nodes around it as a uniform field with `ghost`
+  /// ghost layers filled by the grid's boundary policy: phi, and d when
+  /// `dist` is not null. Missing tiles read +-gamma (phi) and 0 (d).
+  void scratch(std::int32_t id, int halo, int ghost, GridField<D>& phi, GridField<D>* dist) const;
+
+  /// Bytes held (tiles and slots).
+  double bytes() const
+  {
+    return static_cast<double>(this->Phi.capacity() + this->Dist.capacity()) * sizeof(double) +
+      static_cast<double>(this->Slots.capacity()) * sizeof(std::int32_t) +
+      static_cast<double>(this->Origins.capacity()) * (sizeof(std::array<Index, D>) + sizeof(Index));
+  }
+
+private:
+  GridSpec<D> Grid;
+  double Gamma = 0.0;
+  std::array<Index, D> SlotDims{};
+  std::vector<std::int32_t> Slots;
+  std::vector<std::array<Index, D>> Origins;
+  std::vector<Index> SlotOf;
+  std::vector<double> Phi, Dist;
+};
+
+extern template class TiledField<2>;
+extern template class TiledField<3>;
+
+} // namespace sltk

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file TiledReconstruction.h
+/// Algorithm 1 (thesis 4.3-4.5) with the memory of runs 2..R proportional to
+/// the surface: the adaptive idea of chapter 5 (refine where |phi| < beta,
+/// 5.2.2; one level more per run, 5.3) on tiles of the uniform grids
+/// (TiledField.h, Documentation/Octree.md "The tiled band").
+///
+///  - Run 1 is the uniform version's (its grid is the coarsest, 1/4^(R-1)
+///    of the finest in 3D, and the outside marking 4.4.4 needs the whole box).
+///  - Run r >= 2 keeps the tiles within one tile of run r-1's band, with phi
+///    transferred by Q1 and d exact at every stored node; every other tile is a
+///    side (+-gamma) taken from the sign of run r-1's phi.
+///  - Every iteration is the uniform version's (4.22)/(4.24) step, energy
+///    (4.29)/(4.30), reinitialisation (4.4.5), cut (1.49) and stopping rule
+///    (4.33), run tile by tile on the 3^D block of tiles around each band tile;
+///    a band tile whose neighbours are not all tiles gets them first, so the
+///    band may move anywhere. The feet of (4.24) must stay within one tile of
+///    their node's tile (checked: an error names the displacement otherwise).
+///  - One deviation: the reinitialisation's pseudo-time steps evaluate the sign
+///    (1.31) from the current iterate rather than from phi0 (the steady state
+///    is the same; every step needs its tiles' neighbours, Documentation/Octree.md).
+///
+/// The result is the uniform version's finest grid, stored sparsely: the
+/// same nodes, with phi = +-gamma where no tile is.
+
+#include "sltk/recon/Reconstruction.h"
+#include "sltk/tiled/TiledField.h"
+
+namespace sltk
+{
+
+/// Storage of one run.
+struct TiledRunRecord
+{
+  int Run = 0;
+  Index Tiles = 0;           ///< tiles at the end of the run
+  Index StoredNodes = 0;     ///< Tiles * 8^D
+  Index UniformNodes = 0;    ///< the uniform grid of the run
+  Index AddedTiles = 0;      ///< tiles added during the run (the band moved)
+  double Bytes = 0.0;        ///< the field's memory at the end of the run
+};
+
+template <int D>
+struct TiledReconstructionResult
+{
+  /// The records of every run and iteration (History, Runs, Choices,
+  /// recoveries...) in the user's units; SignedDistance and Distance are empty.
+  ReconstructionResult<D> Records;
+  TiledField<D> Field; ///< the last run's phi and d, unit-box units (4.5)
+  UnitBox<D> Box;      ///< unit box <-> the user's units
+  std::vector<TiledRunRecord> Storage;
+};
+
+/// Runs Algorithm 1 on the plan (planReconstruction()) with runs >= 2 tiled.
+/// A plan with one run is run 1 alone, stored in tiles.
+template <int D>
+Status reconstructTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReconstructionResult<D>& result);
+
+extern template Status reconstructTiled(const ReconstructionPlan<2>&, const Context&, TiledReconstructionResult<2>&);
+extern template Status reconstructTiled(const ReconstructionPlan<3>&, const Context&, TiledReconstructionResult<3>&);
+
+} // namespace sltk
