@@ -423,7 +423,8 @@ Status reconstruct(const ReconstructionPlan<D>& plan, const Context& ctx, Recons
     result.OutsideThresholdFactor = options.OutsideThresholdFactor;
     result.CellSizeFactor = options.CellSizeFactor;
     return withInterpolator<D>(options.Interpolator,
-      [&](auto tag) { return runAll<D, typename decltype(tag)::type>(plan, options, grids, ctx, result, options.Runs); });
+      [&](auto tag)
+      { return runAll<D, typename decltype(tag)::type>(plan, options, grids, ctx, result, options.Runs); });
   };
   Status status = runWith(plan.Options, plan.Grids.Runs);
   ReconstructionOptions finer = plan.Options;
@@ -458,7 +459,8 @@ Status reconstruct(const ReconstructionPlan<D>& plan, const Context& ctx, Recons
 }
 
 template <int D>
-Status reconstructFirstRuns(const ReconstructionPlan<D>& plan, int runs, const Context& ctx, ReconstructionResult<D>& result)
+Status reconstructFirstRuns(
+  const ReconstructionPlan<D>& plan, int runs, const Context& ctx, ReconstructionResult<D>& result)
 {
   result = ReconstructionResult<D>{};
   if (!plan.Locator || runs < 1 || runs > plan.Options.Runs ||
@@ -472,9 +474,8 @@ Status reconstructFirstRuns(const ReconstructionPlan<D>& plan, int runs, const C
   result.Cleaning = plan.Cleaning;
   result.Choices = plan.Choices;
   return withInterpolator<D>(plan.Options.Interpolator,
-    [&](auto tag) {
-      return runAll<D, typename decltype(tag)::type>(plan, plan.Options, plan.Grids.Runs, ctx, result, runs);
-    });
+    [&](auto tag)
+    { return runAll<D, typename decltype(tag)::type>(plan, plan.Options, plan.Grids.Runs, ctx, result, runs); });
 }
 
 template <int D>

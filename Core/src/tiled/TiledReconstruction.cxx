@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/tiled/TiledReconstruction.h"
 
+#include "TiledReinitialise.h"
 #include "sltk/exec/Memory.h"
 #include "sltk/interp/Interpolators.h"
 #include "sltk/levelset/ReinitInterface.h"
 #include "sltk/recon/EnergyFunctional.h"
 #include "sltk/recon/LevelSetStep.h"
 #include "sltk/recon/StoppingRule.h"
-#include "TiledReinitialise.h"
 
 #include <algorithm>
 #include <chrono>
@@ -19,9 +19,9 @@ namespace sltk
 
 namespace
 {
-constexpr int Ghost = 2;           ///< ghost layers of the scratch fields (WENO3 / CWENO stencils)
-constexpr int StencilReach = 2;    ///< nodes beyond a foot's cell the interpolators read
-constexpr int HaloStep = 4;        ///< the step's halo is a multiple of this (fewer scratch shapes)
+constexpr int Ghost = 2;              ///< ghost layers of the scratch fields (WENO3 / CWENO stencils)
+constexpr int StencilReach = 2;       ///< nodes beyond a foot's cell the interpolators read
+constexpr int HaloStep = 4;           ///< the step's halo is a multiple of this (fewer scratch shapes)
 constexpr int MaxHalo = 4 * TileEdge; ///< the farthest the step reads around a tile
 
 using Clock = std::chrono::steady_clock;
@@ -186,7 +186,8 @@ Status checkTileMemory(const TiledField<D>& field, Index tiles, const Reconstruc
 template <int D>
 void exactDistances(TiledField<D>& field, std::int32_t first, const PointLocator<D>& locator, const Context& ctx)
 {
-  ctx.parallelFor(first, field.tileCount(),
+  ctx.parallelFor(
+    first, field.tileCount(),
     [&](Index b, Index e)
     {
       for (Index id = b; id < e; ++id)
@@ -252,7 +253,8 @@ Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma
       field.addTile(s);
     }
   }
-  ctx.parallelFor(0, field.tileCount(),
+  ctx.parallelFor(
+    0, field.tileCount(),
     [&](Index b, Index e)
     {
       for (Index id = b; id < e; ++id)
@@ -358,7 +360,8 @@ Status tiledEnergy(const TiledField<D>& field, const std::vector<std::int32_t>& 
   const Context serial;
   std::vector<EnergyResult> parts(band.size());
   std::vector<Status> failures(band.size());
-  ctx.parallelFor(0, static_cast<Index>(band.size()),
+  ctx.parallelFor(
+    0, static_cast<Index>(band.size()),
     [&](Index b, Index e)
     {
       TileScratch<D> s;
@@ -397,8 +400,8 @@ Status tiledEnergy(const TiledField<D>& field, const std::vector<std::int32_t>& 
 /// same arithmetic as levelSetStep (the scale (4.32), grad d or, through a
 /// tunnel, grad phi, and the spread of the tangent points).
 template <int D>
-double largestFoot(const GridField<D>& phi, const GridField<D>& dist, const NodeList& nodes,
-  const LevelSetStepParameters& par)
+double largestFoot(
+  const GridField<D>& phi, const GridField<D>& dist, const NodeList& nodes, const LevelSetStepParameters& par)
 {
   double largest = 0.0;
   for (Index k : nodes)
@@ -426,15 +429,16 @@ double largestFoot(const GridField<D>& phi, const GridField<D>& dist, const Node
 /// it that its feet can reach (measured first on a copy with one node
 /// around), stored once all tiles are computed.
 template <class Interp, int D>
-Status tiledStep(TiledField<D>& field, const std::vector<std::int32_t>& band, const LevelSetStepParameters& par,
-  const Context& ctx)
+Status tiledStep(
+  TiledField<D>& field, const std::vector<std::int32_t>& band, const LevelSetStepParameters& par, const Context& ctx)
 {
   const Context serial;
   const double dx = field.grid().Spacing[0];
   std::vector<double> next(band.size() * static_cast<size_t>(TiledField<D>::Nodes));
   std::vector<Status> failures(band.size());
   std::vector<double> feet(band.size(), 0.0);
-  ctx.parallelFor(0, static_cast<Index>(band.size()),
+  ctx.parallelFor(
+    0, static_cast<Index>(band.size()),
     [&](Index b, Index e)
     {
       TileScratch<D> s;
@@ -492,8 +496,8 @@ Status tiledStep(TiledField<D>& field, const std::vector<std::int32_t>& band, co
     {
       for (Index j = b; j < e; ++j)
       {
-        std::copy_n(next.data() + j * TiledField<D>::Nodes, TiledField<D>::Nodes,
-          field.phi(band[static_cast<size_t>(j)]));
+        std::copy_n(
+          next.data() + j * TiledField<D>::Nodes, TiledField<D>::Nodes, field.phi(band[static_cast<size_t>(j)]));
       }
     });
   return Status::ok();
@@ -515,7 +519,8 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
     bool inside = true;
     for (int a = 0; a < D; ++a)
     {
-      const Index i = static_cast<Index>(std::floor((cloud.Points[static_cast<size_t>(q)][a] - g.Origin[a]) / g.Spacing[a]));
+      const Index i =
+        static_cast<Index>(std::floor((cloud.Points[static_cast<size_t>(q)][a] - g.Origin[a]) / g.Spacing[a]));
       t[a] = i >> TileBits;
       inside = inside && i >= 0 && t[a] < field.slotDims()[a];
     }
@@ -531,7 +536,8 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
     }
   }
   std::vector<double> sums(byTile.size(), 0.0), fars(byTile.size(), 0.0);
-  ctx.parallelFor(0, static_cast<Index>(byTile.size()),
+  ctx.parallelFor(
+    0, static_cast<Index>(byTile.size()),
     [&](Index b, Index e)
     {
       TileScratch<D> s;
@@ -698,8 +704,7 @@ Status runTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReco
   if (plan.Options.Runs == 1)
   {
     // One run: its uniform result, stored in tiles.
-    SLTK_RETURN_IF_ERROR(
-      transferToTiles(previous, firstGamma, first.spec(), plan, 1, ctx, result.Field));
+    SLTK_RETURN_IF_ERROR(transferToTiles(previous, firstGamma, first.spec(), plan, 1, ctx, result.Field));
     recordStorage(result.Field, 1, 0, result.Storage);
     return Status::ok();
   }

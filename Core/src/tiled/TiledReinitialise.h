@@ -126,7 +126,8 @@ public:
     const double dtau = options.Courant * h; // (1.34)
     for (int iteration = 1; iteration <= options.MaxIterations; ++iteration)
     {
-      const double change = ctx.parallelSum(0, static_cast<Index>(count),
+      const double change = ctx.parallelSum(
+        0, static_cast<Index>(count),
         [&](Index b, Index e)
         {
           double largest = 0.0;
@@ -165,8 +166,8 @@ public:
       }
       if (!std::isfinite(change))
       {
-        return Status::numericalFailure("reinitialisation produced a non-finite value at pseudo-time step " +
-          std::to_string(iteration));
+        return Status::numericalFailure(
+          "reinitialisation produced a non-finite value at pseudo-time step " + std::to_string(iteration));
       }
       if (change < options.Tolerance * h)
       {
@@ -274,7 +275,8 @@ private:
     {
       h = std::min(h, this->Spacing[a]);
     }
-    ctx.parallelFor(0, static_cast<Index>(starts.size()) - 1,
+    ctx.parallelFor(
+      0, static_cast<Index>(starts.size()) - 1,
       [&](Index b, Index e)
       {
         GridField<D> block;
@@ -306,8 +308,8 @@ private:
             }
             else
             {
-              this->Coefficient[n] = reinitSign(
-                u[ReinitStencil<D>::Centre], centralGradientNorm<D>(u, this->InverseSpacing), h); // (1.31)
+              this->Coefficient[n] =
+                reinitSign(u[ReinitStencil<D>::Centre], centralGradientNorm<D>(u, this->InverseSpacing), h); // (1.31)
             }
           }
         }

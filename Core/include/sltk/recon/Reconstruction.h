@@ -85,7 +85,8 @@ void recordsToUser(const UnitBox<D>& box, ReconstructionResult<D>& result)
 /// restart, and leaves the result in unit-box units (4.5): the first run of
 /// the tiled reconstruction (tiled/TiledReconstruction.h).
 template <int D>
-Status reconstructFirstRuns(const ReconstructionPlan<D>& plan, int runs, const Context& ctx, ReconstructionResult<D>& result);
+Status reconstructFirstRuns(
+  const ReconstructionPlan<D>& plan, int runs, const Context& ctx, ReconstructionResult<D>& result);
 
 extern template Status reconstruct(
   const PointCloud<2>&, const ReconstructionOptions&, const Context&, ReconstructionResult<2>&);
@@ -93,7 +94,9 @@ extern template Status reconstruct(
   const PointCloud<3>&, const ReconstructionOptions&, const Context&, ReconstructionResult<3>&);
 extern template Status reconstruct(const ReconstructionPlan<2>&, const Context&, ReconstructionResult<2>&);
 extern template Status reconstruct(const ReconstructionPlan<3>&, const Context&, ReconstructionResult<3>&);
-extern template Status reconstructFirstRuns(const ReconstructionPlan<2>&, int, const Context&, ReconstructionResult<2>&);
-extern template Status reconstructFirstRuns(const ReconstructionPlan<3>&, int, const Context&, ReconstructionResult<3>&);
+extern template Status reconstructFirstRuns(
+  const ReconstructionPlan<2>&, int, const Context&, ReconstructionResult<2>&);
+extern template Status reconstructFirstRuns(
+  const ReconstructionPlan<3>&, int, const Context&, ReconstructionResult<3>&);
 
 } // namespace sltk

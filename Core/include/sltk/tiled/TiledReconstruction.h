@@ -34,11 +34,11 @@ namespace sltk
 struct TiledRunRecord
 {
   int Run = 0;
-  Index Tiles = 0;           ///< tiles at the end of the run
-  Index StoredNodes = 0;     ///< Tiles * 8^D
-  Index UniformNodes = 0;    ///< the uniform grid of the run
-  Index AddedTiles = 0;      ///< tiles added during the run (the band moved)
-  double Bytes = 0.0;        ///< the field's memory at the end of the run
+  Index Tiles = 0;        ///< tiles at the end of the run
+  Index StoredNodes = 0;  ///< Tiles * 8^D
+  Index UniformNodes = 0; ///< the uniform grid of the run
+  Index AddedTiles = 0;   ///< tiles added during the run (the band moved)
+  double Bytes = 0.0;     ///< the field's memory at the end of the run
 };
 
 template <int D>
