@@ -143,7 +143,7 @@ void TiledField<D>::scratch(std::int32_t id, int halo, int ghost, GridField<D>& 
       i[a] = rest % edge;
       rest /= edge;
       const Index g = o[a] * TileEdge - h + i[a]; // grid index
-      const Index tile = g >= 0 ? g / TileEdge : -1;
+      const Index tile = g >= 0 ? g / TileEdge : -((TileEdge - 1 - g) / TileEdge); // floor(g / TileEdge)
       t[a] = tile;
       inTile[a] = g - tile * TileEdge;
       beyond = beyond || tile < 0 || tile >= this->SlotDims[a];

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/tiled/TiledField.h"
+
+#include <gtest/gtest.h>
+
+namespace
+{
+double linear(const std::array<sltk::Index, 3>& i)
+{
+  return static_cast<double>(i[0] + 100 * i[1] + 10000 * i[2]);
+}
+} // namespace
+
+TEST(TiledField, ScratchCopiesTilesAndSidesAtAnyHalo)
+{
+  sltk::GridSpec<3> grid;
+  grid.Dims = { 40, 24, 20 }; // 5 x 3 x 3 slots (the last ones partly beyond the grid)
+  grid.Spacing = { 0.5, 0.5, 0.5 };
+  grid.Origin = { -1.0, 2.0, 3.0 };
+  sltk::TiledField<3> field;
+  field.reset(grid, 1e6);
+  ASSERT_EQ(field.slotDims(), (std::array<sltk::Index, 3>{ 5, 3, 3 }));
+  // Tiles in a row along x at slot (y, z) = (0, 1); slot (1, 0, 2) inside; the rest outside.
+  std::int32_t first = -1;
+  for (sltk::Index x = 0; x < 4; ++x)
+  {
+    const std::int32_t id = field.addTile(field.slotIndex({ x, 0, 1 }));
+    first = first < 0 ? id : first;
+    for (sltk::Index k = 0; k < sltk::TiledField<3>::Nodes; ++k)
+    {
+      field.phi(id)[k] = linear(field.node(id, k));
+      field.distance(id)[k] = 1.0;
+    }
+  }
+  field.setSide(field.slotIndex({ 1, 0, 2 }), true);
+  EXPECT_EQ(field.tileCount(), 4);
+  EXPECT_FALSE(field.surrounded(first));
+  for (int halo : { 1, 4, 8, 12, 20 })
+  {
+    sltk::GridField<3> phi, dist;
+    field.scratch(first + 1, halo, 2, phi, &dist); // tile (1, 0, 1): the halo reaches negative y
+    const auto& o = field.tileOrigin(first + 1);
+    for (sltk::Index k = 0; k < phi.spec().nodeCount(); ++k)
+    {
+      const auto b = phi.nodeIndex(k);
+      std::array<sltk::Index, 3> g{};
+      std::array<sltk::Index, 3> t{};
+      bool beyond = false;
+      for (int a = 0; a < 3; ++a)
+      {
+        g[a] = o[a] * sltk::TileEdge - halo + b[a];
+        t[a] = g[a] >= 0 ? g[a] / sltk::TileEdge : -1 - (-g[a] - 1) / sltk::TileEdge;
+        beyond = beyond || g[a] < 0 || t[a] >= field.slotDims()[a];
+      }
+      const bool tile = !beyond && t[1] == 0 && t[2] == 1 && t[0] < 4;
+      const bool inside = !beyond && t[0] == 1 && t[1] == 0 && t[2] == 2;
+      const double expected = tile ? linear(g) : (inside ? -1e6 : 1e6);
+      ASSERT_EQ(phi(b), expected) << "halo " << halo << " node " << g[0] << " " << g[1] << " " << g[2];
+      ASSERT_EQ(dist(b), tile ? 1.0 : 0.0);
+      ASSERT_EQ(field.value(g), expected);
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      EXPECT_DOUBLE_EQ(phi.spec().Origin[a], grid.coordinate(a, o[a] * sltk::TileEdge - halo));
+    }
+  }
+}
