@@ -79,6 +79,9 @@ sltk::Status checkRanges(vtkSLLevelSetReconstruct* self)
     { "OutlierDeviations", self->GetOutlierDeviations(), 0.5, 100 },
     { "ThinningFactor", self->GetThinningFactor(), 0, 100 },
     { "NumberOfThreads", double(self->GetNumberOfThreads()), 0, 1024 },
+    { "CellSizeFactor", self->GetCellSizeFactor(), sltk::CellSizeFactorRange[0], sltk::CellSizeFactorRange[1], true },
+    { "OutsideThresholdFactor", self->GetOutsideThresholdFactor(), sltk::OutsideThresholdFactorRange[0],
+      sltk::OutsideThresholdFactorRange[1], true },
   });
 }
 
@@ -93,6 +96,11 @@ sltk::Status optionsOf(vtkSLLevelSetReconstruct* self, sltk::ReconstructionOptio
   o.MaxIterations = self->GetMaximumNumberOfIterations();
   o.Tolerance = self->GetTolerance();
   o.Guess = static_cast<sltk::InitialGuess>(self->GetInitialGuess());
+  if (self->GetNumberOfRunParameterValues() % 2 != 0)
+  {
+    return sltk::Status::invalidArgument("RunParameters has " + std::to_string(self->GetNumberOfRunParameterValues()) +
+      " values: give (p, eta) pairs, an even number of values (or none for Table 4.1)");
+  }
   for (int k = 0; k < self->GetNumberOfRunParameters(); ++k)
   {
     o.Schedule.push_back({ self->GetRunP(k), self->GetRunEta(k) });
@@ -255,6 +263,12 @@ void vtkSLLevelSetReconstruct::AddRunParameters(double p, double eta)
   this->Modified();
 }
 
+void vtkSLLevelSetReconstruct::AddRunParameterValue(double value)
+{
+  this->RunSchedule.push_back(value);
+  this->Modified();
+}
+
 void vtkSLLevelSetReconstruct::RemoveAllRunParameters()
 {
   if (!this->RunSchedule.empty())
@@ -262,6 +276,11 @@ void vtkSLLevelSetReconstruct::RemoveAllRunParameters()
     this->RunSchedule.clear();
     this->Modified();
   }
+}
+
+int vtkSLLevelSetReconstruct::GetNumberOfRunParameterValues() const
+{
+  return static_cast<int>(this->RunSchedule.size());
 }
 
 int vtkSLLevelSetReconstruct::GetNumberOfRunParameters() const

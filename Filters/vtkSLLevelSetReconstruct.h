@@ -128,8 +128,13 @@ public:
   /// keeps details with eta = 0 in the first two runs: (1, 0), (2, 0), (2, 1).
   /// Entries need 1 <= p <= 10 and 0 <= eta <= 100 (checked at execution).
   void AddRunParameters(double p, double eta);
+  /// Appends one value, p and eta alternating (the ParaView property's command,
+  /// so that an odd count reaches the filter and is refused instead of being
+  /// dropped by the proxy).
+  void AddRunParameterValue(double value);
   void RemoveAllRunParameters();
   int GetNumberOfRunParameters() const;
+  int GetNumberOfRunParameterValues() const; ///< 2 per (p, eta) pair; odd when a value was added alone
   double GetRunP(int index) const;
   double GetRunEta(int index) const;
   ///@}

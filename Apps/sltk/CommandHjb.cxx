@@ -4,6 +4,7 @@
 #include "Commands.h"
 #include "ErrorCollector.h"
 #include "HjbCustomProblem.h"
+#include "ProgressBar.h"
 #include "OutputPaths.h"
 #include "WriteAtomically.h"
 #include "WriteSurface.h"
@@ -48,6 +49,7 @@ struct Hjb
   double Courant = 0.0;    // the preset's
   sltk::InterpolatorKind Interpolator = sltk::InterpolatorKind::CwenoZ;
   int Threads = 0;
+  bool Quiet = false;
   std::string Output, Json;
   HjbCustomProblem Custom;
   int run() const;
@@ -79,6 +81,11 @@ int Hjb::run() const
   vtkNew<vtkCWENOHJBSolver> solver;
   vtkNew<ErrorCollector> errors;
   solver->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<ProgressBar> bar; // a long solve is not silent for minutes (on a terminal)
+  if (!this->Quiet)
+  {
+    solver->AddObserver(vtkCommand::ProgressEvent, bar);
+  }
   solver->SetPreset(preset);
   solver->SetNumberOfNodes(this->N);
   if (custom)
@@ -94,6 +101,7 @@ int Hjb::run() const
   solver->SetInterpolator(static_cast<int>(this->Interpolator));
   solver->SetNumberOfThreads(this->Threads);
   solver->Update();
+  bar->finish();
   if (!errors->Message.empty())
   {
     return fail(errors->Message);
@@ -173,6 +181,7 @@ Command addHjbCommand(CLI::App& sltk)
     ->option_text("L");
   addInterpolatorOption(app, command->Interpolator, "cwenoz");
   addThreadsOption(app, command->Threads);
+  app->add_flag("--quiet", command->Quiet, "no progress bar");
   app->add_option("-o,--output", command->Output, "write the value function (and ReachTime for test5)")
     ->option_text("FILE.vti");
   app

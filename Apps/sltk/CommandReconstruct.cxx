@@ -399,8 +399,8 @@ Command addReconstructCommand(CLI::App& sltk)
     ->option_text("FILE");
   addInterpolatorOption(app, o.Interpolator, "weno3");
   addPlanOptions(app, o);
-  app->get_option("--cdx")->check(within(0.05, 100));
-  app->get_option("--kp")->check(within(0.1, 100));
+  app->get_option("--cdx")->check(within(sltk::CellSizeFactorRange[0], sltk::CellSizeFactorRange[1]));
+  app->get_option("--kp")->check(within(sltk::OutsideThresholdFactorRange[0], sltk::OutsideThresholdFactorRange[1]));
   app->get_option("--runs")->check(within(1, 6));
   app->get_option("--outlier-sigma")->check(within(0.5, 100))->needs("--remove-outliers");
   app->get_option("--thin")->check(within(0, 100));

@@ -383,6 +383,48 @@ TEST(HjbExpressionSolver, RefusesBadProblemsWithClearMessages)
   EXPECT_NE(huge.message().find("use fewer nodes"), std::string::npos) << huge.message();
 }
 
+TEST(HjbExpressionSolver, NamesTheFormulaAndThePointThatAreNotFinite)
+{
+  sltk::HjbExpressionSpec good;
+  good.Nodes = { 11, 11, 1 }; // x = -1, -0.8, ..., 1: a node at x = 0
+  good.Dynamics = { "y", "-x", "" };
+  good.Initial = "x^2 + y^2";
+  good.FinalTime = 0.2;
+
+  // v_0 and g are known at every node before the first step: refused when the solver is made.
+  auto s = good;
+  s.Initial = "log(x)";
+  std::unique_ptr<sltk::HjbSolver> solver;
+  sltk::Status st = sltk::makeExpressionSolver(s, solver);
+  EXPECT_FALSE(solver);
+  EXPECT_NE(st.message().find("the initial datum v0 'log(x)' is NaN at x = -1"), std::string::npos) << st.message();
+  EXPECT_NE(st.message().find("finite on the whole domain"), std::string::npos) << st.message();
+
+  // f_D and f_C depend on the control: a step that goes non-finite names the formula, the node and the control.
+  auto stepError = [](const sltk::HjbExpressionSpec& spec)
+  {
+    std::unique_ptr<sltk::HjbSolver> stepper;
+    const sltk::Status made = sltk::makeExpressionSolver(spec, stepper);
+    EXPECT_TRUE(made.isOk()) << made.message();
+    const sltk::Status run = stepper ? stepper->advanceTo(stepper->finalTime(), sltk::Context{}) : made;
+    EXPECT_EQ(run.code(), sltk::StatusCode::NumericalFailure);
+    return run.message();
+  };
+  s = good;
+  s.Dynamics[0] = "1/x";
+  std::string m = stepError(s);
+  EXPECT_NE(m.find("non-finite values in the HJB step"), std::string::npos) << m;
+  EXPECT_NE(m.find("the dynamics f_D component x '1/x' is +Inf at x = 0"), std::string::npos) << m;
+  s = good;
+  s.Controls = sltk::ControlKind::Box;
+  s.ControlDimension = 1;
+  s.ControlLower = { -1.0, 0.0, 0.0 };
+  s.ControlUpper = { 2.0, 0.0, 0.0 };
+  s.Cost = "log(a1 - 5)"; // NaN for every admissible control (the minimiser passes over controls where it is NaN)
+  m = stepError(s);
+  EXPECT_NE(m.find("the running cost f_C 'log(a1 - 5)' is NaN at a1 = -1"), std::string::npos) << m;
+}
+
 TEST(HjbExpressionSolver, ReachTimesAreInterpolatedBetweenSteps)
 {
   // v0 = 0.5 - x, f_D = 1: v(t, x) = 0.5 - x - t, so x is reached at T(x) = max(0.5 - x, 0), which

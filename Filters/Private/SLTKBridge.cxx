@@ -42,10 +42,11 @@ Status checkPropertyRanges(std::initializer_list<PropertyRange> ranges)
 {
   for (const PropertyRange& r : ranges)
   {
-    if (!(r.Value >= r.Low && r.Value <= r.High))
+    if (!(r.Value >= r.Low && r.Value <= r.High) && !(r.ZeroIsAutomatic && r.Value == 0.0))
     {
       std::ostringstream m;
-      m << r.Name << " = " << r.Value << " is outside its range [" << r.Low << ", " << r.High << "]: set a value in it";
+      m << r.Name << " = " << r.Value << " is outside its range [" << r.Low << ", " << r.High
+        << "]: set a value in it" << (r.ZeroIsAutomatic ? ", or 0 for automatic" : "");
       return Status::invalidArgument(m.str());
     }
   }

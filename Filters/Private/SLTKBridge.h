@@ -37,6 +37,7 @@ struct PropertyRange
 {
   const char* Name;
   double Value, Low, High;
+  bool ZeroIsAutomatic = false; ///< 0 is also accepted (the property's "automatic" value)
 };
 
 /// The first property outside its range, refused with its name and range

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 
 namespace sltk
@@ -39,66 +40,60 @@ double distance(const std::array<double, D>& p, const std::array<double, D>& q)
   return std::sqrt(s);
 }
 
-/// Largest distance of any point from the line (2D) or plane (3D) through
-/// three well-spread points: zero for collinear/coplanar clouds.
-double spreadOffLine(const PointCloud<2>& c, size_t i0, size_t i1)
+std::array<double, 3> cross(const std::array<double, 3>& x, const std::array<double, 3>& y)
+{
+  return { x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0] };
+}
+double norm(const std::array<double, 3>& x)
+{
+  return std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+}
+template <int D>
+std::array<double, 3> from(const std::array<double, D>& p, const std::array<double, D>& origin)
+{
+  std::array<double, 3> v{};
+  for (int a = 0; a < D; ++a)
+  {
+    v[a] = p[a] - origin[a];
+  }
+  return v;
+}
+
+/// Largest distance of any point from the line through points i0 and i1, and
+/// the point that has it: zero for collinear clouds.
+template <int D>
+double spreadOffLine(const PointCloud<D>& c, size_t i0, size_t i1, size_t& farthest)
 {
   const auto& a = c.Points[i0];
-  const auto& b = c.Points[i1];
-  const double dx = b[0] - a[0], dy = b[1] - a[1];
-  const double len = std::hypot(dx, dy);
+  const auto u = from<D>(c.Points[i1], a);
+  const double len = norm(u);
   double best = 0.0;
-  for (const auto& p : c.Points)
+  farthest = i0;
+  for (size_t k = 0; k < c.Points.size(); ++k)
   {
-    best = std::max(best, std::fabs((p[0] - a[0]) * dy - (p[1] - a[1]) * dx) / len);
+    const double d = norm(cross(u, from<D>(c.Points[k], a))) / len;
+    if (d > best)
+    {
+      best = d;
+      farthest = k;
+    }
   }
   return best;
 }
 
-double spreadOffPlane(const PointCloud<3>& c, size_t i0, size_t i1)
+/// Largest distance of any point from the plane through points i0, i1, i2.
+double spreadOffPlane(const PointCloud<3>& c, size_t i0, size_t i1, size_t i2)
 {
-  // Third point: farthest from the line (i0, i1).
   const auto& a = c.Points[i0];
-  const auto& b = c.Points[i1];
-  std::array<double, 3> u{ b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-  auto cross = [](const std::array<double, 3>& x, const std::array<double, 3>& y) {
-    return std::array<double, 3>{ x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0] };
-  };
-  auto norm = [](const std::array<double, 3>& x) { return std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]); };
-  size_t i2 = i0;
-  double bestLine = 0.0;
-  for (size_t k = 0; k < c.Points.size(); ++k)
-  {
-    const auto& p = c.Points[k];
-    const double d = norm(cross(u, { p[0] - a[0], p[1] - a[1], p[2] - a[2] }));
-    if (d > bestLine)
-    {
-      bestLine = d;
-      i2 = k;
-    }
-  }
-  if (bestLine == 0.0)
-  {
-    return 0.0;
-  }
-  const auto& q = c.Points[i2];
-  auto n = cross(u, { q[0] - a[0], q[1] - a[1], q[2] - a[2] });
+  const auto n = cross(from<3>(c.Points[i1], a), from<3>(c.Points[i2], a));
   const double nn = norm(n);
   double best = 0.0;
   for (const auto& p : c.Points)
   {
-    best = std::max(best, std::fabs(n[0] * (p[0] - a[0]) + n[1] * (p[1] - a[1]) + n[2] * (p[2] - a[2])) / nn);
+    const auto v = from<3>(p, a);
+    best = std::max(best, std::fabs(n[0] * v[0] + n[1] * v[1] + n[2] * v[2]) / nn);
   }
   return best;
-}
-
-double spreadOffFlat(const PointCloud<2>& c, size_t i0, size_t i1)
-{
-  return spreadOffLine(c, i0, i1);
-}
-double spreadOffFlat(const PointCloud<3>& c, size_t i0, size_t i1)
-{
-  return spreadOffPlane(c, i0, i1);
 }
 } // namespace
 
@@ -134,6 +129,16 @@ Status validateCloud(const PointCloud<D>& cloud)
     diameter = std::max(diameter, box.extent(a));
     magnitude = std::max({ magnitude, std::fabs(box.Min[a]), std::fabs(box.Max[a]) });
   }
+  // Beyond this, squared distances (h_P, the distance function) overflow double.
+  constexpr double LargestCoordinate = 1e150;
+  if (!(magnitude <= LargestCoordinate) || !std::isfinite(diameter))
+  {
+    std::ostringstream m;
+    m << "coordinates reach " << magnitude
+      << ", beyond what distances in double precision can hold (1e150): rescale the cloud (e.g. divide the "
+         "coordinates by its extent) before reconstructing";
+    return Status::invalidArgument(m.str());
+  }
   if (diameter == 0.0)
   {
     return Status::invalidArgument("all " + std::to_string(cloud.size()) + " points coincide: nothing to reconstruct");
@@ -157,10 +162,20 @@ Status validateCloud(const PointCloud<D>& cloud)
       i1 = k;
     }
   }
-  if (spreadOffFlat(cloud, 0, i1) <= 1e-12 * diameter)
+  const std::string closed = D == 2 ? "a closed curve" : "a closed surface";
+  size_t i2 = 0;
+  if (spreadOffLine(cloud, 0, i1, i2) <= 1e-12 * diameter)
   {
-    return Status::invalidArgument(std::string("all points lie on one ") + (D == 2 ? "line" : "plane") + ": a closed " +
-      (D == 2 ? "curve" : "surface") + " cannot be reconstructed from them");
+    return Status::invalidArgument("all points lie on one line: " + closed + " cannot be reconstructed from them");
+  }
+  if constexpr (D == 3)
+  {
+    if (spreadOffPlane(cloud, 0, i1, i2) <= 1e-12 * diameter)
+    {
+      return Status::invalidArgument("all points lie on one plane: a closed surface cannot be reconstructed from "
+                                     "them; for a planar outline, give the points a constant z (a 2D "
+                                     "reconstruction)");
+    }
   }
   return Status::ok();
 }

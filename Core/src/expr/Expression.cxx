@@ -602,6 +602,7 @@ Status Expression::compile(const std::string& what,
     return failure(0, "nests deeper than " + std::to_string(MaxStackDepth) + " pending values");
   }
   out.Text = text;
+  out.What = what;
   out.Code = std::move(code);
   return Status::ok();
 }

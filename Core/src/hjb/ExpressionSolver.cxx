@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // makeExpressionSolver(): checks an expression-defined HJB problem
 // (ExpressionProblem.h), compiles its formulas and builds its grid.
+#include "ExpressionDiagnosis.h"
 #include "ExpressionSolverOf.h"
 #include "sltk/exec/Memory.h"
 
@@ -223,8 +224,18 @@ Status makeForDimension(
   in.Reachable = spec.ReachableSet || expressions->HasObstacle;
   // Pure transport: no minimisation, one unused control slot.
   in.ControlDimension = spec.Controls == ControlKind::None ? 1 : spec.ControlDimension;
-  in.Expressions = std::move(expressions);
-  return makeExpressionSolverOf<D>(spec, in, solver);
+  in.Expressions = expressions;
+  SLTK_RETURN_IF_ERROR(makeExpressionSolverOf<D>(spec, in, solver));
+  // v_0 and g are read at every node: a formula that is not finite there is refused before any step.
+  const std::string cause =
+    findNonFiniteFormula(spec, *expressions, solver->grid(), 0.0, FormulaScope::StateFormulas);
+  if (!cause.empty())
+  {
+    solver.reset();
+    return Status::invalidArgument(cause + "; " + NonFiniteFix);
+  }
+  solver = withNonFiniteDiagnosis(std::move(solver), spec, std::move(expressions));
+  return Status::ok();
 }
 } // namespace
 

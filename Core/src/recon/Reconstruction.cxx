@@ -9,6 +9,7 @@
 #include "sltk/recon/EnergyFunctional.h"
 #include "sltk/recon/ExactDistanceCache.h"
 #include "sltk/recon/LevelSetStep.h"
+#include "sltk/recon/StrayPoints.h"
 #include "sltk/recon/LocalOffset.h"
 #include "sltk/recon/StoppingRule.h"
 
@@ -172,7 +173,7 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     {
       vanished = true;
       return Status::numericalFailure("run " + std::to_string(run) +
-        ": the zero level set vanished (no front cell); try a larger K_P or a larger eta");
+        ": the zero level set vanished (no front cell)");
     }
     energies.push_back(e2.Energy);
     if (n >= options.MinIterations && energyStalled(energies, options.EnergyWindow, options.Tolerance) &&
@@ -395,6 +396,12 @@ Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& op
     {
       result.SignedDistance = std::move(phi);
       result.Distance = std::move(dist);
+      if (vanished)
+      {
+        const std::string stray = strayPointAdvice(cloud, ctx);
+        return Status::numericalFailure(
+          status.message() + "; " + (stray.empty() ? "try a larger K_P or a larger eta" : stray));
+      }
       return status;
     }
     if (run < lastRun)

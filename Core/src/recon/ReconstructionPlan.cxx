@@ -2,11 +2,13 @@
 #include "sltk/recon/ReconstructionPlan.h"
 
 #include "sltk/cloud/CloudSpacing.h"
+#include "sltk/cloud/CloudThickness.h"
 #include "sltk/cloud/CloudThinning.h"
 #include "sltk/cloud/LocalSpacing.h"
 #include "sltk/recon/AutomaticParameters.h"
 #include "sltk/recon/CloudInitialData.h"
 #include "sltk/recon/CloudPreparation.h"
+#include "sltk/recon/StrayPoints.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,6 +34,51 @@ double initialReach(const Box<D>& bounds, double farDistance, const std::optiona
     }
   }
   return reach;
+}
+
+/// Refuses a cloud flatter than half the finest cell (CloudThickness.h): the
+/// level set would have no cell to stay in, and no K_P or eta helps. Half, so
+/// that an automatic C_dx refined once by the reconstruction is covered.
+template <int D>
+Status refuseFlatCloud(const ReconstructionPlan<D>& plan, const Context& ctx)
+{
+  const GridSpec<D>& finest = plan.Grids.Runs.back();
+  const double dx = *std::min_element(finest.Spacing.begin(), finest.Spacing.end());
+  const FlatFit<D> fit = fitFlat(plan.Cloud);
+  if (!(fit.Thickness < 0.5 * dx))
+  {
+    return Status::ok();
+  }
+  const std::string stray = strayPointAdvice(plan.Cloud, ctx);
+  if (!stray.empty())
+  {
+    return Status::invalidArgument("the grid's cells are too coarse for the object: " + stray);
+  }
+  const double scale = plan.Box.Scale;
+  std::ostringstream m;
+  m << "the cloud is flat: every point lies within " << fit.Thickness * scale << " of the "
+    << (D == 3 ? "plane" : "line") << " through (";
+  for (int a = 0; a < D; ++a)
+  {
+    m << (a ? ", " : "") << plan.Box.Centre[a] + scale * fit.Centre[a];
+  }
+  m << ") with normal (";
+  for (int a = 0; a < D; ++a)
+  {
+    m << (a ? ", " : "") << fit.Normal[a];
+  }
+  m << "), less than half the finest cell (" << dx * scale << "), so it encloses no volume the grid can resolve "
+    << "and no K_P or eta can help. ";
+  if (D == 3)
+  {
+    m << "For a planar outline, rotate the points into a plane z = constant (a 2D reconstruction); for a thin "
+         "object, a smaller C_dx (a finer grid)";
+  }
+  else
+  {
+    m << "For a thin object, use a smaller C_dx (a finer grid)";
+  }
+  return Status::invalidArgument(m.str());
 }
 } // namespace
 
@@ -64,11 +111,14 @@ Status validateReconstructionOptions(const ReconstructionOptions& options)
                                    "K_P >= 0 and C_dx >= 0 (0: automatic), tolerance >= 0, 0 < beta < gamma");
   }
   const auto automaticOr = [](double v, double low, double high) { return v == 0.0 || (v >= low && v <= high); };
-  if (!automaticOr(options.CellSizeFactor, 0.05, 100.0) || !automaticOr(options.OutsideThresholdFactor, 0.1, 100.0))
+  const double* cdx = CellSizeFactorRange;
+  const double* kp = OutsideThresholdFactorRange;
+  if (!automaticOr(options.CellSizeFactor, cdx[0], cdx[1]) || !automaticOr(options.OutsideThresholdFactor, kp[0], kp[1]))
   {
     std::ostringstream m;
-    m << "C_dx = " << options.CellSizeFactor << ", K_P = " << options.OutsideThresholdFactor
-      << ": C_dx must be 0 (automatic) or in [0.05, 100], K_P 0 (automatic) or in [0.1, 100]";
+    m << "C_dx = " << options.CellSizeFactor << ", K_P = " << options.OutsideThresholdFactor << ": C_dx must be 0 "
+      << "(automatic) or in [" << cdx[0] << ", " << cdx[1] << "], K_P 0 (automatic) or in [" << kp[0] << ", " << kp[1]
+      << "]";
     return Status::invalidArgument(m.str());
   }
   SLTK_RETURN_IF_ERROR(validateSchedule(options.Schedule));
@@ -232,7 +282,8 @@ Status planReconstruction(
   // Run 1 must hold the initial surface (at the K_P of a restart, when automatic).
   plan.FirstRunReach =
     initialReach(bounds, sparsest * std::max(farDistance, roomFactor * plan.CloudSpacing), plan.InitialEllipsoid);
-  return planRunGrids(plan, options.Runs, plan.Options.CellSizeFactor, plan.Grids);
+  SLTK_RETURN_IF_ERROR(planRunGrids(plan, options.Runs, plan.Options.CellSizeFactor, plan.Grids));
+  return refuseFlatCloud(plan, ctx);
 }
 
 template <int D>

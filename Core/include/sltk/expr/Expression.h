@@ -49,6 +49,8 @@ public:
   /// True when variable k occurs in the expression.
   bool uses(int variable) const;
   const std::string& text() const { return this->Text; }
+  /// The name given to compile(), e.g. "the running cost f_C".
+  const std::string& what() const { return this->What; }
 
   /// Deepest evaluation stack a program may need (deeper nesting is refused).
   static constexpr int MaxStackDepth = 64;
@@ -88,6 +90,7 @@ public:
 private:
   friend class ExpressionCompiler;
   std::string Text;
+  std::string What;
   std::vector<Instruction> Code;
 };
 

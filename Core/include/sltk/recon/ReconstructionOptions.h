@@ -42,6 +42,11 @@ inline RunParameters table41(int run)
   return { 2.0, 1.0 };
 }
 
+/// The ranges of C_dx and K_P given explicitly (0 is automatic), shared by the
+/// CLI, the filters' property checks and validateReconstructionOptions().
+constexpr double CellSizeFactorRange[2] = { 0.05, 100.0 };
+constexpr double OutsideThresholdFactorRange[2] = { 0.1, 100.0 };
+
 struct ReconstructionOptions
 {
   int Runs = 3; ///< runs of Algorithm 1, each halving dx (4.36)
