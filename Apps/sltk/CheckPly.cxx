@@ -2,6 +2,7 @@
 #include "CheckPly.h"
 
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -13,8 +14,13 @@ namespace
 struct PlyProperty
 {
   std::string Name;
-  int Size = 0;      ///< bytes of a scalar, or of a list's items
-  int CountSize = 0; ///< bytes of a list's count; 0 for a scalar
+  int Size = 0;         ///< bytes of a scalar, or of a list's items
+  int CountSize = 0;    ///< bytes of a list's count; 0 for a scalar
+  bool Integer = false; ///< the (item) type is an integer type
+  bool Signed = false;  ///< ... and a signed one
+  /// A list of vertex indices (a face's or a strip's): vtkPLYReader reads the
+  /// points they name without a bounds check, so each must be < the vertex count.
+  bool isVertexIndexList() const { return this->CountSize > 0 && this->Name == "vertex_indices"; }
 };
 
 struct PlyElement
@@ -38,10 +44,39 @@ int typeSize(const std::string& type)
   return 0;
 }
 
+/// Whether a PLY scalar type is an integer type, and a signed one.
+void integerKind(const std::string& type, bool& integer, bool& isSigned)
+{
+  isSigned = type == "char" || type == "int8" || type == "short" || type == "int16" || type == "int" || type == "int32";
+  integer = isSigned || type == "uchar" || type == "uint8" || type == "ushort" || type == "uint16" || type == "uint" ||
+    type == "uint32";
+}
+
 sltk::Status damaged(const std::string& path, const std::string& what)
 {
   return sltk::Status::ioError(
     "damaged PLY file '" + path + "': " + what + "; export it again (or convert it, e.g. to .vtp or a text .xyz file)");
+}
+
+/// What in a header or ASCII data line VTK's parser reads differently from its
+/// words (found by bench/fuzz): it reads lines with fgets into 4096 bytes (a
+/// longer line is cut in two, a NUL ends it) and splits words at spaces, tabs
+/// and carriage returns only. Empty when the line is plain.
+std::string oddLine(const std::string& line)
+{
+  if (line.size() > 4000)
+  {
+    return "a line of " + std::to_string(line.size()) + " characters (at most 4000 are read as one line)";
+  }
+  for (const char c : line)
+  {
+    if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\r')
+    {
+      return c == '\0' ? std::string("binary data (a NUL byte) in a text line")
+                       : "a control character (code " + std::to_string(static_cast<int>(c)) + ") in a text line";
+    }
+  }
+  return {};
 }
 
 /// The header; `format` is "ascii", "binary_little_endian" or "binary_big_endian".
@@ -59,28 +94,59 @@ sltk::Status readHeader(
     {
       line.pop_back();
     }
+    const std::string odd = oddLine(line);
+    if (!odd.empty())
+    {
+      return damaged(path, odd + " at header line " + std::to_string(number));
+    }
     std::istringstream words(line);
     std::string keyword;
     words >> keyword;
     if (keyword == "end_header")
     {
+      if (!elements.empty() && elements.back().Properties.empty())
+      {
+        return damaged(path, "the element '" + elements.back().Name + "' has no property");
+      }
       return format.empty() ? damaged(path, "its header has no 'format' line") : sltk::Status::ok();
     }
     const std::string where = "header line " + std::to_string(number) + " ('" + line + "')";
+    // VTK's header parser takes "element face 0Jproperty ..." as a face element with no
+    // properties and crashes later (found by bench/fuzz): every line must be exactly its words.
+    const auto endsHere = [&words] { return (words >> std::ws).eof(); };
     if (keyword == "format")
     {
-      words >> format;
+      std::string version;
+      words >> format >> version;
       if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
       {
         return damaged(path, "unknown format in " + where);
+      }
+      if (version != "1.0" || !endsHere())
+      {
+        return damaged(path, "bad format line (version 1.0 expected) in " + where);
       }
     }
     else if (keyword == "element")
     {
       PlyElement element;
-      if (!(words >> element.Name >> element.Count) || element.Count < 0)
+      std::string count;
+      if (!(words >> element.Name >> count) || !endsHere() ||
+        count.find_first_not_of("0123456789") != std::string::npos || count.size() > 15)
       {
         return damaged(path, "bad element in " + where);
+      }
+      element.Count = std::stoll(count);
+      if (!elements.empty() && elements.back().Properties.empty())
+      {
+        return damaged(path, "the element '" + elements.back().Name + "' has no property, before " + where);
+      }
+      for (const PlyElement& before : elements)
+      {
+        if (before.Name == element.Name)
+        {
+          return damaged(path, "the element '" + element.Name + "' is declared twice, again in " + where);
+        }
       }
       elements.push_back(element);
     }
@@ -95,6 +161,7 @@ sltk::Status readHeader(
         words >> countType >> itemType;
         property.CountSize = typeSize(countType);
         property.Size = typeSize(itemType);
+        integerKind(itemType, property.Integer, property.Signed);
         if (property.CountSize == 0 || property.CountSize == 8)
         {
           return damaged(path, "bad list count type in " + where);
@@ -103,8 +170,9 @@ sltk::Status readHeader(
       else
       {
         property.Size = typeSize(type);
+        integerKind(type, property.Integer, property.Signed);
       }
-      if (property.Size == 0 || !(words >> property.Name) || elements.empty())
+      if (property.Size == 0 || !(words >> property.Name) || !endsHere() || elements.empty())
       {
         return damaged(path, "bad property in " + where);
       }
@@ -144,6 +212,49 @@ sltk::Status checkVertices(const std::string& path, const std::vector<PlyElement
   return damaged(path, "it has no 'vertex' element");
 }
 
+std::int64_t vertexCount(const std::vector<PlyElement>& elements)
+{
+  for (const PlyElement& element : elements)
+  {
+    if (element.Name == "vertex")
+    {
+      return element.Count;
+    }
+  }
+  return 0;
+}
+
+/// Ok when every face element has the integer list vtkPLYReader reads
+/// ('vertex_indices'; without it the reader goes on and reads garbage).
+sltk::Status checkIndexLists(const std::string& path, const std::vector<PlyElement>& elements)
+{
+  for (const PlyElement& element : elements)
+  {
+    bool hasIndices = false;
+    for (const PlyProperty& p : element.Properties)
+    {
+      if (p.isVertexIndexList() && !p.Integer)
+      {
+        return damaged(path, "the " + element.Name + " list '" + p.Name + "' does not hold integers");
+      }
+      hasIndices = hasIndices || p.isVertexIndexList();
+    }
+    if (element.Name == "face" && element.Count > 0 && !hasIndices)
+    {
+      return damaged(path, "its faces have no 'vertex_indices' list (the only name VTK's PLY reader reads)");
+    }
+  }
+  return sltk::Status::ok();
+}
+
+sltk::Status indexOutOfRange(
+  const std::string& path, const PlyElement& element, std::int64_t item, std::int64_t index, std::int64_t vertices)
+{
+  return damaged(path,
+    element.Name + " " + std::to_string(item) + " names vertex " + std::to_string(index) + ", but there are " +
+      std::to_string(vertices) + " vertices");
+}
+
 std::uint64_t listCount(const unsigned char* bytes, int size, bool bigEndian)
 {
   std::uint64_t value = 0;
@@ -164,6 +275,7 @@ std::string itemText(const PlyElement& element, std::int64_t item)
 sltk::Status checkBinary(
   std::istream& in, const std::string& path, bool bigEndian, const std::vector<PlyElement>& elements)
 {
+  const std::int64_t vertices = vertexCount(elements);
   const std::streamoff start = in.tellg();
   in.seekg(0, std::ios::end);
   const std::streamoff end = in.tellg();
@@ -211,6 +323,25 @@ sltk::Status checkBinary(
         {
           return damaged(path, "it is truncated: " + itemText(element, item) + " are there");
         }
+        if (p.isVertexIndexList())
+        {
+          std::vector<unsigned char> raw(static_cast<size_t>(bytes));
+          in.seekg(at);
+          in.read(reinterpret_cast<char*>(raw.data()), bytes);
+          for (std::streamoff k = 0; k < bytes; k += p.Size)
+          {
+            std::uint64_t value = listCount(raw.data() + k, p.Size, bigEndian);
+            std::int64_t index = static_cast<std::int64_t>(value);
+            if (p.Signed && p.Size < 8 && (value >> (8 * p.Size - 1)) != 0)
+            {
+              index = static_cast<std::int64_t>(value) - (std::int64_t(1) << (8 * p.Size)); // sign extension
+            }
+            if (index < 0 || index >= vertices)
+            {
+              return indexOutOfRange(path, element, item, index, vertices);
+            }
+          }
+        }
         at += bytes;
       }
     }
@@ -218,36 +349,90 @@ sltk::Status checkBinary(
   return sltk::Status::ok();
 }
 
-/// One non-empty line per item; vertex lines hold at least the vertex's properties.
+/// The words of an ASCII line, split as VTK's PLY parser splits them (blanks).
+std::vector<std::string> wordsOf(const std::string& line)
+{
+  std::vector<std::string> words;
+  size_t at = 0;
+  while ((at = line.find_first_not_of(" \t\r", at)) != std::string::npos)
+  {
+    const size_t end = line.find_first_of(" \t\r", at);
+    words.push_back(line.substr(at, end == std::string::npos ? std::string::npos : end - at));
+    at = end;
+  }
+  return words;
+}
+
+/// A whole word that is a number (what atof/atoi in VTK's parser would read without loss).
+bool isNumber(const std::string& word, double& value)
+{
+  char* end = nullptr;
+  value = std::strtod(word.c_str(), &end);
+  return end != word.c_str() && *end == '\0';
+}
+
+/// One line per item (no blank line), holding every property's words (a list: its count, then
+/// that many), each a whole number: VTK's parser reads a missing word as a null
+/// pointer (a crash, found by bench/fuzz) and garbage as 0. Vertex indices are
+/// checked against the vertex count.
 sltk::Status checkAscii(std::istream& in, const std::string& path, const std::vector<PlyElement>& elements)
 {
+  const std::int64_t vertices = vertexCount(elements);
   std::string line;
   for (const PlyElement& element : elements)
   {
     for (std::int64_t item = 0; item < element.Count; ++item)
     {
-      bool read = false;
-      while ((read = static_cast<bool>(std::getline(in, line))) && line.find_first_not_of(" \t\r") == std::string::npos)
-      {
-      }
-      if (!read)
+      if (!std::getline(in, line))
       {
         return damaged(path, "it is truncated: " + itemText(element, item) + " are there");
       }
-      if (element.Name == "vertex")
+      const std::string odd = oddLine(line);
+      if (!odd.empty())
       {
-        std::istringstream numbers(line);
-        double value = 0.0;
-        size_t found = 0;
-        while (numbers >> value)
-        {
-          ++found;
-        }
-        if (found < element.Properties.size())
+        return damaged(path, odd + ", in " + element.Name + " " + std::to_string(item));
+      }
+      if (line.find_first_not_of(" \t\r") == std::string::npos)
+      {
+        // VTK's parser takes a blank line as an item without words, then aborts at the end of the file.
+        return damaged(path, "a blank line where " + element.Name + " " + std::to_string(item) + " was expected");
+      }
+      const std::vector<std::string> words = wordsOf(line);
+      const std::string what = element.Name + " " + std::to_string(item);
+      size_t next = 0;
+      double value = 0.0;
+      for (const PlyProperty& p : element.Properties)
+      {
+        if (next >= words.size())
         {
           return damaged(path,
-            "vertex " + std::to_string(item) + " has " + std::to_string(found) + " numbers, " +
-              std::to_string(element.Properties.size()) + " expected ('" + line + "')");
+            what + " has only " + std::to_string(words.size()) + " numbers, too few for its properties ('" + line +
+              "')");
+        }
+        if (!isNumber(words[next], value))
+        {
+          return damaged(path, "'" + words[next] + "' is not a number, in " + what + " ('" + line + "')");
+        }
+        ++next;
+        if (p.CountSize == 0)
+        {
+          continue;
+        }
+        if (!(value >= 0.0) || value != static_cast<double>(static_cast<std::int64_t>(value)) ||
+          value > static_cast<double>(words.size() - next))
+        {
+          return damaged(path, what + " is incomplete: its list count is " + words[next - 1] + " ('" + line + "')");
+        }
+        for (std::int64_t k = 0, count = static_cast<std::int64_t>(value); k < count; ++k, ++next)
+        {
+          if (!isNumber(words[next], value))
+          {
+            return damaged(path, "'" + words[next] + "' is not a number, in " + what + " ('" + line + "')");
+          }
+          if (p.isVertexIndexList() && !(value >= 0.0 && value < static_cast<double>(vertices)))
+          {
+            return indexOutOfRange(path, element, item, static_cast<std::int64_t>(value), vertices);
+          }
         }
       }
     }
@@ -267,6 +452,7 @@ sltk::Status checkPlyFile(const std::string& path)
   std::vector<PlyElement> elements;
   SLTK_RETURN_IF_ERROR(readHeader(in, path, format, elements));
   SLTK_RETURN_IF_ERROR(checkVertices(path, elements));
+  SLTK_RETURN_IF_ERROR(checkIndexLists(path, elements));
   return format == "ascii" ? checkAscii(in, path, elements)
                            : checkBinary(in, path, format == "binary_big_endian", elements);
 }

@@ -4,10 +4,13 @@
 /// What vtkPLYReader does not check before it reads (Documentation/Architecture.md,
 /// "Reading files"): VTK 9.2's reader asserts on a truncated ASCII file, crashes
 /// on a vertex element without x, y and z, and pads a truncated binary file
-/// with copies of its last point. checkPlyFile reads the header and walks the
-/// data (binary: element by element, list counts included, against the file's
-/// size; ASCII: one non-empty line per element, as many numbers per vertex line
-/// as the vertex has scalar properties) and names what is wrong.
+/// with copies of its last point, and reads the points a face names without a
+/// bounds check (a face index beyond the vertices crashes it; found by
+/// bench/fuzz). checkPlyFile reads the header and walks the data (binary:
+/// element by element, list counts included, against the file's size; ASCII:
+/// one non-empty line per element, as many numbers per vertex line as the
+/// vertex has scalar properties), checks every vertex index of a face against
+/// the vertex count, and names what is wrong.
 
 #include "sltk/core/Status.h"
 

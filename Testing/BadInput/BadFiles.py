@@ -52,7 +52,7 @@ TETRA_FACES = struct.pack("<Biii", 3, 0, 1, 2) * 4
 
 DAMAGED_PLY = {
     "truncated-ascii": (ply_header("ascii", 100) + ASCII_ROWS[: len(ASCII_ROWS) // 2], "50 of the 100 vertex"),
-    "short-vertex-line": (ply_header("ascii", 100) + b"0 0\n" + ASCII_ROWS.split(b"\n", 1)[1], "vertex 0 has 2 numbers"),
+    "short-vertex-line": (ply_header("ascii", 100) + b"0 0\n" + ASCII_ROWS.split(b"\n", 1)[1], "vertex 0 has only 2 numbers"),
     "faces-without-xyz": (ply_header("ascii", 3, "property float a\nproperty float b\n", 1) + b"0 0\n1 0\n0 1\n3 0 1 2\n",
                           "no scalar 'x'"),
     "only-x": (ply_header("ascii", 3, "property float x\n", 1) + b"0\n1\n2\n3 0 1 2\n", "no scalar 'y'"),
@@ -60,6 +60,31 @@ DAMAGED_PLY = {
     "truncated-binary-faces": (ply_header("binary_little_endian", 100, faces=8) + BINARY_ROWS + TETRA_FACES,
                                "4 of the 8 face"),
     "no-magic": (b"solid cube\n", "does not start with the line 'ply'"),
+    # vtkPLYReader reads the points a face names without a bounds check (found by bench/fuzz: a crash)
+    "face-index-beyond-vertices": (ply_header("binary_little_endian", 100, faces=4) + BINARY_ROWS +
+                                   struct.pack("<Biii", 3, 0, 1, 2) * 3 + struct.pack("<Biii", 3, 0, 134217729, 2),
+                                   "face 3 names vertex 134217729, but there are 100 vertices"),
+    "negative-face-index-ascii": (ply_header("ascii", 100, faces=1) + ASCII_ROWS + b"3 0 -1 2\n",
+                                  "face 0 names vertex -1"),
+    "faces-without-vertex-indices": (ply_header("binary_little_endian", 100).replace(
+        b"end_header", b"element face 1\nproperty list uchar int vertex_ids\nend_header") + BINARY_ROWS +
+        struct.pack("<Biii", 3, 0, 1, 2), "its faces have no 'vertex_indices' list"),
+    # VTK's header parser reads this as a face element without properties, then crashes (bench/fuzz)
+    "header-words-run-together": (ply_header("binary_big_endian", 100).replace(
+        b"end_header", b"element face 0Jproperty list uchar int vertex_indices\nend_header") + BINARY_ROWS,
+        "bad element in header line"),
+    "element-without-property": (ply_header("ascii", 100).replace(b"end_header", b"element edge 0\nend_header") +
+                                 ASCII_ROWS, "the element 'edge' has no property"),
+    "blank-line-in-data": (ply_header("ascii", 100) + b"0 0 0\n\n" + ASCII_ROWS.split(b"\n", 1)[1],
+                           "a blank line where vertex 1 was expected"),
+    "nul-bytes-in-ascii-data": (ply_header("ascii", 100, faces=1) + ASCII_ROWS + b"3 0 1 2\0\0\0 7\n",
+                                "binary data (a NUL byte) in a text line, in face 0"),
+    "vertex-element-twice": (ply_header("ascii", 100).replace(b"end_header", b"element vertex 0\nproperty float x\nend_header")
+                             + ASCII_ROWS, "the element 'vertex' is declared twice"),
+    "incomplete-face-ascii": (ply_header("ascii", 100, faces=1) + ASCII_ROWS + b"3 0 1\n", "face 0 is incomplete"),
+    # VTK's parser splits words at blanks only: "3-0" is one word, and the fourth word is missing (bench/fuzz)
+    "face-words-run-together": (ply_header("ascii", 100, faces=1) + ASCII_ROWS + b"3-0 1 2\n",
+                                "'3-0' is not a number, in face 0"),
 }
 
 

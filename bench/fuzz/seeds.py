@@ -5,7 +5,8 @@ import sys
 
 root = sys.argv[1]
 os.makedirs(os.path.join(root, "expression"), exist_ok=True)
-os.makedirs(os.path.join(root, "cloud"), exist_ok=True)
+for folder in ("cloud", "xyz", "ply"):
+    os.makedirs(os.path.join(root, folder), exist_ok=True)
 formulas = ["max(1 - x^2 - y^2, 0)", "-2*pi*(y - 0.5)", "(a1^2 + a2^2)/2",
             "hypot(x, y) <= 1 ? (hypot(x, y) - 1)^2 / (2*t) : 0", "clamp(sin(x)*cos(y), -0.5, 0.5) + atan2(y, x)",
             "if(x > 0 && !(y < 1) || z == 2, log(abs(x) + 1e-9), sqrt(fmod(a1, 3)))", "min(a1, a2, a3, -x ** 2 % 7)",
@@ -25,4 +26,5 @@ big = (header % "binary_big_endian").encode() + b"".join(struct.pack(">fff", *p)
 seeds = [b"\x00" + text.encode(), b"\x01" + ascii_ply.encode(), b"\x01" + binary, b"\x01" + big,
          b"\x01" + (header % "ascii").replace("element face 2\n", "element face 0\n").encode() + b"0 0 0\n" * 5]
 for k, s in enumerate(seeds):
-    open(os.path.join(root, "cloud", "seed%d" % k), "wb").write(s)
+    open(os.path.join(root, "cloud", "seed%d" % k), "wb").write(s)  # first byte: the reader
+    open(os.path.join(root, "xyz" if s[0] == 0 else "ply", "seed%d" % k), "wb").write(s[1:])
