@@ -387,6 +387,11 @@ sltk::Status checkAscii(std::istream& in, const std::string& path, const std::ve
       {
         return damaged(path, "it is truncated: " + itemText(element, item) + " are there");
       }
+      if (in.eof())
+      {
+        // VTK's parser takes a last line without a line end for the end of the file, and aborts.
+        return damaged(path, "the line of " + element.Name + " " + std::to_string(item) + " has no line end");
+      }
       const std::string odd = oddLine(line);
       if (!odd.empty())
       {

