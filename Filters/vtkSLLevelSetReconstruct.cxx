@@ -4,10 +4,14 @@
 #include "SLTKBridge.h"
 #include "SLTKGuard.h"
 #include "SLTKReconstructionOutput.h"
+#include "SLTKTiledSurface.h"
 
 #include "sltk/recon/Reconstruction.h"
+#include "sltk/tiled/TiledReconstruction.h"
 
 #include "vtkDataObject.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -146,11 +150,48 @@ void markOutputsComplete(vtkInformationVector* outputs)
   }
 }
 
+/// Runs 2..R stored as tiles (AdaptiveStorage): the surface contoured tile by
+/// tile, the run summary with the stored and the uniform node counts per run;
+/// no image.
+int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionPlan<3>& plan,
+  const sltk::Context& ctx, vtkImageData* image, vtkPolyData* surface, vtkTable* history)
+{
+  sltk::TiledReconstructionResult<3> result;
+  const sltk::Status status = sltk::reconstructTiled(plan, ctx, result);
+  if (!status.isOk())
+  {
+    vtkErrorWithObjectMacro(self, "Reconstruction failed: " << status.message());
+    return 0;
+  }
+  sltk::vtkbridge::runSummary(result.Records, image);
+  vtkNew<vtkDoubleArray> stored, uniform;
+  stored->SetName("RunStoredNodes");
+  uniform->SetName("RunUniformNodes");
+  for (size_t r = 0; r < result.Records.Runs.size(); ++r)
+  {
+    // Run 1 is uniform (its grid is the coarsest); runs >= 2 have a storage record.
+    const double all = static_cast<double>(result.Records.Runs[r].Grid.nodeCount());
+    double held = all;
+    for (const sltk::TiledRunRecord& run : result.Storage)
+    {
+      held = run.Run == static_cast<int>(r + 1) ? static_cast<double>(run.StoredNodes) : held;
+    }
+    stored->InsertNextValue(held);
+    uniform->InsertNextValue(all);
+  }
+  image->GetFieldData()->AddArray(stored);
+  image->GetFieldData()->AddArray(uniform);
+  sltk::vtkbridge::historyTable(result.Records.History, history);
+  sltk::vtkbridge::tiledZeroLevelSet(result.Field, result.Box, surface);
+  return 1;
+}
+
 /// Plans (ReconstructionPlan.h) and runs Algorithm 1 on `cloud` (moved in),
-/// then fills the image (lying in the plane z = `z` in 2D) and the history.
+/// then fills the image (lying in the plane z = `z` in 2D), the history and,
+/// with AdaptiveStorage, the surface.
 template <int D>
 int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, double z, const sltk::Context& ctx,
-  vtkImageData* image, vtkTable* history)
+  vtkImageData* image, vtkPolyData* surface, vtkTable* history)
 {
   sltk::ReconstructionOptions options;
   sltk::Status status = optionsOf(self, options);
@@ -164,6 +205,19 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
   if (!status.isOk())
   {
     vtkErrorWithObjectMacro(self, "Input point set rejected: " << status.message());
+    return 0;
+  }
+  if constexpr (D == 3)
+  {
+    if (self->GetAdaptiveStorage())
+    {
+      return reconstructTiledInto(self, plan, ctx, image, surface, history);
+    }
+  }
+  else if (self->GetAdaptiveStorage())
+  {
+    vtkErrorWithObjectMacro(self, "AdaptiveStorage is for 3D clouds; this cloud is planar (a 2D reconstruction): "
+                                  "turn AdaptiveStorage off");
     return 0;
   }
   sltk::ReconstructionResult<D> result;
@@ -244,13 +298,16 @@ int vtkSLLevelSetReconstruct::RequestData(
   sltk::PointCloud<2> flat;
   double z = 0.0;
   const int done = sltk::flattenIfPlanar(cloud, flat, z)
-    ? reconstructInto<2>(this, std::move(flat), z, ctx, image, history)
-    : reconstructInto<3>(this, std::move(cloud), 0.0, ctx, image, history);
+    ? reconstructInto<2>(this, std::move(flat), z, ctx, image, surface, history)
+    : reconstructInto<3>(this, std::move(cloud), 0.0, ctx, image, surface, history);
   if (!done)
   {
     return 0;
   }
-  sltk::vtkbridge::zeroLevelSet(image, surface);
+  if (!this->AdaptiveStorage)
+  {
+    sltk::vtkbridge::zeroLevelSet(image, surface);
+  }
   sltk::vtkbridge::transferCloudAttributes(input, surface);
   markOutputsComplete(outputVector);
   return 1;
@@ -327,6 +384,7 @@ void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
   os << (this->RunSchedule.empty() ? " none (Table 4.1)\n" : "\n");
   os << indent << "RemoveOutliers: " << this->RemoveOutliers << "\n";
   os << indent << "DetectTunnels: " << this->DetectTunnels << "\n";
+  os << indent << "AdaptiveStorage: " << this->AdaptiveStorage << "\n";
   os << indent << "OutlierDeviations: " << this->OutlierDeviations << "\n";
   os << indent << "ThinningFactor: " << this->ThinningFactor << "\n";
 }

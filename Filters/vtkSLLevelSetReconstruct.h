@@ -197,6 +197,20 @@ public:
   ///@}
 
   ///@{
+  /// AdaptiveStorage (default off; 3D clouds): runs 2..R store only the tiles of
+  /// 8^3 nodes within one tile of the front, the finest levels of the octree
+  /// (sltk/tiled/TiledReconstruction.h, Documentation/Octree.md "The tiled
+  /// band"): the same iterations and surface as the uniform grids, with memory
+  /// that follows the surface. Port 0 then holds no SignedDistance image, only
+  /// the run summary in its field data (with RunStoredNodes and
+  /// RunUniformNodes); the surface (port 1) is contoured tile by tile. The
+  /// automatic restart with a finer C_dx for thin parts is not done.
+  vtkSetMacro(AdaptiveStorage, bool);
+  vtkGetMacro(AdaptiveStorage, bool);
+  vtkBooleanMacro(AdaptiveStorage, bool);
+  ///@}
+
+  ///@{
   /// Threads used by the solver; 0 means all hardware threads. Default 0.
   vtkSetMacro(NumberOfThreads, int);
   vtkGetMacro(NumberOfThreads, int);
@@ -233,6 +247,7 @@ protected:
   double OutlierDeviations = 3.0;
   double ThinningFactor = 0.0;
   bool DetectTunnels = false;
+  bool AdaptiveStorage = false;
 
 private:
   vtkSLLevelSetReconstruct(const vtkSLLevelSetReconstruct&) = delete;

@@ -178,7 +178,11 @@ sltk::Status readHeader(
       }
       elements.back().Properties.push_back(property);
     }
-    else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty())
+    else if (keyword.empty())
+    {
+      return damaged(path, "a blank line in the header, at line " + std::to_string(number)); // VTK reads a word there
+    }
+    else if (keyword != "comment" && keyword != "obj_info")
     {
       return damaged(path, "unknown keyword in " + where);
     }

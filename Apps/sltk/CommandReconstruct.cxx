@@ -103,6 +103,7 @@ struct Reconstruct
   int Threads = 0;
   bool Quiet = false;
   bool Verbose = false;
+  bool Octree = false; ///< AdaptiveStorage: runs 2..R stored as tiles around the front
   bool given(const char* name) const { return this->Parser->count(name) > 0; }
   int run() const;
 };
@@ -135,6 +136,12 @@ int Reconstruct::run() const
   {
     return fail(paths, 2);
   }
+  if (this->Octree && this->given("--output"))
+  {
+    return fail("--octree stores no full grid, so there is no image for -o: write --surface, --json or --csv "
+                "(the octree's .htg output is not built yet)",
+      2);
+  }
   if (this->given("--png"))
   {
     const std::string problem = pngProblem(this->Png);
@@ -165,6 +172,10 @@ int Reconstruct::run() const
   double bounds[6];
   cloud->GetBounds(bounds);
   const bool planar = cloud->GetNumberOfPoints() > 0 && bounds[4] == bounds[5]; // reconstructed in 2D
+  if (planar && this->Octree)
+  {
+    return fail(path + " has no z extent (a 2D reconstruction): --octree is for 3D clouds", 2);
+  }
   if (planar && this->given("--surface") && extensionOf(this->Surface) != "vtp")
   {
     return fail(path + " has no z extent, so its reconstruction is a curve, which " + extensionOf(this->Surface) +
@@ -204,6 +215,7 @@ int Reconstruct::run() const
   filter->SetOutlierDeviations(o.Cleaning.Outliers.Deviations);
   filter->SetThinningFactor(o.Cleaning.ThinningFactor);
   filter->SetDetectTunnels(o.DetectTunnels);
+  filter->SetAdaptiveStorage(this->Octree);
   filter->Update();
   bar->finish();
   if (!errors->Message.empty())
@@ -226,6 +238,8 @@ int Reconstruct::run() const
   auto* cloudError = fd->GetArray("RunCloudError");
   auto* runSeconds = fd->GetArray("RunSeconds");
   auto* farPoints = fd->GetArray("RunFarPoints");
+  auto* storedNodes = fd->GetArray("RunStoredNodes"); // --octree only
+  auto* uniformNodes = fd->GetArray("RunUniformNodes");
   std::printf("cloud      %s (%lld points, h_P = %.6g)\n", path.c_str(),
     static_cast<long long>(cloud->GetNumberOfPoints()), fd->GetArray("CloudSpacing")->GetTuple1(0));
   const auto fieldValue = [fd](const char* name) { return fd->GetArray(name)->GetTuple1(0); };
@@ -258,6 +272,13 @@ int Reconstruct::run() const
       { "iterations", static_cast<long long>(its->GetTuple1(r)) }, { "energy", energy->GetTuple1(r) },
       { "err_cloud", cloudError->GetTuple1(r) }, { "far_points", farPoints->GetTuple1(r) },
       { "seconds", runSeconds->GetTuple1(r) } });
+    if (storedNodes && uniformNodes)
+    {
+      const double stored = storedNodes->GetTuple1(r), all = uniformNodes->GetTuple1(r);
+      std::printf("      stored %.0f of %.0f nodes (%.1f%%)\n", stored, all, 100.0 * stored / all);
+      runRecords.back()["stored_nodes"] = static_cast<long long>(stored);
+      runRecords.back()["uniform_nodes"] = static_cast<long long>(all);
+    }
   }
   const double hP = fd->GetArray("CloudSpacing")->GetTuple1(0);
   const double finalError =
@@ -426,6 +447,9 @@ Command addReconstructCommand(CLI::App& sltk)
       "add Chamfer and Hausdorff distances to a reference surface\n(.off .ply .obj .stl .vtp) to the summary: "
       "Chamfer =\n(mean d(result->ref) + mean d(ref->result)) / 2")
     ->option_text("MESH");
+  app->add_flag("--octree", command->Octree,
+    "memory that follows the surface: runs 2..R store only 8^3-node tiles\naround the front (the octree's finest "
+    "levels; the same surface);\nno -o image");
   app->add_flag("--quiet", command->Quiet, "no progress bar");
   app->add_flag(
     "--verbose", command->Verbose, "the solver's log (cleaning counts, grids, per-run phase times) on stderr");

@@ -82,6 +82,8 @@ DAMAGED_PLY = {
     "vertex-element-twice": (ply_header("ascii", 100).replace(b"end_header", b"element vertex 0\nproperty float x\nend_header")
                              + ASCII_ROWS, "the element 'vertex' is declared twice"),
     "no-final-line-end": (ply_header("ascii", 100) + ASCII_ROWS.rstrip(b"\n"), "the line of vertex 99 has no line end"),
+    "blank-line-in-header": (ply_header("ascii", 100).replace(b"element vertex", b"\t\nelement vertex") + ASCII_ROWS,
+                             "a blank line in the header, at line 3"),
     "incomplete-face-ascii": (ply_header("ascii", 100, faces=1) + ASCII_ROWS + b"3 0 1\n", "face 0 is incomplete"),
     # VTK's parser splits words at blanks only: "3-0" is one word, and the fourth word is missing (bench/fuzz)
     "face-words-run-together": (ply_header("ascii", 100, faces=1) + ASCII_ROWS + b"3-0 1 2\n",

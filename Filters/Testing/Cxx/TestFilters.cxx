@@ -7,6 +7,7 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
+#include "vtkFeatureEdges.h"
 #include "vtkFieldData.h"
 #include "vtkHyperTreeGrid.h"
 #include "vtkImageData.h"
@@ -141,6 +142,35 @@ int main()
     auto* table = vtkTable::SafeDownCast(recon->GetOutputDataObject(2));
     check(table && table->GetNumberOfRows() >= 2 && table->GetColumnByName("CloudError") != nullptr,
       "output 2 is the convergence history");
+
+    // AdaptiveStorage: runs >= 2 in tiles around the front; the same iterations, the same
+    // surface up to round-off (phi agrees to ~1e-14 cells, TestTiledReconstruction), watertight.
+    const vtkIdType uniformPoints = surface ? surface->GetNumberOfPoints() : 0;
+    const vtkIdType uniformRows = table ? table->GetNumberOfRows() : 0;
+    recon->AdaptiveStorageOn();
+    check(recon->GetExecutive()->Update() == 1, "AdaptiveStorage: the sphere is reconstructed");
+    auto* tiled = vtkPolyData::SafeDownCast(recon->GetOutputDataObject(1));
+    vtkNew<vtkFeatureEdges> open;
+    open->SetInputData(tiled);
+    open->BoundaryEdgesOn();
+    open->NonManifoldEdgesOn();
+    open->FeatureEdgesOff();
+    open->ManifoldEdgesOff();
+    open->Update();
+    check(tiled && tiled->GetNumberOfPolys() > 100 && open->GetOutput()->GetNumberOfCells() == 0,
+      "AdaptiveStorage: the surface contoured tile by tile has no boundary or non-manifold edge");
+    check(tiled && std::abs(tiled->GetNumberOfPoints() - uniformPoints) <= uniformPoints / 1000,
+      "AdaptiveStorage: the surface has the uniform one's points (" + std::to_string(tiled->GetNumberOfPoints()) +
+        " vs " + std::to_string(uniformPoints) + ")");
+    auto* tiledTable = vtkTable::SafeDownCast(recon->GetOutputDataObject(2));
+    check(tiledTable && tiledTable->GetNumberOfRows() == uniformRows, "AdaptiveStorage: the same iterations");
+    auto* summary = vtkImageData::SafeDownCast(recon->GetOutputDataObject(0));
+    auto* stored = summary->GetFieldData()->GetArray("RunStoredNodes");
+    auto* all = summary->GetFieldData()->GetArray("RunUniformNodes");
+    check(summary->GetNumberOfPoints() == 0 && stored && all && stored->GetNumberOfTuples() == 2 &&
+        stored->GetTuple1(0) == all->GetTuple1(0) && stored->GetTuple1(1) > 0,
+      "AdaptiveStorage: no image, stored and uniform node counts per run (run 1 uniform)");
+    recon->AdaptiveStorageOff();
     recon->SetNumberOfRuns(99);
     check(recon->GetNumberOfRuns() == 99 && recon->GetExecutive()->Update() == 0,
       "NumberOfRuns outside 1-6 is refused, not clamped");

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file SLTKTiledSurface.h
+/// The zero level set of a tiled reconstruction (sltk/tiled/TiledField.h,
+/// Documentation/Octree.md "The tiled band") as one vtkPolyData, without the
+/// full grid: each tile's cells (lower corner in the tile) are contoured by
+/// vtkFlyingEdges3D on an image whose extent is the tile's in the global grid
+/// (global origin and spacing, so a node shared by two tiles has the same
+/// coordinates in both), and the pieces are merged at identical points. The
+/// union is the uniform contour of the same nodes: as watertight as it.
+
+#include "sltk/recon/UnitBox.h"
+#include "sltk/tiled/TiledField.h"
+
+class vtkPolyData;
+
+namespace sltk
+{
+namespace vtkbridge
+{
+
+/// The zero level set of `field` in the user's units (`box`), with normals.
+void tiledZeroLevelSet(const TiledField<3>& field, const UnitBox<3>& box, vtkPolyData* surface);
+
+} // namespace vtkbridge
+} // namespace sltk
