@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "CheckPly.h"
 
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
@@ -192,6 +193,20 @@ sltk::Status readHeader(
 
 sltk::Status checkVertices(const std::string& path, const std::vector<PlyElement>& elements)
 {
+  // vtkPLYReader reads the vertex element, then the face element, from the start of the data: an
+  // element before them is not skipped but read as vertices (a crash, found by bench/fuzz).
+  const bool vertexFirst = !elements.empty() && elements[0].Name == "vertex";
+  for (size_t k = 0; k < elements.size(); ++k)
+  {
+    const std::string& name = elements[k].Name;
+    const bool inPlace = name == "vertex" ? k == 0 : name == "face" ? k == 1 && vertexFirst : k >= 1 && vertexFirst;
+    if (!inPlace)
+    {
+      return damaged(path,
+        "its element '" + name + "' is out of place: VTK's PLY reader needs the vertex " +
+          "element first, then the faces, then any other (export it in that order)");
+    }
+  }
   for (const PlyElement& element : elements)
   {
     if (element.Name != "vertex")
@@ -427,8 +442,7 @@ sltk::Status checkAscii(std::istream& in, const std::string& path, const std::ve
         {
           continue;
         }
-        if (!(value >= 0.0) || value != static_cast<double>(static_cast<std::int64_t>(value)) ||
-          value > static_cast<double>(words.size() - next))
+        if (!(value >= 0.0) || value > static_cast<double>(words.size() - next) || value != std::floor(value))
         {
           return damaged(path, what + " is incomplete: its list count is " + words[next - 1] + " ('" + line + "')");
         }

@@ -84,6 +84,9 @@ DAMAGED_PLY = {
     "no-final-line-end": (ply_header("ascii", 100) + ASCII_ROWS.rstrip(b"\n"), "the line of vertex 99 has no line end"),
     "blank-line-in-header": (ply_header("ascii", 100).replace(b"element vertex", b"\t\nelement vertex") + ASCII_ROWS,
                              "a blank line in the header, at line 3"),
+    "element-before-vertices": (ply_header("binary_little_endian", 100).replace(
+        b"element vertex", b"element scan 1\nproperty int id\nelement vertex") + b"\0\0\0\0" + BINARY_ROWS,
+        "its element 'scan' is out of place"),
     "incomplete-face-ascii": (ply_header("ascii", 100, faces=1) + ASCII_ROWS + b"3 0 1\n", "face 0 is incomplete"),
     # VTK's parser splits words at blanks only: "3-0" is one word, and the fourth word is missing (bench/fuzz)
     "face-words-run-together": (ply_header("ascii", 100, faces=1) + ASCII_ROWS + b"3-0 1 2\n",
