@@ -2,7 +2,11 @@
 #include "vtkCWENOHJBSolver.h"
 
 #include "SLTKBridge.h"
+#include "SLTKCommunicator.h"
 #include "SLTKGuard.h"
+
+#include "sltk/exec/Communicator.h"
+#include "sltk/hjb/DistributedHjbSolver.h"
 
 #include "sltk/hjb/HjbResult.h"
 #include "sltk/hjb/HjbSolver.h"
@@ -14,6 +18,7 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -25,6 +30,7 @@
 #include <string>
 
 vtkStandardNewMacro(vtkCWENOHJBSolver);
+vtkCxxSetObjectMacro(vtkCWENOHJBSolver, Controller, vtkMultiProcessController);
 
 vtkCWENOHJBSolver::vtkCWENOHJBSolver()
 {
@@ -44,6 +50,8 @@ vtkCWENOHJBSolver::~vtkCWENOHJBSolver()
     delete[] * text;
     *text = nullptr;
   }
+  this->Solver.reset();
+  this->SetController(nullptr);
 }
 
 int vtkCWENOHJBSolver::FillInputPortInformation(int, vtkInformation* info)
@@ -150,8 +158,8 @@ static_assert(vtkCWENOHJBSolver::Q1 == static_cast<int>(sltk::InterpolatorKind::
     vtkCWENOHJBSolver::CWENOZ == static_cast<int>(sltk::InterpolatorKind::CwenoZ),
   "the filter's InterpolatorType names the registry's codes (InterpolatorKind.h)");
 
-int vtkCWENOHJBSolver::BuildSolver(
-  vtkInformation* inInfo, vtkImageData* values, std::unique_ptr<sltk::HjbSolver>& solver)
+int vtkCWENOHJBSolver::BuildSolver(vtkInformation* inInfo, vtkImageData* values,
+  std::unique_ptr<sltk::HjbSolver>& solver, const sltk::Communicator* comm)
 {
   // The properties' documented ranges (the plugin XML's domains): refused, never clamped.
   sltk::Status status = sltk::vtkbridge::checkPropertyRanges({
@@ -241,7 +249,8 @@ int vtkCWENOHJBSolver::BuildSolver(
     }
     if (status.isOk())
     {
-      status = sltk::makeExpressionSolver(spec, solver);
+      status = comm && comm->size() > 1 ? sltk::makeDistributedExpressionSolver(spec, *comm, solver)
+                                        : sltk::makeExpressionSolver(spec, solver);
     }
   }
   if (!status.isOk())
@@ -319,7 +328,13 @@ int vtkCWENOHJBSolver::RequestData(
   if (!this->Solver || key != this->SolverKey)
   {
     this->Solver.reset();
-    if (!this->BuildSolver(custom ? inInfo : nullptr, custom ? input : nullptr, this->Solver))
+    const sltk::Status made = sltk::vtkbridge::makeCommunicator(this->Controller, this->Communicator);
+    if (!made.isOk())
+    {
+      vtkErrorMacro(<< made.message());
+      return 0;
+    }
+    if (!this->BuildSolver(custom ? inInfo : nullptr, custom ? input : nullptr, this->Solver, this->Communicator.get()))
     {
       return 0;
     }
@@ -374,6 +389,8 @@ int vtkCWENOHJBSolver::RequestData(
   addScalar(fd, "Time", result.FinalTime);
   addScalar(fd, "Steps", static_cast<double>(result.Steps));
   addScalar(fd, "EvaluationsPerNode", result.EvaluationsPerNode);
+  const bool split = custom && this->Communicator && this->Communicator->size() > 1;
+  addScalar(fd, "Ranks", split ? this->Communicator->size() : 1); // the ranks the solve was split over
   if (!std::isnan(result.L1Error))
   {
     addScalar(fd, "L1Error", result.L1Error);

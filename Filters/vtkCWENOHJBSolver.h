@@ -23,12 +23,20 @@
  * Output: vtkImageData with the point array "ValueFunction" at the requested
  * time; "ReachTime" (the first time a node is reached (3.40), -1 if never)
  * with an obstacle, with ComputeReachableSet, and for Test 5; in the field
- * data "Time", "Steps", "EvaluationsPerNode" and, when an exact solution is
+ * data "Time", "Steps", "EvaluationsPerNode", "Ranks" (how many the solve was
+ * split over) and, when an exact solution is
  * known, "L1Error" and "LinfError". The output advertises the scheme's time
  * steps t_k = k dt (TIME_STEPS), so ParaView animates the evolution: playing
  * forward continues from the last step computed, an earlier time restarts.
  * It also advertises sub-extents so that parallel writers get one block per
- * rank (every rank computes the whole grid).
+ * rank.
+ *
+ * Under MPI (pvbatch, pvserver, mpirun sltk hjb; the Controller, by default
+ * the global controller), a custom problem is split over the ranks: each rank
+ * stores and steps a slab of the last axis with ghost rows exchanged after
+ * every step (sltk/hjb/DistributedHjbSolver.h; the values are bitwise those of
+ * one rank), and the slabs are gathered for the requested extent. The presets
+ * are still solved whole on every rank.
  */
 #ifndef vtkCWENOHJBSolver_h
 #define vtkCWENOHJBSolver_h
@@ -38,8 +46,10 @@
 
 #include <memory> // for std::unique_ptr
 
+class vtkMultiProcessController;
 namespace sltk
 {
+class Communicator;
 class HjbSolver;
 }
 
@@ -226,8 +236,14 @@ protected:
   ~vtkCWENOHJBSolver() override;
 
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  /// Builds the solver of the current properties (and input image, or its grid only when values is null).
-  int BuildSolver(vtkInformation* inInfo, vtkImageData* values, std::unique_ptr<sltk::HjbSolver>& solver);
+  /// Builds the solver of the current properties (and input image, or its grid only when values is null),
+  /// split over `comm`'s ranks for a custom problem when comm has more than one.
+  int BuildSolver(vtkInformation* inInfo, vtkImageData* values, std::unique_ptr<sltk::HjbSolver>& solver,
+    const sltk::Communicator* comm = nullptr);
+
+  /// The ranks a custom problem is split over (nullptr: the global controller, as in pvbatch and pvserver).
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -268,8 +284,10 @@ protected:
   vtkTypeBool ComputeReachableSet = 0;
 
 private:
-  std::unique_ptr<sltk::HjbSolver> Solver; ///< kept between time requests (animation)
-  vtkMTimeType SolverKey = 0;              ///< max MTime of this filter and its input when built
+  vtkMultiProcessController* Controller = nullptr;
+  std::unique_ptr<sltk::Communicator> Communicator; ///< the Solver's (declared first: destroyed after it)
+  std::unique_ptr<sltk::HjbSolver> Solver;          ///< kept between time requests (animation)
+  vtkMTimeType SolverKey = 0;                       ///< max MTime of this filter and its input when built
   vtkCWENOHJBSolver(const vtkCWENOHJBSolver&) = delete;
   void operator=(const vtkCWENOHJBSolver&) = delete;
 };

@@ -266,11 +266,11 @@ sltk::Status checkIndexLists(const std::string& path, const std::vector<PlyEleme
   return sltk::Status::ok();
 }
 
-sltk::Status indexOutOfRange(
-  const std::string& path, const PlyElement& element, std::int64_t item, std::int64_t index, std::int64_t vertices)
+sltk::Status indexOutOfRange(const std::string& path, const PlyElement& element, std::int64_t item,
+  const std::string& index, std::int64_t vertices)
 {
   return damaged(path,
-    element.Name + " " + std::to_string(item) + " names vertex " + std::to_string(index) + ", but there are " +
+    element.Name + " " + std::to_string(item) + " names vertex " + index + ", but there are " +
       std::to_string(vertices) + " vertices");
 }
 
@@ -357,7 +357,7 @@ sltk::Status checkBinary(
             }
             if (index < 0 || index >= vertices)
             {
-              return indexOutOfRange(path, element, item, index, vertices);
+              return indexOutOfRange(path, element, item, std::to_string(index), vertices);
             }
           }
         }
@@ -454,7 +454,7 @@ sltk::Status checkAscii(std::istream& in, const std::string& path, const std::ve
           }
           if (p.isVertexIndexList() && !(value >= 0.0 && value < static_cast<double>(vertices)))
           {
-            return indexOutOfRange(path, element, item, static_cast<std::int64_t>(value), vertices);
+            return indexOutOfRange(path, element, item, words[next], vertices);
           }
         }
       }

@@ -4,8 +4,9 @@
 #include "Commands.h"
 #include "ErrorCollector.h"
 #include "HjbCustomProblem.h"
-#include "ProgressBar.h"
+#include "MpiSession.h"
 #include "OutputPaths.h"
+#include "ProgressBar.h"
 #include "WriteAtomically.h"
 #include "WriteSurface.h"
 
@@ -115,8 +116,10 @@ int Hjb::run() const
   const double steps = fd->GetArray("Steps")->GetTuple1(0);
   const double evaluations = fd->GetArray("EvaluationsPerNode")->GetTuple1(0);
   const int* dims = image->GetDimensions();
-  std::printf("%s, %d x %d x %d nodes, T = %g, %.0f steps, %.1f evaluations per node and step\n", presetName.c_str(),
+  const int ranks = MpiSession::size();
+  std::printf("%s, %d x %d x %d nodes, T = %g, %.0f steps, %.1f evaluations per node and step", presetName.c_str(),
     dims[0], dims[1], dims[2], t, steps, evaluations);
+  std::printf(ranks > 1 ? ", %d ranks\n" : "\n", ranks);
   std::printf("value in [%.6g, %.6g], %.3f s", range[0], range[1], seconds);
   const bool exact = fd->GetArray("L1Error") != nullptr;
   if (exact)
@@ -126,6 +129,11 @@ int Hjb::run() const
   }
   std::printf("\n");
 
+  const double peakMb = MpiSession::maxOverRanks(static_cast<double>(sltk::peakResidentBytes()) / 1e6);
+  if (MpiSession::rank() > 0)
+  {
+    return 0; // rank 0 writes the one set of outputs (every rank holds the gathered result)
+  }
   if (this->Parser->count("--output"))
   {
     const auto status = writeImage(this->Output, image);
@@ -138,8 +146,7 @@ int Hjb::run() const
   {
     nlohmann::ordered_json summary = { { "preset", presetName }, { "n", dims[0] }, { "final_time", t },
       { "min", range[0] }, { "max", range[1] }, { "seconds", seconds }, { "steps", static_cast<long long>(steps) },
-      { "evaluations_per_node", evaluations },
-      { "peak_memory_mb", static_cast<double>(sltk::peakResidentBytes()) / 1e6 } };
+      { "evaluations_per_node", evaluations }, { "peak_memory_mb", peakMb }, { "ranks", ranks } };
     if (exact)
     {
       summary["l1_error"] = fd->GetArray("L1Error")->GetTuple1(0);
@@ -186,7 +193,8 @@ Command addHjbCommand(CLI::App& sltk)
     ->option_text("FILE.vti");
   app
     ->add_option("--json", command->Json,
-      "summary: l1_error, linf_error (when exact), min, max, seconds, steps,\nevaluations_per_node")
+      "summary: l1_error, linf_error (when exact), min, max, seconds, steps,\nevaluations_per_node, peak_memory_mb "
+      "(the largest rank's), ranks")
     ->option_text("FILE");
   command->Custom.addOptions(app);
   return { app, [command] { return command->run(); } };

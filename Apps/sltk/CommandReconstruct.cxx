@@ -2,6 +2,7 @@
 // `sltk reconstruct CLOUD`: vtkSLLevelSetReconstruct from a terminal.
 #include "CliOptions.h"
 #include "Commands.h"
+#include "MpiSession.h"
 #include "ErrorCollector.h"
 #include "FileNames.h"
 #include "OutputPaths.h"
@@ -124,6 +125,14 @@ std::vector<std::string> stringValues(vtkFieldData* fd, const char* name)
 
 int Reconstruct::run() const
 {
+  if (MpiSession::size() > 1)
+  {
+    // Honest until the reconstruction is distributed (Documentation/Distributed.md): N ranks would each
+    // compute the whole cloud.
+    return fail("sltk reconstruct runs on one rank today (every rank would compute the whole cloud): run it "
+                "without mpirun, or with -np 1; `mpirun sltk hjb` is distributed",
+      2);
+  }
   if (this->given("--eta") && this->given("--schedule"))
   {
     return fail("give either --eta or --schedule (a schedule sets eta of every run)", 2);

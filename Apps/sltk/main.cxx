@@ -2,6 +2,7 @@
 // sltk: the Semi-Lagrangian level-set ToolKit from a terminal.
 #include "CliOptions.h"
 #include "Commands.h"
+#include "MpiSession.h"
 
 #include <vtkLogger.h>
 
@@ -33,6 +34,7 @@ int main(int argc, char** argv)
 {
   // Errors reach the user once, through the commands' own messages.
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  const sltkcli::MpiSession mpi(&argc, &argv); // under mpirun: the ranks the filters split their work over
   CLI::App sltk("sltk: the Semi-Lagrangian level-set ToolKit (Preda 2024)\n", "sltk");
   sltk.set_version_flag("--version", "sltk " SLTK_VERSION);
   sltk.require_subcommand(1);

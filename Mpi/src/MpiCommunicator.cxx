@@ -165,6 +165,28 @@ void MpiCommunicator::broadcast(void* bytes, std::size_t count, int root) const
   }
 }
 
+void MpiCommunicator::sendReceive(
+  const void* send, std::size_t sendBytes, int destination, void* receive, std::size_t receiveBytes, int source) const
+{
+  const int to = destination < 0 ? MPI_PROC_NULL : destination;
+  const int from = source < 0 ? MPI_PROC_NULL : source;
+  const auto* out = static_cast<const unsigned char*>(send);
+  auto* in = static_cast<unsigned char*>(receive);
+  // In chunks that fit an int count; both sides agree on the sizes (the same rows).
+  const std::size_t total = std::max(destination < 0 ? 0 : sendBytes, source < 0 ? 0 : receiveBytes);
+  for (std::size_t done = 0; done < total || done == 0; done += MaxChunk)
+  {
+    const std::size_t sendNow = destination < 0 || done >= sendBytes ? 0 : std::min(sendBytes - done, MaxChunk);
+    const std::size_t receiveNow = source < 0 || done >= receiveBytes ? 0 : std::min(receiveBytes - done, MaxChunk);
+    MPI_Sendrecv(out + (sendNow ? done : 0), static_cast<int>(sendNow), MPI_BYTE, to, 0, in + (receiveNow ? done : 0),
+      static_cast<int>(receiveNow), MPI_BYTE, from, 0, this->P->Comm, MPI_STATUS_IGNORE);
+    if (total == 0)
+    {
+      break;
+    }
+  }
+}
+
 void MpiCommunicator::allGather(const void* bytes, std::size_t count, void* out) const
 {
   std::vector<unsigned char> received;

@@ -12,14 +12,25 @@ namespace sltk
 const char* const NonFiniteFix = "give formulas that are finite on the whole domain and control set (guard "
                                  "divisions, logarithms and roots, e.g. max(x, 1e-9))";
 
-namespace
+HjbGrid wholeGrid(const HjbExpressionSpec& spec)
 {
-using Control = std::array<double, 3>;
+  HjbGrid g;
+  g.Dimension = spec.Dimension;
+  for (int a = 0; a < spec.Dimension; ++a)
+  {
+    const Index n = spec.Nodes[static_cast<size_t>(a)];
+    const bool periodic = spec.Bounds[static_cast<size_t>(a)] == Boundary::Periodic;
+    g.Dims[a] = n;
+    g.Origin[a] = spec.Lower[static_cast<size_t>(a)];
+    g.Spacing[a] = (spec.Upper[static_cast<size_t>(a)] - spec.Lower[static_cast<size_t>(a)]) /
+      static_cast<double>(periodic ? n : n - 1);
+  }
+  return g;
+}
 
-/// Controls at which to evaluate f_D and f_C: enough to find a formula that
-/// fails for some control (its extremes), without searching A.
-std::vector<Control> sampleControls(const HjbExpressionSpec& spec)
+std::vector<std::array<double, 3>> sampleControls(const HjbExpressionSpec& spec)
 {
+  using Control = std::array<double, 3>;
   const int m = spec.ControlDimension;
   std::vector<Control> samples;
   switch (spec.Controls)
@@ -65,6 +76,10 @@ std::vector<Control> sampleControls(const HjbExpressionSpec& spec)
   }
   return samples;
 }
+
+namespace
+{
+using Control = std::array<double, 3>;
 
 std::string describe(
   const Expression& e, double value, const double (&v)[SlotCount], int dimension, int controls, bool withTime)
@@ -178,6 +193,11 @@ public:
   double startTime() const override { return this->Inner->startTime(); }
   Index stepsDone() const override { return this->Inner->stepsDone(); }
   void result(HjbRunResult& out) const override { this->Inner->result(out); }
+  void readValues(Index first, Index count, double* out) override { this->Inner->readValues(first, count, out); }
+  void writeValues(Index first, Index count, const double* values) override
+  {
+    this->Inner->writeValues(first, count, values);
+  }
 
   Status advanceTo(double t, const Context& ctx) override
   {
@@ -190,7 +210,7 @@ public:
     std::string cause;
     for (const double at : { start, start + this->Inner->timeStep() })
     {
-      cause = findNonFiniteFormula(this->Spec, *this->Compiled, this->Inner->grid(), at, FormulaScope::AllFormulas);
+      cause = findNonFiniteFormula(this->Spec, *this->Compiled, wholeGrid(this->Spec), at, FormulaScope::AllFormulas);
       if (!cause.empty())
       {
         break;

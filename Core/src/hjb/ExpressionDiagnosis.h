@@ -9,7 +9,9 @@
 
 #include "ExpressionSolverOf.h"
 
+#include <array>
 #include <memory>
+#include <vector>
 #include <string>
 
 namespace sltk
@@ -20,6 +22,15 @@ enum class FormulaScope
   StateFormulas, ///< v_0 and g only (functions of x, known before the first step)
   AllFormulas    ///< also f_D and f_C, at the sampled controls
 };
+
+/// The grid of `spec` without its window (ExpressionProblem.h WindowFirst): a
+/// distributed solve's slabs name a failing formula where the serial solve does.
+HjbGrid wholeGrid(const HjbExpressionSpec& spec);
+
+/// Controls at which to evaluate f_D and f_C without searching A: the corners
+/// and the centre of a box, the centre and the poles of a ball or sphere, the
+/// points of a finite set, a = 0 without controls (unused components 0).
+std::vector<std::array<double, 3>> sampleControls(const HjbExpressionSpec& spec);
 
 /// What to do about a formula that findNonFiniteFormula() names.
 extern const char* const NonFiniteFix;

@@ -85,7 +85,9 @@ Status compileArgmin(const HjbExpressionSpec& spec, int controls, CompiledHjbExp
   return Status::ok();
 }
 
-Status compileAll(const HjbExpressionSpec& spec, CompiledHjbExpressions& out)
+} // namespace
+
+Status compileHjbExpressions(const HjbExpressionSpec& spec, CompiledHjbExpressions& out)
 {
   const int controls = spec.Controls == ControlKind::None ? 0 : spec.ControlDimension;
   const std::vector<std::string> all = slotNames(spec.Dimension, controls, true);
@@ -124,6 +126,9 @@ Status compileAll(const HjbExpressionSpec& spec, CompiledHjbExpressions& out)
   return Status::ok();
 }
 
+namespace
+{
+
 template <int D>
 Status buildGrid(const HjbExpressionSpec& spec, GridSpec<D>& grid)
 {
@@ -143,7 +148,16 @@ Status buildGrid(const HjbExpressionSpec& spec, GridSpec<D>& grid)
         ", " + std::to_string(hi) + "]: give finite bounds with lower < upper");
     }
     const bool periodic = spec.Bounds[static_cast<size_t>(a)] == Boundary::Periodic;
-    grid.Dims[a] = n;
+    const Index first = spec.WindowFirst[static_cast<size_t>(a)];
+    const Index window = spec.WindowNodes[static_cast<size_t>(a)];
+    if (window < 0 || first < 0 || (window > 0 && (first + window > n || window < 5 || periodic)))
+    {
+      return Status::invalidArgument(std::string("the window along ") + axisNames[a] + " (nodes " +
+        std::to_string(first) + " + " + std::to_string(window) + " of " + std::to_string(n) +
+        ") is not inside the grid, shorter than 5 nodes or on a periodic axis");
+    }
+    grid.Dims[a] = window > 0 ? window : n;
+    grid.Offset[a] = window > 0 ? first : 0;
     grid.Origin[a] = lo;
     grid.Spacing[a] = (hi - lo) / static_cast<double>(periodic ? n : n - 1);
     grid.Bounds[a] = spec.Bounds[static_cast<size_t>(a)];
@@ -151,9 +165,9 @@ Status buildGrid(const HjbExpressionSpec& spec, GridSpec<D>& grid)
   return grid.validate();
 }
 
-Status checkSizesAndTimes(const HjbExpressionSpec& spec, Index nodes)
+/// u^n, u^{n+1} with ghost layers, the reachable set and the output copies: about 48 bytes a node.
+Status checkMemory(Index nodes)
 {
-  // u^n, u^{n+1} with ghost layers, the reachable set and the output copies: about 48 bytes a node.
   const double bytes = 48.0 * static_cast<double>(nodes);
   const double available = static_cast<double>(availableMemoryBytes());
   if (available > 0.0 && bytes > available)
@@ -162,6 +176,11 @@ Status checkSizesAndTimes(const HjbExpressionSpec& spec, Index nodes)
       std::to_string(bytes / 1e9) + " GB, more than the " + std::to_string(available / 1e9) +
       " GB available: use fewer nodes");
   }
+  return Status::ok();
+}
+
+Status checkSizesAndTimes(const HjbExpressionSpec& spec, Index nodes)
+{
   if (!spec.InitialValues.empty())
   {
     if (static_cast<Index>(spec.InitialValues.size()) != nodes)
@@ -203,11 +222,10 @@ Status checkSizesAndTimes(const HjbExpressionSpec& spec, Index nodes)
   return Status::ok();
 }
 
+/// Every check that needs no allocation, and the grid and time steps (no memory check).
 template <int D>
-Status makeForDimension(
-  const HjbExpressionSpec& spec, SharedHjbExpressions expressions, std::unique_ptr<HjbSolver>& solver)
+Status planForDimension(const HjbExpressionSpec& spec, ExpressionSolverInput<D>& in)
 {
-  ExpressionSolverInput<D> in;
   SLTK_RETURN_IF_ERROR(buildGrid<D>(spec, in.Grid));
   SLTK_RETURN_IF_ERROR(checkSizesAndTimes(spec, in.Grid.nodeCount()));
   double dx = in.Grid.Spacing[0];
@@ -220,15 +238,23 @@ Status makeForDimension(
   in.Options.FinalTime = spec.FinalTime;
   in.Options.MaxTimeStep = spec.CourantNumber * dx;
   in.Options.Minimizer = spec.Minimizer;
-  SLTK_RETURN_IF_ERROR(hjbPlanTimeSteps(in.Options, in.Steps, in.Dt, true)); // T = 0: the initial datum, no step
+  return hjbPlanTimeSteps(in.Options, in.Steps, in.Dt, true); // T = 0: the initial datum, no step
+}
+
+template <int D>
+Status makeForDimension(
+  const HjbExpressionSpec& spec, SharedHjbExpressions expressions, std::unique_ptr<HjbSolver>& solver)
+{
+  ExpressionSolverInput<D> in;
+  SLTK_RETURN_IF_ERROR(planForDimension<D>(spec, in));
+  SLTK_RETURN_IF_ERROR(checkMemory(in.Grid.nodeCount()));
   in.Reachable = spec.ReachableSet || expressions->HasObstacle;
   // Pure transport: no minimisation, one unused control slot.
   in.ControlDimension = spec.Controls == ControlKind::None ? 1 : spec.ControlDimension;
   in.Expressions = expressions;
   SLTK_RETURN_IF_ERROR(makeExpressionSolverOf<D>(spec, in, solver));
   // v_0 and g are read at every node: a formula that is not finite there is refused before any step.
-  const std::string cause =
-    findNonFiniteFormula(spec, *expressions, solver->grid(), 0.0, FormulaScope::StateFormulas);
+  const std::string cause = findNonFiniteFormula(spec, *expressions, wholeGrid(spec), 0.0, FormulaScope::StateFormulas);
   if (!cause.empty())
   {
     solver.reset();
@@ -239,9 +265,10 @@ Status makeForDimension(
 }
 } // namespace
 
-Status makeExpressionSolver(const HjbExpressionSpec& spec, std::unique_ptr<HjbSolver>& solver)
+namespace
 {
-  solver.reset();
+Status checkDimensions(const HjbExpressionSpec& spec)
+{
   if (spec.Dimension < 1 || spec.Dimension > 3)
   {
     return Status::invalidArgument("the dimension must be 1, 2 or 3, got " + std::to_string(spec.Dimension));
@@ -251,8 +278,41 @@ Status makeExpressionSolver(const HjbExpressionSpec& spec, std::unique_ptr<HjbSo
     return Status::invalidArgument(
       "the control dimension must be 1, 2 or 3, got " + std::to_string(spec.ControlDimension));
   }
+  return Status::ok();
+}
+
+template <int D>
+Status planGrid(const HjbExpressionSpec& spec, HjbGrid& grid, double& dt)
+{
+  ExpressionSolverInput<D> in;
+  SLTK_RETURN_IF_ERROR(planForDimension<D>(spec, in));
+  grid = toHjbGrid(in.Grid);
+  dt = in.Dt;
+  return Status::ok();
+}
+} // namespace
+
+Status planExpressionSolve(const HjbExpressionSpec& spec, CompiledHjbExpressions& compiled, HjbGrid& grid, double& dt)
+{
+  SLTK_RETURN_IF_ERROR(checkDimensions(spec));
+  SLTK_RETURN_IF_ERROR(compileHjbExpressions(spec, compiled));
+  switch (spec.Dimension)
+  {
+    case 1:
+      return planGrid<1>(spec, grid, dt);
+    case 2:
+      return planGrid<2>(spec, grid, dt);
+    default:
+      return planGrid<3>(spec, grid, dt);
+  }
+}
+
+Status makeExpressionSolver(const HjbExpressionSpec& spec, std::unique_ptr<HjbSolver>& solver)
+{
+  solver.reset();
+  SLTK_RETURN_IF_ERROR(checkDimensions(spec));
   auto compiled = std::make_shared<CompiledHjbExpressions>();
-  SLTK_RETURN_IF_ERROR(compileAll(spec, *compiled));
+  SLTK_RETURN_IF_ERROR(compileHjbExpressions(spec, *compiled));
   switch (spec.Dimension)
   {
     case 1:

@@ -41,6 +41,13 @@ struct CompiledHjbExpressions
 };
 using SharedHjbExpressions = std::shared_ptr<const CompiledHjbExpressions>;
 
+/// Compiles every formula of `spec` (errors name the formula and the column).
+Status compileHjbExpressions(const HjbExpressionSpec& spec, CompiledHjbExpressions& out);
+
+/// Every check of makeExpressionSolver() but the memory one, without allocating the grid's state:
+/// the compiled formulas, the grid (its window, if any) and the time step.
+Status planExpressionSolve(const HjbExpressionSpec& spec, CompiledHjbExpressions& compiled, HjbGrid& grid, double& dt);
+
 template <int D, int M>
 void fillSlots(double (&v)[SlotCount], double t, const std::array<double, D>& x, const std::array<double, M>& a)
 {

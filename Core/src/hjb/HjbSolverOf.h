@@ -27,7 +27,7 @@ HjbGrid toHjbGrid(const GridSpec<D>& g)
   for (int a = 0; a < D; ++a)
   {
     p.Dims[a] = g.Dims[a];
-    p.Origin[a] = g.Origin[a];
+    p.Origin[a] = g.coordinate(a, 0); // node 0 (a window's first node, GridSpec::Offset)
     p.Spacing[a] = g.Spacing[a];
   }
   for (int a = D; a < 3; ++a)
@@ -79,6 +79,29 @@ public:
     }
     return hjbStepTo<Interp>(ctx, this->Options, this->P, this->Dt, target, this->U, this->Next, this->Done,
       &this->Stats, &this->Argmins, this->Reachable ? &this->Reach : nullptr);
+  }
+
+  void readValues(Index first, Index count, double* out) override
+  {
+    if (this->Done < 0)
+    {
+      this->reset();
+    }
+    for (Index k = 0; k < count; ++k)
+    {
+      out[k] = this->U(this->U.nodeIndex(first + k));
+    }
+  }
+  void writeValues(Index first, Index count, const double* values) override
+  {
+    if (this->Done < 0)
+    {
+      this->reset();
+    }
+    for (Index k = 0; k < count; ++k)
+    {
+      this->U(this->U.nodeIndex(first + k)) = values[k];
+    }
   }
 
   void result(HjbRunResult& out) const override

@@ -61,6 +61,14 @@ public:
   virtual void allGatherV(
     const void* bytes, std::size_t count, std::vector<unsigned char>& out, std::vector<std::int64_t>& counts) const = 0;
 
+  /// Sends `sendBytes` bytes to rank `destination` and receives `receiveBytes`
+  /// bytes from rank `source` at once (no deadlock when neighbours exchange in
+  /// both directions); -1 as a rank skips that half. The halo exchange of a
+  /// block decomposition (sltk/hjb/HjbSlabs.h). Serial: only -1 (or rank 0 to
+  /// itself, a copy).
+  virtual void sendReceive(const void* send, std::size_t sendBytes, int destination, void* receive,
+    std::size_t receiveBytes, int source) const = 0;
+
   /// The implementation's native handle (SLTK::Mpi: a pointer to its
   /// MPI_Comm, which p4est takes); nullptr for the serial communicator.
   virtual void* nativeHandle() const { return nullptr; }

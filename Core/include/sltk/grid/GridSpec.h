@@ -36,6 +36,10 @@ struct GridSpec
   std::array<double, D> Origin{};   ///< coordinates of node 0
   std::array<double, D> Spacing{};  ///< dx per axis, > 0
   std::array<Boundary, D> Bounds{}; ///< boundary policy per axis
+  /// Index of node 0 in a larger grid of the same Origin and Spacing, when this
+  /// grid is a window of it (a slab of a distributed solve): node i lies at
+  /// Origin + (Offset + i) Spacing, bitwise where the larger grid has it.
+  std::array<Index, D> Offset{};
 
   Index nodeCount() const
   {
@@ -47,7 +51,10 @@ struct GridSpec
     return n;
   }
 
-  double coordinate(int axis, Index i) const { return this->Origin[axis] + static_cast<double>(i) * this->Spacing[axis]; }
+  double coordinate(int axis, Index i) const
+  {
+    return this->Origin[axis] + static_cast<double>(i + this->Offset[axis]) * this->Spacing[axis];
+  }
 
   /// Length of the domain along an axis: (N-1) dx, or N dx when periodic.
   double length(int axis) const
@@ -116,7 +123,8 @@ inline CellLocation<D> locate(const GridSpec<D>& g, const double* x)
   for (int a = 0; a < D; ++a)
   {
     const double n = static_cast<double>(g.Dims[a]);
-    double s = (x[a] - g.Origin[a]) / g.Spacing[a];
+    // In the larger grid's index, then the window's (exact: an integer is subtracted).
+    double s = (x[a] - g.Origin[a]) / g.Spacing[a] - static_cast<double>(g.Offset[a]);
     if (g.Bounds[a] == Boundary::Periodic)
     {
       s = s - n * std::floor(s / n);

@@ -34,6 +34,12 @@ struct HjbExpressionSpec
   std::array<double, 3> Lower{ -1.0, -1.0, -1.0 }; ///< domain [Lower, Upper] per axis
   std::array<double, 3> Upper{ 1.0, 1.0, 1.0 };
   std::array<Boundary, 3> Bounds{ Boundary::Extrapolate, Boundary::Extrapolate, Boundary::Extrapolate };
+  /// A window of that grid (a slab of a distributed solve, DistributedHjbSolver.h):
+  /// nodes [WindowFirst, WindowFirst + WindowNodes) per axis, at the whole grid's
+  /// coordinates bitwise (GridSpec::Offset); WindowNodes 0: the whole axis.
+  /// InitialValues then hold the window's nodes.
+  std::array<Index, 3> WindowFirst{ 0, 0, 0 };
+  std::array<Index, 3> WindowNodes{ 0, 0, 0 };
 
   std::array<std::string, 3> Dynamics; ///< f_D components ("" on unused axes)
   std::string Cost;                    ///< f_C; empty: 0 (no quadrature)

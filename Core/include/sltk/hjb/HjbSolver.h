@@ -43,6 +43,12 @@ public:
   /// solution when one is known, work counters).
   virtual void result(HjbRunResult& out) const = 0;
 
+  /// Values of u^k at `count` nodes from node `first` (nodes numbered x
+  /// fastest), and their replacement: the halo exchange of a distributed solve
+  /// (DistributedHjbSolver.h) between steps. u^0 is built first when needed.
+  virtual void readValues(Index first, Index count, double* out) = 0;
+  virtual void writeValues(Index first, Index count, const double* values) = 0;
+
   double time() const { return this->startTime() + static_cast<double>(this->stepsDone()) * this->timeStep(); }
   double finalTime() const { return this->startTime() + static_cast<double>(this->stepCount()) * this->timeStep(); }
   /// t_0, ..., t_K (what the VTK filter advertises as TIME_STEPS).

@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// DistributedHjbSolver.h on the ranks of MPI_COMM_WORLD (ctest: 1 and 2 ranks;
+// also right on 4): the slabs with ghost rows give the serial solve's values
+// at every node (to round-off: each slab computes its own node coordinates),
+// the same step count and the same errors; a formula that fails on one rank's
+// slab only ends every rank with the same error, without a hang.
+#include "sltk/hjb/DistributedHjbSolver.h"
+#include "sltk/mpi/MpiCommunicator.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+namespace
+{
+std::unique_ptr<sltk::mpi::MpiCommunicator> world()
+{
+  std::unique_ptr<sltk::mpi::MpiCommunicator> comm;
+  EXPECT_TRUE(sltk::mpi::MpiCommunicator::world(comm).isOk());
+  return comm;
+}
+
+/// Thesis Test 4 (3.37) as formulas: a quadratic Hamiltonian, controls in a disc.
+sltk::HjbExpressionSpec test4(sltk::Index n)
+{
+  sltk::HjbExpressionSpec s;
+  s.Dimension = 2;
+  s.Nodes = { n, n, 1 };
+  s.Lower = { -2.0, -2.0, 0.0 };
+  s.Upper = { 2.0, 2.0, 0.0 };
+  s.Dynamics = { "-a1", "-a2", "" };
+  s.Cost = "(a1^2 + a2^2)/2";
+  s.Initial = "max(1 - (x^2 + y^2), 0)";
+  s.Exact = "hypot(x, y) <= 1 ? (hypot(x, y) - 1)^2 / (2*t) : 0";
+  s.Controls = sltk::ControlKind::Ball;
+  s.ControlDimension = 2;
+  s.ControlRadius = 2.2;
+  s.FinalTime = 0.5;
+  s.CourantNumber = 1.25;
+  return s;
+}
+
+/// Thesis Test 1 (3.5.1) as formulas: a rigid rotation of a cone, a quarter turn (values compared, no exact).
+sltk::HjbExpressionSpec rotation(sltk::Index n)
+{
+  sltk::HjbExpressionSpec s;
+  s.Dimension = 2;
+  s.Nodes = { n, n, 1 };
+  s.Lower = { 0.0, 0.0, 0.0 };
+  s.Upper = { 1.0, 1.0, 0.0 };
+  s.Dynamics = { "-2*pi*(y - 0.5)", "2*pi*(x - 0.5)", "" };
+  s.Initial = "max(0.15 - hypot(x - 0.3, y - 0.7), 0)";
+  s.FinalTime = 0.25;
+  s.CourantNumber = 2.0;
+  return s;
+}
+
+sltk::HjbRunResult solve(sltk::HjbSolver& solver)
+{
+  const sltk::Status s = solver.advanceTo(solver.finalTime(), sltk::Context{});
+  EXPECT_TRUE(s.isOk()) << s.message();
+  sltk::HjbRunResult r;
+  solver.result(r);
+  return r;
+}
+
+void expectSameAsSerial(const sltk::HjbExpressionSpec& spec)
+{
+  auto comm = world();
+  std::unique_ptr<sltk::HjbSolver> serial, distributed;
+  ASSERT_TRUE(sltk::makeExpressionSolver(spec, serial).isOk());
+  const sltk::Status made = sltk::makeDistributedExpressionSolver(spec, *comm, distributed);
+  ASSERT_TRUE(made.isOk()) << made.message();
+  const sltk::HjbRunResult one = solve(*serial);
+  const sltk::HjbRunResult many = solve(*distributed);
+  ASSERT_EQ(one.Value.size(), many.Value.size());
+  EXPECT_EQ(one.Steps, many.Steps);
+  double worst = 0.0;
+  for (size_t k = 0; k < one.Value.size(); ++k)
+  {
+    worst = std::max(worst, std::fabs(one.Value[k] - many.Value[k]));
+  }
+  EXPECT_EQ(worst, 0.0) << "on " << comm->size() << " ranks";
+  if (!spec.Exact.empty())
+  {
+    EXPECT_EQ(many.L1Error, one.L1Error);
+    EXPECT_EQ(many.LinfError, one.LinfError);
+  }
+  EXPECT_GT(many.Steps, 0);
+}
+} // namespace
+
+TEST(DistributedHjb, Test4MatchesTheSerialSolveAtEveryNode)
+{
+  expectSameAsSerial(test4(41));
+}
+
+TEST(DistributedHjb, RotationMatchesTheSerialSolveAtEveryNode)
+{
+  expectSameAsSerial(rotation(81));
+}
+
+TEST(DistributedHjb, AFailureOnOneSlabEndsEveryRankWithItsError)
+{
+  auto comm = world();
+  sltk::HjbExpressionSpec spec = rotation(81);
+  spec.Dynamics[1] = "y > 0.8 ? sqrt(x - 2) : 2*pi*(x - 0.5)"; // NaN only near the top: the last slabs
+  std::unique_ptr<sltk::HjbSolver> solver;
+  ASSERT_TRUE(sltk::makeDistributedExpressionSolver(spec, *comm, solver).isOk());
+  const sltk::Status s = solver->advanceTo(solver->finalTime(), sltk::Context{});
+  EXPECT_EQ(s.code(), sltk::StatusCode::NumericalFailure);
+  // The serial solve's message: the same formula and node, whichever rank failed first.
+  std::unique_ptr<sltk::HjbSolver> serial;
+  ASSERT_TRUE(sltk::makeExpressionSolver(spec, serial).isOk());
+  const std::string expected = serial->advanceTo(serial->finalTime(), sltk::Context{}).message();
+  EXPECT_NE(s.message().find(expected.substr(expected.find("the dynamics"))), std::string::npos)
+    << s.message() << "\nserial: " << expected;
+  comm->barrier(); // every rank got here: no hang
+}
+
+TEST(DistributedHjb, TooManyRanksForTheGridAreRefused)
+{
+  auto comm = world();
+  if (comm->size() < 2)
+  {
+    GTEST_SKIP() << "needs 2 ranks";
+  }
+  std::unique_ptr<sltk::HjbSolver> solver;
+  const sltk::Status s = sltk::makeDistributedExpressionSolver(test4(6), *comm, solver);
+  EXPECT_FALSE(s.isOk());
+  EXPECT_NE(s.message().find("use fewer ranks"), std::string::npos) << s.message();
+}
