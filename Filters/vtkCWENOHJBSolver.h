@@ -231,6 +231,13 @@ public:
   vtkBooleanMacro(ComputeReachableSet, vtkTypeBool);
   ///@}
 
+  ///@{
+  /// The ranks a custom problem is split over (nullptr, the default: the global controller, as in
+  /// pvbatch and pvserver; a vtkDummyController solves on this process alone).
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
 protected:
   vtkCWENOHJBSolver();
   ~vtkCWENOHJBSolver() override;
@@ -241,9 +248,6 @@ protected:
   int BuildSolver(vtkInformation* inInfo, vtkImageData* values, std::unique_ptr<sltk::HjbSolver>& solver,
     const sltk::Communicator* comm = nullptr);
 
-  /// The ranks a custom problem is split over (nullptr: the global controller, as in pvbatch and pvserver).
-  virtual void SetController(vtkMultiProcessController*);
-  vtkGetObjectMacro(Controller, vtkMultiProcessController);
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

@@ -16,6 +16,9 @@ image = solver.GetOutput()
 assert image.GetDimensions() == (31, 31, 1), image.GetDimensions()
 lo, hi = image.GetPointData().GetArray("ValueFunction").GetRange()
 assert lo == 0.0 and abs(hi - 0.15) < 0.01, (lo, hi)
+from vtkmodules.vtkParallelCore import vtkDummyController
+solver.SetController(vtkDummyController())  # Python may choose the ranks a custom problem is split over
+assert solver.GetController() is not None
 
 recon = sltk.vtkSLLevelSetReconstruct()
 recon.SetInterpolator(sltk.vtkSLLevelSetReconstruct.CWENOZ)
