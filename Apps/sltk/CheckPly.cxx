@@ -80,6 +80,34 @@ std::string oddLine(const std::string& line)
   return {};
 }
 
+/// vtkPLYReader asks for these properties by name as numbers (vertex) or as the kind given (face),
+/// and stores a list where it asked for a number (or the reverse) through a type it never set: an
+/// assertion in vtkPLY::store_item (found by bench/fuzz). A vertex list is never read: refused too.
+sltk::Status checkPropertyKind(
+  const std::string& path, const std::string& element, const PlyProperty& property, const std::string& where)
+{
+  const bool list = property.CountSize > 0;
+  if (element == "vertex" && list)
+  {
+    return damaged(path,
+      "the vertex property '" + property.Name + "' is a list in " + where +
+        ": VTK's PLY reader reads vertex properties as numbers (export the vertices without lists)");
+  }
+  if (element == "face")
+  {
+    const std::string& name = property.Name;
+    const bool wantsList = name == "vertex_indices" || name == "texcoord";
+    const bool wantsNumber = name == "red" || name == "green" || name == "blue" || name == "alpha";
+    if ((wantsList && !list) || (wantsNumber && list))
+    {
+      return damaged(path,
+        "the face property '" + name + "' must be " + (wantsList ? "a list" : "a number") +
+          " for VTK's PLY reader, in " + where);
+    }
+  }
+  return sltk::Status::ok();
+}
+
 /// The header; `format` is "ascii", "binary_little_endian" or "binary_big_endian".
 sltk::Status readHeader(
   std::istream& in, const std::string& path, std::string& format, std::vector<PlyElement>& elements)
@@ -117,6 +145,10 @@ sltk::Status readHeader(
     const auto endsHere = [&words] { return (words >> std::ws).eof(); };
     if (keyword == "format")
     {
+      if (!format.empty())
+      {
+        return damaged(path, "a second 'format' line in " + where); // VTK would read the data as the last one says
+      }
       std::string version;
       words >> format >> version;
       if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
@@ -177,6 +209,16 @@ sltk::Status readHeader(
       {
         return damaged(path, "bad property in " + where);
       }
+      for (const PlyProperty& before : elements.back().Properties)
+      {
+        if (before.Name == property.Name)
+        {
+          return damaged(path,
+            "the property '" + property.Name + "' of the element '" + elements.back().Name +
+              "' is declared twice, again in " + where);
+        }
+      }
+      SLTK_RETURN_IF_ERROR(checkPropertyKind(path, elements.back().Name, property, where));
       elements.back().Properties.push_back(property);
     }
     else if (keyword.empty())

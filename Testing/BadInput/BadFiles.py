@@ -89,6 +89,18 @@ DAMAGED_PLY = {
         "its element 'scan' is out of place"),
     "incomplete-face-ascii": (ply_header("ascii", 100, faces=1) + ASCII_ROWS + b"3 0 1\n", "face 0 is incomplete"),
     # VTK's parser splits words at blanks only: "3-0" is one word, and the fourth word is missing (bench/fuzz)
+    # vtkPLYReader stores a list where it asked for a number: an assertion in vtkPLY::store_item (bench/fuzz)
+    "vertex-property-list": (ply_header("ascii", 100, "property float x\nproperty float y\nproperty float z\n"
+                             "property list uchar float normal\n") + b"".join(
+                             b"%g %g %g 0\n" % p for p in CORNERS), "the vertex property 'normal' is a list"),
+    "property-declared-twice": (ply_header("ascii", 100, "property float x\nproperty float y\nproperty float z\n"
+                                "property float x\n") + b"".join(b"%g %g %g 0\n" % p for p in CORNERS),
+                                "the property 'x' of the element 'vertex' is declared twice"),
+    "second-format-line": (ply_header("ascii", 100).replace(b"element vertex", b"format binary_little_endian 1.0\n"
+                           b"element vertex") + ASCII_ROWS, "a second 'format' line"),
+    "face-color-list": (ply_header("binary_little_endian", 100, faces=1).replace(
+        b"end_header", b"property list uchar uchar red\nend_header") + BINARY_ROWS +
+        struct.pack("<BiiiB", 3, 0, 1, 2, 0), "the face property 'red' must be a number"),
     "face-words-run-together": (ply_header("ascii", 100, faces=1) + ASCII_ROWS + b"3-0 1 2\n",
                                 "'3-0' is not a number, in face 0"),
 }
