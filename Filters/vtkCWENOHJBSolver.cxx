@@ -120,25 +120,15 @@ sltk::Status valuesFromImage(vtkImageData* image, sltk::HjbExpressionSpec& spec)
   return sltk::Status::ok();
 }
 
-/// The block `extent` of a whole-grid node array (x fastest); +inf (never reached) becomes -1.
-vtkSmartPointer<vtkDoubleArray> block(
-  const std::vector<double>& values, const sltk::HjbGrid& grid, const int extent[6], const char* name)
+/// A node array of the output's block (x fastest); +inf (never reached) becomes -1.
+vtkSmartPointer<vtkDoubleArray> pointArray(const std::vector<double>& values, const char* name)
 {
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
   array->SetName(name);
-  array->SetNumberOfTuples(
-    static_cast<vtkIdType>(extent[1] - extent[0] + 1) * (extent[3] - extent[2] + 1) * (extent[5] - extent[4] + 1));
-  vtkIdType id = 0;
-  for (int k = extent[4]; k <= extent[5]; ++k)
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  for (size_t k = 0; k < values.size(); ++k)
   {
-    for (int j = extent[2]; j <= extent[3]; ++j)
-    {
-      for (int i = extent[0]; i <= extent[1]; ++i, ++id)
-      {
-        const double v = values[static_cast<size_t>(i + grid.Dims[0] * (j + grid.Dims[1] * k))];
-        array->SetValue(id, std::isinf(v) ? -1.0 : v);
-      }
-    }
+    array->SetValue(static_cast<vtkIdType>(k), std::isinf(values[k]) ? -1.0 : values[k]);
   }
   return array;
 }
@@ -357,8 +347,11 @@ int vtkCWENOHJBSolver::RequestData(
     vtkErrorMacro("HJB solve failed at t = " << this->Solver->time() << ": " << status.message());
     return 0;
   }
+  int extent[6];
+  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+  // This piece's nodes only; a distributed solve sends each rank the nodes it asks for (a collective call).
   sltk::HjbRunResult result;
-  this->Solver->result(result);
+  this->Solver->resultBlock({ extent[0], extent[1], extent[2], extent[3], extent[4], extent[5] }, result);
   if (!result.ExactNotFiniteAt.empty())
   {
     // The error norms would be NaN: say where the formula fails instead of dropping them.
@@ -374,15 +367,17 @@ int vtkCWENOHJBSolver::RequestData(
     return 0;
   }
   vtkImageData* output = vtkImageData::GetData(outInfo);
-  int extent[6];
-  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+  for (int k = 0; k < 6; ++k)
+  {
+    extent[k] = static_cast<int>(result.Block[static_cast<size_t>(k)]);
+  }
   output->SetExtent(extent);
   output->SetOrigin(result.Grid.Origin.data());
   output->SetSpacing(result.Grid.Spacing.data());
-  output->GetPointData()->SetScalars(block(result.Value, result.Grid, extent, "ValueFunction"));
+  output->GetPointData()->SetScalars(pointArray(result.Value, "ValueFunction"));
   if (!result.ReachTime.empty())
   {
-    output->GetPointData()->AddArray(block(result.ReachTime, result.Grid, extent, "ReachTime"));
+    output->GetPointData()->AddArray(pointArray(result.ReachTime, "ReachTime"));
   }
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), result.FinalTime);
   vtkFieldData* fd = output->GetFieldData();

@@ -5,7 +5,8 @@ find_package(ParaView REQUIRED COMPONENTS RemotingCore)
 set(SLTK_VTK_COMPONENTS
   CommonCore CommonDataModel CommonExecutionModel ParallelCore ParallelMPI FiltersCore
   IOXML IOPLY IOGeometry IOLegacy IOCore
-  RenderingCore RenderingOpenGL2 IOImage FiltersGeneral) # the last line: sltk reconstruct --png
+  RenderingCore RenderingOpenGL2 IOImage FiltersGeneral # sltk reconstruct --png
+  IOParallelXML) # mpirun sltk hjb -o FILE.pvti
 find_package(VTK REQUIRED COMPONENTS ${SLTK_VTK_COMPONENTS})
 string(REPLACE ";" " " SLTK_VTK_COMPONENTS "${SLTK_VTK_COMPONENTS}")
 

@@ -8,6 +8,7 @@
 #include "OutputPaths.h"
 #include "ProgressBar.h"
 #include "WriteAtomically.h"
+#include "WritePieces.h"
 #include "WriteSurface.h"
 
 #include "sltk/exec/Memory.h"
@@ -18,8 +19,11 @@
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 
 #include <chrono>
 #include <cstdio>
@@ -71,10 +75,16 @@ int Hjb::run() const
     }
   }
   const std::string paths =
-    outputPathsProblem({}, { { "-o", this->Output, { "vti" } }, { "--json", this->Json, { "json" } } });
+    outputPathsProblem({}, { { "-o", this->Output, { "vti", "pvti" } }, { "--json", this->Json, { "json" } } });
   if (!paths.empty())
   {
     return fail(paths, 2);
+  }
+  const bool pieces = this->Output.size() > 5 && this->Output.substr(this->Output.size() - 5) == ".pvti";
+  const std::string folder = pieces ? pieceFolderProblem(this->Output) : "";
+  if (!folder.empty())
+  {
+    return fail(folder, 2);
   }
   const std::string presetName = custom ? "custom" : "test" + std::to_string(this->Preset);
   const int preset = custom ? vtkCWENOHJBSolver::CUSTOM : this->Preset;
@@ -101,7 +111,16 @@ int Hjb::run() const
   solver->SetCourantNumber(this->Courant);
   solver->SetInterpolator(static_cast<int>(this->Interpolator));
   solver->SetNumberOfThreads(this->Threads);
-  solver->Update();
+  // Each rank computes its block of the grid; rank 0 also collects the whole image when it writes one .vti.
+  const int rank = MpiSession::rank(), ranks = MpiSession::size();
+  if (ranks > 1 && (pieces || rank > 0))
+  {
+    solver->UpdatePiece(rank, ranks, 0);
+  }
+  else
+  {
+    solver->Update();
+  }
   bar->finish();
   if (!errors->Message.empty())
   {
@@ -110,13 +129,16 @@ int Hjb::run() const
   vtkImageData* image = solver->GetOutput();
   double range[2];
   image->GetPointData()->GetScalars()->GetRange(range);
+  range[0] = -MpiSession::maxOverRanks(-range[0]);
+  range[1] = MpiSession::maxOverRanks(range[1]);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   vtkFieldData* fd = image->GetFieldData();
   const double t = fd->GetArray("Time")->GetTuple1(0);
   const double steps = fd->GetArray("Steps")->GetTuple1(0);
   const double evaluations = fd->GetArray("EvaluationsPerNode")->GetTuple1(0);
-  const int* dims = image->GetDimensions();
-  const int ranks = MpiSession::size();
+  int extent[6];
+  solver->GetOutputInformation(0)->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
+  const int dims[3] = { extent[1] - extent[0] + 1, extent[3] - extent[2] + 1, extent[5] - extent[4] + 1 };
   std::printf("%s, %d x %d x %d nodes, T = %g, %.0f steps, %.1f evaluations per node and step", presetName.c_str(),
     dims[0], dims[1], dims[2], t, steps, evaluations);
   std::printf(ranks > 1 ? ", %d ranks\n" : "\n", ranks);
@@ -129,12 +151,20 @@ int Hjb::run() const
   }
   std::printf("\n");
 
-  const double peakMb = MpiSession::maxOverRanks(static_cast<double>(sltk::peakResidentBytes()) / 1e6);
-  if (MpiSession::rank() > 0)
+  if (pieces)
   {
-    return 0; // rank 0 writes the one set of outputs (every rank holds the gathered result)
+    const auto status = writeImagePieces(this->Output, solver, vtkMultiProcessController::GetGlobalController());
+    if (!status.isOk())
+    {
+      return fail(status.message());
+    }
   }
-  if (this->Parser->count("--output"))
+  const double peakMb = MpiSession::maxOverRanks(static_cast<double>(sltk::peakResidentBytes()) / 1e6);
+  if (rank > 0)
+  {
+    return 0; // rank 0 writes the one set of outputs
+  }
+  if (this->Parser->count("--output") && !pieces)
   {
     const auto status = writeImage(this->Output, image);
     if (!status.isOk())
@@ -189,8 +219,11 @@ Command addHjbCommand(CLI::App& sltk)
   addInterpolatorOption(app, command->Interpolator, "cwenoz");
   addThreadsOption(app, command->Threads);
   app->add_flag("--quiet", command->Quiet, "no progress bar");
-  app->add_option("-o,--output", command->Output, "write the value function (and ReachTime for test5)")
-    ->option_text("FILE.vti");
+  app
+    ->add_option("-o,--output", command->Output,
+      "write the value function (and ReachTime for test5); under mpirun,\n.pvti: every rank writes its own block "
+      "(FILE/FILE_<rank>.vti)")
+    ->option_text("FILE.vti|.pvti");
   app
     ->add_option("--json", command->Json,
       "summary: l1_error, linf_error (when exact), min, max, seconds, steps,\nevaluations_per_node, peak_memory_mb "

@@ -7,29 +7,59 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
+#include <vector>
 
 namespace sltkcli
 {
 
 namespace
 {
-/// The temporary file being written, for the signal handler (a fixed buffer:
-/// only async-signal-safe calls may touch it there).
-char PendingTemporary[4096] = { 0 };
+/// The temporary files (then folders) being written, for the signal handler
+/// (fixed buffers: only async-signal-safe calls may touch them there).
+constexpr int MaxPending = 4;
+char PendingFiles[MaxPending][4096] = {};
+char PendingFolders[MaxPending][4096] = {};
 
 extern "C" void removePendingAndDie(int signal)
 {
-  if (PendingTemporary[0])
+  for (int k = 0; k < MaxPending; ++k)
   {
-    ::unlink(PendingTemporary);
+    if (PendingFiles[k][0])
+    {
+      ::unlink(PendingFiles[k]);
+    }
+  }
+  for (int k = 0; k < MaxPending; ++k)
+  {
+    if (PendingFolders[k][0])
+    {
+      ::rmdir(PendingFolders[k]);
+    }
   }
   std::signal(signal, SIG_DFL);
   std::raise(signal);
 }
 
-/// Registers `temporary` as the file to remove if SIGINT or SIGTERM arrives
-/// while it is written; an empty name clears it.
+void store(char (&slots)[MaxPending][4096], const std::vector<std::string>& paths)
+{
+  for (int k = 0; k < MaxPending; ++k)
+  {
+    const std::string path = k < static_cast<int>(paths.size()) ? paths[static_cast<size_t>(k)] : std::string();
+    slots[k][0] = '\0';
+    if (path.size() < sizeof(slots[k]))
+    {
+      std::memcpy(slots[k], path.c_str(), path.size() + 1);
+    }
+  }
+}
+
 void setPending(const std::string& temporary)
+{
+  setPendingPaths(temporary.empty() ? std::vector<std::string>{} : std::vector<std::string>{ temporary }, {});
+}
+} // namespace
+
+void setPendingPaths(const std::vector<std::string>& files, const std::vector<std::string>& folders)
 {
   static const bool installed = []
   {
@@ -38,13 +68,10 @@ void setPending(const std::string& temporary)
     return true;
   }();
   (void)installed;
-  PendingTemporary[0] = '\0';
-  if (temporary.size() < sizeof(PendingTemporary))
-  {
-    std::memcpy(PendingTemporary, temporary.c_str(), temporary.size() + 1);
-  }
+  store(PendingFiles, {});
+  store(PendingFolders, folders);
+  store(PendingFiles, files);
 }
-} // namespace
 
 sltk::Status writeAtomically(const std::string& path, const std::function<bool(const std::string&)>& write)
 {

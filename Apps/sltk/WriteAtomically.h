@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace sltkcli
 {
@@ -17,6 +18,11 @@ namespace sltkcli
 /// Calls write(temporaryPath) and renames the result to `path` on success;
 /// removes the temporary file on failure.
 sltk::Status writeAtomically(const std::string& path, const std::function<bool(const std::string&)>& write);
+
+/// Files, then folders (emptied by then), to remove if SIGINT or SIGTERM
+/// arrives (at most 4 of each); empty lists clear them. writeAtomically()
+/// registers its temporary file this way.
+void setPendingPaths(const std::vector<std::string>& files, const std::vector<std::string>& folders);
 
 /// Writes text to `path` atomically.
 sltk::Status writeTextFile(const std::string& path, const std::string& text);

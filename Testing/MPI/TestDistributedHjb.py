@@ -3,7 +3,7 @@ solution) split over the ranks (vtkCWENOHJBSolver.h, sltk/hjb/DistributedHjbSolv
 pvbatch on one rank writes the serial solve (test MPI.DistributedHjb.Serial);
 `mpirun -np 2 pvbatch` then checks that each rank's piece written by the
 parallel writer is bitwise the serial solve on its block and that the error
-norms are the serial ones, and that a formula that is not finite on one
+norms are the serial ones (L1 to its last bits), and that a formula that is not finite on one
 rank's slab only ends both ranks with an error, without a hang."""
 import os
 import sys
@@ -47,9 +47,10 @@ writer.UpdatePipeline()
 reference = read(serial_file)
 whole = reference.GetPointData().GetArray("ValueFunction")
 local = solver.GetClientSideObject().GetOutput()
-for name in ("L1Error", "LinfError"):
+for name, tolerance in (("L1Error", 1e-13), ("LinfError", 0.0)):
+    # The L1 sum is reduced over the ranks: the serial terms added in another order (last bits only).
     got, want = local.GetFieldData().GetArray(name).GetValue(0), reference.GetFieldData().GetArray(name).GetValue(0)
-    assert got == want, "%s on rank %d: %r, serial %r" % (name, rank, got, want)
+    assert abs(got - want) <= tolerance * want, "%s on rank %d: %r, serial %r" % (name, rank, got, want)
 assert local.GetFieldData().GetArray("Ranks").GetValue(0) == 2, "the solve was split over both ranks"
 assert reference.GetFieldData().GetArray("L1Error").GetValue(0) < 0.04, "Test 4 at 41^2: the preset gives L1 0.0339"
 

@@ -18,7 +18,7 @@ test4=(hjb --fx=-a1 --fy=-a2 --cost "(a1^2+a2^2)/2" --v0 "max(1-x^2-y^2,0)"
 for r in $(seq "$repeat"); do
   for ranks in 1 2; do
     start=$(date +%s.%N)
-    mpirun --oversubscribe -np "$ranks" /usr/bin/time -v -o "$out/time.$ranks.$r.%q{OMPI_COMM_WORLD_RANK}" \
+    mpirun --oversubscribe -np "$ranks" "$(dirname "$0")/rank-rss.sh" "$out/time.$ranks.$r" \
       "$build/bin/sltk" "${test4[@]}" --json "$out/$ranks.$r.json" -o "$out/$ranks.$r.vti" >"$out/$ranks.$r.txt"
     python3 -c "print($(date +%s.%N) - $start)" >"$out/wall.$ranks.$r"
     [ "$r" = 1 ] && cat "$out/$ranks.$r.txt"

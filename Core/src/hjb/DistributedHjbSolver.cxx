@@ -5,6 +5,7 @@
 
 #include "ExpressionDiagnosis.h"
 #include "ExpressionSolverOf.h"
+#include "HjbExtents.h"
 
 #include <algorithm>
 #include <cmath>
@@ -56,7 +57,7 @@ class DistributedSolver final : public HjbSolver
 {
 public:
   DistributedSolver(std::unique_ptr<HjbSolver> inner, const Communicator& comm, HjbGrid whole,
-    SharedHjbExpressions compiled, Index first, Index begin, Index end, Index ghost)
+    SharedHjbExpressions compiled, Index first, Index begin, Index end, Index ghost, bool reachable)
     : Inner(std::move(inner))
     , Comm(comm)
     , Whole(whole)
@@ -65,6 +66,7 @@ public:
     , Begin(begin)
     , End(end)
     , Ghost(ghost)
+    , Reachable(reachable)
   {
     const int last = whole.Dimension - 1;
     for (int a = 0; a < last; ++a)
@@ -91,6 +93,8 @@ public:
     {
       SLTK_RETURN_IF_ERROR(this->Comm.agree(this->Inner->advanceTo(this->startTime(), ctx))); // back to u^0
     }
+    // u^0 is built on the first call (the serial solver's advanceTo does it), even when no step is asked for.
+    SLTK_RETURN_IF_ERROR(this->Comm.agree(this->Inner->advanceTo(this->time(), ctx)));
     Index target = this->stepsDone();
     while (target < this->stepCount() && this->startTime() + static_cast<double>(target + 1) * dt <= t + 1e-9 * dt)
     {
@@ -105,71 +109,182 @@ public:
     return Status::ok();
   }
 
-  void result(HjbRunResult& out) const override
+  void result(HjbRunResult& out) const override { this->resultBlock(wholeExtent(this->Whole), out); }
+
+  double evaluationsPerNode() const override { return this->Inner->evaluationsPerNode(); }
+
+  void resultBlock(const HjbExtent& extent, HjbRunResult& out) const override
   {
-    HjbRunResult local;
-    this->Inner->result(local);
     out = HjbRunResult{};
     out.Grid = this->Whole;
-    out.FinalTime = local.FinalTime;
-    out.Steps = local.Steps;
+    out.Block = intersectExtents(extent, wholeExtent(this->Whole));
+    out.FinalTime = this->time();
+    out.Steps = this->stepsDone();
     // The work statistic of every node update done, the ghost rows' included (so not bitwise one rank's).
-    const double localNodes = static_cast<double>(local.Value.size());
-    double work[2] = { local.EvaluationsPerNode * localNodes, localNodes };
+    const double localNodes = static_cast<double>(extentNodes(this->slabExtent()));
+    double work[2] = { this->Inner->evaluationsPerNode() * localNodes, localNodes };
     this->Comm.allReduce(work, 2, ReduceOp::Sum);
     out.EvaluationsPerNode = work[0] / work[1];
-    out.Value = this->gatherOwned(local.Value);
-    if (!local.ReachTime.empty())
-    {
-      out.ReachTime = this->gatherOwned(local.ReachTime);
-    }
     if (this->Compiled->HasExact && out.Steps > 0)
     {
       this->errors(out);
     }
+    this->redistribute(out);
   }
 
 private:
-  /// Owned rows of a local field (x fastest), gathered in rank order: the whole grid's values.
-  std::vector<double> gatherOwned(const std::vector<double>& local) const
+  /// The nodes rank q owns: the whole grid's, its rows [rows q / P, rows (q + 1) / P) of the last axis.
+  HjbExtent ownedExtent(int q) const
   {
-    const auto from = local.begin() + static_cast<std::ptrdiff_t>((this->Begin - this->First) * this->RowNodes);
-    const std::vector<double> owned(
-      from, from + static_cast<std::ptrdiff_t>((this->End - this->Begin) * this->RowNodes));
-    return this->Comm.allGatherV(owned);
+    HjbExtent e = wholeExtent(this->Whole);
+    const int last = this->Whole.Dimension - 1;
+    const Index rows = this->Whole.Dims[static_cast<size_t>(last)], size = this->Comm.size();
+    e[2 * last] = rows * q / size;
+    e[2 * last + 1] = rows * (q + 1) / size - 1;
+    return e;
   }
 
-  /// L1 and max errors over the whole grid, every rank alike (the serial solver's sums, HjbError.h).
+  /// The nodes of this rank's slab, ghost rows included (local.Value's layout).
+  HjbExtent slabExtent() const
+  {
+    HjbExtent e = wholeExtent(this->Whole);
+    const int last = this->Whole.Dimension - 1;
+    e[2 * last] = this->First;
+    e[2 * last + 1] = this->First + this->Inner->grid().Dims[static_cast<size_t>(last)] - 1;
+    return e;
+  }
+
+  /// Copies the nodes of `box` (owned by this rank) from the slab's state to
+  /// `to`, the nodes of `toExtent`, one row of x at a time (no copy of the slab).
+  void readOwned(const HjbExtent& box, double* to, const HjbExtent& toExtent) const
+  {
+    const HjbExtent slab = this->slabExtent();
+    const Index nx = slab[1] - slab[0] + 1, ny = slab[3] - slab[2] + 1, row = box[1] - box[0] + 1;
+    const Index toNx = toExtent[1] - toExtent[0] + 1, toNy = toExtent[3] - toExtent[2] + 1;
+    for (Index k = box[4]; k <= box[5]; ++k)
+    {
+      for (Index j = box[2]; j <= box[3]; ++j)
+      {
+        const Index at = (box[0] - toExtent[0]) + toNx * ((j - toExtent[2]) + toNy * (k - toExtent[4]));
+        this->Inner->readValues(box[0] + nx * ((j - slab[2]) + ny * (k - slab[4])), row, to + at);
+      }
+    }
+  }
+
+  /// Every rank's block from the ranks that own its nodes: P - 1 pairwise
+  /// exchanges (d = 1 .. P-1: send to rank + d, receive from rank - d), each
+  /// of the nodes one owns and the other asks for (none when the boxes do not
+  /// meet). The reachable set (3.40), when kept, goes along (a copy of the slab).
+  void redistribute(HjbRunResult& out) const
+  {
+    const int size = this->Comm.size(), rank = this->Comm.rank();
+    std::vector<HjbExtent> asked(static_cast<size_t>(size));
+    this->Comm.allGather(out.Block.data(), sizeof(HjbExtent), asked.data());
+    HjbRunResult local;
+    if (this->Reachable)
+    {
+      this->Inner->result(local);
+    }
+    const int fields = this->Reachable ? 2 : 1;
+    const Index blockNodes = extentNodes(out.Block);
+    out.Value.assign(static_cast<size_t>(blockNodes), 0.0);
+    out.ReachTime.assign(this->Reachable ? static_cast<size_t>(blockNodes) : 0, 0.0);
+    const HjbExtent slab = this->slabExtent();
+    std::vector<double> send, receive;
+    // d = 0: this rank's own nodes of its block, straight from the slab (no message, no buffer).
+    const HjbExtent own = intersectExtents(this->ownedExtent(rank), out.Block);
+    if (extentNodes(own) > 0)
+    {
+      this->readOwned(own, out.Value.data(), out.Block);
+      if (this->Reachable)
+      {
+        copyExtent(local.ReachTime.data(), slab, out.ReachTime.data(), out.Block, own);
+      }
+    }
+    for (int d = 1; d < size; ++d)
+    {
+      const int to = (rank + d) % size, from = (rank - d + size) % size;
+      const HjbExtent sent = intersectExtents(this->ownedExtent(rank), asked[static_cast<size_t>(to)]);
+      const HjbExtent received = intersectExtents(this->ownedExtent(from), out.Block);
+      const Index sentNodes = extentNodes(sent), receivedNodes = extentNodes(received);
+      send.resize(static_cast<size_t>(fields * sentNodes));
+      receive.resize(static_cast<size_t>(fields * receivedNodes));
+      if (sentNodes > 0)
+      {
+        this->readOwned(sent, send.data(), sent);
+      }
+      if (this->Reachable)
+      {
+        copyExtent(local.ReachTime.data(), slab, send.data() + sentNodes, sent, sent);
+      }
+      this->Comm.sendReceive(
+        send.data(), send.size() * sizeof(double), to, receive.data(), receive.size() * sizeof(double), from);
+      copyExtent(receive.data(), received, out.Value.data(), out.Block, received);
+      if (this->Reachable)
+      {
+        copyExtent(receive.data() + receivedNodes, received, out.ReachTime.data(), out.Block, received);
+      }
+    }
+  }
+
+  /// L1 and max errors over the owned nodes, reduced over the ranks (the
+  /// serial solver's sums, HjbError.h, up to the order of the additions).
   void errors(HjbRunResult& out) const
   {
     const HjbGrid& g = this->Whole;
+    const HjbExtent owned = this->ownedExtent(this->Comm.rank());
+    std::vector<double> row(static_cast<size_t>(owned[1] - owned[0] + 1));
     double v[SlotCount] = {};
     v[SlotT] = out.FinalTime;
     double sum = 0.0, worst = 0.0, cell = 1.0;
+    bool flagged = false;
+    double notFinite[4] = { 0.0, 0.0, 0.0, 0.0 }; // x, y, z and the exact value there
     for (int a = 0; a < g.Dimension; ++a)
     {
       cell *= g.Spacing[a];
     }
-    for (size_t k = 0; k < out.Value.size(); ++k)
+    for (Index k = owned[4]; k <= owned[5]; ++k)
     {
-      Index rest = static_cast<Index>(k);
-      for (int a = 0; a < 3; ++a)
+      for (Index j = owned[2]; j <= owned[3]; ++j)
       {
-        const Index i = rest % g.Dims[a];
-        rest /= g.Dims[a];
-        v[SlotX + a] = a < g.Dimension ? g.Origin[a] + static_cast<double>(i) * g.Spacing[a] : 0.0;
+        const HjbExtent line{ owned[0], owned[1], j, j, k, k };
+        this->readOwned(line, row.data(), line);
+        for (Index i = owned[0]; i <= owned[1]; ++i)
+        {
+          const Index ijk[3] = { i, j, k };
+          for (int a = 0; a < 3; ++a)
+          {
+            v[SlotX + a] = a < g.Dimension ? g.Origin[a] + static_cast<double>(ijk[a]) * g.Spacing[a] : 0.0;
+          }
+          const double exact = this->Compiled->Exact.evaluate(v);
+          if (!std::isfinite(exact) && !flagged)
+          {
+            flagged = true;
+            std::copy(v + SlotX, v + SlotX + 3, notFinite);
+            notFinite[3] = exact;
+          }
+          const double e = std::fabs(row[static_cast<size_t>(i - owned[0])] - exact);
+          sum += e;
+          worst = std::max(worst, e);
+        }
       }
-      const double exact = this->Compiled->Exact.evaluate(v);
-      if (!std::isfinite(exact) && out.ExactNotFiniteAt.empty())
-      {
-        out.ExactNotFiniteAt.assign(v + SlotX, v + SlotX + g.Dimension);
-        out.ExactNotFiniteAt.push_back(exact);
-      }
-      sum += std::fabs(out.Value[k] - exact);
-      worst = std::max(worst, std::fabs(out.Value[k] - exact));
     }
-    out.L1Error = cell * sum;
-    out.LinfError = worst;
+    out.L1Error = cell * this->Comm.allReduce(sum, ReduceOp::Sum);
+    out.LinfError = this->Comm.allReduce(worst, ReduceOp::Max);
+    // The lowest flagged rank's first non-finite exact value (the serial solver reports its first node).
+    std::vector<double> flags(static_cast<size_t>(5 * this->Comm.size()));
+    const double mine[5] = { flagged ? 1.0 : 0.0, notFinite[0], notFinite[1], notFinite[2], notFinite[3] };
+    this->Comm.allGather(mine, sizeof(mine), flags.data());
+    for (size_t r = 0; r < flags.size(); r += 5)
+    {
+      if (flags[r] > 0.0)
+      {
+        out.ExactNotFiniteAt.assign(flags.begin() + static_cast<std::ptrdiff_t>(r + 1),
+          flags.begin() + static_cast<std::ptrdiff_t>(r + 1 + g.Dimension));
+        out.ExactNotFiniteAt.push_back(flags[r + 4]);
+        break;
+      }
+    }
   }
 
   /// The first G owned rows go down (rank - 1), the last G up (rank + 1); the ghost rows come back.
@@ -215,7 +330,8 @@ private:
   SharedHjbExpressions Compiled;
   Index First, Begin, End, Ghost; ///< rows of the last axis: local [First, ...), owned [Begin, End)
   Index RowNodes = 1;
-  std::vector<double> Send, Receive;
+  std::vector<double> Send, Receive; ///< the halo exchange's message buffers
+  bool Reachable;                    ///< the reachable set (3.40) is kept
 };
 } // namespace
 
@@ -262,8 +378,8 @@ Status makeDistributedExpressionSolver(
   }
   std::unique_ptr<HjbSolver> inner;
   SLTK_RETURN_IF_ERROR(comm.agree(makeExpressionSolver(local, inner)));
-  solver =
-    std::make_unique<DistributedSolver>(std::move(inner), comm, grid, std::move(compiled), first, begin, end, ghost);
+  solver = std::make_unique<DistributedSolver>(std::move(inner), comm, grid, compiled, first, begin, end, ghost,
+    spec.ReachableSet || compiled->HasObstacle); // as makeExpressionSolver() decides
   return Status::ok();
 }
 

@@ -192,6 +192,7 @@ public:
   Index stepCount() const override { return this->Inner->stepCount(); }
   double startTime() const override { return this->Inner->startTime(); }
   Index stepsDone() const override { return this->Inner->stepsDone(); }
+  double evaluationsPerNode() const override { return this->Inner->evaluationsPerNode(); }
   void result(HjbRunResult& out) const override { this->Inner->result(out); }
   void readValues(Index first, Index count, double* out) override { this->Inner->readValues(first, count, out); }
   void writeValues(Index first, Index count, const double* values) override

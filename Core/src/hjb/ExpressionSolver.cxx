@@ -3,10 +3,12 @@
 // (ExpressionProblem.h), compiles its formulas and builds its grid.
 #include "ExpressionDiagnosis.h"
 #include "ExpressionSolverOf.h"
+#include "HjbExtents.h"
 #include "sltk/exec/Memory.h"
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace sltk
 {
@@ -19,6 +21,26 @@ std::vector<double> HjbSolver::stepTimes() const
     times[k] = this->startTime() + static_cast<double>(k) * this->timeStep();
   }
   return times;
+}
+
+void HjbSolver::resultBlock(const HjbExtent& extent, HjbRunResult& out) const
+{
+  this->result(out);
+  const HjbExtent box = intersectExtents(extent, out.Block);
+  if (box == out.Block)
+  {
+    return; // the whole grid: no copy
+  }
+  for (std::vector<double>* field : { &out.Value, &out.ReachTime })
+  {
+    if (!field->empty())
+    {
+      std::vector<double> cropped(static_cast<size_t>(extentNodes(box)));
+      copyExtent(field->data(), out.Block, cropped.data(), box, box);
+      *field = std::move(cropped);
+    }
+  }
+  out.Block = box;
 }
 
 namespace

@@ -104,10 +104,13 @@ public:
     }
   }
 
+  double evaluationsPerNode() const override { return this->Stats.evaluationsPerNode(); }
+
   void result(HjbRunResult& out) const override
   {
     out = HjbRunResult{};
     out.Grid = this->Grid;
+    out.Block = wholeExtent(this->Grid);
     out.FinalTime = this->time();
     out.Steps = this->stepsDone();
     out.EvaluationsPerNode = this->Stats.evaluationsPerNode();

@@ -24,10 +24,22 @@ struct HjbGrid
   std::array<double, 3> Spacing{ 1.0, 1.0, 1.0 };
 };
 
+/// A box of grid nodes as VTK writes an extent, {i0, i1, j0, j1, k0, k1}
+/// (inclusive node indices of the whole grid); empty when an upper index is
+/// below its lower one.
+using HjbExtent = std::array<long long, 6>;
+
+/// The extent of every node of `grid`.
+inline HjbExtent wholeExtent(const HjbGrid& grid)
+{
+  return { 0, grid.Dims[0] - 1, 0, grid.Dims[1] - 1, 0, grid.Dims[2] - 1 };
+}
+
 struct HjbRunResult
 {
-  HjbGrid Grid;
-  std::vector<double> Value; ///< u at t_k, x fastest
+  HjbGrid Grid;                           ///< the whole grid
+  HjbExtent Block{ 0, -1, 0, -1, 0, -1 }; ///< the nodes Value and ReachTime hold
+  std::vector<double> Value;              ///< u at t_k on the nodes of Block, x fastest
   std::vector<double>
     ReachTime; ///< first t_k with u <= 0 (+inf: never) when the reachable set (3.40) is kept; else empty
   double FinalTime = 0.0;

@@ -32,6 +32,8 @@ public:
   virtual double startTime() const = 0;
   /// Steps done so far (the state is u^k, k = stepsDone()).
   virtual Index stepsDone() const = 0;
+  /// Objective evaluations per node update so far (this process's nodes).
+  virtual double evaluationsPerNode() const = 0;
 
   /// Advances to the last t_k <= t (k <= stepCount()), starting again from u^0
   /// when t is before the current time. Asks ctx.interrupter() before every
@@ -42,6 +44,12 @@ public:
   /// The state u^k at t_k (value, reachable set, errors against the exact
   /// solution when one is known, work counters).
   virtual void result(HjbRunResult& out) const = 0;
+  /// The same on the nodes of `extent` only (out.Block = extent): what a
+  /// VTK pipeline asks of one piece. A distributed solver
+  /// (DistributedHjbSolver.h) sends every rank the nodes of its extent from
+  /// the ranks that own them: a collective call, each rank with its own
+  /// extent (the whole grid, a piece, or none). This default crops result().
+  virtual void resultBlock(const HjbExtent& extent, HjbRunResult& out) const;
 
   /// Values of u^k at `count` nodes from node `first` (nodes numbered x
   /// fastest), and their replacement: the halo exchange of a distributed solve

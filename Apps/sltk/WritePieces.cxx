@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "WritePieces.h"
+
+#include "WriteAtomically.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkCommunicator.h>
+#include <vtkMultiProcessController.h>
+#include <vtkNew.h>
+#include <vtkXMLPImageDataWriter.h>
+
+#include <filesystem>
+#include <regex>
+#include <system_error>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace sltkcli
+{
+namespace
+{
+/// FILE.pvti's folder, its stem and its piece folder.
+struct PieceNames
+{
+  fs::path Folder, Stem, Pieces;
+  explicit PieceNames(const std::string& path)
+    : Folder(fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path())
+    , Stem(fs::path(path).stem())
+    , Pieces(Folder / Stem)
+  {
+  }
+};
+
+/// Every rank's value of `flag`, AND-ed.
+bool allTrue(vtkMultiProcessController* controller, bool flag)
+{
+  int mine = flag ? 1 : 0, all = mine;
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    controller->AllReduce(&mine, &all, 1, vtkCommunicator::MIN_OP);
+  }
+  return all == 1;
+}
+} // namespace
+
+std::string pieceFolderProblem(const std::string& path)
+{
+  const PieceNames names(path);
+  std::error_code error;
+  if (!fs::exists(names.Pieces, error))
+  {
+    return "";
+  }
+  const std::regex piece(names.Stem.string() + "_[0-9]+\\.vti");
+  bool pieces = fs::is_directory(names.Pieces, error);
+  for (auto it = fs::directory_iterator(names.Pieces, error); pieces && !error && it != fs::directory_iterator();
+       it.increment(error))
+  {
+    pieces = it->is_regular_file(error) && std::regex_match(it->path().filename().string(), piece);
+  }
+  if (pieces && !error)
+  {
+    return "";
+  }
+  return "-o " + path + " writes its pieces into the folder " + names.Pieces.string() +
+    ", which exists and holds other files: choose another output name or move that folder";
+}
+
+sltk::Status writeImagePieces(const std::string& path, vtkAlgorithm* producer, vtkMultiProcessController* controller)
+{
+  const int size = controller ? controller->GetNumberOfProcesses() : 1;
+  const int rank = controller ? controller->GetLocalProcessId() : 0;
+  const PieceNames names(path);
+  int owner = static_cast<int>(::getpid()); // rank 0's process names the temporary folder
+  if (size > 1)
+  {
+    controller->Broadcast(&owner, 1, 0);
+  }
+  const fs::path temporary = names.Folder / ("." + names.Stem.string() + ".part" + std::to_string(owner));
+  std::error_code error;
+  bool ready = rank != 0 || fs::create_directory(temporary, error);
+  if (!allTrue(controller, ready))
+  {
+    return sltk::Status::ioError("could not write " + path + ": check that its folder exists and is writable");
+  }
+  const fs::path summary = temporary / (names.Stem.string() + ".pvti");
+  const fs::path pieces = temporary / names.Stem;
+  const fs::path mine = pieces / (names.Stem.string() + "_" + std::to_string(rank) + ".vti");
+  setPendingPaths({ mine.string(), rank == 0 ? summary.string() : "" }, { pieces.string(), temporary.string() });
+
+  vtkNew<vtkXMLPImageDataWriter> writer;
+  writer->SetInputConnection(producer->GetOutputPort());
+  writer->SetFileName(summary.string().c_str());
+  writer->SetNumberOfPieces(size);
+  writer->SetStartPiece(rank);
+  writer->SetEndPiece(rank);
+  writer->SetUseSubdirectory(true);
+  writer->SetController(controller);
+  const bool written = writer->Write() == 1 && fs::exists(mine, error) && (rank != 0 || fs::exists(summary, error));
+  const bool everyRank = allTrue(controller, written);
+  bool moved = everyRank;
+  if (rank == 0)
+  {
+    if (everyRank && pieceFolderProblem(path).empty())
+    {
+      fs::remove_all(names.Pieces, error); // an earlier run's pieces only (pieceFolderProblem)
+      fs::rename(pieces, names.Pieces, error);
+      moved = !error;
+      fs::rename(summary, names.Folder / (names.Stem.string() + ".pvti"), error);
+      moved = moved && !error;
+    }
+    else
+    {
+      moved = false;
+    }
+    fs::remove_all(temporary, error);
+  }
+  setPendingPaths({}, {});
+  if (!allTrue(controller, moved))
+  {
+    return sltk::Status::ioError("could not write " + path +
+      (everyRank ? ": moving the finished pieces failed" : ": a rank could not write its piece (disk full?)"));
+  }
+  return sltk::Status::ok();
+}
+
+} // namespace sltkcli
