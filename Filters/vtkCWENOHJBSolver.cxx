@@ -184,7 +184,8 @@ int vtkCWENOHJBSolver::BuildSolver(vtkInformation* inInfo, vtkImageData* values,
     options.FinalTime = this->FinalTime;
     options.CourantNumber = this->CourantNumber;
     options.Interpolator = interpolator;
-    status = sltk::makePresetSolver(options, solver);
+    status = comm && comm->size() > 1 ? sltk::makeDistributedPresetSolver(options, *comm, solver)
+                                      : sltk::makePresetSolver(options, solver);
   }
   else
   {
@@ -384,8 +385,7 @@ int vtkCWENOHJBSolver::RequestData(
   addScalar(fd, "Time", result.FinalTime);
   addScalar(fd, "Steps", static_cast<double>(result.Steps));
   addScalar(fd, "EvaluationsPerNode", result.EvaluationsPerNode);
-  const bool split = custom && this->Communicator && this->Communicator->size() > 1;
-  addScalar(fd, "Ranks", split ? this->Communicator->size() : 1); // the ranks the solve was split over
+  addScalar(fd, "Ranks", this->Solver->ranks()); // the ranks the solve was split over
   if (!std::isnan(result.L1Error))
   {
     addScalar(fd, "L1Error", result.L1Error);

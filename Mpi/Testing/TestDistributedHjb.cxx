@@ -104,6 +104,39 @@ TEST(DistributedHjb, RotationMatchesTheSerialSolveAtEveryNode)
   expectSameAsSerial(rotation(81));
 }
 
+/// A thesis test split over the ranks against the same test on one rank.
+void expectPresetSameAsSerial(sltk::HjbPreset preset, sltk::Index nodes, bool split)
+{
+  auto comm = world();
+  sltk::PresetRunOptions options;
+  options.Preset = preset;
+  options.Nodes = nodes;
+  std::unique_ptr<sltk::HjbSolver> serial, distributed;
+  ASSERT_TRUE(sltk::makePresetSolver(options, serial).isOk());
+  const sltk::Status made = sltk::makeDistributedPresetSolver(options, *comm, distributed);
+  ASSERT_TRUE(made.isOk()) << made.message();
+  EXPECT_EQ(distributed->ranks(), split ? comm->size() : 1);
+  const sltk::HjbRunResult one = solve(*serial);
+  const sltk::HjbRunResult many = solve(*distributed);
+  EXPECT_EQ(many.Steps, one.Steps);
+  EXPECT_EQ(many.Value, one.Value) << "test " << static_cast<int>(preset) << " on " << comm->size() << " ranks";
+  EXPECT_EQ(many.ReachTime, one.ReachTime);
+  if (!std::isnan(one.L1Error))
+  {
+    EXPECT_NEAR(many.L1Error, one.L1Error, 1e-13 * one.L1Error);
+    EXPECT_EQ(many.LinfError, one.LinfError);
+  }
+}
+
+TEST(DistributedHjb, ThesisTestsMatchTheSerialSolveAtEveryNode)
+{
+  expectPresetSameAsSerial(sltk::HjbPreset::Test1Rotation, 81, true);
+  expectPresetSameAsSerial(sltk::HjbPreset::Test2SemiConcave, 101, true);
+  expectPresetSameAsSerial(sltk::HjbPreset::Test4Quadratic, 41, true);
+  expectPresetSameAsSerial(sltk::HjbPreset::Test5Zermelo, 51, true);
+  expectPresetSameAsSerial(sltk::HjbPreset::Test3Eikonal, 40, false); // periodic: whole on every rank
+}
+
 TEST(DistributedHjb, AnObstacleAndItsReachableSetMatchTheSerialSolve)
 {
   sltk::HjbExpressionSpec spec = rotation(81);

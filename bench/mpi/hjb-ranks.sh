@@ -1,20 +1,22 @@
 #!/usr/bin/env bash
-# Distributed HJB (Documentation/Distributed.md): the thesis's Test 4 as
-# formulas (sltk hjb, custom problem) on N x N nodes, 1 rank x 1 thread against
+# Distributed HJB (Documentation/Distributed.md): the thesis's Test 4 (the
+# compiled preset, or the same problem as formulas: PROBLEM=formulas) on
+# N x N nodes, 1 rank x 1 thread against
 # 2 ranks x 1 thread, alternated REPEAT times in one run so both see the same
 # machine. Each rank runs under /usr/bin/time -v (its own peak RSS). Prints the
 # median solve time (--json seconds: the filter's update, without MPI start-up),
 # the median wall time of the whole mpirun, the speed-up, the largest rank's
 # peak RSS against the one-rank run's, and the ghost bytes each rank sends per
 # step. The values are checked bitwise equal (the same answer on every count).
-#   bench/mpi/hjb-ranks.sh BUILD_DIR [N=321] [REPEAT=3]
+#   bench/mpi/hjb-ranks.sh BUILD_DIR [N=321] [REPEAT=3] [PROBLEM=preset|formulas]
 set -euo pipefail
-build=$1 n=${2:-321} repeat=${3:-3}
+build=$1 n=${2:-321} repeat=${3:-3} problem=${4:-preset}
 out=$(mktemp -d)
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 test4=(hjb --fx=-a1 --fy=-a2 --cost "(a1^2+a2^2)/2" --v0 "max(1-x^2-y^2,0)"
   --exact "x^2+y^2 <= 1 ? (sqrt(x^2+y^2)-1)^2/(2*t) : 0" --nodes "$n,$n" --domain -2,2,-2,2 --controls ball
   --control-dim 2 --control-radius 2.2 --rk 1 --courant 1.25 --final-time 0.5 --quiet --threads 1)
+[ "$problem" = preset ] && test4=(hjb --preset test4 --n "$n" --quiet --threads 1)
 for r in $(seq "$repeat"); do
   for ranks in 1 2; do
     start=$(date +%s.%N)

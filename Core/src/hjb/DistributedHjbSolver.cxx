@@ -56,16 +56,16 @@ double largestSpeed(const HjbExpressionSpec& spec, const CompiledHjbExpressions&
 class DistributedSolver final : public HjbSolver
 {
 public:
-  DistributedSolver(std::unique_ptr<HjbSolver> inner, const Communicator& comm, HjbGrid whole,
-    SharedHjbExpressions compiled, Index first, Index begin, Index end, Index ghost, bool reachable)
+  DistributedSolver(std::unique_ptr<HjbSolver> inner, const Communicator& comm, HjbGrid whole, ExactSolution exact,
+    const SlabPlan& slab, bool reachable)
     : Inner(std::move(inner))
     , Comm(comm)
     , Whole(whole)
-    , Compiled(std::move(compiled))
-    , First(first)
-    , Begin(begin)
-    , End(end)
-    , Ghost(ghost)
+    , Exact(std::move(exact))
+    , First(slab.First)
+    , Begin(slab.Begin)
+    , End(slab.End)
+    , Ghost(slab.Ghost)
     , Reachable(reachable)
   {
     const int last = whole.Dimension - 1;
@@ -112,6 +112,7 @@ public:
   void result(HjbRunResult& out) const override { this->resultBlock(wholeExtent(this->Whole), out); }
 
   double evaluationsPerNode() const override { return this->Inner->evaluationsPerNode(); }
+  int ranks() const override { return this->Comm.size(); }
 
   void resultBlock(const HjbExtent& extent, HjbRunResult& out) const override
   {
@@ -125,7 +126,7 @@ public:
     double work[2] = { this->Inner->evaluationsPerNode() * localNodes, localNodes };
     this->Comm.allReduce(work, 2, ReduceOp::Sum);
     out.EvaluationsPerNode = work[0] / work[1];
-    if (this->Compiled->HasExact && out.Steps > 0)
+    if (this->Exact && out.Steps > 0)
     {
       this->errors(out);
     }
@@ -166,7 +167,7 @@ private:
       for (Index j = box[2]; j <= box[3]; ++j)
       {
         const Index at = (box[0] - toExtent[0]) + toNx * ((j - toExtent[2]) + toNy * (k - toExtent[4]));
-        this->Inner->readValues(box[0] + nx * ((j - slab[2]) + ny * (k - slab[4])), row, to + at);
+        this->Inner->readValues((box[0] - slab[0]) + nx * ((j - slab[2]) + ny * (k - slab[4])), row, to + at);
       }
     }
   }
@@ -234,8 +235,7 @@ private:
     const HjbGrid& g = this->Whole;
     const HjbExtent owned = this->ownedExtent(this->Comm.rank());
     std::vector<double> row(static_cast<size_t>(owned[1] - owned[0] + 1));
-    double v[SlotCount] = {};
-    v[SlotT] = out.FinalTime;
+    double x[3] = { 0.0, 0.0, 0.0 };
     double sum = 0.0, worst = 0.0, cell = 1.0;
     bool flagged = false;
     double notFinite[4] = { 0.0, 0.0, 0.0, 0.0 }; // x, y, z and the exact value there
@@ -252,15 +252,15 @@ private:
         for (Index i = owned[0]; i <= owned[1]; ++i)
         {
           const Index ijk[3] = { i, j, k };
-          for (int a = 0; a < 3; ++a)
+          for (int a = 0; a < g.Dimension; ++a)
           {
-            v[SlotX + a] = a < g.Dimension ? g.Origin[a] + static_cast<double>(ijk[a]) * g.Spacing[a] : 0.0;
+            x[a] = g.Origin[a] + static_cast<double>(ijk[a]) * g.Spacing[a];
           }
-          const double exact = this->Compiled->Exact.evaluate(v);
+          const double exact = this->Exact(out.FinalTime, x);
           if (!std::isfinite(exact) && !flagged)
           {
             flagged = true;
-            std::copy(v + SlotX, v + SlotX + 3, notFinite);
+            std::copy(x, x + 3, notFinite);
             notFinite[3] = exact;
           }
           const double e = std::fabs(row[static_cast<size_t>(i - owned[0])] - exact);
@@ -327,13 +327,39 @@ private:
   std::unique_ptr<HjbSolver> Inner;
   const Communicator& Comm;
   HjbGrid Whole;
-  SharedHjbExpressions Compiled;
+  ExactSolution Exact;            ///< empty: none known
   Index First, Begin, End, Ghost; ///< rows of the last axis: local [First, ...), owned [Begin, End)
   Index RowNodes = 1;
   std::vector<double> Send, Receive; ///< the halo exchange's message buffers
   bool Reachable;                    ///< the reachable set (3.40) is kept
 };
 } // namespace
+
+Status planSlabs(const HjbGrid& grid, double speed, double dt, const Communicator& comm, SlabPlan& plan)
+{
+  const int last = grid.Dimension - 1;
+  const double reach = 1.25 * speed * dt / grid.Spacing[static_cast<size_t>(last)];
+  plan.Ghost = static_cast<Index>(std::ceil(reach)) + HjbStencilRows;
+  const Index rows = grid.Dims[static_cast<size_t>(last)];
+  const int size = comm.size(), rank = comm.rank();
+  if (rows / size < plan.Ghost)
+  {
+    return Status::invalidArgument("the grid has " + std::to_string(rows) + " rows along its last axis for " +
+      std::to_string(size) + " ranks, fewer than the " + std::to_string(plan.Ghost) +
+      " each needs (the feet reach that far in one step): use fewer ranks or more nodes");
+  }
+  plan.Begin = rows * rank / size;
+  plan.End = rows * (rank + 1) / size;
+  plan.First = std::max<Index>(0, plan.Begin - plan.Ghost);
+  plan.Stop = std::min(rows, plan.End + plan.Ghost);
+  return Status::ok();
+}
+
+std::unique_ptr<HjbSolver> makeDistributedSolver(std::unique_ptr<HjbSolver> window, const Communicator& comm,
+  const HjbGrid& whole, ExactSolution exact, const SlabPlan& slab, bool reachable)
+{
+  return std::make_unique<DistributedSolver>(std::move(window), comm, whole, std::move(exact), slab, reachable);
+}
 
 Status makeDistributedExpressionSolver(
   const HjbExpressionSpec& spec, const Communicator& comm, std::unique_ptr<HjbSolver>& solver)
@@ -355,18 +381,9 @@ Status makeDistributedExpressionSolver(
     return Status::invalidArgument(
       "a distributed HJB solve cuts the last axis into slabs, and it is periodic here: run on one rank");
   }
-  const double reach = 1.25 * largestSpeed(spec, *compiled, grid) * dt / grid.Spacing[last];
-  const Index ghost = static_cast<Index>(std::ceil(reach)) + HjbStencilRows;
-  const Index rows = grid.Dims[last];
-  const int size = comm.size(), rank = comm.rank();
-  if (rows / size < ghost)
-  {
-    return Status::invalidArgument("the grid has " + std::to_string(rows) + " rows along its last axis for " +
-      std::to_string(size) + " ranks, fewer than the " + std::to_string(ghost) +
-      " each needs (the feet reach that far in one step): use fewer ranks or more nodes");
-  }
-  const Index begin = rows * rank / size, end = rows * (rank + 1) / size;
-  const Index first = std::max<Index>(0, begin - ghost), stop = std::min(rows, end + ghost);
+  SlabPlan slab;
+  SLTK_RETURN_IF_ERROR(planSlabs(grid, largestSpeed(spec, *compiled, grid), dt, comm, slab));
+  const Index rows = grid.Dims[static_cast<size_t>(last)], first = slab.First, stop = slab.Stop;
   HjbExpressionSpec local = spec; // the slab: the whole grid's coordinates, spacing and time steps, bitwise
   local.WindowFirst[static_cast<size_t>(last)] = first;
   local.WindowNodes[static_cast<size_t>(last)] = stop - first;
@@ -378,7 +395,18 @@ Status makeDistributedExpressionSolver(
   }
   std::unique_ptr<HjbSolver> inner;
   SLTK_RETURN_IF_ERROR(comm.agree(makeExpressionSolver(local, inner)));
-  solver = std::make_unique<DistributedSolver>(std::move(inner), comm, grid, compiled, first, begin, end, ghost,
+  ExactSolution exact;
+  if (compiled->HasExact)
+  {
+    exact = [compiled](double t, const double* x)
+    {
+      double v[SlotCount] = {};
+      v[SlotT] = t;
+      std::copy(x, x + 3, v + SlotX);
+      return compiled->Exact.evaluate(v);
+    };
+  }
+  solver = makeDistributedSolver(std::move(inner), comm, grid, std::move(exact), slab,
     spec.ReachableSet || compiled->HasObstacle); // as makeExpressionSolver() decides
   return Status::ok();
 }

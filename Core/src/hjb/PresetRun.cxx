@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/hjb/PresetRun.h"
+#include "sltk/hjb/DistributedHjbSolver.h"
 #include "sltk/hjb/HjbSolver.h"
 
 #include "HjbSolverOf.h"
 #include "sltk/exec/Memory.h"
 #include "sltk/hjb/Presets.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace sltk
@@ -40,9 +43,11 @@ HjbSetup<2> setupOf<2>(HjbPreset preset, Index n, double finalTime)
 /// Courant number. A user cannot choose the RK order (O, the setup's) or the
 /// cell cache (automatic) of a preset (PresetRunOptions): both are fixed at
 /// compile time (withFixedOrder()), one kernel of (3.7) per interpolator.
+/// `slab` (a distributed solve): the window of rows [First, Stop) of the last
+/// axis only, at the whole grid's coordinates (GridSpec::Offset).
 template <RkOrder O, class Problem>
 Status presetSolver(const Problem& base, HjbSetup<Problem::Dim> setup, const PresetRunOptions& options,
-  std::unique_ptr<HjbSolver>& solver)
+  std::unique_ptr<HjbSolver>& solver, const SlabPlan* slab = nullptr)
 {
   using Fixed = FixedSchemeProblem<Problem, O>;
   const Fixed problem = withFixedOrder<O>(base);
@@ -57,10 +62,53 @@ Status presetSolver(const Problem& base, HjbSetup<Problem::Dim> setup, const Pre
   Index steps = 0;
   double dt = 0.0;
   SLTK_RETURN_IF_ERROR(hjbPlanTimeSteps(setup.Options, steps, dt, true)); // T = 0: the initial datum, no step
+  if (slab)
+  {
+    constexpr int last = Problem::Dim - 1;
+    setup.Grid.Offset[last] = slab->First;
+    setup.Grid.Dims[last] = slab->Stop - slab->First;
+  }
   const bool reachable = options.Preset == HjbPreset::Test5Zermelo;
   solver = makeHjbSolverOf<Fixed>(
     options.Interpolator, problem, setup.Grid, setup.Options, steps, dt, reachable, Problem::HasExact);
   return solver ? Status::ok() : Status::invalidArgument("unknown interpolator");
+}
+/// Slabs of the preset's grid over `comm` (DistributedHjbSolver.h); `speed`
+/// bounds |f_D| along the last axis over the domain and the controls.
+template <RkOrder O, class Problem>
+Status distributedPreset(const Problem& base, const HjbSetup<Problem::Dim>& setup, const PresetRunOptions& options,
+  double speed, const Communicator& comm, std::unique_ptr<HjbSolver>& solver)
+{
+  std::unique_ptr<HjbSolver> whole; // the plan: nothing is allocated before the first step
+  SLTK_RETURN_IF_ERROR(presetSolver<O>(base, setup, options, whole));
+  SlabPlan slab;
+  SLTK_RETURN_IF_ERROR(planSlabs(whole->grid(), speed, whole->timeStep(), comm, slab));
+  std::unique_ptr<HjbSolver> window;
+  SLTK_RETURN_IF_ERROR(comm.agree(presetSolver<O>(base, setup, options, window, &slab)));
+  ExactSolution exact;
+  if constexpr (Problem::HasExact)
+  {
+    exact = [base](double t, const double* x)
+    {
+      std::array<double, Problem::Dim> point;
+      std::copy(x, x + Problem::Dim, point.begin());
+      return base.Exact(t, point);
+    };
+  }
+  solver = makeDistributedSolver(
+    std::move(window), comm, whole->grid(), std::move(exact), slab, options.Preset == HjbPreset::Test5Zermelo);
+  return Status::ok();
+}
+
+Status checkPresetOptions(const PresetRunOptions& options)
+{
+  HjbGrid grid;
+  SLTK_RETURN_IF_ERROR(presetGrid(options.Preset, options.Nodes, grid));
+  if (!std::isfinite(options.FinalTime) || !std::isfinite(options.CourantNumber))
+  {
+    return Status::invalidArgument("final time and Courant number must be finite numbers");
+  }
+  return Status::ok();
 }
 } // namespace
 
@@ -97,12 +145,7 @@ Status presetGrid(HjbPreset preset, Index nodes, HjbGrid& grid)
 Status makePresetSolver(const PresetRunOptions& options, std::unique_ptr<HjbSolver>& solver)
 {
   solver.reset();
-  HjbGrid grid;
-  SLTK_RETURN_IF_ERROR(presetGrid(options.Preset, options.Nodes, grid));
-  if (!std::isfinite(options.FinalTime) || !std::isfinite(options.CourantNumber))
-  {
-    return Status::invalidArgument("final time and Courant number must be finite numbers");
-  }
+  SLTK_RETURN_IF_ERROR(checkPresetOptions(options));
   const Index n = options.Nodes;
   const double t = options.FinalTime;
   switch (options.Preset)
@@ -117,6 +160,37 @@ Status makePresetSolver(const PresetRunOptions& options, std::unique_ptr<HjbSolv
       return presetSolver<Test4Order>(test4Problem(), setupOf<2>(options.Preset, n, t), options, solver);
     case HjbPreset::Test5Zermelo:
       return presetSolver<Test5Order>(test5Problem(), setupOf<2>(options.Preset, n, t), options, solver);
+  }
+  return Status::invalidArgument("unknown preset");
+}
+
+Status makeDistributedPresetSolver(
+  const PresetRunOptions& options, const Communicator& comm, std::unique_ptr<HjbSolver>& solver)
+{
+  if (comm.size() == 1 || options.Preset == HjbPreset::Test3Eikonal) // Test 3: one periodic axis, whole here
+  {
+    return makePresetSolver(options, solver);
+  }
+  solver.reset();
+  SLTK_RETURN_IF_ERROR(checkPresetOptions(options));
+  const Index n = options.Nodes;
+  const double t = options.FinalTime;
+  constexpr double pi = 3.141592653589793;
+  switch (options.Preset) // the speed bounds: |2 pi (x - 1/2)| on [0, 1]; |a| <= pi/2; |a| <= 2.2; |a2| <= 1
+  {
+    case HjbPreset::Test1Rotation:
+      return distributedPreset<Test1Order>(test1Problem(), setupOf<2>(options.Preset, n, t), options, pi, comm, solver);
+    case HjbPreset::Test2SemiConcave:
+      return distributedPreset<Test2Order>(
+        test2Problem(), setupOf<1>(options.Preset, n, t), options, pi / 2, comm, solver);
+    case HjbPreset::Test4Quadratic:
+      return distributedPreset<Test4Order>(
+        test4Problem(), setupOf<2>(options.Preset, n, t), options, 2.2, comm, solver);
+    case HjbPreset::Test5Zermelo:
+      return distributedPreset<Test5Order>(
+        test5Problem(), setupOf<2>(options.Preset, n, t), options, 1.0, comm, solver);
+    case HjbPreset::Test3Eikonal:
+      break;
   }
   return Status::invalidArgument("unknown preset");
 }

@@ -27,6 +27,9 @@
 
 #include "sltk/exec/Communicator.h"
 #include "sltk/hjb/HjbSolver.h"
+#include "sltk/hjb/PresetRun.h"
+
+#include <functional>
 
 namespace sltk
 {
@@ -35,6 +38,28 @@ namespace sltk
 /// two nodes on each side of the cell of the foot).
 constexpr Index HjbStencilRows = 3;
 
+/// The exact solution v(t, x) (x: three coordinates, unused axes 0).
+using ExactSolution = std::function<double(double t, const double* x)>;
+
+/// This rank's slab: owned rows [Begin, End) of the last axis, stepped on
+/// [First, Stop) (G = Ghost rows on each side, fewer at the domain's edges).
+struct SlabPlan
+{
+  Index First = 0, Begin = 0, End = 0, Stop = 0, Ghost = 0;
+};
+
+/// The slabs of `grid` over `comm`'s ranks for feet that move at most
+/// `speed` dt along the last axis in a step (G above); refuses fewer than G
+/// rows a rank ("use fewer ranks or more nodes").
+Status planSlabs(const HjbGrid& grid, double speed, double dt, const Communicator& comm, SlabPlan& plan);
+
+/// The distributed solver of `whole` from this rank's solver on its window
+/// (`window`: the rows [slab.First, slab.Stop) at the whole grid's
+/// coordinates); `exact` may be empty; `reachable`: the window keeps the
+/// reachable set (3.40).
+std::unique_ptr<HjbSolver> makeDistributedSolver(std::unique_ptr<HjbSolver> window, const Communicator& comm,
+  const HjbGrid& whole, ExactSolution exact, const SlabPlan& slab, bool reachable);
+
 /// A solver of the whole grid (grid(), result()) whose work and memory are
 /// split over `comm`'s ranks. result() gathers the value function (and the
 /// reachable set) on every rank, and reduces the errors against the exact
@@ -42,5 +67,11 @@ constexpr Index HjbStencilRows = 3;
 /// axis may not be periodic; every rank needs at least G owned rows.
 Status makeDistributedExpressionSolver(
   const HjbExpressionSpec& spec, const Communicator& comm, std::unique_ptr<HjbSolver>& solver);
+
+/// The same for a thesis test (PresetRun.h): Tests 1, 2, 4 and 5 are split
+/// (the feet's speed along the last axis is bounded in closed form: pi, pi/2,
+/// 2.2, 1); Test 3 is periodic and runs whole on every rank (ranks() == 1).
+Status makeDistributedPresetSolver(
+  const PresetRunOptions& options, const Communicator& comm, std::unique_ptr<HjbSolver>& solver);
 
 } // namespace sltk

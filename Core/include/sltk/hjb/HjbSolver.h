@@ -34,6 +34,8 @@ public:
   virtual Index stepsDone() const = 0;
   /// Objective evaluations per node update so far (this process's nodes).
   virtual double evaluationsPerNode() const = 0;
+  /// The ranks the grid is split over (DistributedHjbSolver.h); 1: whole here.
+  virtual int ranks() const { return 1; }
 
   /// Advances to the last t_k <= t (k <= stepCount()), starting again from u^0
   /// when t is before the current time. Asks ctx.interrupter() before every
