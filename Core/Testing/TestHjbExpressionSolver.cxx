@@ -456,3 +456,28 @@ TEST(HjbExpressionSolver, ReachTimesAreInterpolatedBetweenSteps)
     }
   }
 }
+
+TEST(HjbExpressionSolver, ResultBlockIsTheGridsNodesInTheExtent)
+{
+  // What a VTK pipeline asks of one piece (HjbSolver::resultBlock): the nodes of the extent only, clipped to
+  // the grid, x fastest; the whole grid as result().
+  std::unique_ptr<sltk::HjbSolver> solver;
+  ASSERT_TRUE(sltk::makeExpressionSolver(rotation(21), solver).isOk());
+  const sltk::HjbRunResult whole = solveToEnd(solver);
+  EXPECT_EQ(whole.Block, sltk::wholeExtent(whole.Grid));
+  sltk::HjbRunResult block;
+  solver->resultBlock({ 3, 7, 10, 30, 0, 0 }, block); // rows 21..30 lie outside the grid
+  const sltk::HjbExtent clipped{ 3, 7, 10, 20, 0, 0 };
+  EXPECT_EQ(block.Block, clipped);
+  ASSERT_EQ(block.Value.size(), 5u * 11u);
+  for (Index j = 10; j <= 20; ++j)
+  {
+    for (Index i = 3; i <= 7; ++i)
+    {
+      EXPECT_EQ(block.Value[static_cast<size_t>((i - 3) + 5 * (j - 10))], whole.Value[static_cast<size_t>(i + 21 * j)]);
+    }
+  }
+  EXPECT_EQ(block.Steps, whole.Steps);
+  solver->resultBlock({ 0, -1, 0, -1, 0, -1 }, block);
+  EXPECT_TRUE(block.Value.empty()) << "an empty extent asks for no node";
+}
