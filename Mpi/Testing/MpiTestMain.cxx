@@ -1,9 +1,36 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // main() of the GoogleTest programs that run serially and under `mpiexec -n N`
-// (Mpi/, Octree/): MPI around the tests, results printed by rank 0, and the
-// exit code is 1 on every rank when a test failed on any rank.
+// (Mpi/, Octree/): MPI around the tests, results printed by rank 0, the
+// failures of the other ranks printed by them (with their rank), and the exit
+// code is 1 on every rank when a test failed on any rank.
 #include <gtest/gtest.h>
 #include <mpi.h>
+
+#include <cstdio>
+
+namespace
+{
+/// The failed assertions of a rank other than 0, which prints no summary.
+class RankFailurePrinter : public ::testing::EmptyTestEventListener
+{
+public:
+  explicit RankFailurePrinter(int rank)
+    : Rank(rank)
+  {
+  }
+  void OnTestPartResult(const ::testing::TestPartResult& result) override
+  {
+    if (result.failed())
+    {
+      std::fprintf(stderr, "rank %d: %s:%d: failure\n%s\n", this->Rank, result.file_name() ? result.file_name() : "",
+        result.line_number(), result.message());
+    }
+  }
+
+private:
+  int Rank;
+};
+} // namespace
 
 int main(int argc, char** argv)
 {
@@ -15,6 +42,7 @@ int main(int argc, char** argv)
   {
     auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
     delete listeners.Release(listeners.default_result_printer());
+    listeners.Append(new RankFailurePrinter(rank));
   }
   int failed = RUN_ALL_TESTS();
   int anyFailed = 0;

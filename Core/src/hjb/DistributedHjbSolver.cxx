@@ -339,20 +339,8 @@ Status planSlabs(const HjbGrid& grid, double speed, double dt, const Communicato
 {
   const int last = grid.Dimension - 1;
   const double reach = 1.25 * speed * dt / grid.Spacing[static_cast<size_t>(last)];
-  plan.Ghost = static_cast<Index>(std::ceil(reach)) + HjbStencilRows;
-  const Index rows = grid.Dims[static_cast<size_t>(last)];
-  const int size = comm.size(), rank = comm.rank();
-  if (rows / size < plan.Ghost)
-  {
-    return Status::invalidArgument("the grid has " + std::to_string(rows) + " rows along its last axis for " +
-      std::to_string(size) + " ranks, fewer than the " + std::to_string(plan.Ghost) +
-      " each needs (the feet reach that far in one step): use fewer ranks or more nodes");
-  }
-  plan.Begin = rows * rank / size;
-  plan.End = rows * (rank + 1) / size;
-  plan.First = std::max<Index>(0, plan.Begin - plan.Ghost);
-  plan.Stop = std::min(rows, plan.End + plan.Ghost);
-  return Status::ok();
+  return planSlab(grid.Dims[static_cast<size_t>(last)], static_cast<Index>(std::ceil(reach)) + HjbStencilRows,
+    comm.rank(), comm.size(), "the feet reach that far in one step", plan);
 }
 
 std::unique_ptr<HjbSolver> makeDistributedSolver(std::unique_ptr<HjbSolver> window, const Communicator& comm,

@@ -26,6 +26,7 @@
 /// failure on one rank ends all of them with its message, without a hang.
 
 #include "sltk/exec/Communicator.h"
+#include "sltk/grid/Slabs.h"
 #include "sltk/hjb/HjbSolver.h"
 #include "sltk/hjb/PresetRun.h"
 
@@ -40,13 +41,6 @@ constexpr Index HjbStencilRows = 3;
 
 /// The exact solution v(t, x) (x: three coordinates, unused axes 0).
 using ExactSolution = std::function<double(double t, const double* x)>;
-
-/// This rank's slab: owned rows [Begin, End) of the last axis, stepped on
-/// [First, Stop) (G = Ghost rows on each side, fewer at the domain's edges).
-struct SlabPlan
-{
-  Index First = 0, Begin = 0, End = 0, Stop = 0, Ghost = 0;
-};
 
 /// The slabs of `grid` over `comm`'s ranks for feet that move at most
 /// `speed` dt along the last axis in a step (G above); refuses fewer than G
