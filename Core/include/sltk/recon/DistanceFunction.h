@@ -12,17 +12,20 @@
 /// mask, and the locator (O(|P|)); work O(|P| 4^D) + O(nodes) per sweep.
 
 #include "sltk/cloud/PointLocator.h"
+#include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
+#include "sltk/grid/Slabs.h"
 
 namespace sltk
 {
 
 struct DistanceOptions
 {
-  int ExactHalfWidth = 2;  ///< the exact box is 2 * ExactHalfWidth nodes per axis (4 in the thesis)
-  int Ghost = 2;           ///< ghost layers of the output (filled by linear extrapolation)
-  int MaxSweepCycles = 20; ///< cycles of 2^D sweeps (stops earlier when nothing changes)
+  int ExactHalfWidth = 2;       ///< the exact box is 2 * ExactHalfWidth nodes per axis (4 in the thesis)
+  int Ghost = 2;                ///< ghost layers of the output (filled by linear extrapolation)
+  int MaxSweepCycles = 20;      ///< cycles of 2^D sweeps (stops earlier when nothing changes)
+  double SweepTolerance = 1e-6; ///< FastSweepingOptions::Tolerance (0: until nothing changes)
 };
 
 struct DistanceReport
@@ -42,6 +45,18 @@ template <int D>
 Status distanceToCloud(const PointLocator<D>& locator, const GridSpec<D>& grid, const Context& ctx,
   GridField<D, double>& distance, const DistanceOptions& options = {}, DistanceReport* report = nullptr);
 
+/// The same on this rank's slab of `whole` (sltk/grid/Slabs.h, slab.Ghost >= 1):
+/// `distance` becomes the window's field (rows slab.First .. slab.Stop - 1 at
+/// the whole grid's coordinates); the exact boxes are those of the whole grid
+/// (a point's box is clipped to the whole grid, then to the window), and the
+/// sweeps exchange their edge rows (FastSweepingSlabs.h). Every rank holds the
+/// whole cloud in `locator`. A collective call; with SweepTolerance 0 the
+/// one-rank distance up to rounding.
+template <int D>
+Status distanceToCloudSlabs(const PointLocator<D>& locator, const GridSpec<D>& whole, const SlabPlan& slab,
+  const Communicator& comm, const Context& ctx, GridField<D, double>& distance, const DistanceOptions& options = {},
+  DistanceReport* report = nullptr);
+
 extern template Status distanceToCloud(const PointCloud<2>&, const GridSpec<2>&, const Context&, GridField<2, double>&,
   const DistanceOptions&, DistanceReport*);
 extern template Status distanceToCloud(const PointCloud<3>&, const GridSpec<3>&, const Context&, GridField<3, double>&,
@@ -50,5 +65,9 @@ extern template Status distanceToCloud(const PointLocator<2>&, const GridSpec<2>
   GridField<2, double>&, const DistanceOptions&, DistanceReport*);
 extern template Status distanceToCloud(const PointLocator<3>&, const GridSpec<3>&, const Context&,
   GridField<3, double>&, const DistanceOptions&, DistanceReport*);
+extern template Status distanceToCloudSlabs(const PointLocator<2>&, const GridSpec<2>&, const SlabPlan&,
+  const Communicator&, const Context&, GridField<2, double>&, const DistanceOptions&, DistanceReport*);
+extern template Status distanceToCloudSlabs(const PointLocator<3>&, const GridSpec<3>&, const SlabPlan&,
+  const Communicator&, const Context&, GridField<3, double>&, const DistanceOptions&, DistanceReport*);
 
 } // namespace sltk
