@@ -24,25 +24,12 @@ std::unique_ptr<sltk::mpi::MpiCommunicator> world()
   return comm;
 }
 
-template <int D>
-sltk::GridSpec<D> box(sltk::Index n)
-{
-  sltk::GridSpec<D> g;
-  for (int a = 0; a < D; ++a)
-  {
-    g.Dims[a] = n;
-    g.Origin[a] = -1.5;
-    g.Spacing[a] = 3.0 / static_cast<double>(n - 1);
-  }
-  return g;
-}
-
 /// The largest difference to the one-rank distance over this rank's owned nodes, relative to dx.
 template <int D>
 double largestDifference(const sltk::PointCloud<D>& cloud, sltk::Index n, const sltk::DistanceOptions& options)
 {
   auto comm = world();
-  const sltk::GridSpec<D> whole = box<D>(n);
+  const sltk::GridSpec<D> whole = sltk::uniformBox<D>(n, -1.5, 1.5);
   const sltk::PointLocator<D> locator(cloud);
   sltk::GridField<D, double> one, mine;
   EXPECT_TRUE(sltk::distanceToCloud(locator, whole, sltk::Context{}, one, options).isOk());
@@ -94,7 +81,7 @@ TEST(DistanceSlabs, ABadOptionFailsEveryRank)
   sltk::DistanceOptions bad;
   bad.SweepTolerance = -1.0;
   sltk::GridField<2, double> d;
-  const sltk::Status s = sltk::distanceToCloudSlabs(locator, box<2>(41), slab, *comm, sltk::Context{}, d, bad);
+  const sltk::Status s = sltk::distanceToCloudSlabs(locator, sltk::uniformBox<2>(41, -1.5, 1.5), slab, *comm, sltk::Context{}, d, bad);
   EXPECT_EQ(s.code(), sltk::StatusCode::InvalidArgument) << s.message();
   comm->barrier(); // no hang
 }
