@@ -5,8 +5,8 @@
 // the one-rank distanceToCloud() to rounding when the sweeps run until nothing
 // changes, and within the sweeps' tolerance with the default options; a cloud
 // that lies in one rank's rows only works; a bad option fails every rank.
+#include "MpiWorld.h"
 #include "sltk/cloud/SyntheticClouds.h"
-#include "sltk/mpi/MpiCommunicator.h"
 #include "sltk/recon/DistanceFunction.h"
 
 #include <gtest/gtest.h>
@@ -17,13 +17,6 @@
 
 namespace
 {
-std::unique_ptr<sltk::mpi::MpiCommunicator> world()
-{
-  std::unique_ptr<sltk::mpi::MpiCommunicator> comm;
-  EXPECT_TRUE(sltk::mpi::MpiCommunicator::world(comm).isOk());
-  return comm;
-}
-
 /// The largest difference to the one-rank distance over this rank's owned nodes, relative to dx.
 template <int D>
 double largestDifference(const sltk::PointCloud<D>& cloud, sltk::Index n, const sltk::DistanceOptions& options)
@@ -81,7 +74,8 @@ TEST(DistanceSlabs, ABadOptionFailsEveryRank)
   sltk::DistanceOptions bad;
   bad.SweepTolerance = -1.0;
   sltk::GridField<2, double> d;
-  const sltk::Status s = sltk::distanceToCloudSlabs(locator, sltk::uniformBox<2>(41, -1.5, 1.5), slab, *comm, sltk::Context{}, d, bad);
+  const sltk::Status s =
+    sltk::distanceToCloudSlabs(locator, sltk::uniformBox<2>(41, -1.5, 1.5), slab, *comm, sltk::Context{}, d, bad);
   EXPECT_EQ(s.code(), sltk::StatusCode::InvalidArgument) << s.message();
   comm->barrier(); // no hang
 }

@@ -4,8 +4,8 @@
 // at every node (to round-off: each slab computes its own node coordinates),
 // the same step count and the same errors; a formula that fails on one rank's
 // slab only ends every rank with the same error, without a hang.
+#include "MpiWorld.h"
 #include "sltk/hjb/DistributedHjbSolver.h"
-#include "sltk/mpi/MpiCommunicator.h"
 
 #include <gtest/gtest.h>
 
@@ -15,13 +15,6 @@
 
 namespace
 {
-std::unique_ptr<sltk::mpi::MpiCommunicator> world()
-{
-  std::unique_ptr<sltk::mpi::MpiCommunicator> comm;
-  EXPECT_TRUE(sltk::mpi::MpiCommunicator::world(comm).isOk());
-  return comm;
-}
-
 /// Thesis Test 4 (3.37) as formulas: a quadratic Hamiltonian, controls in a disc.
 sltk::HjbExpressionSpec test4(sltk::Index n)
 {

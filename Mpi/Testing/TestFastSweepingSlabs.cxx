@@ -4,8 +4,8 @@
 // swept everywhere else, is the one-rank sweep on every owned node to 1e-12
 // relative, in 2D and 3D, whatever slab the points fall in (all in the
 // lowest rank's here).
+#include "MpiWorld.h"
 #include "sltk/levelset/FastSweepingSlabs.h"
-#include "sltk/mpi/MpiCommunicator.h"
 
 #include <gtest/gtest.h>
 
@@ -48,8 +48,7 @@ void pointData(const sltk::GridSpec<D>& g, const std::vector<std::array<double, 
 template <int D>
 void expectSameAsOneRank(sltk::Index n, const std::vector<std::array<double, D>>& points)
 {
-  std::unique_ptr<sltk::mpi::MpiCommunicator> comm;
-  ASSERT_TRUE(sltk::mpi::MpiCommunicator::world(comm).isOk());
+  auto comm = world();
   sltk::GridSpec<D> whole;
   for (int a = 0; a < D; ++a)
   {
@@ -107,8 +106,7 @@ TEST(FastSweepingSlabs, DistanceToPointsIsTheOneRankSweepIn3D)
 
 TEST(FastSweepingSlabs, AMaskOfTheWrongSizeIsRefusedOnEveryRank)
 {
-  std::unique_ptr<sltk::mpi::MpiCommunicator> comm;
-  ASSERT_TRUE(sltk::mpi::MpiCommunicator::world(comm).isOk());
+  auto comm = world();
   sltk::SlabPlan slab;
   ASSERT_TRUE(sltk::planSlab(40, 1, comm->rank(), comm->size(), "the sweep's stencil", slab).isOk());
   sltk::GridSpec<2> g;

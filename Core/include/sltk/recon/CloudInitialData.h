@@ -34,8 +34,9 @@ namespace sltk
 
 struct InitialDataOptions
 {
-  int Ghost = 2;           ///< ghost layers of phi0 (filled by linear extrapolation)
-  int MaxSweepCycles = 20; ///< fast sweeping cycles (stops earlier when nothing changes)
+  int Ghost = 2;                ///< ghost layers of phi0 (filled by linear extrapolation)
+  int MaxSweepCycles = 20;      ///< fast sweeping cycles (stops earlier when nothing changes)
+  double SweepTolerance = 1e-6; ///< FastSweepingOptions::Tolerance (0: until nothing changes)
 };
 
 struct InitialDataReport

@@ -1,0 +1,17 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file MpiWorld.h
+/// The communicator seam on MPI_COMM_WORLD for the GoogleTest programs of
+/// Mpi/ (run by MpiTestMain.cxx on one rank and under mpiexec).
+#include "sltk/mpi/MpiCommunicator.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+inline std::unique_ptr<sltk::mpi::MpiCommunicator> world()
+{
+  std::unique_ptr<sltk::mpi::MpiCommunicator> comm;
+  EXPECT_TRUE(sltk::mpi::MpiCommunicator::world(comm).isOk());
+  return comm;
+}
