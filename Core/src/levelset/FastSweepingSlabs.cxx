@@ -2,38 +2,14 @@
 // fastSweepSlabs(): fast sweeping with a halo exchange per round (FastSweepingSlabs.h).
 #include "sltk/levelset/FastSweepingSlabs.h"
 
+#include "sltk/grid/SlabExchange.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <vector>
 
 namespace sltk
 {
-namespace
-{
-/// Reads (write = false) or writes the window's local rows [first, first + count) of the last axis to/from `buffer`.
-template <int D>
-void moveRows(GridField<D, double>& window, Index first, Index count, std::vector<double>& buffer, bool write)
-{
-  Index rowNodes = 1;
-  for (int a = 0; a + 1 < D; ++a)
-  {
-    rowNodes *= window.spec().Dims[a];
-  }
-  buffer.resize(static_cast<size_t>(count * rowNodes));
-  for (Index k = 0; k < count * rowNodes; ++k)
-  {
-    double& value = window(window.nodeIndex(first * rowNodes + k));
-    if (write)
-    {
-      value = buffer[static_cast<size_t>(k)];
-    }
-    else
-    {
-      buffer[static_cast<size_t>(k)] = value;
-    }
-  }
-}
-} // namespace
 
 template <int D>
 Status fastSweepSlabs(GridField<D, double>& window, const std::vector<std::uint8_t>& frozen, const SlabPlan& slab,
@@ -53,10 +29,7 @@ Status fastSweepSlabs(GridField<D, double>& window, const std::vector<std::uint8
   std::vector<std::uint8_t> fixed = frozen;
   std::fill(fixed.begin(), fixed.begin() + static_cast<std::ptrdiff_t>(below * rowNodes), std::uint8_t(1));
   std::fill(fixed.end() - static_cast<std::ptrdiff_t>(above * rowNodes), fixed.end(), std::uint8_t(1));
-  const int rank = comm.rank(), size = comm.size();
-  const int down = rank > 0 ? rank - 1 : -1, up = rank + 1 < size ? rank + 1 : -1;
   FastSweepingSlabsReport total;
-  std::vector<double> send, receive, old;
   for (int round = 0; round < std::max(1, options.MaxCycles); ++round)
   {
     FastSweepingReport swept;
@@ -64,22 +37,8 @@ Status fastSweepSlabs(GridField<D, double>& window, const std::vector<std::uint8
     total.Rounds = round + 1;
     total.Cycles += swept.Cycles;
     total.Converged = total.Converged && swept.Converged;
-    // My first owned rows down and the rows above mine back, then my last owned rows up and the rows below back.
     bool changed = false;
-    for (const bool toDown : { true, false })
-    {
-      const int to = toDown ? down : up, from = toDown ? up : down;
-      // My ghost rows on a side are as many as the neighbour's on mine (both Ghost, none at the domain's edge).
-      const Index sentRows = toDown ? below : above, gotRows = toDown ? above : below;
-      moveRows(window, toDown ? below : rows - above - sentRows, sentRows, send, false);
-      receive.resize(static_cast<size_t>(gotRows * rowNodes));
-      comm.sendReceive(
-        send.data(), send.size() * sizeof(double), to, receive.data(), receive.size() * sizeof(double), from);
-      const Index ghostFirst = toDown ? rows - above : 0;
-      moveRows(window, ghostFirst, gotRows, old, false);
-      changed = changed || old != receive;
-      moveRows(window, ghostFirst, gotRows, receive, true);
-    }
+    exchangeGhostRows(window, slab, comm, &changed);
     if (comm.allReduce(static_cast<std::int64_t>(changed ? 1 : 0), ReduceOp::Max) == 0)
     {
       break;
