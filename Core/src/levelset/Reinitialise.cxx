@@ -86,7 +86,8 @@ public:
   {
     const double count = this->Ctx.parallelSum(
       0, this->Size,
-      [&](Index b, Index e) {
+      [&](Index b, Index e)
+      {
         double block[ReinitStencil<D>::BlockSize];
         double near = 0.0;
         for (Index p = b; p < e; ++p)
@@ -105,7 +106,8 @@ public:
     double* values = this->Phi.storage().data();
     this->Ctx.parallelFor(
       0, this->Size,
-      [&](Index b, Index e) {
+      [&](Index b, Index e)
+      {
         for (Index p = b; p < e; ++p)
         {
           if ((this->Role[p] & RoleKind) == RoleFixed)
@@ -130,7 +132,8 @@ public:
     double* chunkChange = this->ChunkChange.data();
     this->Ctx.parallelFor(
       0, this->Size,
-      [&](Index b, Index e) {
+      [&](Index b, Index e)
+      {
         double u[ReinitStencil<D>::AxisSize];
         double change = 0.0;
         for (Index p = b; p < e; ++p)
@@ -164,7 +167,8 @@ public:
       Grain);
     this->Ctx.parallelFor(
       0, this->Size,
-      [&](Index b, Index e) {
+      [&](Index b, Index e)
+      {
         for (Index p = b; p < e; ++p)
         {
           if ((role[p] & RoleKind) != RoleFixed)
@@ -232,11 +236,11 @@ private:
   double H = 0.0;    // smallest spacing: the dx of (1.31), (1.34)
   double Dtau = 0.0; // pseudo-time step
 
-  std::vector<Index> Offset;         // storage offset of each band node
-  std::vector<double> Coefficient;   // s of (1.31) for RolePde, the target distance otherwise
-  std::vector<double> Next;          // Jacobi buffer
-  std::vector<std::uint8_t> Role;    // Role* flags
-  std::vector<double> ChunkChange;   // per-chunk max |change|
+  std::vector<Index> Offset;       // storage offset of each band node
+  std::vector<double> Coefficient; // s of (1.31) for RolePde, the target distance otherwise
+  std::vector<double> Next;        // Jacobi buffer
+  std::vector<std::uint8_t> Role;  // Role* flags
+  std::vector<double> ChunkChange; // per-chunk max |change|
 };
 
 Status validateBand(const Index* band, Index size, Index nodes, const Context& ctx)
@@ -247,7 +251,8 @@ Status validateBand(const Index* band, Index size, Index nodes, const Context& c
   }
   const double outside = ctx.parallelSum(
     0, size,
-    [&](Index b, Index e) {
+    [&](Index b, Index e)
+    {
       double bad = 0.0;
       for (Index p = b; p < e; ++p)
       {
@@ -267,31 +272,41 @@ Status validateBand(const Index* band, Index size, Index nodes, const Context& c
 
 template <int D>
 Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const ReinitOptions& options,
-  const Context& ctx, ReinitReport* report)
+  const Context& ctx, ReinitReport* report, const ReinitStepExchange& exchange)
 {
   ReinitReport result;
-  auto finish = [&](Status status) {
+  auto finish = [&](Status status)
+  {
     if (report)
     {
       *report = result;
     }
     return status;
   };
-  SLTK_RETURN_IF_ERROR(finish(phi.spec().validate()));
-  SLTK_RETURN_IF_ERROR(finish(options.template validate<D>()));
-  SLTK_RETURN_IF_ERROR(finish(validateBand(band, bandSize, phi.spec().nodeCount(), ctx)));
-  if (bandSize == 0)
+  Status ready = phi.spec().validate();
+  ready = ready.isOk() ? options.template validate<D>() : ready;
+  ready = ready.isOk() ? validateBand(band, bandSize, phi.spec().nodeCount(), ctx) : ready;
+  const bool distributed = static_cast<bool>(exchange.AfterStep);
+  if (!ready.isOk())
+  {
+    return finish(exchange.Agree ? exchange.Agree(ready) : ready); // every rank makes one Agree call
+  }
+  if (bandSize == 0 && !distributed)
   {
     result.Converged = true;
     return finish(Status::ok());
   }
-
   BandSolver<D> solver(phi, band, bandSize, options, ctx);
-  SLTK_RETURN_IF_ERROR(finish(solver.allocate()));
+  SLTK_RETURN_IF_ERROR(finish(exchange.Agree ? exchange.Agree(solver.allocate()) : solver.allocate()));
   result.InterfaceNodes = solver.classify();
   if (options.Method == ReinitMethod::Constrained)
   {
     solver.fixFront();
+  }
+  if (distributed)
+  {
+    bool ignored = false;
+    exchange.AfterStep(0.0, ignored); // the front's fixed values (1.37)/(1.44) reach the neighbours' ghost rows
   }
 
   Interrupter& interrupter = ctx.interrupter();
@@ -300,6 +315,13 @@ Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const 
   {
     result.MaxChange = solver.step();
     result.Iterations = iteration;
+    bool interrupted = false;
+    if (distributed)
+    {
+      // Every rank takes the same decisions below: the largest change over the ranks, a stop on any rank.
+      interrupted = interrupter.wasInterrupted(static_cast<double>(iteration) / options.MaxIterations);
+      result.MaxChange = exchange.AfterStep(result.MaxChange, interrupted);
+    }
     if (!std::isfinite(result.MaxChange))
     {
       return finish(Status::numericalFailure("reinitialisation produced a non-finite value at pseudo-time step " +
@@ -310,7 +332,7 @@ Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const 
       result.Converged = true;
       break;
     }
-    if (interrupter.wasInterrupted(static_cast<double>(iteration) / options.MaxIterations))
+    if (distributed ? interrupted : interrupter.wasInterrupted(static_cast<double>(iteration) / options.MaxIterations))
     {
       return finish(Status::aborted());
     }
@@ -318,7 +340,9 @@ Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const 
   return finish(Status::ok());
 }
 
-template Status reinitialise(GridField<2>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*);
-template Status reinitialise(GridField<3>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*);
+template Status reinitialise(
+  GridField<2>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*, const ReinitStepExchange&);
+template Status reinitialise(
+  GridField<3>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*, const ReinitStepExchange&);
 
 } // namespace sltk

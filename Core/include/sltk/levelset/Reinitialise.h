@@ -23,25 +23,39 @@
 #include "sltk/grid/GridField.h"
 #include "sltk/levelset/ReinitOptions.h"
 
+#include <functional>
 #include <vector>
 
 namespace sltk
 {
 
-template <int D>
-Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const ReinitOptions& options,
-  const Context& ctx, ReinitReport* report = nullptr);
+/// A distributed solve's part (ReinitialiseSlabs.h); empty members: one process.
+struct ReinitStepExchange
+{
+  /// The ranks' common status from this rank's (the checks and allocations
+  /// before the first step), so that no rank steps while another has failed.
+  std::function<Status(const Status&)> Agree;
+  /// Between two pseudo-time steps: given this rank's largest change of the
+  /// step and whether it was told to stop, exchanges what the ranks share and
+  /// returns the change the stopping test uses (+infinity when any rank's was
+  /// not finite), `interrupted` set when any rank was told to stop.
+  std::function<double(double localChange, bool& interrupted)> AfterStep;
+};
 
 template <int D>
-Status reinitialise(GridField<D>& phi, const std::vector<Index>& band, const ReinitOptions& options,
-  const Context& ctx, ReinitReport* report = nullptr)
+Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const ReinitOptions& options,
+  const Context& ctx, ReinitReport* report = nullptr, const ReinitStepExchange& exchange = {});
+
+template <int D>
+Status reinitialise(GridField<D>& phi, const std::vector<Index>& band, const ReinitOptions& options, const Context& ctx,
+  ReinitReport* report = nullptr)
 {
   return reinitialise<D>(phi, band.data(), static_cast<Index>(band.size()), options, ctx, report);
 }
 
 extern template Status reinitialise(
-  GridField<2>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*);
+  GridField<2>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*, const ReinitStepExchange&);
 extern template Status reinitialise(
-  GridField<3>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*);
+  GridField<3>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*, const ReinitStepExchange&);
 
 } // namespace sltk
