@@ -6,6 +6,7 @@
 // the one-rank step, with Q1 and CWENO-Z, and exchangeGhostRows (SlabExchange.h)
 // then gives every rank the owners' values in its ghost rows.
 #include "MpiWorld.h"
+#include "SlabWindow.h"
 #include "sltk/cloud/SyntheticClouds.h"
 #include "sltk/grid/SlabExchange.h"
 #include "sltk/interp/Interpolators.h"
@@ -21,21 +22,6 @@ namespace
 {
 constexpr sltk::Index N = 81;
 constexpr int PhiGhost = 2;
-
-/// The rows [first, first + rows) of `whole` (ghost layers filled by extrapolation).
-sltk::GridField<2> rowsOf(const sltk::GridField<2>& whole, sltk::Index first, sltk::Index rows)
-{
-  sltk::GridSpec<2> spec = whole.spec();
-  spec.Dims[1] = rows;
-  spec.Offset[1] = first;
-  sltk::GridField<2> part(spec, whole.ghost());
-  for (sltk::Index k = 0; k < spec.nodeCount(); ++k)
-  {
-    part(part.nodeIndex(k)) = whole(whole.nodeIndex(k + first * spec.Dims[0]));
-  }
-  part.fillGhosts();
-  return part;
-}
 
 template <class Interp>
 void expectStepSameAsOneRank()
@@ -73,8 +59,8 @@ void expectStepSameAsOneRank()
   sltk::SlabPlan slab;
   const auto ghost = static_cast<sltk::Index>(std::ceil(reach)) + 3;
   ASSERT_TRUE(sltk::planSlab(N, ghost, comm->rank(), comm->size(), "the feet's reach", slab).isOk());
-  sltk::GridField<2> mine = rowsOf(phi, slab.First, slab.windowRows());
-  const sltk::GridField<2> myDist = rowsOf(dist, slab.First, slab.windowRows());
+  sltk::GridField<2> mine = windowOf(phi, slab);
+  const sltk::GridField<2> myDist = windowOf(dist, slab);
   sltk::NodeList owned; // the band nodes of my owned rows, in my window's numbering
   for (const sltk::Index node : band)
   {

@@ -7,6 +7,7 @@
 // the plain method; a front inside one rank's rows leaves the others an empty
 // band, and they still take part.
 #include "MpiWorld.h"
+#include "SlabWindow.h"
 #include "sltk/grid/SlabExchange.h"
 #include "sltk/levelset/ReinitialiseSlabs.h"
 
@@ -43,15 +44,7 @@ void expectSameAsOneRank(double cy, double r, sltk::ReinitMethod method)
 
   sltk::SlabPlan slab;
   ASSERT_TRUE(sltk::planSlab(N, 2, comm->rank(), comm->size(), "the reinitialisation's stencil", slab).isOk());
-  sltk::GridSpec<2> part = whole;
-  part.Dims[1] = slab.windowRows();
-  part.Offset[1] = slab.First;
-  sltk::GridField<2> mine(part, 2);
-  for (sltk::Index k = 0; k < part.nodeCount(); ++k)
-  {
-    mine(mine.nodeIndex(k)) = phi(phi.nodeIndex(k + slab.First * N));
-  }
-  mine.fillGhosts();
+  sltk::GridField<2> mine = windowOf(phi, slab);
   sltk::NodeList owned;
   for (const sltk::Index node : wide)
   {

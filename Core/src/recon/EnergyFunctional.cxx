@@ -58,7 +58,7 @@ public:
     this->HalfDiagonal = 0.5 * std::sqrt(diagonal2);
     this->SubcellWeight = options.Measure == SubcellMeasure::Thesis
       ? std::pow(volume, static_cast<double>(D - 1) / D) // (dx')^(n-1)
-      : volume / (2.0 * this->HalfDiagonal);              // shell thickness 2h removed
+      : volume / (2.0 * this->HalfDiagonal);             // shell thickness 2h removed
   }
 
   /// Contribution of the cell with lowest corner `cell`; `front` tells whether it had any.
@@ -263,29 +263,33 @@ void sumCells(const GridField<D, double>& phi, const GridField<D, double>& dista
   std::vector<PowerSums> partial(static_cast<size_t>(chunks));
   std::vector<Index> fronts(static_cast<size_t>(chunks), 0);
   const GridSpec<D>& g = phi.spec();
-  ctx.parallelFor(0, n, [&](Index b, Index e) {
-    CellEnergy<D> energy(phi, distance, options);
-    PowerSums sum;
-    Index count = 0;
-    for (Index j = b; j < e; ++j)
+  ctx.parallelFor(
+    0, n,
+    [&](Index b, Index e)
     {
-      const std::array<Index, D> cell = phi.nodeIndex(nodeOf(j));
-      bool inside = true;
-      for (int a = 0; a < D; ++a)
+      CellEnergy<D> energy(phi, distance, options);
+      PowerSums sum;
+      Index count = 0;
+      for (Index j = b; j < e; ++j)
       {
-        inside = inside && cell[a] + 1 < g.Dims[a];
+        const std::array<Index, D> cell = phi.nodeIndex(nodeOf(j));
+        bool inside = true;
+        for (int a = 0; a < D; ++a)
+        {
+          inside = inside && cell[a] + 1 < g.Dims[a];
+        }
+        if (!inside)
+        {
+          continue;
+        }
+        bool front = false;
+        sum += energy(cell, front);
+        count += front ? 1 : 0;
       }
-      if (!inside)
-      {
-        continue;
-      }
-      bool front = false;
-      sum += energy(cell, front);
-      count += front ? 1 : 0;
-    }
-    partial[static_cast<size_t>(b / grain)] = sum;
-    fronts[static_cast<size_t>(b / grain)] = count;
-  }, grain);
+      partial[static_cast<size_t>(b / grain)] = sum;
+      fronts[static_cast<size_t>(b / grain)] = count;
+    },
+    grain);
   result = EnergyResult{};
   for (size_t c = 0; c < partial.size(); ++c)
   {
@@ -293,26 +297,39 @@ void sumCells(const GridField<D, double>& phi, const GridField<D, double>& dista
     result.SecondIntegral += partial[c].Second;
     result.FrontCells += fronts[c];
   }
-  result.Energy = std::pow(result.Integral, 1.0 / options.P); // (4.29)/(4.30)
-  if (options.SecondP > 0.0)
-  {
-    result.SecondEnergy = std::pow(result.SecondIntegral, 1.0 / options.SecondP);
-  }
+  energiesFromIntegrals(result, options);
 }
 } // namespace
+
+void energiesFromIntegrals(EnergyResult& result, const EnergyOptions& options)
+{
+  result.Energy = std::pow(result.Integral, 1.0 / options.P); // (4.29)/(4.30)
+  result.SecondEnergy = options.SecondP > 0.0 ? std::pow(result.SecondIntegral, 1.0 / options.SecondP) : 0.0;
+}
+
+void reduceEnergy(EnergyResult& local, const EnergyOptions& options, const Communicator& comm)
+{
+  double integrals[2] = { local.Integral, local.SecondIntegral };
+  comm.allReduce(integrals, 2, ReduceOp::Sum);
+  local.Integral = integrals[0];
+  local.SecondIntegral = integrals[1];
+  local.FrontCells = comm.allReduce(static_cast<std::int64_t>(local.FrontCells), ReduceOp::Sum);
+  energiesFromIntegrals(local, options);
+}
 
 template <int D>
 Status energyFunctional(const GridField<D, double>& phi, const GridField<D, double>& distance, const Context& ctx,
   EnergyResult& result, const EnergyOptions& options)
 {
   SLTK_RETURN_IF_ERROR(checkInputs(phi, distance, options));
-  sumCells(phi, distance, phi.spec().nodeCount(), [](Index k) { return k; }, ctx, options, result);
+  sumCells(
+    phi, distance, phi.spec().nodeCount(), [](Index k) { return k; }, ctx, options, result);
   return Status::ok();
 }
 
 template <int D>
-Status energyFunctional(const GridField<D, double>& phi, const GridField<D, double>& distance,
-  const NodeList& cells, const Context& ctx, EnergyResult& result, const EnergyOptions& options)
+Status energyFunctional(const GridField<D, double>& phi, const GridField<D, double>& distance, const NodeList& cells,
+  const Context& ctx, EnergyResult& result, const EnergyOptions& options)
 {
   SLTK_RETURN_IF_ERROR(checkInputs(phi, distance, options));
   const Index nodes = phi.spec().nodeCount();
@@ -323,15 +340,16 @@ Status energyFunctional(const GridField<D, double>& phi, const GridField<D, doub
       return Status::invalidArgument("a cell index of the band is outside the grid");
     }
   }
-  sumCells(phi, distance, static_cast<Index>(cells.size()), [&](Index j) { return cells[static_cast<size_t>(j)]; },
-    ctx, options, result);
+  sumCells(
+    phi, distance, static_cast<Index>(cells.size()), [&](Index j) { return cells[static_cast<size_t>(j)]; }, ctx,
+    options, result);
   return Status::ok();
 }
 
-template Status energyFunctional(const GridField<2, double>&, const GridField<2, double>&, const Context&,
-  EnergyResult&, const EnergyOptions&);
-template Status energyFunctional(const GridField<3, double>&, const GridField<3, double>&, const Context&,
-  EnergyResult&, const EnergyOptions&);
+template Status energyFunctional(
+  const GridField<2, double>&, const GridField<2, double>&, const Context&, EnergyResult&, const EnergyOptions&);
+template Status energyFunctional(
+  const GridField<3, double>&, const GridField<3, double>&, const Context&, EnergyResult&, const EnergyOptions&);
 template Status energyFunctional(const GridField<2, double>&, const GridField<2, double>&, const NodeList&,
   const Context&, EnergyResult&, const EnergyOptions&);
 template Status energyFunctional(const GridField<3, double>&, const GridField<3, double>&, const NodeList&,

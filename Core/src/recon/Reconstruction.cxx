@@ -4,14 +4,15 @@
 #include "sltk/interp/Interpolators.h"
 #include "sltk/levelset/NarrowBand.h"
 #include "sltk/levelset/Reinitialise.h"
+#include "sltk/recon/CloudError.h"
 #include "sltk/recon/CloudInitialData.h"
 #include "sltk/recon/DistanceFunction.h"
 #include "sltk/recon/EnergyFunctional.h"
 #include "sltk/recon/ExactDistanceCache.h"
 #include "sltk/recon/LevelSetStep.h"
-#include "sltk/recon/StrayPoints.h"
 #include "sltk/recon/LocalOffset.h"
 #include "sltk/recon/StoppingRule.h"
+#include "sltk/recon/StrayPoints.h"
 
 #include <algorithm>
 #include <chrono>
@@ -33,18 +34,7 @@ double secondsSince(std::chrono::steady_clock::time_point start)
 template <int D, class Interp>
 double cloudError(const GridField<D>& phi, const PointCloud<D>& cloud, const Context& ctx)
 {
-  const double sum = ctx.parallelSum(0, cloud.size(),
-    [&](Index b, Index e)
-    {
-      Interp interp(phi);
-      double s = 0.0;
-      for (Index k = b; k < e; ++k)
-      {
-        s += std::fabs(interpolate(interp, phi.spec(), cloud.Points[static_cast<size_t>(k)].data()));
-      }
-      return s;
-    });
-  return sum / static_cast<double>(cloud.size());
+  return cloudErrorSum<D, Interp>(phi, cloud, ctx) / static_cast<double>(cloud.size());
 }
 
 /// The fraction of the cloud's points farther than `far` from the zero level
@@ -172,8 +162,7 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     if (ep.FrontCells == 0)
     {
       vanished = true;
-      return Status::numericalFailure("run " + std::to_string(run) +
-        ": the zero level set vanished (no front cell)");
+      return Status::numericalFailure("run " + std::to_string(run) + ": the zero level set vanished (no front cell)");
     }
     energies.push_back(e2.Energy);
     if (n >= options.MinIterations && energyStalled(energies, options.EnergyWindow, options.Tolerance) &&

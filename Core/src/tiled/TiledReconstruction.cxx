@@ -391,8 +391,7 @@ Status tiledEnergy(const TiledField<D>& field, const std::vector<std::int32_t>& 
     result.SecondIntegral += parts[j].SecondIntegral;
     result.FrontCells += parts[j].FrontCells;
   }
-  result.Energy = std::pow(result.Integral, 1.0 / options.P);
-  result.SecondEnergy = options.SecondP > 0.0 ? std::pow(result.SecondIntegral, 1.0 / options.SecondP) : 0.0;
+  energiesFromIntegrals(result, options);
   return Status::ok();
 }
 

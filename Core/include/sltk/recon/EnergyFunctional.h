@@ -28,6 +28,7 @@
 /// SubcellMeasure::Thesis keeps the literal dx'^2. The two differ by the
 /// constant factor sqrt(3)^(1/p) in E_p.
 
+#include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
 #include "sltk/levelset/NarrowBand.h"
@@ -43,19 +44,19 @@ enum class SubcellMeasure : std::uint8_t
 
 struct EnergyOptions
 {
-  double P = 2.0;        ///< p >= 1 of (4.1)
-  double SecondP = 0.0;  ///< a second exponent summed in the same traversal (0: none), e.g. E_2 for (4.33) when p = 1
-  int Refinement = 5;    ///< R of (4.30) (3D only)
+  double P = 2.0;       ///< p >= 1 of (4.1)
+  double SecondP = 0.0; ///< a second exponent summed in the same traversal (0: none), e.g. E_2 for (4.33) when p = 1
+  int Refinement = 5;   ///< R of (4.30) (3D only)
   SubcellMeasure Measure = SubcellMeasure::Consistent;
 };
 
 struct EnergyResult
 {
-  double Integral = 0.0; ///< sum of |d|^p over the front (before the 1/p power)
-  double Energy = 0.0;   ///< E_p = Integral^(1/p)
+  double Integral = 0.0;       ///< sum of |d|^p over the front (before the 1/p power)
+  double Energy = 0.0;         ///< E_p = Integral^(1/p)
   double SecondIntegral = 0.0; ///< with EnergyOptions::SecondP = q: sum of |d|^q
   double SecondEnergy = 0.0;   ///< E_q
-  Index FrontCells = 0;  ///< cells that contributed
+  Index FrontCells = 0;        ///< cells that contributed
 };
 
 /// E_p over every cell of the grid (phi and d on the same grid; ghosts unused).
@@ -67,13 +68,22 @@ Status energyFunctional(const GridField<D, double>& phi, const GridField<D, doub
 /// (1.48): with gamma >= sqrt(D) dx and phi a distance it holds the lowest
 /// corner of every cell where the front lies). O(band) work.
 template <int D>
-Status energyFunctional(const GridField<D, double>& phi, const GridField<D, double>& distance,
-  const NodeList& cells, const Context& ctx, EnergyResult& result, const EnergyOptions& options = {});
+Status energyFunctional(const GridField<D, double>& phi, const GridField<D, double>& distance, const NodeList& cells,
+  const Context& ctx, EnergyResult& result, const EnergyOptions& options = {});
 
-extern template Status energyFunctional(const GridField<2, double>&, const GridField<2, double>&, const Context&,
-  EnergyResult&, const EnergyOptions&);
-extern template Status energyFunctional(const GridField<3, double>&, const GridField<3, double>&, const Context&,
-  EnergyResult&, const EnergyOptions&);
+/// E_p and E_q from the integrals: Integral^(1/p), SecondIntegral^(1/q).
+void energiesFromIntegrals(EnergyResult& result, const EnergyOptions& options);
+
+/// The energy of a slab decomposition (grid/Slabs.h): `local` holds this
+/// rank's sums over the band cells of its owned rows (cells whose lowest
+/// corner is in them); the integrals and front cells are added over the ranks
+/// and E_p, E_q recomputed, alike on every rank. A collective call.
+void reduceEnergy(EnergyResult& local, const EnergyOptions& options, const Communicator& comm);
+
+extern template Status energyFunctional(
+  const GridField<2, double>&, const GridField<2, double>&, const Context&, EnergyResult&, const EnergyOptions&);
+extern template Status energyFunctional(
+  const GridField<3, double>&, const GridField<3, double>&, const Context&, EnergyResult&, const EnergyOptions&);
 extern template Status energyFunctional(const GridField<2, double>&, const GridField<2, double>&, const NodeList&,
   const Context&, EnergyResult&, const EnergyOptions&);
 extern template Status energyFunctional(const GridField<3, double>&, const GridField<3, double>&, const NodeList&,
