@@ -3,6 +3,7 @@
 #include "CliOptions.h"
 #include "Commands.h"
 #include "ErrorCollector.h"
+#include "FileNames.h"
 #include "HjbCustomProblem.h"
 #include "MpiSession.h"
 #include "OutputPaths.h"
@@ -80,7 +81,7 @@ int Hjb::run() const
   {
     return fail(paths, 2);
   }
-  const bool pieces = this->Output.size() > 5 && this->Output.substr(this->Output.size() - 5) == ".pvti";
+  const bool pieces = extensionOf(this->Output) == "pvti";
   const std::string folder = pieces ? pieceFolderProblem(this->Output) : "";
   if (!folder.empty())
   {

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// makeDistributedExpressionSolver(): slabs of the last axis with ghost rows
-// exchanged after every step (DistributedHjbSolver.h).
+// The distributed HJB solver: slabs of the last axis with ghost rows exchanged
+// after every step (DistributedHjbSolver.h).
 #include "sltk/hjb/DistributedHjbSolver.h"
 
 #include "ExpressionDiagnosis.h"
 #include "ExpressionSolverOf.h"
 #include "HjbExtents.h"
+#include "sltk/grid/SlabExchange.h"
 
 #include <algorithm>
 #include <cmath>
@@ -62,17 +63,9 @@ public:
     , Comm(comm)
     , Whole(whole)
     , Exact(std::move(exact))
-    , First(slab.First)
-    , Begin(slab.Begin)
-    , End(slab.End)
-    , Ghost(slab.Ghost)
+    , Slab(slab)
     , Reachable(reachable)
   {
-    const int last = whole.Dimension - 1;
-    for (int a = 0; a < last; ++a)
-    {
-      this->RowNodes *= whole.Dims[a];
-    }
   }
 
   const HjbGrid& grid() const override { return this->Whole; }
@@ -140,8 +133,8 @@ private:
     HjbExtent e = wholeExtent(this->Whole);
     const int last = this->Whole.Dimension - 1;
     const Index rows = this->Whole.Dims[static_cast<size_t>(last)], size = this->Comm.size();
-    e[2 * last] = rows * q / size;
-    e[2 * last + 1] = rows * (q + 1) / size - 1;
+    e[2 * last] = slabBegin(rows, q, size);
+    e[2 * last + 1] = slabBegin(rows, q + 1, size) - 1;
     return e;
   }
 
@@ -150,8 +143,8 @@ private:
   {
     HjbExtent e = wholeExtent(this->Whole);
     const int last = this->Whole.Dimension - 1;
-    e[2 * last] = this->First;
-    e[2 * last + 1] = this->First + this->Inner->grid().Dims[static_cast<size_t>(last)] - 1;
+    e[2 * last] = this->Slab.First;
+    e[2 * last + 1] = this->Slab.Stop - 1;
     return e;
   }
 
@@ -290,48 +283,20 @@ private:
   /// The first G owned rows go down (rank - 1), the last G up (rank + 1); the ghost rows come back.
   void exchange()
   {
-    const int rank = this->Comm.rank();
-    const int size = this->Comm.size();
-    const int below = rank > 0 ? rank - 1 : -1;
-    const int above = rank + 1 < size ? rank + 1 : -1;
-    const Index count = this->Ghost * this->RowNodes;
-    const size_t bytes = static_cast<size_t>(count) * sizeof(double);
-    this->Send.resize(static_cast<size_t>(count));
-    this->Receive.resize(static_cast<size_t>(count));
-    const Index ownedFirst = (this->Begin - this->First) * this->RowNodes; // local node numbers
-    const Index ownedEnd = (this->End - this->First) * this->RowNodes;
-    // Down: my first owned rows to `below`, `above`'s into my upper ghost rows.
-    if (below >= 0)
-    {
-      this->Inner->readValues(ownedFirst, count, this->Send.data());
-    }
-    this->Comm.sendReceive(
-      this->Send.data(), below >= 0 ? bytes : 0, below, this->Receive.data(), above >= 0 ? bytes : 0, above);
-    if (above >= 0)
-    {
-      this->Inner->writeValues(ownedEnd, count, this->Receive.data());
-    }
-    // Up: my last owned rows to `above`, `below`'s into my lower ghost rows.
-    if (above >= 0)
-    {
-      this->Inner->readValues(ownedEnd - count, count, this->Send.data());
-    }
-    this->Comm.sendReceive(
-      this->Send.data(), above >= 0 ? bytes : 0, above, this->Receive.data(), below >= 0 ? bytes : 0, below);
-    if (below >= 0)
-    {
-      this->Inner->writeValues(ownedFirst - count, count, this->Receive.data());
-    }
+    const Index rowNodes = extentNodes(this->slabExtent()) / this->Slab.windowRows();
+    exchangeSlabRows<double>(
+      this->Slab, rowNodes, this->Comm,
+      [&](Index first, Index rows, double* to) { this->Inner->readValues(first * rowNodes, rows * rowNodes, to); },
+      [&](Index first, Index rows, const double* from)
+      { this->Inner->writeValues(first * rowNodes, rows * rowNodes, from); });
   }
 
   std::unique_ptr<HjbSolver> Inner;
   const Communicator& Comm;
   HjbGrid Whole;
-  ExactSolution Exact;            ///< empty: none known
-  Index First, Begin, End, Ghost; ///< rows of the last axis: local [First, ...), owned [Begin, End)
-  Index RowNodes = 1;
-  std::vector<double> Send, Receive; ///< the halo exchange's message buffers
-  bool Reachable;                    ///< the reachable set (3.40) is kept
+  ExactSolution Exact; ///< empty: none known
+  SlabPlan Slab;       ///< this rank's rows of the last axis
+  bool Reachable;      ///< the reachable set (3.40) is kept
 };
 } // namespace
 

@@ -12,18 +12,23 @@ namespace sltk
 const char* const NonFiniteFix = "give formulas that are finite on the whole domain and control set (guard "
                                  "divisions, logarithms and roots, e.g. max(x, 1e-9))";
 
+double axisSpacing(const HjbExpressionSpec& spec, int axis)
+{
+  const Index n = spec.Nodes[static_cast<size_t>(axis)];
+  const bool periodic = spec.Bounds[static_cast<size_t>(axis)] == Boundary::Periodic;
+  return (spec.Upper[static_cast<size_t>(axis)] - spec.Lower[static_cast<size_t>(axis)]) /
+    static_cast<double>(periodic ? n : n - 1);
+}
+
 HjbGrid wholeGrid(const HjbExpressionSpec& spec)
 {
   HjbGrid g;
   g.Dimension = spec.Dimension;
   for (int a = 0; a < spec.Dimension; ++a)
   {
-    const Index n = spec.Nodes[static_cast<size_t>(a)];
-    const bool periodic = spec.Bounds[static_cast<size_t>(a)] == Boundary::Periodic;
-    g.Dims[a] = n;
+    g.Dims[a] = spec.Nodes[static_cast<size_t>(a)];
     g.Origin[a] = spec.Lower[static_cast<size_t>(a)];
-    g.Spacing[a] = (spec.Upper[static_cast<size_t>(a)] - spec.Lower[static_cast<size_t>(a)]) /
-      static_cast<double>(periodic ? n : n - 1);
+    g.Spacing[a] = axisSpacing(spec, a);
   }
   return g;
 }

@@ -11,8 +11,8 @@
 
 #include <array>
 #include <memory>
-#include <vector>
 #include <string>
+#include <vector>
 
 namespace sltk
 {
@@ -22,6 +22,9 @@ enum class FormulaScope
   StateFormulas, ///< v_0 and g only (functions of x, known before the first step)
   AllFormulas    ///< also f_D and f_C, at the sampled controls
 };
+
+/// The spacing along `axis`: (Upper - Lower) / (n - 1), / n on a periodic axis.
+double axisSpacing(const HjbExpressionSpec& spec, int axis);
 
 /// The grid of `spec` without its window (ExpressionProblem.h WindowFirst): a
 /// distributed solve's slabs name a failing formula where the serial solve does.

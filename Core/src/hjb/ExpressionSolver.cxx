@@ -181,7 +181,7 @@ Status buildGrid(const HjbExpressionSpec& spec, GridSpec<D>& grid)
     grid.Dims[a] = window > 0 ? window : n;
     grid.Offset[a] = window > 0 ? first : 0;
     grid.Origin[a] = lo;
-    grid.Spacing[a] = (hi - lo) / static_cast<double>(periodic ? n : n - 1);
+    grid.Spacing[a] = axisSpacing(spec, a);
     grid.Bounds[a] = spec.Bounds[static_cast<size_t>(a)];
   }
   return grid.validate();

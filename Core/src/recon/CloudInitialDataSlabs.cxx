@@ -3,7 +3,10 @@
 #include "sltk/recon/CloudInitialDataSlabs.h"
 
 #include "ExternalMarking.h"
+#include "sltk/grid/SlabExchange.h"
 #include "sltk/levelset/FastSweepingSlabs.h"
+
+#include <algorithm>
 
 #include <cstdint>
 #include <vector>
@@ -28,31 +31,25 @@ Status markExternalSlabs(const GridField<D, double>& distance, double threshold,
   SLTK_RETURN_IF_ERROR(comm.agree(input));
   marking::markBoundary(distance, slab.First, rows, ctx, external);
   const Index rowNodes = g.nodeCount() / g.Dims[D - 1];
-  const Index below = slab.Begin - slab.First, above = slab.Stop - slab.End; // ghost rows on each side
-  const int rank = comm.rank(), size = comm.size();
-  const int down = rank > 0 ? rank - 1 : -1, up = rank + 1 < size ? rank + 1 : -1;
-  std::vector<std::uint8_t> receive;
   int round = 0;
   for (;; ++round)
   {
     SLTK_RETURN_IF_ERROR(comm.agree(marking::spreadExternal(distance, threshold, ctx, external, nullptr)));
-    // My first owned rows' marks down and the rows above mine back, then my last owned rows' up and below's back.
+    // The neighbours' marks OR-ed into my ghost rows: a mark is never wrong, so none is taken back.
     bool received = false;
-    for (const bool toDown : { true, false })
-    {
-      const Index sentFirst = toDown ? below : g.Dims[D - 1] - 2 * above;
-      const Index sentRows = toDown ? below : above, gotRows = toDown ? above : below;
-      const Index ghostFirst = toDown ? g.Dims[D - 1] - above : 0;
-      receive.assign(static_cast<size_t>(gotRows * rowNodes), 0);
-      comm.sendReceive(external.data() + sentFirst * rowNodes, static_cast<size_t>(sentRows * rowNodes),
-        toDown ? down : up, receive.data(), receive.size(), toDown ? up : down);
-      for (size_t k = 0; k < receive.size(); ++k)
+    exchangeSlabRows<std::uint8_t>(
+      slab, rowNodes, comm,
+      [&](Index first, Index count, std::uint8_t* to)
+      { std::copy_n(external.data() + first * rowNodes, count * rowNodes, to); },
+      [&](Index first, Index count, const std::uint8_t* from)
       {
-        std::uint8_t& mark = external[static_cast<size_t>(ghostFirst * rowNodes) + k];
-        received = received || (receive[k] && !mark);
-        mark = static_cast<std::uint8_t>(mark | receive[k]);
-      }
-    }
+        for (Index k = 0; k < count * rowNodes; ++k)
+        {
+          std::uint8_t& mark = external[static_cast<size_t>(first * rowNodes + k)];
+          received = received || (from[k] && !mark);
+          mark = static_cast<std::uint8_t>(mark | from[k]);
+        }
+      });
     if (comm.allReduce(static_cast<std::int64_t>(received ? 1 : 0), ReduceOp::Max) == 0)
     {
       break;

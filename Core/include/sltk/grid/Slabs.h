@@ -24,6 +24,12 @@ struct SlabPlan
   Index windowRows() const { return this->Stop - this->First; }
 };
 
+/// The first row rank `rank` of `size` owns (rank == size: the row after the last).
+inline Index slabBegin(Index rows, int rank, int size)
+{
+  return rows * rank / size;
+}
+
 /// Rank `rank` of `size`'s slab of `rows` rows with `ghost` ghost rows;
 /// refuses fewer than `ghost` owned rows a rank, naming `why` the ghost rows
 /// are needed and the fix.
@@ -36,8 +42,8 @@ inline Status planSlab(Index rows, Index ghost, int rank, int size, const std::s
       why + "): use fewer ranks or more nodes");
   }
   plan.Ghost = ghost;
-  plan.Begin = rows * rank / size;
-  plan.End = rows * (rank + 1) / size;
+  plan.Begin = slabBegin(rows, rank, size);
+  plan.End = slabBegin(rows, rank + 1, size);
   plan.First = std::max<Index>(0, plan.Begin - ghost);
   plan.Stop = std::min(rows, plan.End + ghost);
   return Status::ok();

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file DistributedHjbSolver.h
-/// The scheme (3.7) of a formula-defined problem (ExpressionProblem.h) on the
-/// ranks of a communicator, as the thesis distributes its solvers with PETSc
+/// The scheme (3.7) of a formula-defined problem (ExpressionProblem.h) or a
+/// thesis test (PresetRun.h) on the ranks of a communicator, as the thesis distributes its solvers with PETSc
 /// (4.4.1): the grid is cut into slabs of the last axis, each rank steps its
 /// slab plus G ghost rows on each side with the serial scheme, and after every
 /// step sends its first and last G owned rows to its neighbours (one
@@ -20,8 +20,8 @@
 /// Every rank's owned values are bitwise those of the serial solve: the slab is
 /// a window of the whole grid (GridSpec::Offset), so its node coordinates, dx
 /// and dt are the whole grid's, and the scheme reads the same values.
-/// Memory: each rank allocates its slab plus 2G rows (checked per rank); the
-/// result is gathered whole on every rank (the writer's copy).
+/// Memory: each rank allocates its slab plus 2G rows (checked per rank) and
+/// holds only the output block it asks for (HjbSolver::resultBlock).
 /// After every step the ranks agree on the status (Communicator::agree): a
 /// failure on one rank ends all of them with its message, without a hang.
 
@@ -55,9 +55,9 @@ std::unique_ptr<HjbSolver> makeDistributedSolver(std::unique_ptr<HjbSolver> wind
   const HjbGrid& whole, ExactSolution exact, const SlabPlan& slab, bool reachable);
 
 /// A solver of the whole grid (grid(), result()) whose work and memory are
-/// split over `comm`'s ranks. result() gathers the value function (and the
-/// reachable set) on every rank, and reduces the errors against the exact
-/// solution over the owned nodes. One rank: makeExpressionSolver(). The last
+/// split over `comm`'s ranks. resultBlock() sends each rank the nodes it asks
+/// for (result(): the whole grid on every rank); the errors against the exact
+/// solution are reduced over the owned nodes. One rank: makeExpressionSolver(). The last
 /// axis may not be periodic; every rank needs at least G owned rows.
 Status makeDistributedExpressionSolver(
   const HjbExpressionSpec& spec, const Communicator& comm, std::unique_ptr<HjbSolver>& solver);
