@@ -2,6 +2,7 @@
 #include "vtkSLLevelSetReconstruct.h"
 
 #include "SLTKBridge.h"
+#include "SLTKCommunicator.h"
 #include "SLTKGuard.h"
 #include "SLTKReconstructionOutput.h"
 #include "SLTKTiledSurface.h"
@@ -11,11 +12,12 @@
 
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
-#include "vtkFieldData.h"
 #include "vtkExecutive.h"
+#include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
@@ -26,11 +28,17 @@
 #include <sstream>
 
 vtkStandardNewMacro(vtkSLLevelSetReconstruct);
+vtkCxxSetObjectMacro(vtkSLLevelSetReconstruct, Controller, vtkMultiProcessController);
 
 vtkSLLevelSetReconstruct::vtkSLLevelSetReconstruct()
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(3);
+}
+
+vtkSLLevelSetReconstruct::~vtkSLLevelSetReconstruct()
+{
+  this->SetController(nullptr);
 }
 
 int vtkSLLevelSetReconstruct::FillInputPortInformation(int, vtkInformation* info)
@@ -191,7 +199,7 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
 /// with AdaptiveStorage, the surface.
 template <int D>
 int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, double z, const sltk::Context& ctx,
-  vtkImageData* image, vtkPolyData* surface, vtkTable* history)
+  const sltk::Communicator& comm, vtkImageData* image, vtkPolyData* surface, vtkTable* history)
 {
   sltk::ReconstructionOptions options;
   sltk::Status status = optionsOf(self, options);
@@ -201,10 +209,18 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
     return 0;
   }
   sltk::ReconstructionPlan<D> plan;
-  status = sltk::planReconstruction(std::move(cloud), options, ctx, plan);
+  status = comm.agree(sltk::planReconstruction(std::move(cloud), options, ctx, plan));
   if (!status.isOk())
   {
     vtkErrorWithObjectMacro(self, "Input point set rejected: " << status.message());
+    return 0;
+  }
+  if (self->GetAdaptiveStorage() && comm.size() > 1)
+  {
+    vtkErrorWithObjectMacro(self,
+      "AdaptiveStorage is not distributed over MPI ranks yet: turn it off (the uniform "
+      "grids are split over the "
+        << comm.size() << " ranks) or run on one rank");
     return 0;
   }
   if constexpr (D == 3)
@@ -216,12 +232,13 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
   }
   else if (self->GetAdaptiveStorage())
   {
-    vtkErrorWithObjectMacro(self, "AdaptiveStorage is for 3D clouds; this cloud is planar (a 2D reconstruction): "
-                                  "turn AdaptiveStorage off");
+    vtkErrorWithObjectMacro(self,
+      "AdaptiveStorage is for 3D clouds; this cloud is planar (a 2D reconstruction): "
+      "turn AdaptiveStorage off");
     return 0;
   }
   sltk::ReconstructionResult<D> result;
-  status = sltk::reconstruct(plan, ctx, result);
+  status = sltk::reconstruct(plan, ctx, result, comm);
   if (!status.isOk())
   {
     vtkErrorWithObjectMacro(self, "Reconstruction failed: " << status.message());
@@ -262,27 +279,35 @@ int vtkSLLevelSetReconstruct::RequestData(
   vtkPolyData* surface = vtkPolyData::GetData(outputVector, 1);
   vtkTable* history = vtkTable::GetData(outputVector, 2);
 
-  // Under MPI each rank is asked for one piece and has read the whole cloud
-  // (RequestUpdateExtent): piece 0 reconstructs, the other pieces stay empty
-  // (distributed runs are not built yet).
+  // Under MPI every rank has read the whole cloud (RequestUpdateExtent) and
+  // reconstructs its slab of every run (a collective call on the Controller's
+  // ranks), whatever piece it was asked for; on one rank a request for a piece
+  // other than 0 gets empty outputs (piece 0 holds the whole result).
+  std::unique_ptr<sltk::Communicator> comm;
+  const sltk::Status made = sltk::vtkbridge::makeCommunicator(this->Controller, comm);
+  if (!made.isOk())
+  {
+    vtkErrorMacro(<< made.message());
+    return 0;
+  }
   const int port =
     request->Has(vtkExecutive::FROM_OUTPUT_PORT()) ? std::max(0, request->Get(vtkExecutive::FROM_OUTPUT_PORT())) : 0;
   vtkInformation* outInfo = outputVector->GetInformationObject(port);
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
+  if (comm->size() == 1 && outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
   {
     markOutputsComplete(outputVector);
     return 1;
   }
   sltk::PointCloud<3> cloud;
-  const sltk::Status status = sltk::vtkbridge::toCloud(input, cloud);
+  const sltk::Status status = comm->agree(sltk::vtkbridge::toCloud(input, cloud));
   if (!status.isOk())
   {
     vtkErrorMacro("Input point set rejected: " << status.message());
     return 0;
   }
 
-  const sltk::Status ranges = checkRanges(this); // before the thread pool takes NumberOfThreads
+  const sltk::Status ranges = comm->agree(checkRanges(this)); // before the thread pool takes NumberOfThreads
   if (!ranges.isOk())
   {
     vtkErrorMacro(<< ranges.message());
@@ -298,8 +323,8 @@ int vtkSLLevelSetReconstruct::RequestData(
   sltk::PointCloud<2> flat;
   double z = 0.0;
   const int done = sltk::flattenIfPlanar(cloud, flat, z)
-    ? reconstructInto<2>(this, std::move(flat), z, ctx, image, surface, history)
-    : reconstructInto<3>(this, std::move(cloud), 0.0, ctx, image, surface, history);
+    ? reconstructInto<2>(this, std::move(flat), z, ctx, *comm, image, surface, history)
+    : reconstructInto<3>(this, std::move(cloud), 0.0, ctx, *comm, image, surface, history);
   if (!done)
   {
     return 0;

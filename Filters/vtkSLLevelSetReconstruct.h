@@ -19,9 +19,15 @@
  * (thesis (4.36)), padded by Padding cells on each side. A cloud whose z
  * extent is zero is reconstructed in 2D (a closed curve in its plane).
  *
- * The computation runs on every rank that calls it with the points it holds;
- * under MPI, give the whole cloud to one rank (distributed reconstruction is
- * not built yet).
+ * Under MPI (pvbatch, pvserver, mpirun sltk reconstruct; the Controller, by
+ * default the global controller) every rank reads the whole cloud and plans
+ * the same grids, and each run's grid is split into slabs along its last
+ * axis (sltk/recon/Reconstruction.h, Documentation/Distributed.md): each rank
+ * stores and computes its slab, and outputs its block of the image (its
+ * owned rows and the next rank's first row, in the whole grid's extent), its
+ * piece of the zero level set (the pieces join: they share the block
+ * boundaries' points) and the whole history. The blocks carry no ghost cells.
+ * AdaptiveStorage is not distributed: under several ranks it is refused.
  */
 #ifndef vtkSLLevelSetReconstruct_h
 #define vtkSLLevelSetReconstruct_h
@@ -29,7 +35,10 @@
 #include "SLTKFiltersModule.h" // for export macro
 #include "vtkImageAlgorithm.h"
 
+#include <memory> // for std::unique_ptr
 #include <vector> // for RunSchedule
+
+class vtkMultiProcessController;
 
 class SLTKFILTERS_EXPORT vtkSLLevelSetReconstruct : public vtkImageAlgorithm
 {
@@ -211,6 +220,13 @@ public:
   ///@}
 
   ///@{
+  /// The ranks the reconstruction is split over (nullptr, the default: the global controller, as in
+  /// pvbatch and pvserver; a vtkDummyController reconstructs on this process alone).
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
+  ///@{
   /// Threads used by the solver; 0 means all hardware threads. Default 0.
   vtkSetMacro(NumberOfThreads, int);
   vtkGetMacro(NumberOfThreads, int);
@@ -218,7 +234,7 @@ public:
 
 protected:
   vtkSLLevelSetReconstruct();
-  ~vtkSLLevelSetReconstruct() override = default;
+  ~vtkSLLevelSetReconstruct() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
@@ -248,6 +264,7 @@ protected:
   double ThinningFactor = 0.0;
   bool DetectTunnels = false;
   bool AdaptiveStorage = false;
+  vtkMultiProcessController* Controller = nullptr;
 
 private:
   vtkSLLevelSetReconstruct(const vtkSLLevelSetReconstruct&) = delete;

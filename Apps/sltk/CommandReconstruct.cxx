@@ -2,9 +2,10 @@
 // `sltk reconstruct CLOUD`: vtkSLLevelSetReconstruct from a terminal.
 #include "CliOptions.h"
 #include "Commands.h"
-#include "MpiSession.h"
 #include "ErrorCollector.h"
 #include "FileNames.h"
+#include "GatherSurface.h"
+#include "MpiSession.h"
 #include "OutputPaths.h"
 #include "ProgressBar.h"
 #include "ReadPointCloud.h"
@@ -12,6 +13,7 @@
 #include "SurfaceDistance.h"
 #include "SurfacePieces.h"
 #include "WriteAtomically.h"
+#include "WritePieces.h"
 #include "WriteSurface.h"
 
 #include "sltk/exec/Memory.h"
@@ -23,12 +25,14 @@
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkLogger.h>
+#include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSLLevelSetReconstruct.h>
 #include <vtkStringArray.h>
 #include <vtkTable.h>
+#include <vtkTrivialProducer.h>
 
 #include <nlohmann/json.hpp>
 
@@ -125,25 +129,36 @@ std::vector<std::string> stringValues(vtkFieldData* fd, const char* name)
 
 int Reconstruct::run() const
 {
-  if (MpiSession::size() > 1)
+  const int rank = MpiSession::rank(), ranks = MpiSession::size();
+  if (ranks > 1 && this->Octree)
   {
-    // Honest until the reconstruction is distributed (Documentation/Distributed.md): N ranks would each
-    // compute the whole cloud.
-    return fail("sltk reconstruct runs on one rank today (every rank would compute the whole cloud): run it "
-                "without mpirun, or with -np 1; `mpirun sltk hjb` is distributed",
+    return fail("--octree is not distributed over MPI ranks yet: run it without mpirun (or -np 1), or drop "
+                "--octree (the uniform grids are split over the ranks)",
       2);
   }
   if (this->given("--eta") && this->given("--schedule"))
   {
     return fail("give either --eta or --schedule (a schedule sets eta of every run)", 2);
   }
-  const std::string paths =
-    outputPathsProblem({ { "input cloud", this->Cloud }, { "--reference mesh", this->Reference } },
-      { { "-o", this->Output, { "vti" } }, { "--surface", this->Surface, {} }, { "--png", this->Png, { "png" } },
-        { "--csv", this->Csv, { "csv", "txt" } }, { "--json", this->Json, { "json" } } });
+  const std::string paths = outputPathsProblem(
+    { { "input cloud", this->Cloud }, { "--reference mesh", this->Reference } },
+    { { "-o", this->Output, { "vti", "pvti" } }, { "--surface", this->Surface, {} }, { "--png", this->Png, { "png" } },
+      { "--csv", this->Csv, { "csv", "txt" } }, { "--json", this->Json, { "json" } } });
   if (!paths.empty())
   {
     return fail(paths, 2);
+  }
+  const bool pieces = this->given("--output") && extensionOf(this->Output) == "pvti";
+  if (ranks > 1 && this->given("--output") && !pieces)
+  {
+    return fail("under mpirun every rank holds only its block of the grid: write -o as .pvti (one piece per rank, "
+                "FILE.pvti and FILE/FILE_<rank>.vti)",
+      2);
+  }
+  const std::string folder = pieces ? pieceFolderProblem(this->Output) : "";
+  if (!folder.empty())
+  {
+    return fail(folder, 2);
   }
   if (this->Octree && this->given("--output"))
   {
@@ -174,9 +189,9 @@ int Reconstruct::run() const
   const std::string& path = this->Cloud;
   vtkSmartPointer<vtkPointSet> cloud;
   sltk::Status status = readPointCloud(path, cloud);
-  if (!status.isOk())
+  if (MpiSession::maxOverRanks(status.isOk() ? 0.0 : 1.0) > 0.0) // every rank stops, none waits in the filter
   {
-    return fail(status.message());
+    return fail(status.isOk() ? path + ": another rank could not read the cloud" : status.message());
   }
   double bounds[6];
   cloud->GetBounds(bounds);
@@ -225,7 +240,14 @@ int Reconstruct::run() const
   filter->SetThinningFactor(o.Cleaning.ThinningFactor);
   filter->SetDetectTunnels(o.DetectTunnels);
   filter->SetAdaptiveStorage(this->Octree);
-  filter->Update();
+  if (ranks > 1)
+  {
+    filter->UpdatePiece(rank, ranks, 0); // each rank its slab (a collective update)
+  }
+  else
+  {
+    filter->Update();
+  }
   bar->finish();
   if (!errors->Message.empty())
   {
@@ -234,10 +256,38 @@ int Reconstruct::run() const
         errors->Message, static_cast<size_t>(cloud->GetNumberOfPoints()), o.Cleaning.ThinningFactor > 0));
   }
   auto* image = vtkImageData::SafeDownCast(filter->GetOutputDataObject(0));
-  auto* surface = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1));
   auto* history = vtkTable::SafeDownCast(filter->GetOutputDataObject(2));
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const double peakMb = static_cast<double>(sltk::peakResidentBytes()) / 1e6;
+  const double seconds =
+    MpiSession::maxOverRanks(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  if (pieces)
+  {
+    // Each rank's block, at its place in the whole extent (the blocks are the solver's slabs).
+    vtkNew<vtkImageData> block;
+    block->ShallowCopy(image);
+    int extent[6];
+    block->GetExtent(extent);
+    for (int k = 0; k < 6; ++k)
+    {
+      extent[k] = static_cast<int>(k % 2 ? MpiSession::maxOverRanks(extent[k]) : -MpiSession::maxOverRanks(-extent[k]));
+    }
+    vtkNew<vtkTrivialProducer> producer;
+    producer->SetOutput(block);
+    producer->SetWholeExtent(extent);
+    status = writeImagePieces(this->Output, producer, vtkMultiProcessController::GetGlobalController());
+    if (!status.isOk())
+    {
+      return fail(status.message());
+    }
+  }
+  const double peakMb = MpiSession::maxOverRanks(static_cast<double>(sltk::peakResidentBytes()) / 1e6);
+  // Rank 0 joins the ranks' pieces of the surface and writes the one set of outputs.
+  const vtkSmartPointer<vtkPolyData> joined = gatherSurface(
+    vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1)), vtkMultiProcessController::GetGlobalController());
+  if (rank > 0)
+  {
+    return 0;
+  }
+  vtkPolyData* surface = joined;
 
   // Summary table.
   vtkFieldData* fd = image->GetFieldData();
@@ -321,7 +371,9 @@ int Reconstruct::run() const
       static_cast<long long>(surface->GetNumberOfPoints()), static_cast<long long>(surface->GetNumberOfCells()),
       topology.Pieces, topology.Euler);
   }
-  std::printf("total      %.2f s, peak memory %.0f MB\n", seconds, peakMb);
+  std::printf(ranks > 1 ? "total      %.2f s, peak memory %.0f MB (the largest rank's), %d ranks\n"
+                        : "total      %.2f s, peak memory %.0f MB\n",
+    seconds, peakMb, ranks);
   SurfaceDistances distances;
   if (this->given("--reference"))
   {
@@ -334,7 +386,7 @@ int Reconstruct::run() const
       distances.Chamfer, distances.Hausdorff, distances.MeanToReference, distances.MeanFromReference);
   }
 
-  if (this->given("--output"))
+  if (this->given("--output") && !pieces)
   {
     status = writeImage(this->Output, image);
     if (!status.isOk())
@@ -382,8 +434,8 @@ int Reconstruct::run() const
       { "thinning_cell", fieldValue("ThinningCell") }, { "points_reconstructed", reconstructed }, { "h_P", hP },
       { "cdx", fieldValue("CellSizeFactor") }, { "kp", fieldValue("OutsideThresholdFactor") },
       { "automatic_choices", choices }, { "recoveries", recoveries }, { "seconds", seconds },
-      { "peak_memory_mb", peakMb }, { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) },
-      { "surface_pieces", topology.Pieces },
+      { "peak_memory_mb", peakMb }, { "ranks", ranks },
+      { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) }, { "surface_pieces", topology.Pieces },
       { "euler_characteristic", planar ? nlohmann::ordered_json() : nlohmann::ordered_json(topology.Euler) },
       { "runs", runRecords } };
     if (this->given("--reference"))
@@ -408,8 +460,11 @@ Command addReconstructCommand(CLI::App& sltk)
   CLI::App* app = addCloudCommand(sltk, "reconstruct", reconstructDescription, command->Cloud);
   command->Parser = app;
   sltk::ReconstructionOptions& o = command->Options;
-  app->add_option("-o,--output", command->Output, "signed distance (and distance to the cloud) on the grid")
-    ->option_text("FILE.vti");
+  app
+    ->add_option("-o,--output", command->Output,
+      "signed distance (and distance to the cloud) on the grid; under\nmpirun, .pvti: every rank writes its own "
+      "block (FILE/FILE_<rank>.vti)")
+    ->option_text("FILE.vti|.pvti");
   app->add_option("--surface", command->Surface, "zero level set: .vtp, .ply, .stl (3D) or .vtp (2D)")
     ->check(CLI::Validator(surfaceFormatProblem, ""))
     ->option_text("FILE");
@@ -424,7 +479,7 @@ Command addReconstructCommand(CLI::App& sltk)
   app
     ->add_option("--json", command->Json,
       "summary: points, points_reconstructed, outliers_removed, cdx, kp,\n"
-      "automatic_choices, recoveries, seconds, peak_memory_mb, surface_pieces,\n"
+      "automatic_choices, recoveries, seconds, peak_memory_mb, ranks,\nsurface_pieces, "
       "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points]")
     ->option_text("FILE");
   addInterpolatorOption(app, o.Interpolator, "weno3");

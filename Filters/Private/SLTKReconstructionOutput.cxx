@@ -20,6 +20,7 @@
 #include "vtkStringArray.h"
 #include "vtkTable.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -32,19 +33,21 @@ namespace vtkbridge
 
 namespace
 {
-/// The field's node values (without ghosts) as a VTK array; the field is freed
-/// afterwards, so a result and its image never hold two copies of both fields.
+/// The field's node values (without ghosts) of window rows [firstRow, firstRow
+/// + rows) of the last axis as a VTK array; the field is freed afterwards, so a
+/// result and its image never hold two copies of both fields.
 template <int D>
-vtkSmartPointer<vtkDoubleArray> moveNodeValues(GridField<D>& field, const char* name)
+vtkSmartPointer<vtkDoubleArray> moveNodeValues(GridField<D>& field, Index firstRow, Index rows, const char* name)
 {
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
   array->SetName(name);
-  const Index n = field.spec().nodeCount();
+  const Index rowNodes = field.spec().nodeCount() / field.spec().Dims[D - 1];
+  const Index n = rows * rowNodes;
   array->SetNumberOfTuples(n);
   double* out = array->GetPointer(0);
   for (Index k = 0; k < n; ++k) // x fastest in both layouts
   {
-    out[k] = field(field.nodeIndex(k));
+    out[k] = field(field.nodeIndex(k + firstRow * rowNodes));
   }
   field = GridField<D>();
   return array;
@@ -54,25 +57,33 @@ vtkSmartPointer<vtkDoubleArray> moveNodeValues(GridField<D>& field, const char* 
 template <int D>
 void toImage(ReconstructionResult<D>& result, double z, vtkImageData* image)
 {
-  const GridSpec<D> g = result.SignedDistance.spec();
-  int dims[3] = { 1, 1, 1 };
+  // This rank's block: its owned rows and the next rank's first row (image
+  // pieces share their boundary points, so the contour pieces join); on one
+  // rank the whole grid.
+  const GridSpec<D>& g = result.WholeGrid;
+  const SlabPlan& slab = result.Slab;
+  const Index endRow = std::min(slab.End + 1, g.Dims[D - 1]);
+  int extent[6] = { 0, 0, 0, 0, 0, 0 };
   double origin[3] = { 0.0, 0.0, z };
   double spacing[3] = { 1.0, 1.0, 1.0 };
   for (int a = 0; a < D; ++a)
   {
-    dims[a] = static_cast<int>(g.Dims[a]);
+    extent[2 * a + 1] = static_cast<int>(g.Dims[a] - 1);
     origin[a] = g.Origin[a];
     spacing[a] = g.Spacing[a];
   }
+  extent[2 * (D - 1)] = static_cast<int>(slab.Begin);
+  extent[2 * (D - 1) + 1] = static_cast<int>(endRow - 1);
   if (D == 2)
   {
     spacing[2] = g.Spacing[0];
   }
-  image->SetDimensions(dims);
+  image->SetExtent(extent);
   image->SetOrigin(origin);
   image->SetSpacing(spacing);
-  image->GetPointData()->SetScalars(moveNodeValues(result.SignedDistance, "SignedDistance"));
-  image->GetPointData()->AddArray(moveNodeValues(result.Distance, "DistanceToCloud"));
+  const Index first = slab.Begin - slab.First, rows = endRow - slab.Begin;
+  image->GetPointData()->SetScalars(moveNodeValues(result.SignedDistance, first, rows, "SignedDistance"));
+  image->GetPointData()->AddArray(moveNodeValues(result.Distance, first, rows, "DistanceToCloud"));
 }
 
 template <int D>

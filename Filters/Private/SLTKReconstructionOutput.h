@@ -21,7 +21,9 @@ namespace vtkbridge
 /// Moves phi ("SignedDistance", active scalars) and d ("DistanceToCloud") into
 /// `image` (the result's fields are freed one by one as they are copied, so the
 /// peak memory holds three fields, not four); a 2D result becomes an image with
-/// one z layer at height z.
+/// one z layer at height z. A distributed result (several ranks) gives this
+/// rank's block of the whole grid's extent: its owned rows and the next rank's
+/// first row, so that neighbouring blocks share their boundary points.
 template <int D>
 void toImage(ReconstructionResult<D>& result, double z, vtkImageData* image);
 

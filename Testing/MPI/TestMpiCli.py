@@ -2,9 +2,11 @@
 split over the ranks and rank 0 writes one set of outputs, bitwise the
 one-rank solve (one .vti collected on rank 0, or a .pvti with one piece per
 rank); a failure on one rank's slab ends the run with one message and
-no output; `sltk reconstruct` on several ranks is refused (not distributed
-yet). Run by pvpython (VTK reads the images): TestMpiCli.py SLTK MPIEXEC OUTDIR"""
+no output; `mpirun -np 2 sltk reconstruct` reconstructs slabs and gives the
+one-rank iterations, Err_P, signed distance (.pvti) and one closed surface.
+Run by pvpython (VTK reads the images): TestMpiCli.py SLTK MPIEXEC OUTDIR"""
 import json
+import math
 import os
 import subprocess
 import sys
@@ -37,11 +39,11 @@ def run(command):
     return subprocess.run(command, capture_output=True, text=True, timeout=120, env=CLEAN_ENV)
 
 
-def values(path):
+def values(path, name="ValueFunction"):
     reader = vtkXMLPImageDataReader() if path.endswith(".pvti") else vtkXMLImageDataReader()
     reader.SetFileName(path)
     reader.Update()
-    array = reader.GetOutput().GetPointData().GetArray("ValueFunction")
+    array = reader.GetOutput().GetPointData().GetArray(name)
     return [array.GetValue(k) for k in range(array.GetNumberOfTuples())]
 
 
@@ -101,7 +103,40 @@ r = run(MPI + ["-n", "4", sltk] + TEST4[:TEST4.index("--nodes") + 1] + ["21,21"]
 check(r.returncode != 0 and "use fewer ranks" in r.stderr, "too many ranks for the grid refused (%s)" %
       r.stderr.strip()[:200])
 
-r = run(MPI + ["-n", "2", sltk, "reconstruct", "cloud.xyz", "-o", os.path.join(outdir, "never.vti")])
-check(r.returncode == 2 and "runs on one rank today" in r.stderr, "sltk reconstruct on 2 ranks refused")
+# sltk reconstruct: each rank reconstructs its slab of every run; rank 0 joins the surface pieces.
+cloud = os.path.join(outdir, "cli_sphere.xyz")
+with open(cloud, "w") as f:
+    n = 900
+    for k in range(n):  # a Fibonacci sphere, squashed: an ellipsoid of radii 1, 0.8, 0.6
+        z = 1.0 - 2.0 * (k + 0.5) / n
+        r, t = math.sqrt(1.0 - z * z), k * math.pi * (3.0 - math.sqrt(5.0))
+        f.write("%.9f %.9f %.9f\n" % (r * math.cos(t), 0.8 * r * math.sin(t), 0.6 * z))
+RECON = ["reconstruct", cloud, "--runs", "2", "--quiet", "--threads", "1"]
+recon = {}
+for ranks in (1, 2):
+    image = os.path.join(outdir, "cli_recon_%d.%s" % (ranks, "vti" if ranks == 1 else "pvti"))
+    summary, surface = [os.path.join(outdir, "cli_recon_%d.%s" % (ranks, e)) for e in ("json", "vtp")]
+    for f in (summary, surface):
+        if os.path.exists(f):
+            os.remove(f)
+    r = run(MPI + ["-n", str(ranks), sltk] + RECON + ["-o", image, "--json", summary, "--surface", surface])
+    check(r.returncode == 0, "reconstruct on %d rank(s): exit 0 (%s)" % (ranks, r.stderr.strip()[-300:]))
+    recon[ranks] = (values(image, "SignedDistance"), json.load(open(summary)) if r.returncode == 0 else {})
+(p1, j1), (p2, j2) = recon[1], recon[2]
+check(j2.get("ranks") == 2 and j1.get("ranks") == 1, "reconstruct --json carries the rank count")
+check([x["iterations"] for x in j1.get("runs", [])] == [x["iterations"] for x in j2.get("runs", [])],
+      "the same iterations per run on 1 and 2 ranks")
+check(all(abs(a["err_cloud"] - b["err_cloud"]) <= 1e-12 * a["err_cloud"] for a, b in zip(j1["runs"], j2["runs"])),
+      "the same Err_P on 1 and 2 ranks")
+check(len(p1) == len(p2) and max(abs(a - b) for a, b in zip(p1, p2)) < 1e-12,
+      "the 2-rank blocks (.pvti) hold the 1-rank signed distance")
+check(j2.get("surface_pieces") == 1 and j2.get("euler_characteristic") == 2 == j1.get("euler_characteristic"),
+      "the joined surface is one closed piece of genus 0, as on one rank")
+check(j2.get("surface_points") == j1.get("surface_points"), "the joined surface has the 1-rank vertices (%s, %s)" %
+      (j1.get("surface_points"), j2.get("surface_points")))
+r = run(MPI + ["-n", "2", sltk] + RECON + ["-o", os.path.join(outdir, "never.vti")])
+check(r.returncode == 2 and "write -o as .pvti" in r.stderr, "reconstruct -o FILE.vti on 2 ranks refused with the fix")
+r = run(MPI + ["-n", "2", sltk] + RECON + ["--octree", "--json", os.path.join(outdir, "never.json")])
+check(r.returncode == 2 and "--octree is not distributed" in r.stderr, "reconstruct --octree on 2 ranks refused")
 
 sys.exit(1 if failures else 0)

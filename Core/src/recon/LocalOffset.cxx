@@ -1,15 +1,61 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/recon/LocalOffset.h"
 
+#include "sltk/grid/SlabExchange.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace sltk
 {
 
+namespace
+{
+/// rho(x) of every node: the factor of the nearest point within `near` of the
+/// cloud, then carried outwards along the steepest descent of d in increasing
+/// order of d (`order`: the nodes with near <= d < reach, sorted). A node whose
+/// window row is below keepBelow or at least keepAbove is skipped: it keeps its value
+/// (a slab's edge ghost row, whose lowest neighbour may lie outside the window).
 template <int D>
-Status locallyScaledDistance(const GridField<D, double>& distance, const PointLocator<D>& locator,
-  const std::vector<double>& sparsity, double reach, const Context& ctx, GridField<D, double>& scaled)
+void carryDescent(const GridField<D, double>& distance, const std::vector<Index>& order, Index keepBelow,
+  Index keepAbove, GridField<D, double>& rho)
+{
+  const GridSpec<D>& g = distance.spec();
+  for (const Index k : order)
+  {
+    const auto i = distance.nodeIndex(k);
+    if (i[D - 1] < keepBelow || i[D - 1] >= keepAbove)
+    {
+      continue;
+    }
+    double lowest = distance(i);
+    for (int a = 0; a < D; ++a)
+    {
+      for (int side = -1; side <= 1; side += 2)
+      {
+        const Index j = i[a] + side;
+        if (j >= 0 && j < g.Dims[a])
+        {
+          auto n = i;
+          n[a] = j;
+          const double d = distance(n);
+          if (d < lowest)
+          {
+            lowest = d;
+            rho(i) = rho(n);
+          }
+        }
+      }
+    }
+  }
+}
+
+/// The part shared by the one-rank and slab versions: rho queried near the
+/// cloud, `order` the nodes to carry it to; then u = d / rho.
+template <int D>
+Status queryNearCloud(const GridField<D, double>& distance, const PointLocator<D>& locator,
+  const std::vector<double>& sparsity, double reach, const Context& ctx, GridField<D, double>& rho,
+  std::vector<Index>& order)
 {
   const PointCloud<D>& cloud = locator.cloud();
   if (sparsity.size() != static_cast<size_t>(cloud.size()) || sparsity.empty())
@@ -28,8 +74,8 @@ Status locallyScaledDistance(const GridField<D, double>& distance, const PointLo
   // rho at every node with d < reach: queried near the cloud, and farther carried
   // down the steepest descent of d (the axis neighbour with the smallest d, which
   // is nearer the same points), in increasing order of d.
-  std::vector<double> rho(static_cast<size_t>(nodes), largest);
-  std::vector<Index> order;
+  rho.resize(g, 0, largest);
+  order.clear();
   for (Index k = 0; k < nodes; ++k)
   {
     const double d = distance(distance.nodeIndex(k));
@@ -51,7 +97,7 @@ Status locallyScaledDistance(const GridField<D, double>& distance, const PointLo
           {
             x[a] = g.coordinate(a, i[a]);
           }
-          rho[static_cast<size_t>(k)] = sparsity[static_cast<size_t>(locator.nearest(x).Index)];
+          rho(i) = sparsity[static_cast<size_t>(locator.nearest(x).Index)];
         }
       }
     });
@@ -61,42 +107,69 @@ Status locallyScaledDistance(const GridField<D, double>& distance, const PointLo
       const double dp = distance(distance.nodeIndex(p)), dq = distance(distance.nodeIndex(q));
       return dp < dq || (dp == dq && p < q);
     });
-  for (const Index k : order)
-  {
-    const auto i = distance.nodeIndex(k);
-    double lowest = distance(i);
-    Index stride = 1;
-    for (int a = 0; a < D; ++a)
-    {
-      for (int side = -1; side <= 1; side += 2)
-      {
-        const Index j = i[a] + side;
-        if (j >= 0 && j < g.Dims[a])
-        {
-          auto n = i;
-          n[a] = j;
-          const double d = distance(n);
-          if (d < lowest)
-          {
-            lowest = d;
-            rho[static_cast<size_t>(k)] = rho[static_cast<size_t>(k + side * stride)];
-          }
-        }
-      }
-      stride *= g.Dims[a];
-    }
-  }
+  return Status::ok();
+}
+
+template <int D>
+void divideByRho(const GridField<D, double>& distance, const GridField<D, double>& rho, const Context& ctx,
+  GridField<D, double>& scaled)
+{
   scaled = distance;
-  ctx.parallelFor(0, nodes,
+  ctx.parallelFor(0, distance.spec().nodeCount(),
     [&](Index b, Index e)
     {
       for (Index k = b; k < e; ++k)
       {
         const auto i = distance.nodeIndex(k);
-        scaled(i) = distance(i) / rho[static_cast<size_t>(k)];
+        scaled(i) = distance(i) / rho(i);
       }
     });
   scaled.fillGhosts();
+}
+} // namespace
+
+template <int D>
+Status locallyScaledDistance(const GridField<D, double>& distance, const PointLocator<D>& locator,
+  const std::vector<double>& sparsity, double reach, const Context& ctx, GridField<D, double>& scaled)
+{
+  GridField<D, double> rho;
+  std::vector<Index> order;
+  SLTK_RETURN_IF_ERROR(queryNearCloud(distance, locator, sparsity, reach, ctx, rho, order));
+  carryDescent(distance, order, 0, distance.spec().Dims[D - 1], rho);
+  divideByRho(distance, rho, ctx, scaled);
+  return Status::ok();
+}
+
+template <int D>
+Status locallyScaledDistanceSlabs(const GridField<D, double>& distance, const PointLocator<D>& locator,
+  const std::vector<double>& sparsity, double reach, const SlabPlan& slab, const Communicator& comm, const Context& ctx,
+  GridField<D, double>& scaled)
+{
+  GridField<D, double> rho;
+  std::vector<Index> order;
+  SLTK_RETURN_IF_ERROR(comm.agree(queryNearCloud(distance, locator, sparsity, reach, ctx, rho, order)));
+  // The window's edge rows, when they are ghost rows, take the owners' values;
+  // every other node is carried from its neighbours, until no ghost row changes.
+  const Index keepBelow = slab.First < slab.Begin ? 1 : 0;
+  const Index keepAbove = slab.Stop > slab.End ? slab.windowRows() - 1 : slab.windowRows();
+  for (int round = 0;; ++round)
+  {
+    carryDescent(distance, order, keepBelow, keepAbove, rho);
+    bool changed = false;
+    exchangeGhostRows(rho, slab, comm, &changed);
+    std::int64_t any = changed ? 1 : 0;
+    comm.allReduce(&any, 1, ReduceOp::Max);
+    if (any == 0)
+    {
+      break;
+    }
+    if (round > 4 * comm.size() + 64)
+    {
+      return Status::numericalFailure(
+        "the local offset's sparsity did not settle across the slabs: run without --local-offset");
+    }
+  }
+  divideByRho(distance, rho, ctx, scaled);
   return Status::ok();
 }
 
@@ -104,5 +177,9 @@ template Status locallyScaledDistance(const GridField<2, double>&, const PointLo
   double, const Context&, GridField<2, double>&);
 template Status locallyScaledDistance(const GridField<3, double>&, const PointLocator<3>&, const std::vector<double>&,
   double, const Context&, GridField<3, double>&);
+template Status locallyScaledDistanceSlabs(const GridField<2, double>&, const PointLocator<2>&,
+  const std::vector<double>&, double, const SlabPlan&, const Communicator&, const Context&, GridField<2, double>&);
+template Status locallyScaledDistanceSlabs(const GridField<3, double>&, const PointLocator<3>&,
+  const std::vector<double>&, double, const SlabPlan&, const Communicator&, const Context&, GridField<3, double>&);
 
 } // namespace sltk

@@ -4,15 +4,20 @@
 #include "sltk/interp/Interpolators.h"
 #include "sltk/levelset/NarrowBand.h"
 #include "sltk/levelset/Reinitialise.h"
+#include "sltk/levelset/ReinitialiseSlabs.h"
 #include "sltk/recon/CloudError.h"
 #include "sltk/recon/CloudInitialData.h"
+#include "sltk/recon/CloudInitialDataSlabs.h"
 #include "sltk/recon/DistanceFunction.h"
 #include "sltk/recon/EnergyFunctional.h"
 #include "sltk/recon/ExactDistanceCache.h"
 #include "sltk/recon/LevelSetStep.h"
+#include "sltk/recon/LevelSetStepReach.h"
 #include "sltk/recon/LocalOffset.h"
 #include "sltk/recon/StoppingRule.h"
 #include "sltk/recon/StrayPoints.h"
+
+#include "RunSlab.h"
 
 #include <algorithm>
 #include <chrono>
@@ -30,31 +35,31 @@ double secondsSince(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// Err_P (4.35): mean |I[phi](Q)| over the cloud (phi's ghosts filled).
+/// Stencils and the feet of a usual step (LevelSetStepReach.h: 1-3 cells) fit
+/// in this many ghost rows; a step that reaches farther widens them (RunSlab.h).
+constexpr Index InitialGhostRows = 6;
+
+/// Err_P (4.35): mean |I[phi](Q)| over the cloud (phi's ghosts filled), each
+/// rank summing the points of its owned cells.
 template <int D, class Interp>
-double cloudError(const GridField<D>& phi, const PointCloud<D>& cloud, const Context& ctx)
+double cloudError(const GridField<D>& phi, const PointCloud<D>& cloud, const RunSlab<D>& slab, const Context& ctx)
 {
-  return cloudErrorSum<D, Interp>(phi, cloud, ctx) / static_cast<double>(cloud.size());
+  const SlabPlan& s = slab.slab();
+  return slab.sum(cloudErrorSum<D, Interp>(phi, cloud, ctx, s.Begin, s.End, slab.rows())) /
+    static_cast<double>(cloud.size());
 }
 
 /// The fraction of the cloud's points farther than `far` from the zero level
 /// set, |I[phi](Q)| > far (phi a distance near the front): parts of the object
 /// the surface lost (thin features collapsed on a coarse grid).
 template <int D, class Interp>
-double farPointFraction(const GridField<D>& phi, const PointCloud<D>& cloud, double far, const Context& ctx)
+double farPointFraction(
+  const GridField<D>& phi, const PointCloud<D>& cloud, double far, const RunSlab<D>& slab, const Context& ctx)
 {
-  const double count = ctx.parallelSum(0, cloud.size(),
-    [&](Index b, Index e)
-    {
-      Interp interp(phi);
-      double n = 0.0;
-      for (Index k = b; k < e; ++k)
-      {
-        n += std::fabs(interpolate(interp, phi.spec(), cloud.Points[static_cast<size_t>(k)].data())) > far ? 1.0 : 0.0;
-      }
-      return n;
-    });
-  return count / static_cast<double>(cloud.size());
+  const SlabPlan& s = slab.slab();
+  const double count = sumOverPoints<D, Interp>(
+    phi, cloud, ctx, s.Begin, s.End, slab.rows(), [far](double v) { return std::fabs(v) > far ? 1.0 : 0.0; });
+  return slab.sum(count) / static_cast<double>(cloud.size());
 }
 
 /// phi at `nodes`, in order: phi^n where an iteration may change it (for eps_1).
@@ -72,27 +77,53 @@ void gatherValues(const GridField<D>& phi, const NodeList& nodes, std::vector<do
 /// with phi^{n+1} the iterate after reinitialisation and cut and `before` = phi^n
 /// at the same nodes (gatherValues). Nodes outside the set did not change.
 template <int D>
-double updateNorm(const GridField<D>& phi, const NodeList& nodes, const std::vector<double>& before)
+double updateNorm(
+  const GridField<D>& phi, const NodeList& nodes, const std::vector<double>& before, const RunSlab<D>& slab)
 {
-  double moved = 0.0, size = 0.0;
+  double sums[2] = { 0.0, 0.0 }; // moved, size
   for (size_t k = 0; k < nodes.size(); ++k)
   {
-    moved += std::fabs(phi(phi.nodeIndex(nodes[k])) - before[k]);
-    size += std::fabs(before[k]);
+    sums[0] += std::fabs(phi(phi.nodeIndex(nodes[k])) - before[k]);
+    sums[1] += std::fabs(before[k]);
   }
-  return size > 0.0 ? moved / size : 0.0;
+  if (slab.distributed())
+  {
+    slab.comm().allReduce(sums, 2, ReduceOp::Sum);
+  }
+  return sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
 }
 
-/// The previous run's phi (ghosts filled) interpolated at the nodes of `grid` (Q1: monotone).
+/// The previous run's phi (ghosts filled, on `fromSlab`'s window) interpolated
+/// at the owned nodes of `slab`'s window (Q1: monotone); the ghost rows then
+/// come from their owners. Each rank's owned rows lie inside its previous
+/// window with rows to spare (both runs cut the same box at the same
+/// fractions, and the windows have at least 3 ghost rows): checked.
 template <int D>
-void transfer(const GridField<D>& from, const GridSpec<D>& grid, const Context& ctx, GridField<D>& to)
+Status transfer(
+  const GridField<D>& from, const RunSlab<D>& fromSlab, const RunSlab<D>& slab, const Context& ctx, GridField<D>& to)
 {
+  const GridSpec<D> grid = slab.window();
   to.resize(grid, PhiGhost);
-  ctx.parallelFor(0, grid.nodeCount(),
-    [&](Index b, Index e)
+  const Index b = slab.ownedBegin(), e = slab.ownedEnd();
+  if (slab.distributed())
+  {
+    const GridSpec<D>& f = from.spec();
+    const SlabPlan& fs = fromSlab.slab();
+    const double lowest = fs.First > 0 ? f.coordinate(D - 1, 1) : -HUGE_VAL;
+    const double highest = fs.Stop < fromSlab.rows() ? f.coordinate(D - 1, f.Dims[D - 1] - 2) : HUGE_VAL;
+    const double first = grid.coordinate(D - 1, slab.slab().Begin - slab.slab().First);
+    const double last = grid.coordinate(D - 1, slab.slab().End - 1 - slab.slab().First);
+    const Status covered = first >= lowest && last <= highest
+      ? Status::ok()
+      : Status::invalidArgument("the previous run's slab does not cover this run's owned rows (rank " +
+          std::to_string(slab.comm().rank()) + "): run on fewer ranks");
+    SLTK_RETURN_IF_ERROR(slab.agree(covered));
+  }
+  ctx.parallelFor(b, e,
+    [&](Index first, Index stop)
     {
       Q1Interpolator<D> interp(from);
-      for (Index k = b; k < e; ++k)
+      for (Index k = first; k < stop; ++k)
       {
         const auto i = to.nodeIndex(k);
         double x[D];
@@ -103,17 +134,28 @@ void transfer(const GridField<D>& from, const GridSpec<D>& grid, const Context& 
         to(i) = interpolate(interp, from.spec(), x);
       }
     });
+  slab.exchange(to);
+  return Status::ok();
+}
+
+/// The reinitialisation (1.38)-(1.45) of the owned nodes `nodes`, on slabs when distributed.
+template <int D>
+Status reinitialiseOn(
+  GridField<D>& phi, const NodeList& nodes, const RunSlab<D>& slab, const ReinitOptions& options, const Context& ctx)
+{
+  return slab.distributed() ? reinitialiseSlabs<D>(phi, nodes, slab.slab(), slab.comm(), options, ctx)
+                            : reinitialise<D>(phi, nodes, options, ctx);
 }
 
 /// The iterations of one run on its grid (Algorithm 1, step 4).
 template <int D, class Interp>
 Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options, int run, const Context& ctx,
-  ExactDistanceCache<D>& exact, GridField<D>& phi, GridField<D>& dist, ReconstructionResult<D>& result, bool& vanished)
+  ExactDistanceCache<D>& exact, RunSlab<D>& slab, GridField<D>& phi, GridField<D>& dist,
+  ReconstructionResult<D>& result, bool& vanished)
 {
   vanished = false;
   const auto start = std::chrono::steady_clock::now();
-  const GridSpec<D>& grid = phi.spec();
-  const double dx = grid.Spacing[0];
+  const double dx = phi.spec().Spacing[0];
   const RunParameters model = options.parameters(run);
   LevelSetStepParameters step;
   step.P = model.P;
@@ -133,26 +175,42 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
   int nextFarCheck = 0;
 
   RunRecord<D> record;
-  record.Grid = grid;
+  record.Grid = slab.whole();
   record.Parameters = model;
-  NodeList band, reinitBand;
+  NodeList band, reinitBand, bandWithGhosts; // band: the owned rows' B^n
   std::vector<std::uint8_t> dilationScratch;
   std::vector<double> stepScratch, previousValues;
   std::vector<double> energies;
   double bandSizes = 0.0;
   double phase[4] = { 0.0, 0.0, 0.0, 0.0 }; // energy, step, reinitialisation, metrics (seconds)
   collectBand(phi, gamma, ctx, band);       // (1.50)
+  slab.keepOwned(band);
   exact.reset(dist);
+  // On slabs d is made exact on the stencils of the ghost rows' band nodes
+  // too: they reach into the owned rows, as the one-rank band does.
+  const auto ensureExact = [&]
+  {
+    if (slab.distributed())
+    {
+      // The rows whose stencils (one row) and dilation (1.53) reach the owned rows.
+      slab.withGhostBand(phi, gamma, band, std::max<Index>(1, options.ReinitDilation), bandWithGhosts);
+    }
+    exact.ensure(slab.distributed() ? bandWithGhosts : band, ctx, dist);
+  };
   for (int n = 0; n < options.MaxIterations; ++n)
   {
-    exact.ensure(band, ctx, dist);
+    ensureExact();
     // (4.29)/(4.30) on the cells of the band: E_p for the scale factor, E_2 for (4.33).
     auto clock = std::chrono::steady_clock::now();
     EnergyResult ep;
     EnergyOptions energyOptions;
     energyOptions.P = model.P;
     energyOptions.SecondP = model.P != 2.0 ? 2.0 : 0.0; // E_2 in the same pass
-    SLTK_RETURN_IF_ERROR(energyFunctional(phi, dist, band, ctx, ep, energyOptions));
+    SLTK_RETURN_IF_ERROR(slab.agree(energyFunctional(phi, dist, band, ctx, ep, energyOptions)));
+    if (slab.distributed())
+    {
+      reduceEnergy(ep, energyOptions, slab.comm());
+    }
     EnergyResult e2 = ep;
     if (model.P != 2.0)
     {
@@ -173,7 +231,7 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
         break;
       }
       // Beyond the thesis: stalled by (4.33), but still approaching far points?
-      const double fraction = farPointFraction<D, Interp>(phi, cloud, far, ctx);
+      const double fraction = farPointFraction<D, Interp>(phi, cloud, far, slab, ctx);
       if (!stillApproaching(fraction, checkedFar))
       {
         break;
@@ -184,14 +242,37 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     step.Energy = ep.Energy;
     phase[0] += secondsSince(clock);
     clock = std::chrono::steady_clock::now();
+    if (slab.distributed())
+    {
+      // Every foot of an owned node must lie in the window, with the interpolation stencil around it.
+      const double reach = slab.max(levelSetStepReach(phi, dist, band, step, ctx));
+      const Index needed = static_cast<Index>(std::ceil(reach)) + 3;
+      if (needed > slab.slab().Ghost)
+      {
+        Index rowShift = 0;
+        SLTK_RETURN_IF_ERROR(slab.widen(needed + 2, { &phi, &dist }, band, rowShift));
+        // The owned rows keep their exact d; the new ghost rows hold the owners' d.
+        const SlabPlan& s = slab.slab();
+        exact.shiftRows(dist, rowShift, s.Begin - s.First, s.End - s.First);
+        ensureExact();
+        ctx.logger().log(LogLevel::Info,
+          "run " + std::to_string(run) + ": the SL step's feet reach " + std::to_string(reach) +
+            " rows: ghost rows widened to " + std::to_string(slab.slab().Ghost));
+      }
+    }
     // The step writes the band, the reinitialisation its dilation (1.53): phi^n there for eps_1 (4.34).
-    dilateBand(grid, band, options.ReinitDilation, dilationScratch, reinitBand);
+    // On slabs the ghost rows' band nodes dilate into the owned rows too.
+    dilateBand(
+      phi.spec(), slab.distributed() ? bandWithGhosts : band, options.ReinitDilation, dilationScratch, reinitBand);
+    slab.keepOwned(reinitBand);
     gatherValues(phi, reinitBand, previousValues);
-    SLTK_RETURN_IF_ERROR((levelSetStep<Interp, D>(ctx, phi, dist, band, step, stepScratch))); // (4.22)/(4.24)
+    SLTK_RETURN_IF_ERROR(slab.agree(levelSetStep<Interp, D>(ctx, phi, dist, band, step, stepScratch))); // (4.22)/(4.24)
+    slab.exchange(phi, ReinitEntryRows); // what the reinitialisation reads; every ghost row after the cut
     phase[1] += secondsSince(clock);
     clock = std::chrono::steady_clock::now();
-    SLTK_RETURN_IF_ERROR(reinitialise<D>(phi, reinitBand, options.Reinit, ctx));
+    SLTK_RETURN_IF_ERROR(reinitialiseOn(phi, reinitBand, slab, options.Reinit, ctx));
     cutLevelSet(phi, reinitBand, gamma, ctx); // (1.49)
+    slab.exchange(phi);
     phi.fillGhosts();
     filterBand(phi, reinitBand, gamma, ctx, band); // (1.54)
     phase[2] += secondsSince(clock);
@@ -201,19 +282,19 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     it.Run = run;
     it.Iteration = n + 1;
     it.Energy = e2.Energy;
-    it.Change = updateNorm(phi, reinitBand, previousValues); // (4.34) between successive iterates
-    it.CloudError = cloudError<D, Interp>(phi, cloud, ctx);
-    it.BandSize = static_cast<Index>(band.size());
+    it.Change = updateNorm(phi, reinitBand, previousValues, slab); // (4.34) between successive iterates
+    it.CloudError = cloudError<D, Interp>(phi, cloud, slab, ctx);
+    it.BandSize = static_cast<Index>(slab.sum(static_cast<double>(band.size())));
     it.Seconds = secondsSince(start);
     result.History.push_back(it);
     record.Iterations = n + 1;
     record.Energy = it.Energy;
     record.CloudError = it.CloudError;
-    bandSizes += static_cast<double>(band.size());
+    bandSizes += static_cast<double>(it.BandSize);
     phase[3] += secondsSince(clock);
 
     const double fraction = (run - 1 + double(n + 1) / options.MaxIterations) / options.Runs;
-    if (ctx.interrupter().wasInterrupted(fraction))
+    if (slab.max(ctx.interrupter().wasInterrupted(fraction) ? 1.0 : 0.0) > 0.0) // every rank stops
     {
       result.Runs.push_back(record);
       return Status::aborted();
@@ -225,10 +306,10 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
   {
     record.Energy = energies.empty() ? 0.0 : energies.back();
     phi.fillGhosts();
-    record.CloudError = cloudError<D, Interp>(phi, cloud, ctx);
+    record.CloudError = cloudError<D, Interp>(phi, cloud, slab, ctx);
   }
   const double spacing = cloudSpacing;
-  record.FarPoints = farPointFraction<D, Interp>(phi, cloud, far, ctx);
+  record.FarPoints = farPointFraction<D, Interp>(phi, cloud, far, slab, ctx);
   if (run == options.Runs && record.FarPoints > FarPointWarning)
   {
     std::ostringstream warning;
@@ -254,50 +335,66 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
   return Status::ok();
 }
 
+/// Run 1's phi0 from the distance (4.4.4), with the local offset when the plan has one.
+template <int D>
+Status cloudInitialDataOn(const ReconstructionPlan<D>& plan, double outsideFactor, const GridField<D>& dist,
+  const RunSlab<D>& slab, const Context& ctx, GridField<D>& phi)
+{
+  InitialDataOptions io;
+  io.Ghost = PhiGhost;
+  const double threshold = outsideFactor * plan.CloudSpacing;
+  const auto phi0 = [&](const GridField<D>& u)
+  {
+    return slab.distributed() ? cloudInitialDataSlabs(u, threshold, slab.slab(), slab.rows(), slab.comm(), ctx, phi, io)
+                              : cloudInitialData(u, threshold, ctx, phi, io);
+  };
+  if (plan.Sparsity.empty())
+  {
+    return phi0(dist);
+  }
+  // The local offset K_P h_P rho(x) (LocalOffset.h): the marking and sweeping on u = d / rho.
+  const double sparsest = *std::max_element(plan.Sparsity.begin(), plan.Sparsity.end());
+  const double reach = sparsest * threshold;
+  GridField<D> scaled;
+  SLTK_RETURN_IF_ERROR(slab.distributed()
+      ? locallyScaledDistanceSlabs(dist, *plan.Locator, plan.Sparsity, reach, slab.slab(), slab.comm(), ctx, scaled)
+      : locallyScaledDistance(dist, *plan.Locator, plan.Sparsity, reach, ctx, scaled));
+  return phi0(scaled);
+}
+
 /// Initial data of a run: run 1 from the cloud (4.4.4) or an ellipsoid, later
 /// runs from the previous result; cut (1.49) and made a distance near the front.
 template <int D>
 Status initialData(const ReconstructionPlan<D>& plan, double outsideFactor, const GridField<D>& dist,
-  const GridField<D>* previous, const Context& ctx, GridField<D>& phi)
+  const GridField<D>* previous, const RunSlab<D>* previousSlab, const RunSlab<D>& slab, const Context& ctx,
+  GridField<D>& phi)
 {
   const ReconstructionOptions& options = plan.Options;
-  const GridSpec<D>& grid = dist.spec();
+  const GridSpec<D> grid = slab.window();
   const double gamma = options.GammaFactor * grid.Spacing[0];
   if (previous)
   {
-    transfer(*previous, grid, ctx, phi);
+    SLTK_RETURN_IF_ERROR(transfer(*previous, *previousSlab, slab, ctx, phi));
   }
   else if (plan.InitialEllipsoid)
   {
-    SLTK_RETURN_IF_ERROR(ellipsoidLevelSet(*plan.InitialEllipsoid, grid, ctx, phi, PhiGhost));
+    SLTK_RETURN_IF_ERROR(slab.agree(ellipsoidLevelSet(*plan.InitialEllipsoid, grid, ctx, phi, PhiGhost)));
   }
   else
   {
-    InitialDataOptions io;
-    io.Ghost = PhiGhost;
-    if (plan.Sparsity.empty())
-    {
-      SLTK_RETURN_IF_ERROR(cloudInitialData(dist, outsideFactor * plan.CloudSpacing, ctx, phi, io));
-    }
-    else
-    {
-      // The local offset K_P h_P rho(x) (LocalOffset.h): the marking and sweeping on u = d / rho.
-      const double sparsest = *std::max_element(plan.Sparsity.begin(), plan.Sparsity.end());
-      GridField<D> scaled;
-      SLTK_RETURN_IF_ERROR(locallyScaledDistance(
-        dist, *plan.Locator, plan.Sparsity, sparsest * outsideFactor * plan.CloudSpacing, ctx, scaled));
-      SLTK_RETURN_IF_ERROR(cloudInitialData(scaled, outsideFactor * plan.CloudSpacing, ctx, phi, io));
-    }
+    SLTK_RETURN_IF_ERROR(cloudInitialDataOn(plan, outsideFactor, dist, slab, ctx, phi));
   }
   cutLevelSet(phi, gamma, ctx);
   if (previous)
   {
     NodeList band, wide;
     std::vector<std::uint8_t> scratch;
-    collectBand(phi, gamma, ctx, band);
+    collectBand(phi, gamma, ctx, band); // the window's: ghost rows' nodes dilate into the owned rows
     dilateBand(grid, band, options.ReinitDilation, scratch, wide);
-    SLTK_RETURN_IF_ERROR(reinitialise<D>(phi, wide, options.Reinit, ctx));
+    slab.keepOwned(wide);
+    SLTK_RETURN_IF_ERROR(reinitialiseOn(phi, wide, slab, options.Reinit, ctx));
     cutLevelSet(phi, wide, gamma, ctx);
+    slab.exchange(phi);
   }
   phi.fillGhosts();
   return Status::ok();
@@ -322,11 +419,20 @@ void recover(const std::string& what, const Context& ctx, ReconstructionResult<D
 /// (the plan's, or a finer start: reconstruct()).
 template <int D, class Interp>
 Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& options,
-  const std::vector<GridSpec<D>>& grids, const Context& ctx, ReconstructionResult<D>& result, int lastRun)
+  const std::vector<GridSpec<D>>& grids, const Context& ctx, const Communicator& comm, ReconstructionResult<D>& result,
+  int lastRun)
 {
   const PointCloud<D>& cloud = plan.Cloud;
   ExactDistanceCache<D> exact(cloud, *plan.Locator);
   GridField<D> phi, previous, dist, previousDist;
+  RunSlab<D> slab(comm), previousSlab(comm);
+  const auto keep = [&](GridField<D>&& signedDistance, GridField<D>&& distance, const RunSlab<D>& of)
+  {
+    result.SignedDistance = std::move(signedDistance);
+    result.Distance = std::move(distance);
+    result.WholeGrid = of.whole();
+    result.Slab = of.slab();
+  };
   double outsideFactor = options.OutsideThresholdFactor;
   // An automatic K_P may be raised when run 1 loses its zero level set (AutomaticParameters.h).
   const double outsideRoom = plan.Enclosure ? outsideFactorWithRestart(outsideFactor) : outsideFactor;
@@ -335,26 +441,33 @@ Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& op
     const GridSpec<D>& grid = grids[static_cast<size_t>(run - 1)];
     ctx.interrupter().start("run " + std::to_string(run) + "/" + std::to_string(options.Runs));
     const auto setup = std::chrono::steady_clock::now();
+    SLTK_RETURN_IF_ERROR(slab.plan(grid, InitialGhostRows, cloud, run > 1 ? &previousSlab : nullptr));
     if (run == 1)
     {
       DistanceOptions dopt;
       dopt.Ghost = PhiGhost;
-      SLTK_RETURN_IF_ERROR(distanceToCloud(*plan.Locator, grid, ctx, dist, dopt)); // (4.4.2)
+      SLTK_RETURN_IF_ERROR(slab.distributed()
+          ? distanceToCloudSlabs(*plan.Locator, grid, slab.slab(), comm, ctx, dist, dopt)
+          : distanceToCloud(*plan.Locator, grid, ctx, dist, dopt)); // (4.4.2)
     }
     else
     {
       // Later runs: d interpolated from the previous run; exact values follow the band.
-      transfer(previousDist, grid, ctx, dist);
+      SLTK_RETURN_IF_ERROR(transfer(previousDist, previousSlab, slab, ctx, dist));
       dist.fillGhosts();
     }
     const double distanceSeconds = secondsSince(setup);
-    SLTK_RETURN_IF_ERROR(initialData(plan, outsideFactor, dist, run > 1 ? &previous : nullptr, ctx, phi));
+    SLTK_RETURN_IF_ERROR(initialData(
+      plan, outsideFactor, dist, run > 1 ? &previous : nullptr, run > 1 ? &previousSlab : nullptr, slab, ctx, phi));
     std::ostringstream log;
     log << "run " << run << ": grid " << grid.nodeCount() << " nodes, distance " << distanceSeconds
         << " s, initial data " << secondsSince(setup) - distanceSeconds << " s";
     ctx.logger().log(LogLevel::Info, log.str());
     bool vanished = false;
-    const Status status = iterate<D, Interp>(cloud, options, run, ctx, exact, phi, dist, result, vanished);
+    const Status status = iterate<D, Interp>(cloud, options, run, ctx, exact, slab, phi, dist, result, vanished);
+    // d was made exact where each rank's band reached: the ghost rows take the
+    // owners' values (the next run interpolates them; the blocks share a row).
+    slab.exchange(dist);
     ctx.interrupter().end();
     if (vanished && run == 1 && nextOutsideFactor(outsideFactor) > 0.0 &&
       nextOutsideFactor(outsideFactor) <= outsideRoom)
@@ -377,14 +490,12 @@ Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& op
           "'s, on its grid (try a smaller eta in later runs, --schedule)",
         ctx, result);
       forgetRun(run, result);
-      result.SignedDistance = std::move(previous);
-      result.Distance = std::move(previousDist);
+      keep(std::move(previous), std::move(previousDist), previousSlab);
       return Status::ok();
     }
     if (!status.isOk())
     {
-      result.SignedDistance = std::move(phi);
-      result.Distance = std::move(dist);
+      keep(std::move(phi), std::move(dist), slab);
       if (vanished)
       {
         const std::string stray = strayPointAdvice(cloud, ctx);
@@ -397,17 +508,18 @@ Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& op
     {
       previous = std::move(phi);
       previousDist = std::move(dist);
+      previousSlab = slab;
     }
   }
-  result.SignedDistance = std::move(phi);
-  result.Distance = std::move(dist);
+  keep(std::move(phi), std::move(dist), slab);
   return Status::ok();
 }
 
 } // namespace
 
 template <int D>
-Status reconstruct(const ReconstructionPlan<D>& plan, const Context& ctx, ReconstructionResult<D>& result)
+Status reconstruct(
+  const ReconstructionPlan<D>& plan, const Context& ctx, ReconstructionResult<D>& result, const Communicator& comm)
 {
   result = ReconstructionResult<D>{};
   if (!plan.Locator || plan.Grids.Runs.size() != static_cast<size_t>(plan.Options.Runs))
@@ -420,7 +532,7 @@ Status reconstruct(const ReconstructionPlan<D>& plan, const Context& ctx, Recons
     result.CellSizeFactor = options.CellSizeFactor;
     return withInterpolator<D>(options.Interpolator,
       [&](auto tag)
-      { return runAll<D, typename decltype(tag)::type>(plan, options, grids, ctx, result, options.Runs); });
+      { return runAll<D, typename decltype(tag)::type>(plan, options, grids, ctx, comm, result, options.Runs); });
   };
   Status status = runWith(plan.Options, plan.Grids.Runs);
   ReconstructionOptions finer = plan.Options;
@@ -451,6 +563,7 @@ Status reconstruct(const ReconstructionPlan<D>& plan, const Context& ctx, Recons
   recordsToUser(plan.Box, result);
   plan.Box.toUser(result.SignedDistance);
   plan.Box.toUser(result.Distance);
+  result.WholeGrid = plan.Box.toUser(result.WholeGrid);
   return status;
 }
 
@@ -471,7 +584,10 @@ Status reconstructFirstRuns(
   result.Choices = plan.Choices;
   return withInterpolator<D>(plan.Options.Interpolator,
     [&](auto tag)
-    { return runAll<D, typename decltype(tag)::type>(plan, plan.Options, plan.Grids.Runs, ctx, result, runs); });
+    {
+      return runAll<D, typename decltype(tag)::type>(
+        plan, plan.Options, plan.Grids.Runs, ctx, serialCommunicator(), result, runs);
+    });
 }
 
 template <int D>
@@ -488,9 +604,11 @@ template Status reconstruct(
   const PointCloud<2>&, const ReconstructionOptions&, const Context&, ReconstructionResult<2>&);
 template Status reconstruct(
   const PointCloud<3>&, const ReconstructionOptions&, const Context&, ReconstructionResult<3>&);
-template Status reconstruct(const ReconstructionPlan<2>&, const Context&, ReconstructionResult<2>&);
+template Status reconstruct(
+  const ReconstructionPlan<2>&, const Context&, ReconstructionResult<2>&, const Communicator&);
 template Status reconstructFirstRuns(const ReconstructionPlan<2>&, int, const Context&, ReconstructionResult<2>&);
 template Status reconstructFirstRuns(const ReconstructionPlan<3>&, int, const Context&, ReconstructionResult<3>&);
-template Status reconstruct(const ReconstructionPlan<3>&, const Context&, ReconstructionResult<3>&);
+template Status reconstruct(
+  const ReconstructionPlan<3>&, const Context&, ReconstructionResult<3>&, const Communicator&);
 
 } // namespace sltk

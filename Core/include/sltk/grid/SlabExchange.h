@@ -11,6 +11,10 @@
 #include "sltk/grid/GridField.h"
 #include "sltk/grid/Slabs.h"
 
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace sltk
@@ -19,9 +23,12 @@ namespace sltk
 /// The exchange over any storage of the window's rows (local row numbers,
 /// slab.First is row 0): read(firstRow, rows, T* to) copies those rows' nodes
 /// out (x fastest), merge(firstRow, rows, const T* from) takes the
-/// neighbour's values into the ghost rows. A collective call.
+/// neighbour's values into the ghost rows. `depth` (default: all of them)
+/// limits the exchange to the ghost rows nearest the owned rows, e.g. 1 for
+/// a stencil that reads one row beyond. A collective call.
 template <class T, class Read, class Merge>
-void exchangeSlabRows(const SlabPlan& slab, Index rowNodes, const Communicator& comm, Read&& read, Merge&& merge)
+void exchangeSlabRows(const SlabPlan& slab, Index rowNodes, const Communicator& comm, Read&& read, Merge&& merge,
+  Index depth = std::numeric_limits<Index>::max())
 {
   const Index rows = slab.windowRows();
   const Index below = slab.Begin - slab.First, above = slab.Stop - slab.End; // ghost rows on each side
@@ -31,21 +38,47 @@ void exchangeSlabRows(const SlabPlan& slab, Index rowNodes, const Communicator& 
   for (const bool toDown : { true, false })
   {
     // My ghost rows on a side are as many as the neighbour's on mine (slab.Ghost; none at the domain's edge).
-    const Index sentRows = toDown ? below : above, gotRows = toDown ? above : below;
+    const Index sentRows = std::min(toDown ? below : above, depth), gotRows = std::min(toDown ? above : below, depth);
     send.resize(static_cast<size_t>(sentRows * rowNodes));
     receive.resize(static_cast<size_t>(gotRows * rowNodes));
     read(toDown ? below : rows - above - sentRows, sentRows, send.data());
     comm.sendReceive(send.data(), send.size() * sizeof(T), toDown ? down : up, receive.data(),
       receive.size() * sizeof(T), toDown ? up : down);
-    merge(toDown ? rows - above : 0, gotRows, static_cast<const T*>(receive.data()));
+    merge(toDown ? rows - above : below - gotRows, gotRows, static_cast<const T*>(receive.data()));
+  }
+}
+
+/// Calls line(T* first, Index count, Index node) for every x-line of the rows
+/// [firstRow, firstRow + rows) of the last axis of `window` (window numbering;
+/// `node` the line's first node number, x fastest): the contiguous runs of
+/// storage those rows are made of. `Field` may be const.
+template <class Field, class Line>
+void forEachRowLine(Field& window, Index firstRow, Index rows, Line&& line)
+{
+  constexpr int D = std::decay_t<Field>::Dim;
+  const auto& dims = window.spec().Dims;
+  const Index length = D == 1 ? 1 : dims[0];
+  const Index linesPerRow = D == 1 ? 1 : window.spec().nodeCount() / dims[D - 1] / length;
+  for (Index l = firstRow * linesPerRow; l < (firstRow + rows) * linesPerRow; ++l)
+  {
+    std::array<Index, D> i{};
+    Index rest = l;
+    for (int a = D == 1 ? 0 : 1; a < D; ++a)
+    {
+      i[static_cast<size_t>(a)] = rest % dims[static_cast<size_t>(a)];
+      rest /= dims[static_cast<size_t>(a)];
+    }
+    line(window.pointer(i), length, l * length);
   }
 }
 
 /// Overwrites the ghost rows of `window` (rows slab.First .. slab.Stop - 1 of
-/// the last axis) with the owners' values; `changed` (optional) tells whether
-/// any of this rank's ghost values changed. A collective call.
+/// the last axis), or the `depth` nearest the owned rows, with the owners'
+/// values; `changed` (optional) tells whether any of this rank's ghost values
+/// changed. A collective call.
 template <int D, class T>
-void exchangeGhostRows(GridField<D, T>& window, const SlabPlan& slab, const Communicator& comm, bool* changed = nullptr)
+void exchangeGhostRows(GridField<D, T>& window, const SlabPlan& slab, const Communicator& comm, bool* changed = nullptr,
+  Index depth = std::numeric_limits<Index>::max())
 {
   const Index rowNodes = window.spec().nodeCount() / window.spec().Dims[D - 1];
   bool differs = false;
@@ -53,20 +86,24 @@ void exchangeGhostRows(GridField<D, T>& window, const SlabPlan& slab, const Comm
     slab, rowNodes, comm,
     [&](Index first, Index count, T* to)
     {
-      for (Index k = 0; k < count * rowNodes; ++k)
-      {
-        to[k] = window(window.nodeIndex(first * rowNodes + k));
-      }
+      forEachRowLine(window, first, count,
+        [&](const T* line, Index length, Index node)
+        { std::copy(line, line + length, to + (node - first * rowNodes)); });
     },
     [&](Index first, Index count, const T* from)
     {
-      for (Index k = 0; k < count * rowNodes; ++k)
-      {
-        T& value = window(window.nodeIndex(first * rowNodes + k));
-        differs = differs || !(value == from[k]);
-        value = from[k];
-      }
-    });
+      forEachRowLine(window, first, count,
+        [&](T* line, Index length, Index node)
+        {
+          const T* in = from + (node - first * rowNodes);
+          if (changed && !differs)
+          {
+            differs = !std::equal(line, line + length, in);
+          }
+          std::copy(in, in + length, line);
+        });
+    },
+    depth);
   if (changed)
   {
     *changed = differs;

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 namespace sltk
 {
@@ -30,23 +31,89 @@ inline Index slabBegin(Index rows, int rank, int size)
   return rows * rank / size;
 }
 
-/// Rank `rank` of `size`'s slab of `rows` rows with `ghost` ghost rows;
-/// refuses fewer than `ghost` owned rows a rank, naming `why` the ghost rows
-/// are needed and the fix.
-inline Status planSlab(Index rows, Index ghost, int rank, int size, const std::string& why, SlabPlan& plan)
+/// Rank `rank`'s slab of `boundaries` (size + 1 rows, ascending: rank r owns
+/// rows [boundaries[r], boundaries[r + 1])) with `ghost` ghost rows; refuses
+/// fewer than `ghost` owned rows a rank, naming `why` the ghost rows are
+/// needed and the fix.
+inline Status planSlabAt(
+  const std::vector<Index>& boundaries, Index ghost, int rank, const std::string& why, SlabPlan& plan)
 {
-  if (rows / size < std::max<Index>(ghost, 1))
+  const int size = static_cast<int>(boundaries.size()) - 1;
+  const Index rows = boundaries.back(), least = std::max<Index>(ghost, 1);
+  for (int r = 0; r < size; ++r)
   {
-    return Status::invalidArgument("the grid has " + std::to_string(rows) + " rows along its last axis for " +
-      std::to_string(size) + " ranks, fewer than the " + std::to_string(std::max<Index>(ghost, 1)) + " each needs (" +
-      why + "): use fewer ranks or more nodes");
+    if (boundaries[static_cast<size_t>(r) + 1] - boundaries[static_cast<size_t>(r)] < least)
+    {
+      return Status::invalidArgument("the grid has " + std::to_string(rows) + " rows along its last axis for " +
+        std::to_string(size) + " ranks, fewer than the " + std::to_string(least) + " each needs (" + why +
+        "): use fewer ranks or more nodes");
+    }
   }
   plan.Ghost = ghost;
-  plan.Begin = slabBegin(rows, rank, size);
-  plan.End = slabBegin(rows, rank + 1, size);
+  plan.Begin = boundaries[static_cast<size_t>(rank)];
+  plan.End = boundaries[static_cast<size_t>(rank) + 1];
   plan.First = std::max<Index>(0, plan.Begin - ghost);
   plan.Stop = std::min(rows, plan.End + ghost);
   return Status::ok();
+}
+
+/// The even boundaries of `rows` rows over `size` ranks (slabBegin).
+inline std::vector<Index> evenSlabBoundaries(Index rows, int size)
+{
+  std::vector<Index> boundaries(static_cast<size_t>(size) + 1);
+  for (int r = 0; r <= size; ++r)
+  {
+    boundaries[static_cast<size_t>(r)] = slabBegin(rows, r, size);
+  }
+  return boundaries;
+}
+
+/// Boundaries that give every rank about the same share of `weights` (one
+/// per row, >= 0, e.g. the work a row makes) and at least `least` rows each
+/// where the rows allow it (else the even split, which planSlabAt refuses).
+inline std::vector<Index> balancedSlabBoundaries(const std::vector<double>& weights, int size, Index least)
+{
+  const Index rows = static_cast<Index>(weights.size());
+  if (rows < least * size)
+  {
+    return evenSlabBoundaries(rows, size);
+  }
+  double total = 0.0;
+  for (const double w : weights)
+  {
+    total += w;
+  }
+  std::vector<Index> boundaries(static_cast<size_t>(size) + 1, rows);
+  boundaries[0] = 0;
+  double sum = 0.0;
+  Index row = 0;
+  for (int r = 1; r < size; ++r)
+  {
+    const double target = total * r / size;
+    while (row < rows && sum + weights[static_cast<size_t>(row)] <= target)
+    {
+      sum += weights[static_cast<size_t>(row++)];
+    }
+    // At least `least` rows for this rank and for each rank above it.
+    const Index b = std::clamp(row, boundaries[static_cast<size_t>(r) - 1] + least, rows - least * (size - r));
+    for (; row < b; ++row)
+    {
+      sum += weights[static_cast<size_t>(row)];
+    }
+    for (; row > b; --row)
+    {
+      sum -= weights[static_cast<size_t>(row) - 1];
+    }
+    boundaries[static_cast<size_t>(r)] = b;
+  }
+  return boundaries;
+}
+
+/// Rank `rank` of `size`'s slab of `rows` rows, split evenly, with `ghost`
+/// ghost rows (planSlabAt).
+inline Status planSlab(Index rows, Index ghost, int rank, int size, const std::string& why, SlabPlan& plan)
+{
+  return planSlabAt(evenSlabBoundaries(rows, size), ghost, rank, why, plan);
 }
 
 } // namespace sltk

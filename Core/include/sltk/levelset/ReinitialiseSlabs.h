@@ -8,7 +8,13 @@
 /// the largest change (the stopping test) and a stop on any rank are reduced
 /// over the ranks, so every rank stops at the same step. A Jacobi step reads
 /// its neighbours' previous values only, so with the ghost rows current the
-/// owned values are bitwise the one-rank reinitialisation's.
+/// owned values are bitwise the one-rank reinitialisation's. A pseudo-time
+/// step reads one row beyond (ReinitStencil.h axes), so only the ghost row
+/// next to the owned rows is exchanged; the classification on entry reads the
+/// 3^D blocks of the neighbours (1.44), two rows beyond, so on entry the
+/// ReinitEntryRows ghost rows next to the owned rows must be current. The
+/// farther ghost rows keep their values: exchange them afterwards if a wider
+/// stencil follows.
 
 #include "sltk/exec/Communicator.h"
 #include "sltk/grid/SlabExchange.h"
@@ -21,6 +27,9 @@
 namespace sltk
 {
 
+/// The ghost rows next to the owned rows that reinitialiseSlabs reads on entry.
+constexpr Index ReinitEntryRows = 2;
+
 /// `window`: this rank's rows slab.First .. slab.Stop - 1 with its ghost rows
 /// current; `ownedBand`: the band nodes of the owned rows (window numbering).
 /// A collective call.
@@ -32,7 +41,7 @@ Status reinitialiseSlabs(GridField<D>& window, const NodeList& ownedBand, const 
   exchange.Agree = [&](const Status& status) { return comm.agree(status); };
   exchange.AfterStep = [&](double change, bool& interrupted)
   {
-    exchangeGhostRows(window, slab, comm);
+    exchangeGhostRows(window, slab, comm, nullptr, 1);
     double reduced[2] = { std::isfinite(change) ? change : std::numeric_limits<double>::infinity(),
       interrupted ? 1.0 : 0.0 };
     comm.allReduce(reduced, 2, ReduceOp::Max);

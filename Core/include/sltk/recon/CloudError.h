@@ -17,13 +17,13 @@
 namespace sltk
 {
 
-/// The sum of |I[phi](Q)| over the points of `cloud` whose cell row along the
-/// last axis (of the whole grid of `rows` rows, the cell clamped into it) is
-/// in [firstRow, endRow); phi's ghosts filled, its window holding those cells
-/// and the interpolation stencil around them. The defaults take every point.
-template <int D, class Interp>
-double cloudErrorSum(const GridField<D>& phi, const PointCloud<D>& cloud, const Context& ctx, Index firstRow = 0,
-  Index endRow = std::numeric_limits<Index>::max(), Index rows = std::numeric_limits<Index>::max())
+/// The sum of term(I[phi](Q)) over the points of `cloud` whose cell row along
+/// the last axis (of the whole grid of `rows` rows, the cell clamped into it)
+/// is in [firstRow, endRow); phi's ghosts filled, its window holding those
+/// cells and the interpolation stencil around them.
+template <int D, class Interp, class Term>
+double sumOverPoints(const GridField<D>& phi, const PointCloud<D>& cloud, const Context& ctx, Index firstRow,
+  Index endRow, Index rows, Term term)
 {
   const GridSpec<D>& g = phi.spec();
   return ctx.parallelSum(0, cloud.size(),
@@ -38,11 +38,20 @@ double cloudErrorSum(const GridField<D>& phi, const PointCloud<D>& cloud, const 
         const Index row = static_cast<Index>(std::clamp(cell, 0.0, static_cast<double>(std::max<Index>(rows - 2, 0))));
         if (row >= firstRow && row < endRow)
         {
-          s += std::fabs(interpolate(interp, g, q));
+          s += term(interpolate(interp, g, q));
         }
       }
       return s;
     });
+}
+
+/// The sum of |I[phi](Q)| over those points (Err_P times the cloud's size);
+/// the defaults take every point.
+template <int D, class Interp>
+double cloudErrorSum(const GridField<D>& phi, const PointCloud<D>& cloud, const Context& ctx, Index firstRow = 0,
+  Index endRow = std::numeric_limits<Index>::max(), Index rows = std::numeric_limits<Index>::max())
+{
+  return sumOverPoints<D, Interp>(phi, cloud, ctx, firstRow, endRow, rows, [](double v) { return std::fabs(v); });
 }
 
 } // namespace sltk

@@ -9,8 +9,10 @@
 /// rho = 1 and u = d (Documentation/Numerics.md, "Local offset").
 
 #include "sltk/cloud/PointLocator.h"
+#include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
+#include "sltk/grid/Slabs.h"
 
 #include <vector>
 
@@ -27,9 +29,22 @@ template <int D>
 Status locallyScaledDistance(const GridField<D, double>& distance, const PointLocator<D>& locator,
   const std::vector<double>& sparsity, double reach, const Context& ctx, GridField<D, double>& scaled);
 
+/// The same on this rank's window of a slab decomposition (grid/Slabs.h, the
+/// ghost rows of `distance` current): the descent is carried on the window and
+/// the ghost rows exchanged until none changes on any rank, so u is the
+/// one-rank u (a descent path may cross slabs). A collective call.
+template <int D>
+Status locallyScaledDistanceSlabs(const GridField<D, double>& distance, const PointLocator<D>& locator,
+  const std::vector<double>& sparsity, double reach, const SlabPlan& slab, const Communicator& comm,
+  const Context& ctx, GridField<D, double>& scaled);
+
 extern template Status locallyScaledDistance(const GridField<2, double>&, const PointLocator<2>&,
   const std::vector<double>&, double, const Context&, GridField<2, double>&);
 extern template Status locallyScaledDistance(const GridField<3, double>&, const PointLocator<3>&,
   const std::vector<double>&, double, const Context&, GridField<3, double>&);
+extern template Status locallyScaledDistanceSlabs(const GridField<2, double>&, const PointLocator<2>&,
+  const std::vector<double>&, double, const SlabPlan&, const Communicator&, const Context&, GridField<2, double>&);
+extern template Status locallyScaledDistanceSlabs(const GridField<3, double>&, const PointLocator<3>&,
+  const std::vector<double>&, double, const SlabPlan&, const Communicator&, const Context&, GridField<3, double>&);
 
 } // namespace sltk

@@ -15,8 +15,10 @@
 ///     the metrics eps_1 (4.34) and Err_P (4.35).
 
 #include "sltk/cloud/PointCloud.h"
+#include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
+#include "sltk/grid/Slabs.h"
 #include "sltk/recon/ReconstructionOptions.h"
 #include "sltk/recon/ReconstructionPlan.h"
 
@@ -33,6 +35,12 @@ struct ReconstructionResult
 {
   GridField<D> SignedDistance;         ///< phi of the last run (negative inside), cut at +-gamma far away
   GridField<D> Distance;               ///< d of the last run (4.4.2)
+  /// The last run's whole grid, and this rank's slab of it (grid/Slabs.h): on
+  /// several ranks SignedDistance and Distance hold the window, rows
+  /// Slab.First .. Slab.Stop - 1, of which Slab.Begin .. Slab.End - 1 are owned
+  /// (exact); on one rank the whole grid.
+  GridSpec<D> WholeGrid;
+  SlabPlan Slab;
   double CloudSpacing = 0.0;           ///< h_P (of the cleaned cloud)
   double CellSizeFactor = 0.0;         ///< C_dx used (chosen when automatic)
   double OutsideThresholdFactor = 0.0; ///< K_P used (raised when run 1 was restarted)
@@ -57,8 +65,16 @@ Status reconstruct(const PointCloud<D>& cloud, const ReconstructionOptions& opti
 /// than failed when it can be (Recoveries says how): run 1 with an automatic
 /// K_P restarts with the ladder's next K_P (once); a later run is
 /// replaced by the previous run's result.
+///
+/// On a communicator of several ranks (every rank holding the same plan,
+/// made from the whole cloud) each run's grid is cut into slabs along its
+/// last axis (grid/Slabs.h; Documentation/Distributed.md): each rank stores
+/// and computes its window, exchanges ghost rows after every update, and the
+/// energy, eps_1, Err_P, the stopping rule and the recoveries are reduced, so
+/// every rank takes the same decisions. A collective call.
 template <int D>
-Status reconstruct(const ReconstructionPlan<D>& plan, const Context& ctx, ReconstructionResult<D>& result);
+Status reconstruct(const ReconstructionPlan<D>& plan, const Context& ctx, ReconstructionResult<D>& result,
+  const Communicator& comm = serialCommunicator());
 
 /// The records of a unit-box reconstruction (History and Runs) in the user's
 /// units: lengths times box.Scale, E_2 ~ length^((2 + D - 1) / 2). The fields
@@ -92,8 +108,10 @@ extern template Status reconstruct(
   const PointCloud<2>&, const ReconstructionOptions&, const Context&, ReconstructionResult<2>&);
 extern template Status reconstruct(
   const PointCloud<3>&, const ReconstructionOptions&, const Context&, ReconstructionResult<3>&);
-extern template Status reconstruct(const ReconstructionPlan<2>&, const Context&, ReconstructionResult<2>&);
-extern template Status reconstruct(const ReconstructionPlan<3>&, const Context&, ReconstructionResult<3>&);
+extern template Status reconstruct(
+  const ReconstructionPlan<2>&, const Context&, ReconstructionResult<2>&, const Communicator&);
+extern template Status reconstruct(
+  const ReconstructionPlan<3>&, const Context&, ReconstructionResult<3>&, const Communicator&);
 extern template Status reconstructFirstRuns(
   const ReconstructionPlan<2>&, int, const Context&, ReconstructionResult<2>&);
 extern template Status reconstructFirstRuns(

@@ -1,0 +1,193 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file RunSlab.h
+/// The rows of one run's grid that this rank of the reconstruction works on
+/// (grid/Slabs.h, Documentation/Distributed.md): its owned rows plus ghost
+/// rows on each side, all rows and no ghost row on one rank. Fields live on
+/// the window (GridSpec::Offset places it in the run's grid); band node lists
+/// hold window node numbers. The ghost rows must cover the feet of one SL
+/// step (LevelSetStepReach.h) plus the interpolation stencil; widen() grows
+/// them when a step would reach farther (thesis 4.4.1: ghost layers as wide
+/// as the largest foot displacement, checked at run time).
+
+#include "sltk/cloud/PointCloud.h"
+#include "sltk/exec/Communicator.h"
+#include "sltk/grid/GridField.h"
+#include "sltk/grid/SlabExchange.h"
+#include "sltk/grid/Slabs.h"
+#include "sltk/levelset/NarrowBand.h"
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <vector>
+
+namespace sltk
+{
+
+template <int D>
+class RunSlab
+{
+public:
+  explicit RunSlab(const Communicator& comm)
+    : Comm(&comm)
+  {
+  }
+
+  /// This rank's slab of `whole` with `ghost` ghost rows (none on one rank).
+  /// The band, where the work is, follows the surface that the cloud samples:
+  /// the ranks get about the same number of points each (and a little for
+  /// every row), not the same number of rows. A later run (`previous`, the
+  /// run before) cuts its finer grid where the previous run's slabs meet, so
+  /// that each rank's owned rows lie in its previous window (transfer()).
+  Status plan(const GridSpec<D>& whole, Index ghost, const PointCloud<D>& cloud, const RunSlab* previous = nullptr)
+  {
+    this->Whole = whole;
+    this->RowNodes = whole.nodeCount() / whole.Dims[D - 1];
+    const Index rows = whole.Dims[D - 1];
+    if (!this->distributed())
+    {
+      this->Boundaries = { 0, rows };
+    }
+    else if (previous)
+    {
+      const int size = this->Comm->size();
+      this->Boundaries.assign(static_cast<size_t>(size) + 1, rows);
+      this->Boundaries[0] = 0;
+      for (int r = 1; r < size; ++r)
+      {
+        const double z = previous->Whole.coordinate(D - 1, previous->Boundaries[static_cast<size_t>(r)]);
+        const Index row =
+          static_cast<Index>(std::lround((z - whole.Origin[D - 1]) / whole.Spacing[D - 1])) - whole.Offset[D - 1];
+        this->Boundaries[static_cast<size_t>(r)] =
+          std::clamp(row, this->Boundaries[static_cast<size_t>(r) - 1] + ghost, rows - ghost * (size - r));
+      }
+    }
+    else
+    {
+      std::vector<double> weights(static_cast<size_t>(rows), 0.1 * static_cast<double>(cloud.size()) / rows);
+      for (const auto& p : cloud.Points)
+      {
+        const double row = std::floor((p[D - 1] - whole.Origin[D - 1]) / whole.Spacing[D - 1]) - whole.Offset[D - 1];
+        weights[static_cast<size_t>(std::clamp(row, 0.0, static_cast<double>(rows - 1)))] += 1.0;
+      }
+      this->Boundaries = balancedSlabBoundaries(weights, this->Comm->size(), ghost);
+    }
+    return planSlabAt(this->Boundaries, this->distributed() ? ghost : 0, this->Comm->rank(),
+      "the SL step's feet and the interpolation stencil", this->Slab);
+  }
+
+  bool distributed() const { return this->Comm->size() > 1; }
+  const Communicator& comm() const { return *this->Comm; }
+  const SlabPlan& slab() const { return this->Slab; }
+  const GridSpec<D>& whole() const { return this->Whole; }
+  Index rows() const { return this->Whole.Dims[D - 1]; }
+
+  /// The window's grid: rows slab.First .. slab.Stop - 1 of the whole grid.
+  GridSpec<D> window() const
+  {
+    GridSpec<D> spec = this->Whole;
+    spec.Dims[D - 1] = this->Slab.windowRows();
+    spec.Offset[D - 1] = this->Whole.Offset[D - 1] + this->Slab.First;
+    return spec;
+  }
+
+  /// Window node numbers of the owned rows: [ownedBegin(), ownedEnd()).
+  Index ownedBegin() const { return (this->Slab.Begin - this->Slab.First) * this->RowNodes; }
+  Index ownedEnd() const { return (this->Slab.End - this->Slab.First) * this->RowNodes; }
+
+  /// Keeps the nodes of the owned rows (window numbering, ascending).
+  void keepOwned(NodeList& nodes) const
+  {
+    if (this->distributed())
+    {
+      const Index b = this->ownedBegin(), e = this->ownedEnd();
+      nodes.erase(std::remove_if(nodes.begin(), nodes.end(), [b, e](Index k) { return k < b || k >= e; }), nodes.end());
+    }
+  }
+
+  /// `owned` and the band nodes (|phi| < gamma) of the `depth` ghost rows next
+  /// to the owned rows on each side, ascending.
+  void withGhostBand(const GridField<D>& phi, double gamma, const NodeList& owned, Index depth, NodeList& all) const
+  {
+    all.clear();
+    const auto scan = [&](Index firstRow, Index rows)
+    {
+      forEachRowLine(phi, firstRow, rows,
+        [&](const double* line, Index length, Index node)
+        {
+          for (Index x = 0; x < length; ++x)
+          {
+            if (std::fabs(line[x]) < gamma)
+            {
+              all.push_back(node + x);
+            }
+          }
+        });
+    };
+    const Index below = this->Slab.Begin - this->Slab.First, above = this->Slab.Stop - this->Slab.End;
+    const Index rowsBelow = std::min(below, depth), rowsAbove = std::min(above, depth);
+    scan(below - rowsBelow, rowsBelow);
+    all.insert(all.end(), owned.begin(), owned.end());
+    scan(this->Slab.End - this->Slab.First, rowsAbove);
+  }
+
+  /// Overwrites the ghost rows (or the `depth` nearest the owned rows) with the
+  /// owners' values (collective; nothing on one rank).
+  void exchange(GridField<D>& field, Index depth = std::numeric_limits<Index>::max()) const
+  {
+    if (this->distributed())
+    {
+      exchangeGhostRows(field, this->Slab, *this->Comm, nullptr, depth);
+    }
+  }
+
+  /// The same status on every rank (the first failure's); as given on one rank.
+  Status agree(const Status& status) const { return this->distributed() ? this->Comm->agree(status) : status; }
+
+  double sum(double value) const { return this->distributed() ? this->Comm->allReduce(value, ReduceOp::Sum) : value; }
+
+  double max(double value) const { return this->distributed() ? this->Comm->allReduce(value, ReduceOp::Max) : value; }
+
+  /// Grows the ghost rows to `ghost` (the same on every rank): the fields keep
+  /// their owned rows and take the new ghost rows from the owners; `owned`
+  /// (window numbers) is renumbered, and `rowShift` tells how many rows the
+  /// owned rows moved up in the window. A collective call.
+  Status widen(Index ghost, std::initializer_list<GridField<D>*> fields, NodeList& owned, Index& rowShift)
+  {
+    SlabPlan wider;
+    SLTK_RETURN_IF_ERROR(planSlabAt(this->Boundaries, ghost, this->Comm->rank(),
+      "the SL step's feet reach " + std::to_string(ghost - 3) + " rows", wider));
+    rowShift = this->Slab.First - wider.First;
+    const Index ownedRows = this->Slab.End - this->Slab.Begin, below = this->Slab.Begin - this->Slab.First;
+    this->Slab = wider;
+    for (GridField<D>* field : fields)
+    {
+      GridField<D> grown(this->window(), field->ghost());
+      forEachRowLine(*field, below, ownedRows,
+        [&](const double* line, Index length, Index node)
+        {
+          const auto i = grown.nodeIndex(node + rowShift * this->RowNodes);
+          std::copy(line, line + length, grown.pointer(i));
+        });
+      exchangeGhostRows(grown, wider, *this->Comm);
+      grown.fillGhosts();
+      *field = std::move(grown);
+    }
+    for (Index& node : owned)
+    {
+      node += rowShift * this->RowNodes;
+    }
+    return Status::ok();
+  }
+
+private:
+  const Communicator* Comm;
+  GridSpec<D> Whole;
+  SlabPlan Slab;
+  std::vector<Index> Boundaries; ///< every rank's first row, and the row count
+  Index RowNodes = 0;
+};
+
+} // namespace sltk

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The whole reconstruction (Algorithm 1, every run) on the slabs of
+// MPI_COMM_WORLD (ctest: 1 and 2 ranks; also right on 3 and 4): each rank's
+// owned nodes of the signed distance and the distance are the one-rank
+// reconstruction's to rounding, with the same runs, iteration counts, band
+// sizes and Err_P. The energy, eps_1 and Err_P are sums whose terms the ranks
+// add in another order, and run 1's distance is swept to a tolerance
+// (DistanceOptions::SweepTolerance), so values may differ in the last bits:
+// phi within 1e-12 of a cell (measured: 2.3e-14), d within 1e-10 (measured:
+// 1.2e-12) (Documentation/Distributed.md).
+#include "MpiWorld.h"
+#include "sltk/cloud/SyntheticClouds.h"
+#include "sltk/recon/Reconstruction.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace
+{
+
+/// A circle sampled unevenly (the local offset's sparsity varies along it).
+sltk::PointCloud<2> unevenCircle(int n)
+{
+  sltk::PointCloud<2> cloud;
+  for (int k = 0; k < n; ++k)
+  {
+    const double u = static_cast<double>(k) / n;
+    const double t = 2.0 * M_PI * u + 0.7 * std::sin(2.0 * M_PI * u);
+    cloud.Points.push_back({ 1.3 * std::cos(t), 0.8 * std::sin(t) + 0.2 * std::cos(3.0 * t) });
+  }
+  return cloud;
+}
+
+/// Counts the messages that say the ghost rows were widened (RunSlab::widen).
+struct WideningCounter : sltk::Logger
+{
+  int Widenings = 0;
+  void log(sltk::LogLevel, const std::string& message) override
+  {
+    Widenings += message.find("ghost rows widened") != std::string::npos ? 1 : 0;
+  }
+};
+
+template <int D>
+int expectSameAsOneRank(const sltk::PointCloud<D>& cloud, const sltk::ReconstructionOptions& options)
+{
+  auto comm = world();
+  sltk::ReconstructionPlan<D> plan;
+  EXPECT_TRUE(sltk::planReconstruction(cloud, options, sltk::Context{}, plan).isOk());
+  sltk::ReconstructionResult<D> one, mine;
+  const sltk::Status oneStatus = sltk::reconstruct(plan, sltk::Context{}, one);
+  EXPECT_TRUE(oneStatus.isOk()) << oneStatus.message();
+  WideningCounter counter;
+  sltk::Context ctx;
+  ctx.Log = &counter;
+  const sltk::Status status = sltk::reconstruct(plan, ctx, mine, *comm);
+  EXPECT_TRUE(status.isOk()) << status.message();
+  if (!status.isOk() || !oneStatus.isOk() || mine.Runs.size() != one.Runs.size())
+  {
+    ADD_FAILURE() << "runs differ";
+    return 0;
+  }
+  for (size_t r = 0; r < one.Runs.size(); ++r)
+  {
+    EXPECT_EQ(mine.Runs[r].Iterations, one.Runs[r].Iterations) << "run " << r + 1;
+    EXPECT_NEAR(mine.Runs[r].CloudError, one.Runs[r].CloudError, 1e-12 * one.Runs[r].CloudError) << "run " << r + 1;
+  }
+  EXPECT_EQ(mine.History.size(), one.History.size());
+  for (size_t k = 0; k < std::min(one.History.size(), mine.History.size()); ++k)
+  {
+    EXPECT_EQ(mine.History[k].BandSize, one.History[k].BandSize) << "iteration " << k;
+  }
+  const sltk::SlabPlan& slab = mine.Slab;
+  const sltk::GridSpec<D>& whole = one.SignedDistance.spec();
+  EXPECT_EQ(mine.WholeGrid.Dims, whole.Dims);
+  EXPECT_EQ(mine.SignedDistance.spec().Dims[D - 1], slab.windowRows());
+  const sltk::Index rowNodes = whole.nodeCount() / whole.Dims[D - 1];
+  double phiGap = 0.0, distGap = 0.0;
+  for (sltk::Index k = (slab.Begin - slab.First) * rowNodes; k < (slab.End - slab.First) * rowNodes; ++k)
+  {
+    const sltk::Index w = k + slab.First * rowNodes;
+    phiGap = std::max(phiGap,
+      std::fabs(
+        mine.SignedDistance(mine.SignedDistance.nodeIndex(k)) - one.SignedDistance(one.SignedDistance.nodeIndex(w))));
+    distGap =
+      std::max(distGap, std::fabs(mine.Distance(mine.Distance.nodeIndex(k)) - one.Distance(one.Distance.nodeIndex(w))));
+  }
+  const double dx = whole.Spacing[0];
+  EXPECT_LE(phiGap, 1e-12 * dx) << "rank " << comm->rank() << " of " << comm->size();
+  EXPECT_LE(distGap, 1e-10 * dx) << "rank " << comm->rank() << " of " << comm->size();
+  std::printf("rank %d of %d: rows %lld..%lld, %zu runs, largest gap phi %.3g dx, d %.3g dx\n", comm->rank(),
+    comm->size(), static_cast<long long>(slab.Begin), static_cast<long long>(slab.End), one.Runs.size(), phiGap / dx,
+    distGap / dx);
+  return counter.Widenings;
+}
+
+} // namespace
+
+TEST(ReconstructionSlabs, UnevenCircleWithTheDefaultsIsTheOneRankReconstruction)
+{
+  expectSameAsOneRank<2>(unevenCircle(240), sltk::ReconstructionOptions{});
+}
+
+TEST(ReconstructionSlabs, SphereWithTheThesisParametersIsTheOneRankReconstruction)
+{
+  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
+  options.CellSizeFactor = 2.0;
+  options.OutsideThresholdFactor = 10.0;
+  options.Runs = 2;
+  expectSameAsOneRank<3>(sltk::sphereCloud(600), options);
+}
+
+TEST(ReconstructionSlabs, FeetReachingBeyondTheGhostRowsWidenThem)
+{
+  // A large eta spreads the feet (4.9) over more rows than the first ghost rows hold.
+  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
+  options.Runs = 3;
+  options.Schedule = { { 1.0, 0.0 }, { 2.0, 0.0 }, { 2.0, 20.0 } };
+  const int widenings = expectSameAsOneRank<2>(unevenCircle(240), options);
+  if (world()->size() > 1)
+  {
+    EXPECT_GT(widenings, 0) << "the test should make the feet reach beyond the first ghost rows";
+  }
+}
