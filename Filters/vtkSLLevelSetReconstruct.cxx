@@ -7,6 +7,7 @@
 #include "SLTKReconstructionOutput.h"
 #include "SLTKTiledSurface.h"
 
+#include "sltk/exec/CountingCommunicator.h"
 #include "sltk/recon/Reconstruction.h"
 #include "sltk/tiled/TiledReconstruction.h"
 
@@ -238,7 +239,8 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
     return 0;
   }
   sltk::ReconstructionResult<D> result;
-  status = sltk::reconstruct(plan, ctx, result, comm);
+  const sltk::CountingCommunicator counted(comm);
+  status = sltk::reconstruct(plan, ctx, result, counted);
   if (!status.isOk())
   {
     vtkErrorWithObjectMacro(self, "Reconstruction failed: " << status.message());
@@ -246,6 +248,7 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
   }
   sltk::vtkbridge::toImage(result, z, image);
   sltk::vtkbridge::runSummary(result, image);
+  sltk::vtkbridge::communicationSummary(comm.size(), counted.bytesSent(), counted.collectives(), image);
   sltk::vtkbridge::historyTable(result.History, history);
   return 1;
 }

@@ -280,6 +280,12 @@ int Reconstruct::run() const
     }
   }
   const double peakMb = MpiSession::maxOverRanks(static_cast<double>(sltk::peakResidentBytes()) / 1e6);
+  const auto rankValue = [&](const char* name)
+  {
+    vtkDataArray* a = image->GetFieldData()->GetArray(name);
+    return MpiSession::maxOverRanks(a ? a->GetTuple1(0) : 0.0);
+  };
+  const double bytesSent = rankValue("RankBytesSent"), collectives = rankValue("RankCollectives");
   // Rank 0 joins the ranks' pieces of the surface and writes the one set of outputs.
   const vtkSmartPointer<vtkPolyData> joined = gatherSurface(
     vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1)), vtkMultiProcessController::GetGlobalController());
@@ -297,6 +303,7 @@ int Reconstruct::run() const
   auto* cloudError = fd->GetArray("RunCloudError");
   auto* runSeconds = fd->GetArray("RunSeconds");
   auto* farPoints = fd->GetArray("RunFarPoints");
+  auto* ghostRows = fd->GetArray("RunGhostRows");
   auto* storedNodes = fd->GetArray("RunStoredNodes"); // --octree only
   auto* uniformNodes = fd->GetArray("RunUniformNodes");
   std::printf("cloud      %s (%lld points, h_P = %.6g)\n", path.c_str(),
@@ -331,6 +338,10 @@ int Reconstruct::run() const
       { "iterations", static_cast<long long>(its->GetTuple1(r)) }, { "energy", energy->GetTuple1(r) },
       { "err_cloud", cloudError->GetTuple1(r) }, { "far_points", farPoints->GetTuple1(r) },
       { "seconds", runSeconds->GetTuple1(r) } });
+    if (ranks > 1 && ghostRows)
+    {
+      runRecords.back()["ghost_rows"] = static_cast<long long>(ghostRows->GetTuple1(r));
+    }
     if (storedNodes && uniformNodes)
     {
       const double stored = storedNodes->GetTuple1(r), all = uniformNodes->GetTuple1(r);
@@ -374,6 +385,11 @@ int Reconstruct::run() const
   std::printf(ranks > 1 ? "total      %.2f s, peak memory %.0f MB (the largest rank's), %d ranks\n"
                         : "total      %.2f s, peak memory %.0f MB\n",
     seconds, peakMb, ranks);
+  if (ranks > 1)
+  {
+    std::printf("traffic    %.1f MB sent by the busiest rank (ghost rows), %.0f collective calls\n", bytesSent / 1e6,
+      collectives);
+  }
   SurfaceDistances distances;
   if (this->given("--reference"))
   {
@@ -434,7 +450,7 @@ int Reconstruct::run() const
       { "thinning_cell", fieldValue("ThinningCell") }, { "points_reconstructed", reconstructed }, { "h_P", hP },
       { "cdx", fieldValue("CellSizeFactor") }, { "kp", fieldValue("OutsideThresholdFactor") },
       { "automatic_choices", choices }, { "recoveries", recoveries }, { "seconds", seconds },
-      { "peak_memory_mb", peakMb }, { "ranks", ranks },
+      { "peak_memory_mb", peakMb }, { "ranks", ranks }, { "bytes_sent_max", bytesSent }, { "collectives", collectives },
       { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) }, { "surface_pieces", topology.Pieces },
       { "euler_characteristic", planar ? nlohmann::ordered_json() : nlohmann::ordered_json(topology.Euler) },
       { "runs", runRecords } };

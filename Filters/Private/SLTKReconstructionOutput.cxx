@@ -101,6 +101,8 @@ void runSummary(const ReconstructionResult<D>& result, vtkImageData* image)
   energy->SetName("RunEnergy");
   cloudError->SetName("RunCloudError");
   seconds->SetName("RunSeconds");
+  vtkNew<vtkIntArray> ghostRows;
+  ghostRows->SetName("RunGhostRows");
   for (const RunRecord<D>& run : result.Runs)
   {
     int dims[3] = { 1, 1, 1 };
@@ -114,6 +116,7 @@ void runSummary(const ReconstructionResult<D>& result, vtkImageData* image)
     cloudError->InsertNextValue(run.CloudError);
     farPoints->InsertNextValue(run.FarPoints);
     seconds->InsertNextValue(run.Seconds);
+    ghostRows->InsertNextValue(static_cast<int>(run.GhostRows));
   }
   vtkFieldData* fd = image->GetFieldData();
   // The pre-processing (CloudCleaning.h): counts as doubles (exact below 2^53).
@@ -154,6 +157,7 @@ void runSummary(const ReconstructionResult<D>& result, vtkImageData* image)
   fd->AddArray(cloudError);
   fd->AddArray(farPoints);
   fd->AddArray(seconds);
+  fd->AddArray(ghostRows);
 }
 
 void zeroLevelSet(vtkImageData* image, vtkPolyData* surface)
@@ -257,6 +261,19 @@ void historyTable(const std::vector<IterationRecord>& history, vtkTable* table)
   table->AddColumn(cloudError);
   table->AddColumn(band);
   table->AddColumn(seconds);
+}
+
+void communicationSummary(int ranks, std::int64_t bytesSent, std::int64_t collectives, vtkImageData* image)
+{
+  const std::pair<const char*, double> values[3] = { { "Ranks", static_cast<double>(ranks) },
+    { "RankBytesSent", static_cast<double>(bytesSent) }, { "RankCollectives", static_cast<double>(collectives) } };
+  for (const auto& value : values)
+  {
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(value.first);
+    array->InsertNextValue(value.second);
+    image->GetFieldData()->AddArray(array);
+  }
 }
 
 template void toImage(ReconstructionResult<2>&, double, vtkImageData*);

@@ -8,6 +8,8 @@
 
 #include "sltk/recon/Reconstruction.h"
 
+#include <cstdint>
+
 class vtkImageData;
 class vtkPointSet;
 class vtkPolyData;
@@ -32,9 +34,15 @@ void toImage(ReconstructionResult<D>& result, double z, vtkImageData* image);
 /// Recoveries (strings, AutomaticParameters.h), and one
 /// tuple per run in RunGridDimensions (3 components), RunIterations,
 /// RunEnergy (E_2), RunCloudError (Err_P), RunFarPoints (fraction of the points
-/// more than one cell of run 1 from the surface), RunSeconds.
+/// more than one cell of run 1 from the surface), RunSeconds, RunGhostRows (the
+/// slabs' ghost rows at the run's end; 0 on one rank).
 template <int D>
 void runSummary(const ReconstructionResult<D>& result, vtkImageData* image);
+
+/// The distributed run's traffic as field data of the image: Ranks, and this
+/// rank's RankBytesSent (point to point: the ghost-row exchanges) and
+/// RankCollectives (reductions and agreements) (CountingCommunicator.h).
+void communicationSummary(int ranks, std::int64_t bytesSent, std::int64_t collectives, vtkImageData* image);
 
 /// Zero level set of the image's SignedDistance: triangles (3D, flying edges)
 /// or line segments (2D).

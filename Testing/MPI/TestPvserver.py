@@ -5,7 +5,9 @@ partitioned result: two partitions, each rank's piece (1722 points = 2 x 41 x 21
 the pieces share a row), the whole extent, Ranks = 2, the serial solve's errors
 (file of MPI.DistributedHjb.Serial) and, fetched, rank 0's piece bitwise the
 serial values. A formula that is not finite on one rank's slab fails the
-update on both ranks and leaves the server answering.
+update on both ranks and leaves the server answering. A reconstruction on the
+same server is split into one block per rank whose surface pieces join into
+one region (ParaView's parallel Connectivity).
 Run by pvpython: TestPvserver.py PLUGIN MPIEXEC OUTDIR"""
 import os
 import socket
@@ -73,8 +75,22 @@ try:
     again = CWENOHamiltonJacobiBellmanSolver(**dict(TEST4, Dimensions=[21, 41, 1]))
     again.UpdatePipeline()
     assert again.GetDataInformation().GetNumberOfPoints() == 2 * 21 * 21, "the server still answers after a failure"
+    # The reconstruction on the same server: every rank reconstructs its slab from the whole cloud.
+    cloud = Sphere(Radius=1.0, ThetaResolution=30, PhiResolution=30)
+    recon = SemiLagrangianLevelSetReconstruction(Input=cloud, NumberOfRuns=2, NumberOfThreads=1)
+    recon.UpdatePipeline()
+    image = recon.GetDataInformation()
+    assert image.GetNumberOfPoints() > 0, "the reconstruction produced an image"
+    assert recon.FieldData["Ranks"].GetRange() == (2.0, 2.0), "the reconstruction was split over both server ranks"
+    mine = servermanager.Fetch(recon)  # rank 0's block
+    whole = image.GetExtent()
+    assert mine.GetExtent()[5] < whole[5], "rank 0's block %s is not the whole extent %s" % (mine.GetExtent(), whole)
+    surface_regions = Connectivity(Input=OutputPort(recon, 1))
+    surface_regions.UpdatePipeline()
+    assert surface_regions.CellData["RegionId"].GetRange() == (0.0, 0.0), "the surface pieces join into one region"
     Disconnect()
-    print("pvserver on 2 ranks: partitioned result, serial values and errors; a failure on one slab, no hang")
+    print("pvserver on 2 ranks: partitioned result, serial values and errors; a failure on one slab, no hang; "
+          "the reconstruction split into blocks whose surface is one region")
 finally:
     server.terminate()
     try:

@@ -10,6 +10,7 @@
 # step. The values are checked bitwise equal (the same answer on every count).
 #   bench/mpi/hjb-ranks.sh BUILD_DIR [N=321] [REPEAT=3] [PROBLEM=preset|formulas]
 set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
 build=$1 n=${2:-321} repeat=${3:-3} problem=${4:-preset}
 out=$(mktemp -d)
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -26,24 +27,11 @@ for r in $(seq "$repeat"); do
     [ "$r" = 1 ] && cat "$out/$ranks.$r.txt"
   done
 done
-/usr/bin/python3 - "$out" "$repeat" "$n" <<'PY'
-import glob, json, math, re, statistics, sys
+PYTHONPATH="$here${PYTHONPATH:+:$PYTHONPATH}" /usr/bin/python3 - "$out" "$repeat" "$n" <<'PY'
+import json, math, sys
+from rank_medians import print_medians
 out, repeat, n = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
-def median(ranks, what):
-    values = []
-    for r in range(1, repeat + 1):
-        if what == "solve":
-            values.append(json.load(open(f"{out}/{ranks}.{r}.json"))["seconds"])
-        elif what == "wall":
-            values.append(float(open(f"{out}/wall.{ranks}.{r}").read()))
-        else:  # the largest rank's peak RSS
-            values.append(max(int(re.search(r"Maximum resident set size \(kbytes\): (\d+)", open(f).read()).group(1))
-                              for f in glob.glob(f"{out}/time.{ranks}.{r}.*")) / 1024)
-    return statistics.median(values)
-for what, unit in (("solve", "s"), ("wall", "s"), ("rss", "MB")):
-    one, two = median(1, what), median(2, what)
-    ratio = f"speed-up {one / two:.2f}x" if what != "rss" else f"2-rank/1-rank {two / one:.2f}"
-    print(f"median {what}: 1 rank {one:.2f} {unit}, 2 ranks {two:.2f} {unit}, {ratio}")
+print_medians(out, repeat, "solve")
 s1, s2 = (json.load(open(f"{out}/{k}.1.json")) for k in (1, 2))
 print(f"L1 error {s1['l1_error']:.6g} (1 rank) {s2['l1_error']:.6g} (2 ranks), steps {s1['steps']}")
 # Ghost rows per side: G = ceil(1.25 max|f_D| dt/dx) + 3 with max|f_D| = 2.2, dt = 1.25 dx.

@@ -250,7 +250,7 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
       if (needed > slab.slab().Ghost)
       {
         Index rowShift = 0;
-        SLTK_RETURN_IF_ERROR(slab.widen(needed + 2, { &phi, &dist }, band, rowShift));
+        SLTK_RETURN_IF_ERROR(slab.widen(needed, { &phi, &dist }, band, rowShift));
         // The owned rows keep their exact d; the new ghost rows hold the owners' d.
         const SlabPlan& s = slab.slab();
         exact.shiftRows(dist, rowShift, s.Begin - s.First, s.End - s.First);
@@ -301,6 +301,7 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     }
   }
   record.Seconds = secondsSince(start);
+  record.GhostRows = slab.slab().Ghost;
   record.MeanBandSize = record.Iterations ? static_cast<Index>(bandSizes / record.Iterations) : 0;
   if (record.Iterations == 0)
   {
@@ -462,6 +463,11 @@ Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& op
     std::ostringstream log;
     log << "run " << run << ": grid " << grid.nodeCount() << " nodes, distance " << distanceSeconds
         << " s, initial data " << secondsSince(setup) - distanceSeconds << " s";
+    if (slab.distributed())
+    {
+      log << "; rank " << comm.rank() << " of " << comm.size() << " owns rows " << slab.slab().Begin << ".."
+          << slab.slab().End - 1 << " of " << slab.rows() << " (" << slab.slab().Ghost << " ghost rows)";
+    }
     ctx.logger().log(LogLevel::Info, log.str());
     bool vanished = false;
     const Status status = iterate<D, Interp>(cloud, options, run, ctx, exact, slab, phi, dist, result, vanished);
