@@ -3,7 +3,9 @@ split over the ranks and rank 0 writes one set of outputs, bitwise the
 one-rank solve (one .vti collected on rank 0, or a .pvti with one piece per
 rank); a failure on one rank's slab ends the run with one message and
 no output; `mpirun -np 2 sltk reconstruct` reconstructs slabs and gives the
-one-rank iterations, Err_P, signed distance (.pvti) and one closed surface.
+one-rank iterations, Err_P, signed distance (.pvti) and one closed surface;
+an empty cloud, a NaN and a grid beyond the memory budget end both ranks with
+one message and no output.
 Run by pvpython (VTK reads the images): TestMpiCli.py SLTK MPIEXEC OUTDIR"""
 import json
 import math
@@ -138,5 +140,16 @@ r = run(MPI + ["-n", "2", sltk] + RECON + ["-o", os.path.join(outdir, "never.vti
 check(r.returncode == 2 and "write -o as .pvti" in r.stderr, "reconstruct -o FILE.vti on 2 ranks refused with the fix")
 r = run(MPI + ["-n", "2", sltk] + RECON + ["--octree", "--json", os.path.join(outdir, "never.json")])
 check(r.returncode == 2 and "--octree is not distributed" in r.stderr, "reconstruct --octree on 2 ranks refused")
+# Bad input on 2 ranks: one clear message, a failing exit code, no output, no hang.
+empty, nan = os.path.join(outdir, "cli_empty.xyz"), os.path.join(outdir, "cli_nan.xyz")
+open(empty, "w").close()
+with open(nan, "w") as f:
+    f.write(open(cloud).read() + "0.1 nan 0.2\n")
+never = os.path.join(outdir, "cli_never.pvti")
+for what, args in (("an empty cloud", [empty]), ("a cloud with a NaN", [nan]),
+                   ("a grid beyond the memory budget", [cloud, "--memory-budget", "16", "--cdx", "1", "--runs", "5"])):
+    r = run(MPI + ["-n", "2", sltk, "reconstruct"] + args + ["--quiet", "-o", never])
+    check(r.returncode != 0 and r.stderr.count("sltk: error:") == 1 and not os.path.exists(never),
+          "%s on 2 ranks: one error, no output (%s)" % (what, r.stderr.strip()[:160]))
 
 sys.exit(1 if failures else 0)
