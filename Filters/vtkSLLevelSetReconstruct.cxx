@@ -249,7 +249,10 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
   sltk::vtkbridge::toImage(result, z, image);
   sltk::vtkbridge::runSummary(result, image);
   sltk::vtkbridge::communicationSummary(comm.size(), counted.bytesSent(), counted.collectives(), image);
-  sltk::vtkbridge::historyTable(result.History, history);
+  if (comm.rank() == 0) // every rank has it; ParaView would append one copy per rank
+  {
+    sltk::vtkbridge::historyTable(result.History, history);
+  }
   return 1;
 }
 } // namespace

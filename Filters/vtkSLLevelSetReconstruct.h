@@ -26,7 +26,9 @@
  * stores and computes its slab, and outputs its block of the image (its
  * owned rows and the next rank's first row, in the whole grid's extent), its
  * piece of the zero level set (the pieces join: they share the block
- * boundaries' points) and the whole history. The blocks carry no ghost cells.
+ * boundaries' points) and, on rank 0, the whole history. The blocks carry no
+ * ghost cells, although they are marked complete for any ghost level (so that
+ * a ghost-level request does not run the reconstruction again).
  * AdaptiveStorage is not distributed: under several ranks it is refused.
  */
 #ifndef vtkSLLevelSetReconstruct_h

@@ -165,7 +165,8 @@ CLI::Option* addInterpolatorOption(CLI::App* app, sltk::InterpolatorKind& kind, 
 
 CLI::Option* addThreadsOption(CLI::App* app, int& threads)
 {
-  return addNumber(app, "--threads", threads, "threads (default 0: all; at most 1024)")
+  return addNumber(app, "--threads", threads,
+    "threads (default 0: all; under mpirun, the cores shared by the\nranks on a node; at most 1024)")
     ->check(within(0, 1024))
     ->option_text("T");
 }

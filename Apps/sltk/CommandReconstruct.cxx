@@ -110,6 +110,7 @@ struct Reconstruct
   bool Verbose = false;
   bool Octree = false; ///< AdaptiveStorage: runs 2..R stored as tiles around the front
   bool given(const char* name) const { return this->Parser->count(name) > 0; }
+  std::string problemBeforeWork(bool pieces, vtkPolyData* reference, int& code) const;
   int run() const;
 };
 
@@ -127,18 +128,21 @@ std::vector<std::string> stringValues(vtkFieldData* fd, const char* name)
   return values;
 }
 
-int Reconstruct::run() const
+/// The problems found before any work: "" or the message, with its exit code
+/// in `code`. The display (--png) and the reference mesh are checked and read
+/// on rank 0 only, which alone uses them.
+std::string Reconstruct::problemBeforeWork(bool pieces, vtkPolyData* reference, int& code) const
 {
-  const int rank = MpiSession::rank(), ranks = MpiSession::size();
+  const int ranks = MpiSession::size();
+  code = 2;
   if (ranks > 1 && this->Octree)
   {
-    return fail("--octree is not distributed over MPI ranks yet: run it without mpirun (or -np 1), or drop "
-                "--octree (the uniform grids are split over the ranks)",
-      2);
+    return "--octree is not distributed over MPI ranks yet: run it without mpirun (or -np 1), or drop "
+           "--octree (the uniform grids are split over the ranks)";
   }
   if (this->given("--eta") && this->given("--schedule"))
   {
-    return fail("give either --eta or --schedule (a schedule sets eta of every run)", 2);
+    return "give either --eta or --schedule (a schedule sets eta of every run)";
   }
   const std::string paths = outputPathsProblem(
     { { "input cloud", this->Cloud }, { "--reference mesh", this->Reference } },
@@ -146,44 +150,60 @@ int Reconstruct::run() const
       { "--csv", this->Csv, { "csv", "txt" } }, { "--json", this->Json, { "json" } } });
   if (!paths.empty())
   {
-    return fail(paths, 2);
+    return paths;
   }
-  const bool pieces = this->given("--output") && extensionOf(this->Output) == "pvti";
   if (ranks > 1 && this->given("--output") && !pieces)
   {
-    return fail("under mpirun every rank holds only its block of the grid: write -o as .pvti (one piece per rank, "
-                "FILE.pvti and FILE/FILE_<rank>.vti)",
-      2);
+    return "under mpirun every rank holds only its block of the grid: write -o as .pvti (one piece per rank, "
+           "FILE.pvti and FILE/FILE_<rank>.vti)";
   }
   const std::string folder = pieces ? pieceFolderProblem(this->Output) : "";
   if (!folder.empty())
   {
-    return fail(folder, 2);
+    return folder;
   }
   if (this->Octree && this->given("--output"))
   {
-    return fail("--octree stores no full grid, so there is no image for -o: write --surface, --json or --csv "
-                "(the octree's .htg output is not built yet)",
-      2);
+    return "--octree stores no full grid, so there is no image for -o: write --surface, --json or --csv "
+           "(the octree's .htg output is not built yet)";
+  }
+  if (MpiSession::rank() > 0)
+  {
+    return "";
   }
   if (this->given("--png"))
   {
     const std::string problem = pngProblem(this->Png);
     if (!problem.empty())
     {
-      return fail(problem, 2);
+      return problem;
     }
   }
-  const sltk::ReconstructionOptions& o = this->Options;
-  vtkNew<vtkPolyData> reference;
   if (this->given("--reference"))
   {
     const sltk::Status read = readMesh(this->Reference, reference);
-    if (!read.isOk())
-    {
-      return fail(read.message());
-    }
+    code = 1;
+    return read.isOk() ? "" : read.message();
   }
+  return "";
+}
+
+int Reconstruct::run() const
+{
+  const int rank = MpiSession::rank(), ranks = MpiSession::size();
+  const bool pieces = this->given("--output") && extensionOf(this->Output) == "pvti";
+  vtkNew<vtkPolyData> reference;
+  int code = 0;
+  const std::string problem = this->problemBeforeWork(pieces, reference, code);
+  // Every rank stops together (a rank that stopped alone would leave the others waiting).
+  const double worst = MpiSession::maxOverRanks(problem.empty() ? 0.0 : static_cast<double>(code));
+  if (worst > 0.0)
+  {
+    return fail(
+      problem.empty() ? "another rank stopped before the reconstruction (run on one rank to see why)" : problem,
+      static_cast<int>(worst));
+  }
+  const sltk::ReconstructionOptions& o = this->Options;
 
   const auto start = std::chrono::steady_clock::now();
   const std::string& path = this->Cloud;
@@ -225,7 +245,7 @@ int Reconstruct::run() const
   filter->SetNumberOfRuns(o.Runs);
   filter->SetMaximumNumberOfIterations(o.MaxIterations);
   filter->SetInitialGuess(static_cast<int>(o.Guess));
-  filter->SetNumberOfThreads(this->Threads);
+  filter->SetNumberOfThreads(MpiSession::threadsPerRank(this->Threads));
   filter->SetFinalEta(this->Eta);
   for (const sltk::RunParameters& run : o.Schedule)
   {

@@ -5,8 +5,10 @@
 #include <vtkMPIController.h>
 #include <vtkMultiProcessController.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <thread>
 
 namespace sltkcli
 {
@@ -63,6 +65,18 @@ int MpiSession::size()
 {
   auto* global = vtkMultiProcessController::GetGlobalController();
   return global ? global->GetNumberOfProcesses() : 1;
+}
+
+int MpiSession::threadsPerRank(int requested)
+{
+  if (requested > 0 || size() < 2)
+  {
+    return requested;
+  }
+  // The ranks on this node share its cores (OpenMPI tells how many there are; else all ranks).
+  const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+  const int sharing = local ? std::max(1, std::atoi(local)) : size();
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / sharing);
 }
 
 double MpiSession::maxOverRanks(double value)

@@ -157,3 +157,24 @@ TEST(ReconstructionSlabs, AnInterruptionOnOneRankStopsEveryRankWithoutAHang)
     EXPECT_EQ(status.code(), sltk::StatusCode::Aborted) << "stop at check " << stopAt << ": " << status.message();
   }
 }
+
+TEST(ReconstructionSlabs, RanksWithDifferentCloudsAreRefusedTogether)
+{
+  auto comm = world();
+  if (comm->size() < 2)
+  {
+    GTEST_SKIP() << "needs two ranks";
+  }
+  // The last rank holds one point fewer, as a piece of a split reader would.
+  sltk::PointCloud<2> cloud = unevenCircle(240);
+  if (comm->rank() == comm->size() - 1)
+  {
+    cloud.Points.pop_back();
+  }
+  sltk::ReconstructionPlan<2> plan;
+  ASSERT_TRUE(sltk::planReconstruction(cloud, sltk::ReconstructionOptions{}, sltk::Context{}, plan).isOk());
+  sltk::ReconstructionResult<2> result;
+  const sltk::Status status = sltk::reconstruct(plan, sltk::Context{}, result, *comm);
+  EXPECT_EQ(status.code(), sltk::StatusCode::InvalidArgument) << status.message();
+  EXPECT_NE(status.message().find("different clouds"), std::string::npos) << status.message();
+}

@@ -133,8 +133,8 @@ private:
     HjbExtent e = wholeExtent(this->Whole);
     const int last = this->Whole.Dimension - 1;
     const Index rows = this->Whole.Dims[static_cast<size_t>(last)], size = this->Comm.size();
-    e[2 * last] = slabBegin(rows, q, size);
-    e[2 * last + 1] = slabBegin(rows, q + 1, size) - 1;
+    e[2 * last] = evenSlabBegin(rows, q, size);
+    e[2 * last + 1] = evenSlabBegin(rows, q + 1, size) - 1;
     return e;
   }
 

@@ -96,8 +96,9 @@ double updateNorm(
 /// The previous run's phi (ghosts filled, on `fromSlab`'s window) interpolated
 /// at the owned nodes of `slab`'s window (Q1: monotone); the ghost rows then
 /// come from their owners. Each rank's owned rows lie inside its previous
-/// window with rows to spare (both runs cut the same box at the same
-/// fractions, and the windows have at least 3 ghost rows): checked.
+/// window with rows to spare (RunSlab::plan cuts a later run's grid at the
+/// coordinates where the previous run's slabs meet, and the windows have at
+/// least 6 ghost rows): checked.
 template <int D>
 Status transfer(
   const GridField<D>& from, const RunSlab<D>& fromSlab, const RunSlab<D>& slab, const Context& ctx, GridField<D>& to)
@@ -246,6 +247,11 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     {
       // Every foot of an owned node must lie in the window, with the interpolation stencil around it.
       const double reach = slab.max(levelSetStepReach(phi, dist, band, step, ctx));
+      if (!std::isfinite(reach))
+      {
+        return Status::numericalFailure("run " + std::to_string(run) +
+          ": the SL step's feet are not finite (the energy or the distance is not): check the cloud");
+      }
       const Index needed = static_cast<Index>(std::ceil(reach)) + 3;
       if (needed > slab.slab().Ghost)
       {
@@ -344,6 +350,8 @@ Status cloudInitialDataOn(const ReconstructionPlan<D>& plan, double outsideFacto
   InitialDataOptions io;
   io.Ghost = PhiGhost;
   const double threshold = outsideFactor * plan.CloudSpacing;
+  const double sparsest = plan.Sparsity.empty() ? 1.0 : *std::max_element(plan.Sparsity.begin(), plan.Sparsity.end());
+  const double reach = sparsest * outsideFactor * plan.CloudSpacing;
   const auto phi0 = [&](const GridField<D>& u)
   {
     return slab.distributed() ? cloudInitialDataSlabs(u, threshold, slab.slab(), slab.rows(), slab.comm(), ctx, phi, io)
@@ -354,8 +362,6 @@ Status cloudInitialDataOn(const ReconstructionPlan<D>& plan, double outsideFacto
     return phi0(dist);
   }
   // The local offset K_P h_P rho(x) (LocalOffset.h): the marking and sweeping on u = d / rho.
-  const double sparsest = *std::max_element(plan.Sparsity.begin(), plan.Sparsity.end());
-  const double reach = sparsest * threshold;
   GridField<D> scaled;
   SLTK_RETURN_IF_ERROR(slab.distributed()
       ? locallyScaledDistanceSlabs(dist, *plan.Locator, plan.Sparsity, reach, slab.slab(), slab.comm(), ctx, scaled)
@@ -521,6 +527,43 @@ Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& op
   return Status::ok();
 }
 
+/// Every rank must hold the same plan, made from the whole cloud (each rank's
+/// slab boundaries and messages follow from it): its size, h_P, the runs'
+/// grids and a checksum of the points, compared over the ranks.
+template <int D>
+Status samePlanOnEveryRank(const ReconstructionPlan<D>& plan, const Communicator& comm)
+{
+  std::vector<double> print = { static_cast<double>(plan.Cloud.size()), plan.CloudSpacing,
+    static_cast<double>(plan.Grids.Runs.size()), 0.0 };
+  for (const auto& p : plan.Cloud.Points)
+  {
+    for (int a = 0; a < D; ++a)
+    {
+      print[3] += p[a];
+    }
+  }
+  std::int64_t count[2] = { static_cast<std::int64_t>(plan.Grids.Runs.size()), 0 };
+  count[1] = -count[0];
+  comm.allReduce(count, 2, ReduceOp::Max);
+  if (count[0] == -count[1])
+  {
+    for (const GridSpec<D>& g : plan.Grids.Runs)
+    {
+      for (int a = 0; a < D; ++a)
+      {
+        print.insert(print.end(), { static_cast<double>(g.Dims[a]), g.Origin[a], g.Spacing[a] });
+      }
+    }
+  }
+  std::vector<double> low = print, high = print;
+  comm.allReduce(low.data(), low.size(), ReduceOp::Min);
+  comm.allReduce(high.data(), high.size(), ReduceOp::Max);
+  return count[0] == -count[1] && low == high
+    ? Status::ok()
+    : Status::invalidArgument("the ranks hold different clouds or plans (each needs the whole cloud and the same "
+                              "options): give every rank the whole cloud, e.g. a reader that is not split into pieces");
+}
+
 } // namespace
 
 template <int D>
@@ -531,6 +574,10 @@ Status reconstruct(
   if (!plan.Locator || plan.Grids.Runs.size() != static_cast<size_t>(plan.Options.Runs))
   {
     return Status::invalidArgument("reconstruct: the plan is incomplete (planReconstruction failed or was not called)");
+  }
+  if (comm.size() > 1)
+  {
+    SLTK_RETURN_IF_ERROR(samePlanOnEveryRank(plan, comm));
   }
   const auto runWith = [&](const ReconstructionOptions& options, const std::vector<GridSpec<D>>& grids)
   {

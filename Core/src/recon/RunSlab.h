@@ -50,7 +50,7 @@ public:
     {
       this->Boundaries = { 0, rows };
     }
-    else if (previous)
+    else if (previous && rows >= ghost * this->Comm->size())
     {
       const int size = this->Comm->size();
       this->Boundaries.assign(static_cast<size_t>(size) + 1, rows);
@@ -63,15 +63,13 @@ public:
         this->Boundaries[static_cast<size_t>(r)] =
           std::clamp(row, this->Boundaries[static_cast<size_t>(r) - 1] + ghost, rows - ghost * (size - r));
       }
-      // The feet reach about twice as many rows of a grid twice as fine (the bunny: 6, 10, 21 rows
-      // in runs 1-3): start there, where the slabs allow, rather than widen in the first step.
-      Index thinnest = rows;
-      for (int r = 0; r < size; ++r)
-      {
-        thinnest =
-          std::min(thinnest, this->Boundaries[static_cast<size_t>(r) + 1] - this->Boundaries[static_cast<size_t>(r)]);
-      }
-      ghost = std::max(ghost, std::min(2 * previous->Slab.Ghost, thinnest));
+      // The feet reach about twice as many rows of a grid twice as fine (the bunny's reach: 3, 5, 15
+      // rows in runs 1-3): start there, where the slabs allow, rather than widen in the first step.
+      ghost = std::max(ghost, std::min(2 * previous->Slab.Ghost, this->thinnestSlab()));
+    }
+    else if (previous)
+    {
+      this->Boundaries = evenSlabBoundaries(rows, this->Comm->size()); // too few rows: planSlabAt refuses
     }
     else
     {
@@ -166,12 +164,7 @@ public:
   Status widen(Index ghost, std::initializer_list<GridField<D>*> fields, NodeList& owned, Index& rowShift)
   {
     // Two rows to spare where the slabs allow, so that a slowly growing reach does not widen every step.
-    Index thinnest = this->rows();
-    for (size_t r = 0; r + 1 < this->Boundaries.size(); ++r)
-    {
-      thinnest = std::min(thinnest, this->Boundaries[r + 1] - this->Boundaries[r]);
-    }
-    ghost = std::max(ghost, std::min(ghost + 2, thinnest));
+    ghost = std::max(ghost, std::min(ghost + 2, this->thinnestSlab()));
     SlabPlan wider;
     SLTK_RETURN_IF_ERROR(planSlabAt(this->Boundaries, ghost, this->Comm->rank(),
       "the SL step's feet reach " + std::to_string(ghost - 3) + " rows", wider));
@@ -199,6 +192,17 @@ public:
   }
 
 private:
+  /// The fewest rows a rank owns.
+  Index thinnestSlab() const
+  {
+    Index thinnest = this->rows();
+    for (size_t r = 0; r + 1 < this->Boundaries.size(); ++r)
+    {
+      thinnest = std::min(thinnest, this->Boundaries[r + 1] - this->Boundaries[r]);
+    }
+    return thinnest;
+  }
+
   const Communicator* Comm;
   GridSpec<D> Whole;
   SlabPlan Slab;

@@ -4,8 +4,8 @@
 /// The halo exchange of a slab decomposition (Slabs.h): every rank sends its
 /// first owned rows down and its last owned rows up, and receives its
 /// neighbours' into its ghost rows (two paired sendReceive calls, no deadlock,
-/// nothing at the domain's edges). One exchange moves Ghost rows each way per
-/// inner boundary and direction.
+/// nothing at the domain's edges). One exchange moves Ghost rows (or the
+/// `depth` nearest the owned rows) each way per inner boundary.
 
 #include "sltk/exec/Communicator.h"
 #include "sltk/grid/GridField.h"

@@ -3,7 +3,8 @@
 /// \file Slabs.h
 /// The block decomposition of SLTK's distributed uniform-grid solvers
 /// (Documentation/Distributed.md): the last axis' rows are cut into one slab
-/// per rank, rank r owning rows [rows r / P, rows (r + 1) / P), and each rank
+/// per rank, evenly (HJB: rank r owns rows [rows r / P, rows (r + 1) / P)) or
+/// at given boundaries (the reconstruction balances its band), and each rank
 /// works on a window of its owned rows plus `ghost` rows on each side (fewer
 /// at the domain's edges), at the whole grid's coordinates (GridSpec::Offset).
 
@@ -25,8 +26,8 @@ struct SlabPlan
   Index windowRows() const { return this->Stop - this->First; }
 };
 
-/// The first row rank `rank` of `size` owns (rank == size: the row after the last).
-inline Index slabBegin(Index rows, int rank, int size)
+/// The first row rank `rank` of `size` owns in the even split (rank == size: the row after the last).
+inline Index evenSlabBegin(Index rows, int rank, int size)
 {
   return rows * rank / size;
 }
@@ -57,13 +58,13 @@ inline Status planSlabAt(
   return Status::ok();
 }
 
-/// The even boundaries of `rows` rows over `size` ranks (slabBegin).
+/// The even boundaries of `rows` rows over `size` ranks (evenSlabBegin).
 inline std::vector<Index> evenSlabBoundaries(Index rows, int size)
 {
   std::vector<Index> boundaries(static_cast<size_t>(size) + 1);
   for (int r = 0; r <= size; ++r)
   {
-    boundaries[static_cast<size_t>(r)] = slabBegin(rows, r, size);
+    boundaries[static_cast<size_t>(r)] = evenSlabBegin(rows, r, size);
   }
   return boundaries;
 }
