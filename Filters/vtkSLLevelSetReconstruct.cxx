@@ -26,6 +26,7 @@
 #include "vtkTable.h"
 
 #include <algorithm>
+#include <memory>
 #include <sstream>
 
 vtkStandardNewMacro(vtkSLLevelSetReconstruct);
@@ -209,19 +210,19 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
     vtkErrorWithObjectMacro(self, << status.message());
     return 0;
   }
-  sltk::ReconstructionPlan<D> plan;
-  status = comm.agree(sltk::planReconstruction(std::move(cloud), options, ctx, plan));
-  if (!status.isOk())
-  {
-    vtkErrorWithObjectMacro(self, "Input point set rejected: " << status.message());
-    return 0;
-  }
-  if (self->GetAdaptiveStorage() && comm.size() > 1)
+  if (self->GetAdaptiveStorage() && comm.size() > 1) // known before any planning
   {
     vtkErrorWithObjectMacro(self,
       "AdaptiveStorage is not distributed over MPI ranks yet: turn it off (the uniform "
       "grids are split over the "
         << comm.size() << " ranks) or run on one rank");
+    return 0;
+  }
+  sltk::ReconstructionPlan<D> plan;
+  status = comm.agree(sltk::planReconstruction(std::move(cloud), options, ctx, plan));
+  if (!status.isOk())
+  {
+    vtkErrorWithObjectMacro(self, "Input point set rejected: " << status.message());
     return 0;
   }
   if constexpr (D == 3)

@@ -37,7 +37,6 @@
 #include "SLTKFiltersModule.h" // for export macro
 #include "vtkImageAlgorithm.h"
 
-#include <memory> // for std::unique_ptr
 #include <vector> // for RunSchedule
 
 class vtkMultiProcessController;

@@ -51,7 +51,7 @@ void carryDescent(const GridField<D, double>& distance, const std::vector<Index>
 }
 
 /// The part shared by the one-rank and slab versions: rho queried near the
-/// cloud, `order` the nodes to carry it to; then u = d / rho.
+/// cloud (elsewhere the largest factor), and `order`, the nodes to carry it to.
 template <int D>
 Status queryNearCloud(const GridField<D, double>& distance, const PointLocator<D>& locator,
   const std::vector<double>& sparsity, double reach, const Context& ctx, GridField<D, double>& rho,

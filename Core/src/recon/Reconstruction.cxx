@@ -350,8 +350,6 @@ Status cloudInitialDataOn(const ReconstructionPlan<D>& plan, double outsideFacto
   InitialDataOptions io;
   io.Ghost = PhiGhost;
   const double threshold = outsideFactor * plan.CloudSpacing;
-  const double sparsest = plan.Sparsity.empty() ? 1.0 : *std::max_element(plan.Sparsity.begin(), plan.Sparsity.end());
-  const double reach = sparsest * outsideFactor * plan.CloudSpacing;
   const auto phi0 = [&](const GridField<D>& u)
   {
     return slab.distributed() ? cloudInitialDataSlabs(u, threshold, slab.slab(), slab.rows(), slab.comm(), ctx, phi, io)
@@ -362,6 +360,8 @@ Status cloudInitialDataOn(const ReconstructionPlan<D>& plan, double outsideFacto
     return phi0(dist);
   }
   // The local offset K_P h_P rho(x) (LocalOffset.h): the marking and sweeping on u = d / rho.
+  const double sparsest = *std::max_element(plan.Sparsity.begin(), plan.Sparsity.end());
+  const double reach = sparsest * outsideFactor * plan.CloudSpacing;
   GridField<D> scaled;
   SLTK_RETURN_IF_ERROR(slab.distributed()
       ? locallyScaledDistanceSlabs(dist, *plan.Locator, plan.Sparsity, reach, slab.slab(), slab.comm(), ctx, scaled)
