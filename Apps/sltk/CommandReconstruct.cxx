@@ -324,6 +324,7 @@ int Reconstruct::run() const
   auto* runSeconds = fd->GetArray("RunSeconds");
   auto* farPoints = fd->GetArray("RunFarPoints");
   auto* ghostRows = fd->GetArray("RunGhostRows");
+  auto* farFeet = fd->GetArray("RunFarFeet");
   auto* storedNodes = fd->GetArray("RunStoredNodes"); // --octree only
   auto* uniformNodes = fd->GetArray("RunUniformNodes");
   std::printf("cloud      %s (%lld points, h_P = %.6g)\n", path.c_str(),
@@ -358,9 +359,10 @@ int Reconstruct::run() const
       { "iterations", static_cast<long long>(its->GetTuple1(r)) }, { "energy", energy->GetTuple1(r) },
       { "err_cloud", cloudError->GetTuple1(r) }, { "far_points", farPoints->GetTuple1(r) },
       { "seconds", runSeconds->GetTuple1(r) } });
-    if (ranks > 1 && ghostRows)
+    if (ranks > 1 && ghostRows && farFeet)
     {
       runRecords.back()["ghost_rows"] = static_cast<long long>(ghostRows->GetTuple1(r));
+      runRecords.back()["far_feet"] = static_cast<long long>(farFeet->GetTuple1(r));
     }
     if (storedNodes && uniformNodes)
     {

@@ -103,6 +103,8 @@ void runSummary(const ReconstructionResult<D>& result, vtkImageData* image)
   seconds->SetName("RunSeconds");
   vtkNew<vtkIntArray> ghostRows;
   ghostRows->SetName("RunGhostRows");
+  vtkNew<vtkDoubleArray> farFeet; // counts as doubles (exact below 2^53)
+  farFeet->SetName("RunFarFeet");
   for (const RunRecord<D>& run : result.Runs)
   {
     int dims[3] = { 1, 1, 1 };
@@ -117,6 +119,7 @@ void runSummary(const ReconstructionResult<D>& result, vtkImageData* image)
     farPoints->InsertNextValue(run.FarPoints);
     seconds->InsertNextValue(run.Seconds);
     ghostRows->InsertNextValue(static_cast<int>(run.GhostRows));
+    farFeet->InsertNextValue(static_cast<double>(run.FarFeet));
   }
   vtkFieldData* fd = image->GetFieldData();
   // The pre-processing (CloudCleaning.h): counts as doubles (exact below 2^53).
@@ -158,6 +161,7 @@ void runSummary(const ReconstructionResult<D>& result, vtkImageData* image)
   fd->AddArray(farPoints);
   fd->AddArray(seconds);
   fd->AddArray(ghostRows);
+  fd->AddArray(farFeet);
 }
 
 void zeroLevelSet(vtkImageData* image, vtkPolyData* surface)

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // One semi-Lagrangian step of the reconstruction (LevelSetStep.h) on the
 // slabs of MPI_COMM_WORLD (ctest: 1 and 2 ranks; also right on 3 and 4): with
-// as many ghost rows as the feet reach (LevelSetStepReach.h) plus the
-// interpolation stencil, each rank's step of its owned band nodes is bitwise
-// the one-rank step, with Q1 and CWENO-Z, and exchangeGhostRows (SlabExchange.h)
-// then gives every rank the owners' values in its ghost rows.
+// ghost rows for the interpolation stencil only, the feet beyond them
+// interpolated by their owners (FarFeetExchange.h), each rank's step of its
+// owned band nodes is bitwise the one-rank step, with Q1 and CWENO-Z, and
+// exchangeGhostRows (SlabExchange.h) then gives every rank the owners' values
+// in its ghost rows.
 #include "MpiWorld.h"
 #include "SlabWindow.h"
 #include "sltk/cloud/SyntheticClouds.h"
@@ -12,11 +13,13 @@
 #include "sltk/interp/Interpolators.h"
 #include "sltk/recon/DistanceFunction.h"
 #include "sltk/recon/EnergyFunctional.h"
-#include "sltk/recon/LevelSetStepReach.h"
+#include "sltk/recon/FarFeetExchange.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace
 {
@@ -39,7 +42,7 @@ void expectStepSameAsOneRank()
   phi.fillGhosts();
   sltk::LevelSetStepParameters par;
   par.P = 1.0;
-  par.Eta = 0.5;
+  par.Eta = 3.0; // feet spread over several rows
   par.TimeStep = dx;
   par.Widths = sltk::BandWidths::forSpacing(dx);
   sltk::NodeList band;
@@ -47,18 +50,17 @@ void expectStepSameAsOneRank()
   sltk::EnergyResult energy;
   ASSERT_TRUE(sltk::energyFunctional(phi, dist, band, sltk::Context{}, energy).isOk());
   par.Energy = energy.Energy;
-  const double reach = sltk::levelSetStepReach(phi, dist, band, par);
-  EXPECT_GT(reach, 1.0) << "the test should move feet across rows";
 
   // The one-rank step.
   sltk::GridField<2> one = phi;
   std::vector<double> scratch;
   ASSERT_TRUE((sltk::levelSetStep<Interp, 2>(sltk::Context{}, one, dist, band, par, scratch).isOk()));
 
-  // The slabs: ghost rows for the reach, the centred gradients and the stencil (3 rows, as HJB's).
+  // The slabs: ghost rows for the interpolation stencil (the fewest footInWindow() allows).
+  const sltk::Index ghost = Interp::GhostWidth + 2;
+  const std::vector<sltk::Index> boundaries = sltk::evenSlabBoundaries(N, comm->size());
   sltk::SlabPlan slab;
-  const auto ghost = static_cast<sltk::Index>(std::ceil(reach)) + 3;
-  ASSERT_TRUE(sltk::planSlab(N, ghost, comm->rank(), comm->size(), "the feet's reach", slab).isOk());
+  ASSERT_TRUE(sltk::planSlabAt(boundaries, ghost, comm->rank(), "the stencil", slab).isOk());
   sltk::GridField<2> mine = windowOf(phi, slab);
   const sltk::GridField<2> myDist = windowOf(dist, slab);
   sltk::NodeList owned; // the band nodes of my owned rows, in my window's numbering
@@ -70,17 +72,33 @@ void expectStepSameAsOneRank()
       owned.push_back(node - slab.First * N);
     }
   }
-  ASSERT_TRUE((sltk::levelSetStep<Interp, 2>(sltk::Context{}, mine, myDist, owned, par, scratch).isOk()));
+  sltk::FarFeet<2> far;
+  far.LowEdge = slab.First == 0;
+  far.HighEdge = slab.Stop == N;
+  EXPECT_TRUE((sltk::levelSetStepValues<Interp, 2>(sltk::Context{}, mine, myDist, owned, par, scratch, &far).isOk()));
+  double farFeet = 0.0;
+  EXPECT_TRUE(sltk::resolveFarFeet<Interp>(mine, far, whole, boundaries, *comm, farFeet).isOk());
+  EXPECT_TRUE(sltk::finishFarNodes(far, scratch).isOk());
+  sltk::storeLevelSetStep(sltk::Context{}, mine, owned, scratch);
+  if (comm->size() > 1)
+  {
+    EXPECT_GT(farFeet, 0.0) << "the test should move feet beyond the ghost rows";
+  }
   sltk::Index differing = 0;
   for (const sltk::Index node : owned)
   {
     differing += mine(mine.nodeIndex(node)) == one(one.nodeIndex(node + slab.First * N)) ? 0 : 1;
   }
   EXPECT_EQ(differing, 0) << "rank " << comm->rank() << " of " << comm->size() << ", " << owned.size()
-                          << " owned band nodes, ghost rows " << ghost;
+                          << " owned band nodes, ghost rows " << ghost << ", " << farFeet << " far feet";
 
-  // The halo exchange: every window row now holds the one-rank step's values.
+  // The halo exchange: every window row now holds the one-rank step's values,
+  // also when the rows go one per message (the chunks of a wide halo).
+  sltk::GridField<2> rowByRow = mine;
   sltk::exchangeGhostRows(mine, slab, *comm);
+  sltk::exchangeGhostRows(rowByRow, slab, *comm, nullptr, std::numeric_limits<sltk::Index>::max(), sizeof(double));
+  EXPECT_TRUE(std::equal(mine.storage().begin(), mine.storage().end(), rowByRow.storage().begin()))
+    << "rank " << comm->rank() << ": the exchange one row per message differs";
   sltk::Index stale = 0;
   for (sltk::Index k = 0; k < mine.spec().nodeCount(); ++k)
   {

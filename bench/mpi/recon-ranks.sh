@@ -6,7 +6,7 @@
 # peak RSS). Prints the median reconstruction time (--json seconds), the
 # median wall time of the whole mpirun, the speed-up, the largest rank's peak
 # RSS against the one-rank run's, the traffic (bytes the busiest rank sent,
-# collective calls, ghost rows per run), and checks that both give the same
+# collective calls, ghost rows and far feet per run), and checks that both give the same
 # iterations per run and the same Err_P.
 #   bench/mpi/recon-ranks.sh BUILD_DIR [CLOUD] [REPEAT=3] [extra sltk options...]
 set -euo pipefail
@@ -41,6 +41,6 @@ print(f"iterations per run {its1} (1 rank) {its2} (2 ranks): {'the same' if its1
 grids = [x["grid"] for x in s2["runs"]]
 print(f"traffic on 2 ranks: {s2['bytes_sent_max'] / 1e6:.1f} MB sent by the busiest rank over {sum(its2)} "
       f"iterations, {s2['collectives']:.0f} collective calls; ghost rows per run {[x.get('ghost_rows') for x in s2['runs']]}"
-      f" on grids {grids}")
+      f" on grids {grids}; far feet per run {[x.get('far_feet') for x in s2['runs']]}")
 PY
 rm -rf "$out"

@@ -26,29 +26,37 @@ void compact(const Context& ctx, Index n, Keep keep, Item item, NodeList& out)
   const Index grain = std::max<Index>(4096, (n + 63) / 64);
   const Index chunks = n > 0 ? (n + grain - 1) / grain : 0;
   std::vector<Index> start(static_cast<size_t>(chunks) + 1, 0);
-  ctx.parallelFor(0, n, [&](Index b, Index e) {
-    Index c = 0;
-    for (Index j = b; j < e; ++j)
+  ctx.parallelFor(
+    0, n,
+    [&](Index b, Index e)
     {
-      c += keep(j) ? 1 : 0;
-    }
-    start[static_cast<size_t>(b / grain) + 1] = c;
-  }, grain);
+      Index c = 0;
+      for (Index j = b; j < e; ++j)
+      {
+        c += keep(j) ? 1 : 0;
+      }
+      start[static_cast<size_t>(b / grain) + 1] = c;
+    },
+    grain);
   for (size_t c = 1; c < start.size(); ++c)
   {
     start[c] += start[c - 1];
   }
   out.resize(static_cast<size_t>(start.back()));
-  ctx.parallelFor(0, n, [&](Index b, Index e) {
-    Index w = start[static_cast<size_t>(b / grain)];
-    for (Index j = b; j < e; ++j)
+  ctx.parallelFor(
+    0, n,
+    [&](Index b, Index e)
     {
-      if (keep(j))
+      Index w = start[static_cast<size_t>(b / grain)];
+      for (Index j = b; j < e; ++j)
       {
-        out[static_cast<size_t>(w++)] = item(j);
+        if (keep(j))
+        {
+          out[static_cast<size_t>(w++)] = item(j);
+        }
       }
-    }
-  }, grain);
+    },
+    grain);
 }
 } // namespace
 
@@ -64,8 +72,8 @@ void collectBand(const GridField<D, double>& phi, double gamma, const Context& c
 }
 
 template <int D>
-void filterBand(const GridField<D, double>& phi, const NodeList& candidates, double gamma, const Context& ctx,
-  NodeList& band)
+void filterBand(
+  const GridField<D, double>& phi, const NodeList& candidates, double gamma, const Context& ctx, NodeList& band)
 {
   const double* p = phi.storage().data();
   NodeList out;
@@ -78,7 +86,7 @@ void filterBand(const GridField<D, double>& phi, const NodeList& candidates, dou
 
 template <int D>
 void dilateBand(const GridSpec<D>& grid, const NodeList& band, int k, std::vector<std::uint8_t>& scratch,
-  NodeList& dilated)
+  NodeList& dilated, const NodeList* more)
 {
   const Index nodes = grid.nodeCount();
   if (static_cast<Index>(scratch.size()) != nodes)
@@ -125,11 +133,11 @@ void dilateBand(const GridSpec<D>& grid, const NodeList& band, int k, std::vecto
   }
   dilated.clear();
   dilated.reserve(band.size() * 2);
-  for (const Index node : band)
+  const auto mark = [&](const Index node)
   {
     if (node < 0 || node >= nodes)
     {
-      continue; // not a node of this grid
+      return; // not a node of this grid
     }
     std::array<Index, D> i;
     Index rest = node;
@@ -154,6 +162,17 @@ void dilateBand(const GridSpec<D>& grid, const NodeList& band, int k, std::vecto
         dilated.push_back(lin);
       }
     }
+  };
+  for (const Index node : band)
+  {
+    mark(node);
+  }
+  if (more)
+  {
+    for (const Index node : *more)
+    {
+      mark(node);
+    }
   }
   std::sort(dilated.begin(), dilated.end());
   for (const Index node : dilated)
@@ -166,13 +185,15 @@ template <int D>
 void cutLevelSet(GridField<D, double>& phi, const NodeList& nodes, double gamma, const Context& ctx)
 {
   double* p = phi.storage().data();
-  ctx.parallelFor(0, static_cast<Index>(nodes.size()), [&](Index b, Index e) {
-    for (Index j = b; j < e; ++j)
+  ctx.parallelFor(0, static_cast<Index>(nodes.size()),
+    [&](Index b, Index e)
     {
-      double& v = p[storageOffset(phi, nodes[static_cast<size_t>(j)])];
-      v = cutLevel(v, gamma); // (1.49)
-    }
-  });
+      for (Index j = b; j < e; ++j)
+      {
+        double& v = p[storageOffset(phi, nodes[static_cast<size_t>(j)])];
+        v = cutLevel(v, gamma); // (1.49)
+      }
+    });
 }
 
 template <int D>
@@ -181,24 +202,28 @@ void cutLevelSet(GridField<D, double>& phi, double gamma, const Context& ctx)
   double* p = phi.storage().data();
   const Index nx = phi.spec().Dims[0];
   const Index lines = phi.spec().nodeCount() / nx;
-  ctx.parallelFor(0, lines, [&](Index b, Index e) {
-    for (Index l = b; l < e; ++l)
+  ctx.parallelFor(0, lines,
+    [&](Index b, Index e)
     {
-      double* q = p + storageOffset(phi, l * nx);
-      for (Index i = 0; i < nx; ++i)
+      for (Index l = b; l < e; ++l)
       {
-        q[i] = cutLevel(q[i], gamma); // (1.49)
+        double* q = p + storageOffset(phi, l * nx);
+        for (Index i = 0; i < nx; ++i)
+        {
+          q[i] = cutLevel(q[i], gamma); // (1.49)
+        }
       }
-    }
-  });
+    });
 }
 
 template void collectBand(const GridField<2, double>&, double, const Context&, NodeList&);
 template void collectBand(const GridField<3, double>&, double, const Context&, NodeList&);
 template void filterBand(const GridField<2, double>&, const NodeList&, double, const Context&, NodeList&);
 template void filterBand(const GridField<3, double>&, const NodeList&, double, const Context&, NodeList&);
-template void dilateBand(const GridSpec<2>&, const NodeList&, int, std::vector<std::uint8_t>&, NodeList&);
-template void dilateBand(const GridSpec<3>&, const NodeList&, int, std::vector<std::uint8_t>&, NodeList&);
+template void dilateBand(
+  const GridSpec<2>&, const NodeList&, int, std::vector<std::uint8_t>&, NodeList&, const NodeList*);
+template void dilateBand(
+  const GridSpec<3>&, const NodeList&, int, std::vector<std::uint8_t>&, NodeList&, const NodeList*);
 template void cutLevelSet(GridField<2, double>&, const NodeList&, double, const Context&);
 template void cutLevelSet(GridField<3, double>&, const NodeList&, double, const Context&);
 template void cutLevelSet(GridField<2, double>&, double, const Context&);

@@ -11,8 +11,8 @@
 #include "sltk/recon/DistanceFunction.h"
 #include "sltk/recon/EnergyFunctional.h"
 #include "sltk/recon/ExactDistanceCache.h"
+#include "sltk/recon/FarFeetExchange.h"
 #include "sltk/recon/LevelSetStep.h"
-#include "sltk/recon/LevelSetStepReach.h"
 #include "sltk/recon/LocalOffset.h"
 #include "sltk/recon/StoppingRule.h"
 #include "sltk/recon/StrayPoints.h"
@@ -35,9 +35,12 @@ double secondsSince(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// Stencils and the feet of a usual step (LevelSetStepReach.h: 1-3 cells) fit
-/// in this many ghost rows; a step that reaches farther widens them (RunSlab.h).
-constexpr Index InitialGhostRows = 6;
+/// Ghost rows of every run's slabs: the stencils of the band, the
+/// reinitialisation and the usual feet (1-3 cells) fit; a foot beyond them is
+/// interpolated by its owner (FarFeetExchange.h), whose window must hold the
+/// foot's stencil: at least Interp::GhostWidth + 2 rows (footInWindow()).
+constexpr Index SlabGhostRows = 6;
+static_assert(SlabGhostRows >= PhiGhost + 2, "the owner of a far foot holds its stencil");
 
 /// Err_P (4.35): mean |I[phi](Q)| over the cloud (phi's ghosts filled), each
 /// rank summing the points of its owned cells.
@@ -178,29 +181,25 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
   RunRecord<D> record;
   record.Grid = slab.whole();
   record.Parameters = model;
-  NodeList band, reinitBand, bandWithGhosts; // band: the owned rows' B^n
+  NodeList band, reinitBand, ghostBand; // band: the owned rows' B^n; ghostBand: the adjacent ghost rows'
   std::vector<std::uint8_t> dilationScratch;
   std::vector<double> stepScratch, previousValues;
   std::vector<double> energies;
+  FarFeet<D> farFeet;
+  slab.frameFarFeet(farFeet);
   double bandSizes = 0.0;
   double phase[4] = { 0.0, 0.0, 0.0, 0.0 }; // energy, step, reinitialisation, metrics (seconds)
   collectBand(phi, gamma, ctx, band);       // (1.50)
   slab.keepOwned(band);
   exact.reset(dist);
-  // On slabs d is made exact on the stencils of the ghost rows' band nodes
-  // too: they reach into the owned rows, as the one-rank band does.
-  const auto ensureExact = [&]
-  {
-    if (slab.distributed())
-    {
-      // The rows whose stencils (one row) and dilation (1.53) reach the owned rows.
-      slab.withGhostBand(phi, gamma, band, std::max<Index>(1, options.ReinitDilation), bandWithGhosts);
-    }
-    exact.ensure(slab.distributed() ? bandWithGhosts : band, ctx, dist);
-  };
   for (int n = 0; n < options.MaxIterations; ++n)
   {
-    ensureExact();
+    exact.ensure(band, ctx, dist);
+    // On slabs d is made exact on the stencils of the ghost rows' band nodes
+    // too: their stencils (one row) and dilation (1.53) reach the owned rows,
+    // as the one-rank band does.
+    slab.ghostBand(phi, gamma, std::max<Index>(1, options.ReinitDilation), ghostBand);
+    exact.ensure(ghostBand, ctx, dist);
     // (4.29)/(4.30) on the cells of the band: E_p for the scale factor, E_2 for (4.33).
     auto clock = std::chrono::steady_clock::now();
     EnergyResult ep;
@@ -243,36 +242,22 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     step.Energy = ep.Energy;
     phase[0] += secondsSince(clock);
     clock = std::chrono::steady_clock::now();
-    if (slab.distributed())
-    {
-      // Every foot of an owned node must lie in the window, with the interpolation stencil around it.
-      const double reach = slab.max(levelSetStepReach(phi, dist, band, step, ctx));
-      if (!std::isfinite(reach))
-      {
-        return Status::numericalFailure("run " + std::to_string(run) +
-          ": the SL step's feet are not finite (the energy or the distance is not): check the cloud");
-      }
-      const Index needed = static_cast<Index>(std::ceil(reach)) + 3;
-      if (needed > slab.slab().Ghost)
-      {
-        Index rowShift = 0;
-        SLTK_RETURN_IF_ERROR(slab.widen(needed, { &phi, &dist }, band, rowShift));
-        // The owned rows keep their exact d; the new ghost rows hold the owners' d.
-        const SlabPlan& s = slab.slab();
-        exact.shiftRows(dist, rowShift, s.Begin - s.First, s.End - s.First);
-        ensureExact();
-        ctx.logger().log(LogLevel::Info,
-          "run " + std::to_string(run) + ": the SL step's feet reach " + std::to_string(reach) +
-            " rows: ghost rows widened to " + std::to_string(slab.slab().Ghost));
-      }
-    }
     // The step writes the band, the reinitialisation its dilation (1.53): phi^n there for eps_1 (4.34).
     // On slabs the ghost rows' band nodes dilate into the owned rows too.
-    dilateBand(
-      phi.spec(), slab.distributed() ? bandWithGhosts : band, options.ReinitDilation, dilationScratch, reinitBand);
+    dilateBand(phi.spec(), band, options.ReinitDilation, dilationScratch, reinitBand, &ghostBand);
     slab.keepOwned(reinitBand);
     gatherValues(phi, reinitBand, previousValues);
-    SLTK_RETURN_IF_ERROR(slab.agree(levelSetStep<Interp, D>(ctx, phi, dist, band, step, stepScratch))); // (4.22)/(4.24)
+    // (4.22)/(4.24); on slabs the feet beyond the window are interpolated by their owners.
+    SLTK_RETURN_IF_ERROR(slab.agree(
+      levelSetStepValues<Interp, D>(ctx, phi, dist, band, step, stepScratch, slab.distributed() ? &farFeet : nullptr)));
+    if (slab.distributed())
+    {
+      double feet = 0.0;
+      SLTK_RETURN_IF_ERROR(resolveFarFeet<Interp>(phi, farFeet, slab.whole(), slab.boundaries(), slab.comm(), feet));
+      SLTK_RETURN_IF_ERROR(slab.agree(finishFarNodes(farFeet, stepScratch)));
+      record.FarFeet += static_cast<Index>(feet);
+    }
+    storeLevelSetStep(ctx, phi, band, stepScratch);
     slab.exchange(phi, ReinitEntryRows); // what the reinitialisation reads; every ghost row after the cut
     phase[1] += secondsSince(clock);
     clock = std::chrono::steady_clock::now();
@@ -448,7 +433,7 @@ Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& op
     const GridSpec<D>& grid = grids[static_cast<size_t>(run - 1)];
     ctx.interrupter().start("run " + std::to_string(run) + "/" + std::to_string(options.Runs));
     const auto setup = std::chrono::steady_clock::now();
-    SLTK_RETURN_IF_ERROR(slab.plan(grid, InitialGhostRows, cloud, run > 1 ? &previousSlab : nullptr));
+    SLTK_RETURN_IF_ERROR(slab.plan(grid, SlabGhostRows, cloud, run > 1 ? &previousSlab : nullptr));
     if (run == 1)
     {
       DistanceOptions dopt;

@@ -5,10 +5,9 @@
 /// (grid/Slabs.h, Documentation/Distributed.md): its owned rows plus ghost
 /// rows on each side, all rows and no ghost row on one rank. Fields live on
 /// the window (GridSpec::Offset places it in the run's grid); band node lists
-/// hold window node numbers. The ghost rows must cover the feet of one SL
-/// step (LevelSetStepReach.h) plus the interpolation stencil; widen() grows
-/// them when a step would reach farther (thesis 4.4.1: ghost layers as wide
-/// as the largest foot displacement, checked at run time).
+/// hold window node numbers. The ghost rows cover the stencils of the band
+/// and of the usual feet of one SL step; the feet beyond them go to their
+/// owners in one batched exchange per step (FarFeetExchange.h, thesis 4.4.1).
 
 #include "sltk/cloud/PointCloud.h"
 #include "sltk/exec/Communicator.h"
@@ -16,10 +15,10 @@
 #include "sltk/grid/SlabExchange.h"
 #include "sltk/grid/Slabs.h"
 #include "sltk/levelset/NarrowBand.h"
+#include "sltk/recon/LevelSetStep.h"
 
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 #include <limits>
 #include <vector>
 
@@ -36,9 +35,9 @@ public:
   }
 
   /// This rank's slab of `whole` with `ghost` ghost rows (none on one rank).
-  /// The band, where the work is, follows the surface that the cloud samples:
-  /// the ranks get about the same number of points each (and a little for
-  /// every row), not the same number of rows. A later run (`previous`, the
+  /// The band, where most of the work is, follows the surface that the cloud
+  /// samples, the memory follows the rows: the ranks get about the same
+  /// weight of points and rows (RowWeight). A later run (`previous`, the
   /// run before) cuts its finer grid where the previous run's slabs meet, so
   /// that each rank's owned rows lie in its previous window (transfer()).
   Status plan(const GridSpec<D>& whole, Index ghost, const PointCloud<D>& cloud, const RunSlab* previous = nullptr)
@@ -63,9 +62,6 @@ public:
         this->Boundaries[static_cast<size_t>(r)] =
           std::clamp(row, this->Boundaries[static_cast<size_t>(r) - 1] + ghost, rows - ghost * (size - r));
       }
-      // The feet reach about twice as many rows of a grid twice as fine (the bunny's reach: 3, 5, 15
-      // rows in runs 1-3): start there, where the slabs allow, rather than widen in the first step.
-      ghost = std::max(ghost, std::min(2 * previous->Slab.Ghost, this->thinnestSlab()));
     }
     else if (previous)
     {
@@ -73,7 +69,10 @@ public:
     }
     else
     {
-      std::vector<double> weights(static_cast<size_t>(rows), 0.1 * static_cast<double>(cloud.size()) / rows);
+      // Per row: its points (the band's work follows the surface) plus twice the mean (the fields, the
+      // ghost-row scans and the exchanges are per row). Bunny, 2 ranks: 0.1 times the mean made the
+      // largest rank 5% bigger for no speed, even rows 6% slower (Documentation/Distributed.md).
+      std::vector<double> weights(static_cast<size_t>(rows), RowWeight * static_cast<double>(cloud.size()) / rows);
       for (const auto& p : cloud.Points)
       {
         const double row = std::floor((p[D - 1] - whole.Origin[D - 1]) / whole.Spacing[D - 1]) - whole.Offset[D - 1];
@@ -114,11 +113,11 @@ public:
     }
   }
 
-  /// `owned` and the band nodes (|phi| < gamma) of the `depth` ghost rows next
-  /// to the owned rows on each side, ascending.
-  void withGhostBand(const GridField<D>& phi, double gamma, const NodeList& owned, Index depth, NodeList& all) const
+  /// The band nodes (|phi| < gamma) of the `depth` ghost rows next to the
+  /// owned rows on each side, ascending (none on one rank).
+  void ghostBand(const GridField<D>& phi, double gamma, Index depth, NodeList& ghosts) const
   {
-    all.clear();
+    ghosts.clear();
     const auto scan = [&](Index firstRow, Index rows)
     {
       forEachRowLine(phi, firstRow, rows,
@@ -128,7 +127,7 @@ public:
           {
             if (std::fabs(line[x]) < gamma)
             {
-              all.push_back(node + x);
+              ghosts.push_back(node + x);
             }
           }
         });
@@ -136,7 +135,6 @@ public:
     const Index below = this->Slab.Begin - this->Slab.First, above = this->Slab.Stop - this->Slab.End;
     const Index rowsBelow = std::min(below, depth), rowsAbove = std::min(above, depth);
     scan(below - rowsBelow, rowsBelow);
-    all.insert(all.end(), owned.begin(), owned.end());
     scan(this->Slab.End - this->Slab.First, rowsAbove);
   }
 
@@ -157,51 +155,18 @@ public:
 
   double max(double value) const { return this->distributed() ? this->Comm->allReduce(value, ReduceOp::Max) : value; }
 
-  /// Grows the ghost rows to at least `ghost` (the same on every rank): the fields keep
-  /// their owned rows and take the new ghost rows from the owners; `owned`
-  /// (window numbers) is renumbered, and `rowShift` tells how many rows the
-  /// owned rows moved up in the window. A collective call.
-  Status widen(Index ghost, std::initializer_list<GridField<D>*> fields, NodeList& owned, Index& rowShift)
+  /// Every rank's first row, and the row count.
+  const std::vector<Index>& boundaries() const { return this->Boundaries; }
+
+  /// The window's frame for the far feet of a step (FarFeet, LevelSetStep.h).
+  void frameFarFeet(FarFeet<D>& far) const
   {
-    // Two rows to spare where the slabs allow, so that a slowly growing reach does not widen every step.
-    ghost = std::max(ghost, std::min(ghost + 2, this->thinnestSlab()));
-    SlabPlan wider;
-    SLTK_RETURN_IF_ERROR(planSlabAt(this->Boundaries, ghost, this->Comm->rank(),
-      "the SL step's feet reach " + std::to_string(ghost - 3) + " rows", wider));
-    rowShift = this->Slab.First - wider.First;
-    const Index ownedRows = this->Slab.End - this->Slab.Begin, below = this->Slab.Begin - this->Slab.First;
-    this->Slab = wider;
-    for (GridField<D>* field : fields)
-    {
-      GridField<D> grown(this->window(), field->ghost());
-      forEachRowLine(*field, below, ownedRows,
-        [&](const double* line, Index length, Index node)
-        {
-          const auto i = grown.nodeIndex(node + rowShift * this->RowNodes);
-          std::copy(line, line + length, grown.pointer(i));
-        });
-      exchangeGhostRows(grown, wider, *this->Comm);
-      grown.fillGhosts();
-      *field = std::move(grown);
-    }
-    for (Index& node : owned)
-    {
-      node += rowShift * this->RowNodes;
-    }
-    return Status::ok();
+    far.LowEdge = this->Slab.First == 0;
+    far.HighEdge = this->Slab.Stop == this->rows();
   }
 
 private:
-  /// The fewest rows a rank owns.
-  Index thinnestSlab() const
-  {
-    Index thinnest = this->rows();
-    for (size_t r = 0; r + 1 < this->Boundaries.size(); ++r)
-    {
-      thinnest = std::min(thinnest, this->Boundaries[r + 1] - this->Boundaries[r]);
-    }
-    return thinnest;
-  }
+  static constexpr double RowWeight = 2.0; ///< plan(): a row's weight against its points, in mean points per row
 
   const Communicator* Comm;
   GridSpec<D> Whole;

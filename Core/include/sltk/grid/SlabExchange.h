@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -20,31 +21,46 @@
 namespace sltk
 {
 
+/// The largest buffer one message of an exchange holds: the rows go in
+/// chunks of at most this many bytes (at least one row), so a wide halo (the
+/// reconstruction's later runs: 24 rows of 112k nodes each way) costs no
+/// whole-halo copy on top of the window (Documentation/Distributed.md).
+constexpr std::size_t SlabExchangeChunkBytes = std::size_t(4) << 20;
+
 /// The exchange over any storage of the window's rows (local row numbers,
 /// slab.First is row 0): read(firstRow, rows, T* to) copies those rows' nodes
 /// out (x fastest), merge(firstRow, rows, const T* from) takes the
 /// neighbour's values into the ghost rows. `depth` (default: all of them)
 /// limits the exchange to the ghost rows nearest the owned rows, e.g. 1 for
-/// a stencil that reads one row beyond. A collective call.
+/// a stencil that reads one row beyond. Both neighbours cut a side's rows
+/// into the same chunks (of at most chunkBytes). A collective call.
 template <class T, class Read, class Merge>
 void exchangeSlabRows(const SlabPlan& slab, Index rowNodes, const Communicator& comm, Read&& read, Merge&& merge,
-  Index depth = std::numeric_limits<Index>::max())
+  Index depth = std::numeric_limits<Index>::max(), std::size_t chunkBytes = SlabExchangeChunkBytes)
 {
   const Index rows = slab.windowRows();
   const Index below = slab.Begin - slab.First, above = slab.Stop - slab.End; // ghost rows on each side
   const int rank = comm.rank(), size = comm.size();
   const int down = rank > 0 ? rank - 1 : -1, up = rank + 1 < size ? rank + 1 : -1;
+  const Index chunkRows = std::max<Index>(1, static_cast<Index>(chunkBytes / sizeof(T)) / std::max<Index>(1, rowNodes));
   std::vector<T> send, receive;
   for (const bool toDown : { true, false })
   {
     // My ghost rows on a side are as many as the neighbour's on mine (slab.Ghost; none at the domain's edge).
     const Index sentRows = std::min(toDown ? below : above, depth), gotRows = std::min(toDown ? above : below, depth);
-    send.resize(static_cast<size_t>(sentRows * rowNodes));
-    receive.resize(static_cast<size_t>(gotRows * rowNodes));
-    read(toDown ? below : rows - above - sentRows, sentRows, send.data());
-    comm.sendReceive(send.data(), send.size() * sizeof(T), toDown ? down : up, receive.data(),
-      receive.size() * sizeof(T), toDown ? up : down);
-    merge(toDown ? rows - above : below - gotRows, gotRows, static_cast<const T*>(receive.data()));
+    const Index firstSent = toDown ? below : rows - above - sentRows,
+                firstGot = toDown ? rows - above : below - gotRows;
+    for (Index done = 0; done < std::max(sentRows, gotRows); done += chunkRows)
+    {
+      const Index sent = std::clamp<Index>(sentRows - done, 0, chunkRows),
+                  got = std::clamp<Index>(gotRows - done, 0, chunkRows);
+      send.resize(static_cast<size_t>(sent * rowNodes));
+      receive.resize(static_cast<size_t>(got * rowNodes));
+      read(firstSent + done, sent, send.data());
+      comm.sendReceive(send.data(), send.size() * sizeof(T), sent > 0 ? (toDown ? down : up) : -1, receive.data(),
+        receive.size() * sizeof(T), got > 0 ? (toDown ? up : down) : -1);
+      merge(firstGot + done, got, static_cast<const T*>(receive.data()));
+    }
   }
 }
 
@@ -75,10 +91,10 @@ void forEachRowLine(Field& window, Index firstRow, Index rows, Line&& line)
 /// Overwrites the ghost rows of `window` (rows slab.First .. slab.Stop - 1 of
 /// the last axis), or the `depth` nearest the owned rows, with the owners'
 /// values; `changed` (optional) tells whether any of this rank's ghost values
-/// changed. A collective call.
+/// changed. A collective call; chunkBytes as exchangeSlabRows.
 template <int D, class T>
 void exchangeGhostRows(GridField<D, T>& window, const SlabPlan& slab, const Communicator& comm, bool* changed = nullptr,
-  Index depth = std::numeric_limits<Index>::max())
+  Index depth = std::numeric_limits<Index>::max(), std::size_t chunkBytes = SlabExchangeChunkBytes)
 {
   const Index rowNodes = window.spec().nodeCount() / window.spec().Dims[D - 1];
   bool differs = false;
@@ -103,7 +119,7 @@ void exchangeGhostRows(GridField<D, T>& window, const SlabPlan& slab, const Comm
           std::copy(in, in + length, line);
         });
     },
-    depth);
+    depth, chunkBytes);
   if (changed)
   {
     *changed = differs;

@@ -69,6 +69,14 @@ inline std::vector<Index> evenSlabBoundaries(Index rows, int size)
   return boundaries;
 }
 
+/// The rank owning `row` of slabs cut at `boundaries` (every rank's first
+/// row, and the row count); rows beyond the grid belong to the edge ranks.
+inline int slabOwnerOfRow(const std::vector<Index>& boundaries, Index row)
+{
+  return static_cast<int>(
+    std::upper_bound(boundaries.begin() + 1, boundaries.end() - 1, row) - (boundaries.begin() + 1));
+}
+
 /// Boundaries that give every rank about the same share of `weights` (one
 /// per row, >= 0, e.g. the work a row makes) and at least `least` rows each
 /// where the rows allow it (else the even split, which planSlabAt refuses).

@@ -30,18 +30,19 @@ void collectBand(const GridField<D, double>& phi, double gamma, const Context& c
 
 /// (1.54): the nodes of `candidates` with |phi| < gamma (order kept).
 template <int D>
-void filterBand(const GridField<D, double>& phi, const NodeList& candidates, double gamma, const Context& ctx,
-  NodeList& band);
+void filterBand(
+  const GridField<D, double>& phi, const NodeList& candidates, double gamma, const Context& ctx, NodeList& band);
 
 /// (1.52)-(1.53): the nodes within k cells (Euclidean, in index units:
 /// sum_a o_a^2 <= k^2) of a band node, the band included; k = 1 adds the
 /// 2D face neighbours. `scratch` is a per-node mask that must be all zero
 /// (or empty: it is then allocated); it is returned all zero. Indices
-/// outside the grid are ignored. Work
+/// outside the grid are ignored. `more` (optional) dilates with the band, e.g.
+/// a slab's ghost-row band (its nodes may repeat the band's). Work
 /// O(band * k^D), serial: marking is cheap next to the reinitialisation it feeds.
 template <int D>
 void dilateBand(const GridSpec<D>& grid, const NodeList& band, int k, std::vector<std::uint8_t>& scratch,
-  NodeList& dilated);
+  NodeList& dilated, const NodeList* more = nullptr);
 
 /// (1.49) on the listed nodes: phi clamped to [-gamma, gamma].
 template <int D>
@@ -55,8 +56,10 @@ extern template void collectBand(const GridField<2, double>&, double, const Cont
 extern template void collectBand(const GridField<3, double>&, double, const Context&, NodeList&);
 extern template void filterBand(const GridField<2, double>&, const NodeList&, double, const Context&, NodeList&);
 extern template void filterBand(const GridField<3, double>&, const NodeList&, double, const Context&, NodeList&);
-extern template void dilateBand(const GridSpec<2>&, const NodeList&, int, std::vector<std::uint8_t>&, NodeList&);
-extern template void dilateBand(const GridSpec<3>&, const NodeList&, int, std::vector<std::uint8_t>&, NodeList&);
+extern template void dilateBand(
+  const GridSpec<2>&, const NodeList&, int, std::vector<std::uint8_t>&, NodeList&, const NodeList*);
+extern template void dilateBand(
+  const GridSpec<3>&, const NodeList&, int, std::vector<std::uint8_t>&, NodeList&, const NodeList*);
 extern template void cutLevelSet(GridField<2, double>&, const NodeList&, double, const Context&);
 extern template void cutLevelSet(GridField<3, double>&, const NodeList&, double, const Context&);
 extern template void cutLevelSet(GridField<2, double>&, double, const Context&);

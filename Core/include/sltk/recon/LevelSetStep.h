@@ -22,7 +22,11 @@
 #include "sltk/levelset/CutOff.h"
 #include "sltk/levelset/NarrowBand.h"
 
+#include <array>
 #include <cmath>
+#include <limits>
+#include <map>
+#include <mutex>
 #include <vector>
 
 namespace sltk
@@ -48,6 +52,21 @@ struct LevelSetStepParameters
   bool DetectTunnels = false;
   double TunnelDistance = 0.0;    ///< 2 dx
   double TunnelMinDistance = 0.0; ///< 0.6 h_P
+};
+
+/// The feet of a step on a slab window (grid/Slabs.h, Documentation/Distributed.md)
+/// whose interpolation stencil leaves the window's rows: the step leaves them to
+/// the caller, which has the ranks owning those rows interpolate them in one
+/// batched exchange per step (thesis 4.4.1; recon/FarFeetExchange.h), so the
+/// ghost rows need not be as wide as the longest foot.
+template <int D>
+struct FarFeet
+{
+  bool LowEdge = true;                     ///< the window's first row is the grid's (no rank below)
+  bool HighEdge = true;                    ///< the window's last row is the grid's (no rank above)
+  std::vector<Index> Positions;            ///< band positions with a far foot, ascending
+  std::vector<double> Values;              ///< 2^(D-1) foot values per position, NaN where far
+  std::vector<std::array<double, D>> Feet; ///< the far feet, by position then foot
 };
 
 namespace detail
@@ -83,20 +102,34 @@ inline void tangentFrame(const std::array<double, 3>& g, double norm, std::array
     sigma[1] = { 0.0, 0.0, 1.0 };
     return;
   }
-  sigma[0] = { -g[2] / r, 0.0, g[0] / r };                                        // nu_1 (4.25)
-  sigma[1] = { -g[0] * g[1] / (r * norm), r / norm, -g[1] * g[2] / (r * norm) };  // nu_2 (4.25)
+  sigma[0] = { -g[2] / r, 0.0, g[0] / r };                                       // nu_1 (4.25)
+  sigma[1] = { -g[0] * g[1] / (r * norm), r / norm, -g[1] * g[2] / (r * norm) }; // nu_2 (4.25)
 }
 
 } // namespace detail
 
-/// Advances phi by one step on `band` (ascending linear node indices, no
-/// ghosts). phi must carry Interp::GhostWidth ghost layers, dist at least one;
-/// the ghosts of phi are refilled here. Returns numericalFailure when a new
-/// value is not finite. `change` receives sum over the band of
-/// |phi^{n+1} - phi^n| (numerator of eps_1 (4.34)) when non-null.
+/// Whether the interpolation stencil (Interp::GhostWidth rows each side, one
+/// more for rounding) of a foot at window row coordinate `row` lies in the
+/// window's rows, or beyond an edge the whole grid shares (clipped there as on
+/// one rank: GridSpec.h locate()).
 template <class Interp, int D>
-Status levelSetStep(const Context& ctx, GridField<D>& phi, const GridField<D>& dist, const NodeList& band,
-  const LevelSetStepParameters& par, std::vector<double>& scratch, double* change = nullptr)
+bool footInWindow(const GridSpec<D>& window, const FarFeet<D>& far, double row)
+{
+  const double cell = std::floor(row);
+  return (far.LowEdge || cell >= Interp::GhostWidth) &&
+    (far.HighEdge || cell + Interp::GhostWidth + 1 <= static_cast<double>(window.Dims[D - 1] - 1));
+}
+
+/// The new values of one step on `band` (ascending linear node indices, no
+/// ghosts) into `values` (band order), phi unchanged. phi must carry
+/// Interp::GhostWidth ghost layers, dist at least one; the ghosts of phi are
+/// refilled here. With `far` (a slab window), the feet whose stencil leaves
+/// the window are listed there instead of interpolated and their nodes'
+/// values are left for finishFarNodes(). Returns numericalFailure when a new
+/// value is not finite.
+template <class Interp, int D>
+Status levelSetStepValues(const Context& ctx, GridField<D>& phi, const GridField<D>& dist, const NodeList& band,
+  const LevelSetStepParameters& par, std::vector<double>& values, FarFeet<D>* far = nullptr)
 {
   static_assert(Interp::Dim == D, "interpolator dimension mismatch");
   if (phi.ghost() < Interp::GhostWidth || dist.ghost() < 1)
@@ -110,106 +143,215 @@ Status levelSetStep(const Context& ctx, GridField<D>& phi, const GridField<D>& d
   phi.fillGhosts();
   const GridSpec<D>& spec = phi.spec();
   const Index count = static_cast<Index>(band.size());
-  scratch.resize(band.size());
+  values.resize(band.size());
   constexpr int Points = 1 << (D - 1); // 2 in 2D (4.22), 4 in 3D (4.24)
   const double singular = par.SingularD * std::pow(par.TimeStep, par.SingularAlpha);
+  // Far feet of each chunk, joined in chunk order after the loop (the same lists for any thread count).
+  struct ChunkFeet
+  {
+    std::vector<Index> Positions;
+    std::vector<double> Values;
+    std::vector<std::array<double, D>> Feet;
+  };
+  std::map<Index, ChunkFeet> farByChunk;
+  std::mutex farMutex;
+  const double windowOrigin = spec.Origin[D - 1] + static_cast<double>(spec.Offset[D - 1]) * spec.Spacing[D - 1];
 
   const Interp prototype(phi);
-  const double bad = ctx.parallelSum(0, count, [&](Index b, Index e) {
-    // CWENO: the polynomial of a cell serves all the feet that fall in it (CellCache.h);
-    // Q1/WENO3 prepare cheaply, one cell is enough. Results do not depend on the size.
-    CellCache<Interp, detail::IsCwenoInterpolator<Interp>::value ? 1024 : 1> interpolateAt(prototype, phi);
-    double failures = 0.0;
-    for (Index k = b; k < e; ++k)
+  const double bad = ctx.parallelSum(0, count,
+    [&](Index b, Index e)
     {
-      const auto i = phi.nodeIndex(band[static_cast<size_t>(k)]);
-      const double* pp = phi.pointer(i);
-      const double* pd = dist.pointer(i);
-      const auto gphi = detail::centredGradient(phi, pp);
-      double norm2 = 0.0;
-      for (int a = 0; a < D; ++a)
+      // CWENO: the polynomial of a cell serves all the feet that fall in it (CellCache.h);
+      // Q1/WENO3 prepare cheaply, one cell is enough. Results do not depend on the size.
+      CellCache<Interp, detail::IsCwenoInterpolator<Interp>::value ? 1024 : 1> interpolateAt(prototype, phi);
+      ChunkFeet chunkFar;
+      double failures = 0.0;
+      for (Index k = b; k < e; ++k)
       {
-        norm2 += gphi[a] * gphi[a];
-      }
-      const double norm = std::sqrt(norm2);
-      double value = 0.0;
-      if (norm < singular)
-      {
-        // (4.26): mean of the first neighbours (interpolation at nodes returns the node values).
+        const auto i = phi.nodeIndex(band[static_cast<size_t>(k)]);
+        const double* pp = phi.pointer(i);
+        const double* pd = dist.pointer(i);
+        const auto gphi = detail::centredGradient(phi, pp);
+        double norm2 = 0.0;
         for (int a = 0; a < D; ++a)
         {
-          const Index s = phi.strides()[a];
-          value += pp[s] + pp[-s];
+          norm2 += gphi[a] * gphi[a];
         }
-        value /= 2.0 * D;
-      }
-      else
-      {
-        const double d = *pd;
-        // scale factor with cut-off (4.32)
-        const double scale = cutOff(*pp, par.Widths) * (par.P == 1.0 ? 1.0 : std::pow(d / par.Energy, par.P - 1.0));
-        auto gd = detail::centredGradient(dist, pd);
-        if (par.DetectTunnels && d < par.TunnelDistance && d > par.TunnelMinDistance)
+        const double norm = std::sqrt(norm2);
+        double value = 0.0;
+        if (norm < singular)
         {
-          double gd2 = 0.0;
+          // (4.26): mean of the first neighbours (interpolation at nodes returns the node values).
           for (int a = 0; a < D; ++a)
           {
-            gd2 += gd[a] * gd[a];
+            const Index s = phi.strides()[a];
+            value += pp[s] + pp[-s];
           }
-          if (gd2 < 0.25) // |grad d| < 0.5 (4.5.6)
-          {
-            gd = gphi;
-          }
+          value /= 2.0 * D;
         }
-        std::array<std::array<double, D>, D - 1> sigma;
-        detail::tangentFrame(gphi, norm, sigma);
-        const double spread = std::sqrt(2.0 * scale * par.Eta * d * par.TimeStep / par.P);
-        double x0[D];
-        for (int a = 0; a < D; ++a)
+        else
         {
-          x0[a] = spec.coordinate(a, i[a]) + scale * par.TimeStep * gd[a]; // foot of the advection
-        }
-        for (int j = 0; j < Points; ++j)
-        {
-          double x[D];
-          for (int a = 0; a < D; ++a)
+          const double d = *pd;
+          // scale factor with cut-off (4.32)
+          const double scale = cutOff(*pp, par.Widths) * (par.P == 1.0 ? 1.0 : std::pow(d / par.Energy, par.P - 1.0));
+          auto gd = detail::centredGradient(dist, pd);
+          if (par.DetectTunnels && d < par.TunnelDistance && d > par.TunnelMinDistance)
           {
-            x[a] = x0[a];
-            for (int m = 0; m < D - 1; ++m)
+            double gd2 = 0.0;
+            for (int a = 0; a < D; ++a)
             {
-              const double xi = ((j >> m) & 1) ? 1.0 : -1.0; // xi_j in {+-1}^(d-1)
-              x[a] += spread * sigma[m][a] * xi;
+              gd2 += gd[a] * gd[a];
+            }
+            if (gd2 < 0.25) // |grad d| < 0.5 (4.5.6)
+            {
+              gd = gphi;
             }
           }
-          value += interpolateAt(x);
+          std::array<std::array<double, D>, D - 1> sigma;
+          detail::tangentFrame(gphi, norm, sigma);
+          const double spread = std::sqrt(2.0 * scale * par.Eta * d * par.TimeStep / par.P);
+          double x0[D];
+          for (int a = 0; a < D; ++a)
+          {
+            x0[a] = spec.coordinate(a, i[a]) + scale * par.TimeStep * gd[a]; // foot of the advection
+          }
+          std::array<double, Points> feet;
+          bool farNode = false;
+          for (int j = 0; j < Points; ++j)
+          {
+            std::array<double, D> x;
+            for (int a = 0; a < D; ++a)
+            {
+              x[a] = x0[a];
+              for (int m = 0; m < D - 1; ++m)
+              {
+                const double xi = ((j >> m) & 1) ? 1.0 : -1.0; // xi_j in {+-1}^(d-1)
+                x[a] += spread * sigma[m][a] * xi;
+              }
+            }
+            bool finite = true;
+            for (int a = 0; a < D; ++a)
+            {
+              finite = finite && std::isfinite(x[a]);
+            }
+            if (!finite) // a non-finite energy or distance: no cell to interpolate in
+            {
+              feet[j] = std::numeric_limits<double>::quiet_NaN();
+              continue;
+            }
+            if (far && !footInWindow<Interp>(spec, *far, (x[D - 1] - windowOrigin) / spec.Spacing[D - 1]))
+            {
+              feet[j] = std::numeric_limits<double>::quiet_NaN();
+              chunkFar.Feet.push_back(x);
+              farNode = true;
+              continue;
+            }
+            feet[j] = interpolateAt(x.data());
+          }
+          if (farNode)
+          {
+            chunkFar.Positions.push_back(k);
+            chunkFar.Values.insert(chunkFar.Values.end(), feet.begin(), feet.end());
+            values[static_cast<size_t>(k)] = 0.0; // finishFarNodes()
+            continue;
+          }
+          for (int j = 0; j < Points; ++j)
+          {
+            value += feet[j];
+          }
+          value /= Points;
         }
-        value /= Points;
+        failures += std::isfinite(value) ? 0.0 : 1.0;
+        values[static_cast<size_t>(k)] = value;
       }
-      failures += std::isfinite(value) ? 0.0 : 1.0;
-      scratch[static_cast<size_t>(k)] = value;
-    }
-    return failures;
-  });
+      if (!chunkFar.Positions.empty())
+      {
+        const std::lock_guard<std::mutex> lock(farMutex);
+        farByChunk.emplace(b, std::move(chunkFar));
+      }
+      return failures;
+    });
   if (bad > 0.0)
   {
     return Status::numericalFailure("the level-set step produced " + std::to_string(static_cast<long long>(bad)) +
       " non-finite values: check the distance field and the energy");
   }
-  // Store phase: the band's new values replace phi^n (reads above are complete).
-  const double moved = ctx.parallelSum(0, count, [&](Index b, Index e) {
-    double sum = 0.0;
-    for (Index k = b; k < e; ++k)
+  if (far)
+  {
+    far->Positions.clear();
+    far->Values.clear();
+    far->Feet.clear();
+    for (auto& [first, chunk] : farByChunk)
     {
-      double& target = phi(phi.nodeIndex(band[static_cast<size_t>(k)]));
-      sum += std::fabs(scratch[static_cast<size_t>(k)] - target);
-      target = scratch[static_cast<size_t>(k)];
+      far->Positions.insert(far->Positions.end(), chunk.Positions.begin(), chunk.Positions.end());
+      far->Values.insert(far->Values.end(), chunk.Values.begin(), chunk.Values.end());
+      far->Feet.insert(far->Feet.end(), chunk.Feet.begin(), chunk.Feet.end());
     }
-    return sum;
-  });
+  }
+  return Status::ok();
+}
+
+/// After the far feet's values were filled in (far.Values, no NaN left where
+/// a foot was far): the new values of their nodes, summed over the feet in the
+/// order the one-rank step sums them.
+template <int D>
+Status finishFarNodes(const FarFeet<D>& far, std::vector<double>& values)
+{
+  constexpr int Points = 1 << (D - 1);
+  Index bad = 0;
+  for (size_t n = 0; n < far.Positions.size(); ++n)
+  {
+    double value = 0.0;
+    for (int j = 0; j < Points; ++j)
+    {
+      value += far.Values[n * Points + static_cast<size_t>(j)];
+    }
+    value /= Points;
+    bad += std::isfinite(value) ? 0 : 1;
+    values[static_cast<size_t>(far.Positions[n])] = value;
+  }
+  if (bad > 0)
+  {
+    return Status::numericalFailure("the level-set step produced " + std::to_string(static_cast<long long>(bad)) +
+      " non-finite values at feet another rank interpolated: check the distance field and the energy");
+  }
+  return Status::ok();
+}
+
+/// Stores the new values of a step (levelSetStepValues) on the band; `change`
+/// receives sum over the band of |phi^{n+1} - phi^n| (numerator of eps_1
+/// (4.34)) when non-null.
+template <int D>
+void storeLevelSetStep(const Context& ctx, GridField<D>& phi, const NodeList& band, const std::vector<double>& values,
+  double* change = nullptr)
+{
+  const double moved = ctx.parallelSum(0, static_cast<Index>(band.size()),
+    [&](Index b, Index e)
+    {
+      double sum = 0.0;
+      for (Index k = b; k < e; ++k)
+      {
+        double& target = phi(phi.nodeIndex(band[static_cast<size_t>(k)]));
+        sum += std::fabs(values[static_cast<size_t>(k)] - target);
+        target = values[static_cast<size_t>(k)];
+      }
+      return sum;
+    });
   if (change)
   {
     *change = moved;
   }
+}
+
+/// Advances phi by one step on `band` (levelSetStepValues, then the store: the
+/// reads of phi^n are complete before any band value changes, so no
+/// full-grid copy is made). `change` as storeLevelSetStep.
+template <class Interp, int D>
+Status levelSetStep(const Context& ctx, GridField<D>& phi, const GridField<D>& dist, const NodeList& band,
+  const LevelSetStepParameters& par, std::vector<double>& scratch, double* change = nullptr)
+{
+  SLTK_RETURN_IF_ERROR((levelSetStepValues<Interp, D>(ctx, phi, dist, band, par, scratch)));
+  storeLevelSetStep(ctx, phi, band, scratch, change);
   return Status::ok();
 }
 

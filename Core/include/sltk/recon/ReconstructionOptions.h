@@ -145,7 +145,8 @@ struct RunRecord
     0.0; ///< fraction of the points more than one cell of run 1 (C_dx h_P, at least h_P) from the surface
   double Seconds = 0.0;
   Index MeanBandSize = 0;
-  Index GhostRows = 0; ///< on several ranks: each slab's ghost rows at the run's end (RunSlab.h); 0 on one rank
+  Index GhostRows = 0; ///< on several ranks: each slab's ghost rows (RunSlab.h); 0 on one rank
+  Index FarFeet = 0;   ///< on several ranks: feet of the run's steps interpolated by another rank (all ranks')
 };
 
 } // namespace sltk
