@@ -35,24 +35,6 @@ public:
   /// Forgets what was computed (a new grid or a new field); dist needs one ghost layer.
   void reset(const GridField<D>& dist) { this->Exact.assign(dist.storage().size(), 0); }
 
-  /// After `dist` was re-allocated with its window moved `rowShift` rows up
-  /// along the last axis (RunSlab::widen, same row size): keeps what is known
-  /// of window rows [firstRow, endRow) (new numbering) and forgets the rest.
-  void shiftRows(const GridField<D>& dist, Index rowShift, Index firstRow, Index endRow)
-  {
-    const Index stride = dist.strides()[D - 1], g = dist.ghost();
-    std::vector<std::uint8_t> moved(dist.storage().size(), 0);
-    for (Index t = (firstRow + g) * stride; t < (endRow + g) * stride; ++t)
-    {
-      const Index s = t - rowShift * stride;
-      if (s >= 0 && s < static_cast<Index>(this->Exact.size()))
-      {
-        moved[static_cast<size_t>(t)] = this->Exact[static_cast<size_t>(s)];
-      }
-    }
-    this->Exact = std::move(moved);
-  }
-
   /// Makes d exact on the band's stencils; returns how many nodes were computed.
   Index ensure(const NodeList& band, const Context& ctx, GridField<D>& dist);
 
