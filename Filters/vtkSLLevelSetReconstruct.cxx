@@ -8,6 +8,7 @@
 #include "SLTKTiledSurface.h"
 
 #include "sltk/exec/CountingCommunicator.h"
+#include "sltk/exec/Memory.h"
 #include "sltk/recon/Reconstruction.h"
 #include "sltk/tiled/TiledReconstruction.h"
 
@@ -218,6 +219,8 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
         << comm.size() << " ranks) or run on one rank");
     return 0;
   }
+  options.Ranks = comm.size(); // the memory check sizes this machine's ranks' windows
+  options.RanksHere = sltk::ranksSharingThisMachine(comm.size());
   sltk::ReconstructionPlan<D> plan;
   status = comm.agree(sltk::planReconstruction(std::move(cloud), options, ctx, plan));
   if (!status.isOk())

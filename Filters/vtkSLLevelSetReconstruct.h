@@ -170,7 +170,9 @@ public:
 
   ///@{
   /// Memory budget of the automatic CellSizeFactor in MB; 0 (default): 1024 MB.
-  /// With an explicit CellSizeFactor, 0 means the memory available.
+  /// With an explicit CellSizeFactor, 0 means the memory available. Under
+  /// several ranks the check sizes the windows of the ranks on each machine
+  /// (sltk/recon/SlabPolicy.h).
   vtkSetMacro(MemoryBudget, int);
   vtkGetMacro(MemoryBudget, int);
   ///@}

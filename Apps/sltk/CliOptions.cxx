@@ -197,7 +197,7 @@ void addPlanOptions(CLI::App* app, sltk::ReconstructionOptions& options)
     ->add_option_function<double>(
       "--memory-budget", [&options](double mb) { options.MemoryBudget = static_cast<std::uint64_t>(mb * 1048576.0); },
       "MB for the automatic C_dx (default 1024); with --cdx, grids beyond it\nare refused (default: the memory "
-      "available)")
+      "available; under mpirun, for the windows\nof the ranks on each machine)")
     ->transform(numberText(false))
     ->check(within(16, 1e8))
     ->option_text("MB");

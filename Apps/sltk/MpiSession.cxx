@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "MpiSession.h"
 
+#include "sltk/exec/Memory.h"
+
 #include <vtkCommunicator.h>
 #include <vtkMPIController.h>
 #include <vtkMultiProcessController.h>
@@ -73,10 +75,8 @@ int MpiSession::threadsPerRank(int requested)
   {
     return requested;
   }
-  // The ranks on this node share its cores (OpenMPI tells how many there are; else all ranks).
-  const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
-  const int sharing = local ? std::max(1, std::atoi(local)) : size();
-  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / sharing);
+  // The ranks on this node share its cores.
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / sltk::ranksSharingThisMachine(size()));
 }
 
 double MpiSession::maxOverRanks(double value)

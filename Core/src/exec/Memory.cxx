@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/exec/Memory.h"
 
+#include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 
@@ -36,6 +38,23 @@ std::uint64_t availableMemoryBytes()
 std::uint64_t peakResidentBytes()
 {
   return procField("/proc/self/status", "VmHWM");
+}
+
+int ranksSharingThisMachine(int ranks)
+{
+  ranks = std::max(1, ranks);
+  for (const char* name : { "OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS" })
+  {
+    if (const char* local = std::getenv(name))
+    {
+      const int count = std::atoi(local);
+      if (count > 0)
+      {
+        return std::min(count, ranks);
+      }
+    }
+  }
+  return ranks;
 }
 
 } // namespace sltk

@@ -14,6 +14,7 @@
 #include "sltk/recon/FarFeetExchange.h"
 #include "sltk/recon/LevelSetStep.h"
 #include "sltk/recon/LocalOffset.h"
+#include "sltk/recon/SlabPolicy.h"
 #include "sltk/recon/StoppingRule.h"
 #include "sltk/recon/StrayPoints.h"
 
@@ -35,11 +36,7 @@ double secondsSince(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// Ghost rows of every run's slabs: the stencils of the band, the
-/// reinitialisation and the usual feet (1-3 cells) fit; a foot beyond them is
-/// interpolated by its owner (FarFeetExchange.h), whose window must hold the
-/// foot's stencil: at least Interp::GhostWidth + 2 rows (footInWindow()).
-constexpr Index SlabGhostRows = 6;
+// The owner of a far foot must hold its stencil: Interp::GhostWidth + 2 rows (footInWindow()).
 static_assert(SlabGhostRows >= PhiGhost + 2, "the owner of a far foot holds its stencil");
 
 /// Err_P (4.35): mean |I[phi](Q)| over the cloud (phi's ghosts filled), each
@@ -433,7 +430,7 @@ Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& op
     const GridSpec<D>& grid = grids[static_cast<size_t>(run - 1)];
     ctx.interrupter().start("run " + std::to_string(run) + "/" + std::to_string(options.Runs));
     const auto setup = std::chrono::steady_clock::now();
-    SLTK_RETURN_IF_ERROR(slab.plan(grid, SlabGhostRows, cloud, run > 1 ? &previousSlab : nullptr));
+    SLTK_RETURN_IF_ERROR(slab.plan(grid, cloud, run > 1 ? &previousSlab : nullptr));
     if (run == 1)
     {
       DistanceOptions dopt;
@@ -579,7 +576,7 @@ Status reconstruct(
   GridPlan<D> finerGrids;
   if (status.isOk() && plan.AutomaticCellSize && finer.Runs >= 1 && !result.Runs.empty() &&
     result.Runs.back().FarPoints > FarPointWarning &&
-    planRunGrids(plan, finer.Runs, finer.CellSizeFactor, finerGrids).isOk())
+    comm.agree(planRunGrids(plan, finer.Runs, finer.CellSizeFactor, finerGrids)).isOk()) // machines differ
   {
     // Run 1 lost features thinner than its cells: start at half the cell size with
     // one run fewer, which ends on the same finest grid (the same memory).

@@ -5,13 +5,17 @@
 #include "sltk/cloud/CloudThickness.h"
 #include "sltk/cloud/CloudThinning.h"
 #include "sltk/cloud/LocalSpacing.h"
+#include "sltk/exec/Memory.h"
 #include "sltk/recon/AutomaticParameters.h"
 #include "sltk/recon/CloudInitialData.h"
 #include "sltk/recon/CloudPreparation.h"
+#include "sltk/recon/SlabPolicy.h"
 #include "sltk/recon/StrayPoints.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <sstream>
 
 namespace sltk
@@ -113,7 +117,8 @@ Status validateReconstructionOptions(const ReconstructionOptions& options)
   const auto automaticOr = [](double v, double low, double high) { return v == 0.0 || (v >= low && v <= high); };
   const double* cdx = CellSizeFactorRange;
   const double* kp = OutsideThresholdFactorRange;
-  if (!automaticOr(options.CellSizeFactor, cdx[0], cdx[1]) || !automaticOr(options.OutsideThresholdFactor, kp[0], kp[1]))
+  if (!automaticOr(options.CellSizeFactor, cdx[0], cdx[1]) ||
+    !automaticOr(options.OutsideThresholdFactor, kp[0], kp[1]))
   {
     std::ostringstream m;
     m << "C_dx = " << options.CellSizeFactor << ", K_P = " << options.OutsideThresholdFactor << ": C_dx must be 0 "
@@ -286,6 +291,45 @@ Status planReconstruction(
   return refuseFlatCloud(plan, ctx);
 }
 
+namespace
+{
+/// The memory check of grids split over plan.Options.Ranks ranks: the largest
+/// window of every run (SlabPolicy.h, the boundaries RunSlab.h will cut) times
+/// the ranks on this machine, against the budget (given, or the memory
+/// available), naming the C_dx that would fit.
+template <int D>
+Status checkSlabMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor, GridPlan<D>& grids)
+{
+  const int ranks = plan.Options.Ranks, here = std::max(1, plan.Options.RanksHere);
+  double window = 0.0, whole = 0.0;
+  std::vector<Index> boundaries;
+  for (size_t r = 0; r < grids.Runs.size(); ++r)
+  {
+    const std::vector<Index> previous = std::move(boundaries);
+    boundaries = slabBoundaries(
+      grids.Runs[r], ranks, plan.Cloud, r > 0 ? &grids.Runs[r - 1] : nullptr, r > 0 ? &previous : nullptr);
+    window = std::max(window, largestSlabWindowNodes(grids.Runs[r], boundaries));
+    whole = std::max(whole, static_cast<double>(grids.Runs[r].nodeCount()));
+  }
+  const double budget = plan.Options.MemoryBudget ? static_cast<double>(plan.Options.MemoryBudget)
+                                                  : static_cast<double>(availableMemoryBytes());
+  const double need = window * here * ReconstructionBytesPerNode;
+  if (budget > 0.0 && need > budget)
+  {
+    // The node count scales as C_dx^-D: the factor that fits with 10% headroom.
+    const double fit = cellSizeFactor * std::pow(need / (0.9 * budget), 1.0 / D);
+    std::ostringstream m;
+    m << "the largest grid (of " << grids.Runs.size() << " runs, " << whole << " nodes) split over " << ranks
+      << " ranks leaves the " << here << " rank(s) on this machine windows of up to " << window << " nodes each, about "
+      << need / 1e9 << " GB together, more than the " << budget / 1e9 << " GB available: use C_dx >= " << fit
+      << ", fewer runs, or the ranks on more machines";
+    grids.Runs.clear();
+    return Status::outOfMemory(m.str());
+  }
+  return Status::ok();
+}
+} // namespace
+
 template <int D>
 Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor, GridPlan<D>& grids)
 {
@@ -298,7 +342,14 @@ Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSize
   // Room for run 1's initial surface, plus the band gamma and two cells.
   const double dx1 = cellSizeFactor * plan.CloudSpacing; // (4.36)
   po.FirstRunPadding = static_cast<int>(std::ceil(plan.FirstRunReach / dx1 + plan.Options.GammaFactor + 2.0));
-  return planGrids(boundingBox(plan.Cloud), plan.CloudSpacing, po, grids);
+  if (plan.Options.Ranks <= 1)
+  {
+    return planGrids(boundingBox(plan.Cloud), plan.CloudSpacing, po, grids);
+  }
+  // Split over ranks: the windows of the ranks on this machine must fit, not the whole grid.
+  po.MemoryBudget = std::numeric_limits<std::uint64_t>::max();
+  SLTK_RETURN_IF_ERROR(planGrids(boundingBox(plan.Cloud), plan.CloudSpacing, po, grids));
+  return checkSlabMemory(plan, cellSizeFactor, grids);
 }
 
 template Status validateReconstructionOptions<2>(const ReconstructionOptions&);

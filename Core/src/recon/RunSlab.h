@@ -16,6 +16,7 @@
 #include "sltk/grid/Slabs.h"
 #include "sltk/levelset/NarrowBand.h"
 #include "sltk/recon/LevelSetStep.h"
+#include "sltk/recon/SlabPolicy.h"
 
 #include <algorithm>
 #include <cmath>
@@ -34,53 +35,18 @@ public:
   {
   }
 
-  /// This rank's slab of `whole` with `ghost` ghost rows (none on one rank).
-  /// The band, where most of the work is, follows the surface that the cloud
-  /// samples, the memory follows the rows: the ranks get about the same
-  /// weight of points and rows (RowWeight). A later run (`previous`, the
-  /// run before) cuts its finer grid where the previous run's slabs meet, so
-  /// that each rank's owned rows lie in its previous window (transfer()).
-  Status plan(const GridSpec<D>& whole, Index ghost, const PointCloud<D>& cloud, const RunSlab* previous = nullptr)
+  /// This rank's slab of `whole` with SlabGhostRows ghost rows (none on one
+  /// rank), cut by slabBoundaries (SlabPolicy.h): run 1 by the cloud's points
+  /// and rows, a later run (`previous`, the run before) where the previous
+  /// run's slabs meet, so that each rank's owned rows lie in its previous
+  /// window (transfer()).
+  Status plan(const GridSpec<D>& whole, const PointCloud<D>& cloud, const RunSlab* previous = nullptr)
   {
     this->Whole = whole;
     this->RowNodes = whole.nodeCount() / whole.Dims[D - 1];
-    const Index rows = whole.Dims[D - 1];
-    if (!this->distributed())
-    {
-      this->Boundaries = { 0, rows };
-    }
-    else if (previous && rows >= ghost * this->Comm->size())
-    {
-      const int size = this->Comm->size();
-      this->Boundaries.assign(static_cast<size_t>(size) + 1, rows);
-      this->Boundaries[0] = 0;
-      for (int r = 1; r < size; ++r)
-      {
-        const double z = previous->Whole.coordinate(D - 1, previous->Boundaries[static_cast<size_t>(r)]);
-        const Index row =
-          static_cast<Index>(std::lround((z - whole.Origin[D - 1]) / whole.Spacing[D - 1])) - whole.Offset[D - 1];
-        this->Boundaries[static_cast<size_t>(r)] =
-          std::clamp(row, this->Boundaries[static_cast<size_t>(r) - 1] + ghost, rows - ghost * (size - r));
-      }
-    }
-    else if (previous)
-    {
-      this->Boundaries = evenSlabBoundaries(rows, this->Comm->size()); // too few rows: planSlabAt refuses
-    }
-    else
-    {
-      // Per row: its points (the band's work follows the surface) plus twice the mean (the fields, the
-      // ghost-row scans and the exchanges are per row). Bunny, 2 ranks: 0.1 times the mean made the
-      // largest rank 5% bigger for no speed, even rows 6% slower (Documentation/Distributed.md).
-      std::vector<double> weights(static_cast<size_t>(rows), RowWeight * static_cast<double>(cloud.size()) / rows);
-      for (const auto& p : cloud.Points)
-      {
-        const double row = std::floor((p[D - 1] - whole.Origin[D - 1]) / whole.Spacing[D - 1]) - whole.Offset[D - 1];
-        weights[static_cast<size_t>(std::clamp(row, 0.0, static_cast<double>(rows - 1)))] += 1.0;
-      }
-      this->Boundaries = balancedSlabBoundaries(weights, this->Comm->size(), ghost);
-    }
-    return planSlabAt(this->Boundaries, this->distributed() ? ghost : 0, this->Comm->rank(),
+    this->Boundaries = slabBoundaries(whole, this->Comm->size(), cloud, previous ? &previous->Whole : nullptr,
+      previous ? &previous->Boundaries : nullptr);
+    return planSlabAt(this->Boundaries, this->distributed() ? SlabGhostRows : 0, this->Comm->rank(),
       "the SL step's feet and the interpolation stencil", this->Slab);
   }
 
@@ -166,8 +132,6 @@ public:
   }
 
 private:
-  static constexpr double RowWeight = 2.0; ///< plan(): a row's weight against its points, in mean points per row
-
   const Communicator* Comm;
   GridSpec<D> Whole;
   SlabPlan Slab;

@@ -88,6 +88,13 @@ struct ReconstructionOptions
   bool FollowFarPoints = true;
   /// Bytes; 0: AutomaticMemoryBudget (1 GiB) when C_dx is automatic, the memory available otherwise.
   std::uint64_t MemoryBudget = 0;
+  /// The ranks the grids are split over (the front ends set it from their
+  /// communicator) and how many of them share this machine's memory
+  /// (ranksSharingThisMachine): the memory check sizes their windows
+  /// (SlabPolicy.h). The automatic C_dx sizes the whole grid, so that it is
+  /// the same on any rank count.
+  int Ranks = 1;
+  int RanksHere = 1;
   bool DetectTunnels = false; ///< 4.5.6: follow grad phi where 0.6 h_P < d < 2 dx and |grad d| < 0.5
   /// Pre-processing of merged, noisy scans (CloudCleaning.h): automatic by
   /// default (gross outliers only, thinning only when the cloud is denser than

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The memory check of a reconstruction split over ranks (SlabPolicy.h,
+// planRunGrids): it sizes the windows of the ranks on this machine, so a grid
+// too large for one rank is planned for 4 ranks on 4 machines, and refused
+// for 4 ranks sharing one; the windows it sizes are the boundaries the slabs
+// are cut at.
+#include "sltk/cloud/SyntheticClouds.h"
+#include "sltk/recon/ReconstructionPlan.h"
+#include "sltk/recon/SlabPolicy.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace
+{
+sltk::ReconstructionOptions explicitGrid()
+{
+  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
+  options.CellSizeFactor = 1.0;
+  options.OutsideThresholdFactor = 10.0;
+  options.Runs = 2;
+  return options;
+}
+} // namespace
+
+TEST(SlabPolicy, MemoryCheckSizesTheWindowsOfTheRanksOnThisMachine)
+{
+  sltk::ReconstructionOptions options = explicitGrid();
+  sltk::ReconstructionPlan<3> whole;
+  ASSERT_TRUE(sltk::planReconstruction(sltk::sphereCloud(2000), options, {}, whole).isOk());
+  const double finest = static_cast<double>(whole.Grids.Runs.back().nodeCount()) * sltk::ReconstructionBytesPerNode;
+
+  options.MemoryBudget = static_cast<std::uint64_t>(0.6 * finest); // the whole grid does not fit
+  sltk::ReconstructionPlan<3> one, spread, shared;
+  const sltk::Status refused = sltk::planReconstruction(sltk::sphereCloud(2000), options, {}, one);
+  EXPECT_EQ(refused.code(), sltk::StatusCode::OutOfMemory) << refused.message();
+
+  options.Ranks = 4; // on 4 machines: each holds a quarter and its ghost rows
+  options.RanksHere = 1;
+  const sltk::Status planned = sltk::planReconstruction(sltk::sphereCloud(2000), options, {}, spread);
+  EXPECT_TRUE(planned.isOk()) << planned.message();
+  EXPECT_EQ(spread.Grids.Runs.back().Dims, whole.Grids.Runs.back().Dims) << "the same grids on any rank count";
+
+  options.RanksHere = 4; // all 4 on this machine: more than the whole grid
+  const sltk::Status crowded = sltk::planReconstruction(sltk::sphereCloud(2000), options, {}, shared);
+  EXPECT_EQ(crowded.code(), sltk::StatusCode::OutOfMemory);
+  EXPECT_NE(crowded.message().find("4 rank(s) on this machine"), std::string::npos) << crowded.message();
+  EXPECT_NE(crowded.message().find("C_dx >="), std::string::npos) << crowded.message();
+}
+
+TEST(SlabPolicy, WindowsAreTheOwnedRowsAndTheirGhostRows)
+{
+  const sltk::PointCloud<3> cloud = sltk::sphereCloud(2000);
+  sltk::GridSpec<3> grid = sltk::uniformBox<3>(61, -1.2, 1.2);
+  const std::vector<sltk::Index> one = sltk::slabBoundaries(grid, 1, cloud);
+  EXPECT_EQ(one, (std::vector<sltk::Index>{ 0, 61 }));
+  EXPECT_DOUBLE_EQ(sltk::largestSlabWindowNodes(grid, one), 61.0 * 61.0 * 61.0);
+  const std::vector<sltk::Index> four = sltk::slabBoundaries(grid, 4, cloud);
+  ASSERT_EQ(four.size(), 5u);
+  sltk::Index widest = 0;
+  for (size_t r = 0; r < 4; ++r)
+  {
+    EXPECT_GE(four[r + 1] - four[r], sltk::SlabGhostRows) << "rank " << r;
+    const sltk::Index first = std::max<sltk::Index>(0, four[r] - sltk::SlabGhostRows);
+    widest = std::max(widest, std::min<sltk::Index>(61, four[r + 1] + sltk::SlabGhostRows) - first);
+  }
+  EXPECT_DOUBLE_EQ(sltk::largestSlabWindowNodes(grid, four), 61.0 * 61.0 * static_cast<double>(widest));
+  EXPECT_LT(widest, 61) << "a quarter of the rows and 12 ghost rows";
+  // A finer later run is cut where these slabs meet.
+  const sltk::GridSpec<3> finer = sltk::uniformBox<3>(121, -1.2, 1.2);
+  const std::vector<sltk::Index> later = sltk::slabBoundaries(finer, 4, cloud, &grid, &four);
+  for (size_t r = 1; r < 4; ++r)
+  {
+    EXPECT_EQ(later[r], 2 * four[r]) << "boundary " << r;
+  }
+}
