@@ -56,6 +56,14 @@ struct GridSpec
     return this->Origin[axis] + static_cast<double>(i + this->Offset[axis]) * this->Spacing[axis];
   }
 
+  /// The inverse of coordinate(): the fractional node index of x along an
+  /// axis, in this grid's index (the larger grid's minus Offset; exact: an
+  /// integer is subtracted).
+  double indexCoordinate(int axis, double x) const
+  {
+    return (x - this->Origin[axis]) / this->Spacing[axis] - static_cast<double>(this->Offset[axis]);
+  }
+
   /// Length of the domain along an axis: (N-1) dx, or N dx when periodic.
   double length(int axis) const
   {
@@ -72,8 +80,8 @@ struct GridSpec
       const Index minNodes = this->Bounds[a] == Boundary::Periodic ? 3 : 2;
       if (this->Dims[a] < minNodes)
       {
-        return Status::invalidArgument("grid has " + std::to_string(this->Dims[a]) + " nodes along " +
-          names[a] + "; at least " + std::to_string(minNodes) + " are needed");
+        return Status::invalidArgument("grid has " + std::to_string(this->Dims[a]) + " nodes along " + names[a] +
+          "; at least " + std::to_string(minNodes) + " are needed");
       }
       if (!(this->Spacing[a] > 0.0) || !std::isfinite(this->Spacing[a]))
       {
@@ -123,8 +131,7 @@ inline CellLocation<D> locate(const GridSpec<D>& g, const double* x)
   for (int a = 0; a < D; ++a)
   {
     const double n = static_cast<double>(g.Dims[a]);
-    // In the larger grid's index, then the window's (exact: an integer is subtracted).
-    double s = (x[a] - g.Origin[a]) / g.Spacing[a] - static_cast<double>(g.Offset[a]);
+    double s = g.indexCoordinate(a, x[a]);
     if (g.Bounds[a] == Boundary::Periodic)
     {
       s = s - n * std::floor(s / n);

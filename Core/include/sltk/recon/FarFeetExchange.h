@@ -15,9 +15,8 @@
 #include "sltk/grid/Slabs.h"
 #include "sltk/interp/CellCache.h"
 #include "sltk/recon/LevelSetStep.h"
+#include "sltk/recon/SlabPolicy.h"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -58,22 +57,14 @@ Status resolveFarFeet(const GridField<D>& phi, FarFeet<D>& far, const GridSpec<D
   const Interp prototype(phi);
   CellCache<Interp, 1> interpolateAt(prototype, phi);
   const GridSpec<D>& window = phi.spec();
-  const auto ownerOf = [&](double z)
-  {
-    const double row =
-      std::floor((z - whole.Origin[D - 1]) / whole.Spacing[D - 1]) - static_cast<double>(whole.Offset[D - 1]);
-    return slabOwnerOfRow(
-      boundaries, static_cast<Index>(std::clamp(row, 0.0, static_cast<double>(whole.Dims[D - 1] - 1))));
-  };
-  const double windowOrigin = window.Origin[D - 1] + static_cast<double>(window.Offset[D - 1]) * window.Spacing[D - 1];
   Index misplaced = 0;
   for (size_t f = 0; f < feet; ++f)
   {
     const std::array<double, D> x = footAt(f);
-    owner[f] = ownerOf(x[D - 1]);
+    owner[f] = slabOwnerOfRow(boundaries, slabRowAt(whole, x[D - 1]));
     if (owner[f] == rank)
     {
-      misplaced += footInWindow<Interp>(window, far, (x[D - 1] - windowOrigin) / window.Spacing[D - 1]) ? 0 : 1;
+      misplaced += footInWindow<Interp>(window, far, window.indexCoordinate(D - 1, x[D - 1])) ? 0 : 1;
       answers.push_back(interpolateAt(x.data()));
     }
   }
@@ -98,20 +89,14 @@ Status resolveFarFeet(const GridField<D>& phi, FarFeet<D>& far, const GridSpec<D
     mineFirst += static_cast<size_t>(counts[static_cast<size_t>(r)]) / footBytes;
   }
   const size_t mineEnd = mineFirst + far.Feet.size();
-  size_t slot = 0; // the next NaN of far.Values (a NaN computed here stays one: finishFarNodes() reports it)
   for (size_t f = 0; f < mineEnd; ++f)
   {
     double value = 0.0;
     std::memcpy(&value, allAnswers.data() + next[static_cast<size_t>(owner[f])]++ * sizeof(double), sizeof(double));
-    if (f < mineFirst)
+    if (f >= mineFirst)
     {
-      continue;
+      far.Values[static_cast<size_t>(far.Slots[f - mineFirst])] = value;
     }
-    while (!std::isnan(far.Values[slot]))
-    {
-      ++slot;
-    }
-    far.Values[slot++] = value;
   }
   return Status::ok();
 }

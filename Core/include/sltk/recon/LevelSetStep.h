@@ -67,6 +67,7 @@ struct FarFeet
   std::vector<Index> Positions;            ///< band positions with a far foot, ascending
   std::vector<double> Values;              ///< 2^(D-1) foot values per position, NaN where far
   std::vector<std::array<double, D>> Feet; ///< the far feet, by position then foot
+  std::vector<Index> Slots;                ///< each far foot's place in Values
 };
 
 namespace detail
@@ -152,10 +153,10 @@ Status levelSetStepValues(const Context& ctx, GridField<D>& phi, const GridField
     std::vector<Index> Positions;
     std::vector<double> Values;
     std::vector<std::array<double, D>> Feet;
+    std::vector<Index> Slots;
   };
   std::map<Index, ChunkFeet> farByChunk;
   std::mutex farMutex;
-  const double windowOrigin = spec.Origin[D - 1] + static_cast<double>(spec.Offset[D - 1]) * spec.Spacing[D - 1];
 
   const Interp prototype(phi);
   const double bad = ctx.parallelSum(0, count,
@@ -239,10 +240,11 @@ Status levelSetStepValues(const Context& ctx, GridField<D>& phi, const GridField
               feet[j] = std::numeric_limits<double>::quiet_NaN();
               continue;
             }
-            if (far && !footInWindow<Interp>(spec, *far, (x[D - 1] - windowOrigin) / spec.Spacing[D - 1]))
+            if (far && !footInWindow<Interp>(spec, *far, spec.indexCoordinate(D - 1, x[D - 1])))
             {
               feet[j] = std::numeric_limits<double>::quiet_NaN();
               chunkFar.Feet.push_back(x);
+              chunkFar.Slots.push_back(static_cast<Index>(chunkFar.Values.size()) + j);
               farNode = true;
               continue;
             }
@@ -281,8 +283,14 @@ Status levelSetStepValues(const Context& ctx, GridField<D>& phi, const GridField
     far->Positions.clear();
     far->Values.clear();
     far->Feet.clear();
+    far->Slots.clear();
     for (auto& [first, chunk] : farByChunk)
     {
+      const Index shift = static_cast<Index>(far->Values.size());
+      for (const Index slot : chunk.Slots)
+      {
+        far->Slots.push_back(shift + slot);
+      }
       far->Positions.insert(far->Positions.end(), chunk.Positions.begin(), chunk.Positions.end());
       far->Values.insert(far->Values.end(), chunk.Values.begin(), chunk.Values.end());
       far->Feet.insert(far->Feet.end(), chunk.Feet.begin(), chunk.Feet.end());

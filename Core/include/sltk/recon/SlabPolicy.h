@@ -30,6 +30,16 @@ constexpr Index SlabGhostRows = 6;
 /// bigger for no speed, even rows were 6% slower (Documentation/Distributed.md).
 constexpr double SlabRowWeight = 2.0;
 
+/// The row of `whole` at the floor of last-axis coordinate z, clamped to its
+/// rows: where a point weighs (run 1's split) and whose owner interpolates a
+/// far foot (FarFeetExchange.h).
+template <int D>
+Index slabRowAt(const GridSpec<D>& whole, double z)
+{
+  const double row = std::floor(whole.indexCoordinate(D - 1, z));
+  return static_cast<Index>(std::clamp(row, 0.0, static_cast<double>(whole.Dims[D - 1] - 1)));
+}
+
 /// Every rank's first row of `whole`, and its row count, over `ranks` ranks.
 /// Run 1 (`previous` null): balanced by the cloud's points plus SlabRowWeight.
 /// A later run cuts its finer grid where the `previous` run's slabs (on
@@ -52,8 +62,7 @@ std::vector<Index> slabBoundaries(const GridSpec<D>& whole, int ranks, const Poi
     for (int r = 1; r < ranks; ++r)
     {
       const double z = previousWhole->coordinate(D - 1, (*previous)[static_cast<size_t>(r)]);
-      const Index row =
-        static_cast<Index>(std::lround((z - whole.Origin[D - 1]) / whole.Spacing[D - 1])) - whole.Offset[D - 1];
+      const Index row = static_cast<Index>(std::lround(whole.indexCoordinate(D - 1, z)));
       boundaries[static_cast<size_t>(r)] =
         std::clamp(row, boundaries[static_cast<size_t>(r) - 1] + SlabGhostRows, rows - SlabGhostRows * (ranks - r));
     }
@@ -66,8 +75,7 @@ std::vector<Index> slabBoundaries(const GridSpec<D>& whole, int ranks, const Poi
   std::vector<double> weights(static_cast<size_t>(rows), SlabRowWeight * static_cast<double>(cloud.size()) / rows);
   for (const auto& p : cloud.Points)
   {
-    const double row = std::floor((p[D - 1] - whole.Origin[D - 1]) / whole.Spacing[D - 1]) - whole.Offset[D - 1];
-    weights[static_cast<size_t>(std::clamp(row, 0.0, static_cast<double>(rows - 1)))] += 1.0;
+    weights[static_cast<size_t>(slabRowAt(whole, p[D - 1]))] += 1.0;
   }
   return balancedSlabBoundaries(weights, ranks, SlabGhostRows);
 }
