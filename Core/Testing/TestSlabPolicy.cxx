@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 namespace
@@ -74,4 +75,48 @@ TEST(SlabPolicy, WindowsAreTheOwnedRowsAndTheirGhostRows)
   {
     EXPECT_EQ(later[r], 2 * four[r]) << "boundary " << r;
   }
+}
+
+TEST(SlabPolicy, LaterCutsFollowThePreviousBandWithinThePreviousWindows)
+{
+  const sltk::PointCloud<3> cloud = sltk::sphereCloud(2000);
+  const sltk::GridSpec<3> grid = sltk::uniformBox<3>(61, -1.2, 1.2);
+  const sltk::GridSpec<3> finer = sltk::uniformBox<3>(121, -1.2, 1.2);
+  const std::vector<sltk::Index> previous{ 0, 30, 61 };
+  // All of the previous band in the top rows: the cut moves up as far as the transfer allows.
+  std::vector<double> band(61, 0.0);
+  for (size_t row = 50; row < 61; ++row)
+  {
+    band[row] = 100.0;
+  }
+  const auto [low, high] = sltk::laterCutRange(finer, grid, 30);
+  EXPECT_EQ(low, 2 * (30 - sltk::SlabGhostRows + 2));
+  EXPECT_EQ(high, 2 * (30 + sltk::SlabGhostRows - 3) + 1);
+  const std::vector<sltk::Index> up = sltk::slabBoundaries(finer, 2, cloud, &grid, &previous, &band);
+  const auto slack = static_cast<sltk::Index>(sltk::SlabRowShareSlack * 121 / 2);
+  EXPECT_EQ(up[1], std::min(high, 60 + slack)) << "a tenth of a rank's rows from the even cut at most";
+  // The lower rank's last owned row lies inside its previous window (rows up to 30 + ghost - 1) with a row to spare.
+  EXPECT_LE(finer.coordinate(2, up[1] - 1), grid.coordinate(2, 30 + sltk::SlabGhostRows - 2));
+  // With a wider slack the previous window would limit it: the range ends where the upper rank's window does.
+  const std::vector<sltk::Index> wide{ 0, 24, 61 }; // previous cut far below the even one
+  const std::vector<sltk::Index> limited = sltk::slabBoundaries(finer, 2, cloud, &grid, &wide, &band);
+  EXPECT_EQ(limited[1], sltk::laterCutRange(finer, grid, 24).second);
+  // A band even over the rows: the cut where the band halves, inside the range.
+  std::fill(band.begin(), band.end(), 0.0);
+  for (size_t row = 20; row < 44; ++row)
+  {
+    band[row] = 10.0;
+  }
+  const std::vector<sltk::Index> even = sltk::slabBoundaries(finer, 2, cloud, &grid, &previous, &band);
+  EXPECT_NEAR(static_cast<double>(even[1]), 2.0 * 31.5, 1.0) << "the band's half at previous row 31.5";
+  // Without a band: where the previous slabs meet. The memory check sizes the widest windows the cuts allow.
+  const std::vector<sltk::Index> met = sltk::slabBoundaries(finer, 2, cloud, &grid, &previous);
+  EXPECT_EQ(met[1], 60);
+  const double widest = sltk::largestLaterSlabWindowNodes(finer, grid, previous);
+  for (const auto& cut : { up, even, met })
+  {
+    EXPECT_LE(sltk::largestSlabWindowNodes(finer, cut), widest);
+  }
+  const sltk::Index lowestCut = std::max(low, 60 - slack); // the upper rank's window starts G rows below
+  EXPECT_DOUBLE_EQ(widest, 121.0 * 121.0 * static_cast<double>(121 - (lowestCut - sltk::SlabGhostRows)));
 }

@@ -2,6 +2,7 @@
 #include "SLTKReconstructionOutput.h"
 
 #include "vtkAbstractArray.h"
+#include "vtkCleanPolyData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFlyingEdges2D.h"
@@ -166,6 +167,16 @@ void runSummary(const ReconstructionResult<D>& result, vtkImageData* image)
 
 void zeroLevelSet(vtkImageData* image, vtkPolyData* surface)
 {
+  // Flying edges puts a vertex on every edge that meets a node where phi is
+  // exactly 0, all at that node, with zero-area triangles between them: the
+  // coincident vertices are merged and the degenerate cells dropped (as rank
+  // 0 does when it joins the ranks' pieces), so a surface has the same
+  // vertices on any rank count.
+  vtkNew<vtkCleanPolyData> merge;
+  merge->SetTolerance(0.0);
+  merge->ConvertLinesToPointsOff();
+  merge->ConvertPolysToLinesOff();
+  merge->ConvertStripsToPolysOff();
   const bool flat = image->GetDimensions()[2] == 1;
   if (flat)
   {
@@ -173,17 +184,19 @@ void zeroLevelSet(vtkImageData* image, vtkPolyData* surface)
     contour->SetInputData(image);
     contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "SignedDistance");
     contour->SetValue(0, 0.0);
-    contour->Update();
-    surface->ShallowCopy(contour->GetOutput());
-    return;
+    merge->SetInputConnection(contour->GetOutputPort());
   }
-  vtkNew<vtkFlyingEdges3D> contour;
-  contour->SetInputData(image);
-  contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "SignedDistance");
-  contour->SetValue(0, 0.0);
-  contour->ComputeNormalsOn();
-  contour->Update();
-  surface->ShallowCopy(contour->GetOutput());
+  else
+  {
+    vtkNew<vtkFlyingEdges3D> contour;
+    contour->SetInputData(image);
+    contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "SignedDistance");
+    contour->SetValue(0, 0.0);
+    contour->ComputeNormalsOn();
+    merge->SetInputConnection(contour->GetOutputPort());
+  }
+  merge->Update();
+  surface->ShallowCopy(merge->GetOutput());
 }
 
 void transferCloudAttributes(vtkPointSet* cloud, vtkPolyData* surface)

@@ -500,6 +500,7 @@ Status runAll(const ReconstructionPlan<D>& plan, const ReconstructionOptions& op
     }
     if (run < lastRun)
     {
+      slab.recordBand(phi, options.GammaFactor * grid.Spacing[0]); // the next run's cut follows this band
       previous = std::move(phi);
       previousDist = std::move(dist);
       previousSlab = slab;

@@ -308,7 +308,10 @@ Status checkSlabMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor,
     const std::vector<Index> previous = std::move(boundaries);
     boundaries = slabBoundaries(
       grids.Runs[r], ranks, plan.Cloud, r > 0 ? &grids.Runs[r - 1] : nullptr, r > 0 ? &previous : nullptr);
-    window = std::max(window, largestSlabWindowNodes(grids.Runs[r], boundaries));
+    // A later run's cuts follow the previous run's band (RunSlab.h): its widest possible windows.
+    window = std::max(window,
+      r > 0 ? largestLaterSlabWindowNodes(grids.Runs[r], grids.Runs[r - 1], previous)
+            : largestSlabWindowNodes(grids.Runs[r], boundaries));
     whole = std::max(whole, static_cast<double>(grids.Runs[r].nodeCount()));
   }
   const double budget = plan.Options.MemoryBudget ? static_cast<double>(plan.Options.MemoryBudget)

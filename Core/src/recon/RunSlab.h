@@ -37,15 +37,18 @@ public:
 
   /// This rank's slab of `whole` with SlabGhostRows ghost rows (none on one
   /// rank), cut by slabBoundaries (SlabPolicy.h): run 1 by the cloud's points
-  /// and rows, a later run (`previous`, the run before) where the previous
-  /// run's slabs meet, so that each rank's owned rows lie in its previous
+  /// and rows, a later run (`previous`, the run before) near where the
+  /// previous run's slabs meet, moved towards equal shares of its band
+  /// (recordBand()) as far as each rank's owned rows stay in its previous
   /// window (transfer()).
   Status plan(const GridSpec<D>& whole, const PointCloud<D>& cloud, const RunSlab* previous = nullptr)
   {
     this->Whole = whole;
     this->RowNodes = whole.nodeCount() / whole.Dims[D - 1];
     this->Boundaries = slabBoundaries(whole, this->Comm->size(), cloud, previous ? &previous->Whole : nullptr,
-      previous ? &previous->Boundaries : nullptr);
+      previous ? &previous->Boundaries : nullptr,
+      previous && !previous->BandRows.empty() ? &previous->BandRows : nullptr);
+    this->BandRows.clear();
     return planSlabAt(this->Boundaries, this->distributed() ? SlabGhostRows : 0, this->Comm->rank(),
       "the SL step's feet and the interpolation stencil", this->Slab);
   }
@@ -121,6 +124,31 @@ public:
 
   double max(double value) const { return this->distributed() ? this->Comm->allReduce(value, ReduceOp::Max) : value; }
 
+  /// Records the band (|phi| < gamma) of phi's owned rows, nodes per row of
+  /// the whole grid summed over the ranks, for the next run's cut (plan()).
+  /// A collective call; nothing on one rank.
+  void recordBand(const GridField<D>& phi, double gamma)
+  {
+    if (!this->distributed())
+    {
+      return;
+    }
+    this->BandRows.assign(static_cast<size_t>(this->rows()), 0.0);
+    for (Index row = this->Slab.Begin; row < this->Slab.End; ++row)
+    {
+      double& count = this->BandRows[static_cast<size_t>(row)];
+      forEachRowLine(phi, row - this->Slab.First, 1,
+        [&](const double* line, Index length, Index)
+        {
+          for (Index x = 0; x < length; ++x)
+          {
+            count += std::fabs(line[x]) < gamma ? 1.0 : 0.0;
+          }
+        });
+    }
+    this->Comm->allReduce(this->BandRows.data(), this->BandRows.size(), ReduceOp::Sum);
+  }
+
   /// Every rank's first row, and the row count.
   const std::vector<Index>& boundaries() const { return this->Boundaries; }
 
@@ -136,6 +164,7 @@ private:
   GridSpec<D> Whole;
   SlabPlan Slab;
   std::vector<Index> Boundaries; ///< every rank's first row, and the row count
+  std::vector<double> BandRows;  ///< band nodes per row over the ranks (recordBand())
   Index RowNodes = 0;
 };
 
