@@ -140,15 +140,19 @@ sltk::Status optionsOf(vtkSLLevelSetReconstruct* self, sltk::ReconstructionOptio
   return sltk::vtkbridge::interpolatorOf(self->GetInterpolator(), o.Interpolator);
 }
 
-/// One execution makes all three outputs, and piece 0 holds the whole result:
-/// every ghost level a consumer may ask for is there. Say so in the data
-/// information, and drop the piece keys that the internal contour filter left on
-/// the surface (ShallowCopy), so that the executive stamps the requested piece on
-/// every output. Otherwise, under MPI, ParaView's request of port 1 with one
-/// ghost level executes the whole reconstruction a second time.
-void markOutputsComplete(vtkInformationVector* outputs)
+constexpr int EveryGhostLevel = 32; // ParaView asks for 1, some filters 2-3
+
+/// One execution makes all three outputs. Say so in the data information:
+/// the surface and the table are complete for every ghost level, and so is
+/// the image on one rank (piece 0 holds the whole grid); a distributed image
+/// holds the `imageGhostLevels` it was given (toImage()), so a consumer that
+/// needs more (ParaView's Gradient asks for one) runs the reconstruction again
+/// and gets them. Drop the piece keys that the internal contour filter left on
+/// the surface (ShallowCopy), so that the executive stamps the requested piece
+/// on every output. Otherwise, under MPI, ParaView's request of port 1 with
+/// one ghost level executes the whole reconstruction a second time.
+void markOutputsComplete(vtkInformationVector* outputs, int imageGhostLevels = EveryGhostLevel)
 {
-  constexpr int everyGhostLevel = 32; // ParaView asks for 1, some filters 2-3
   for (int port = 0; port < outputs->GetNumberOfInformationObjects(); ++port)
   {
     vtkDataObject* data = outputs->GetInformationObject(port)->Get(vtkDataObject::DATA_OBJECT());
@@ -156,7 +160,8 @@ void markOutputsComplete(vtkInformationVector* outputs)
     {
       data->GetInformation()->Remove(vtkDataObject::DATA_PIECE_NUMBER());
       data->GetInformation()->Remove(vtkDataObject::DATA_NUMBER_OF_PIECES());
-      data->GetInformation()->Set(vtkDataObject::DATA_NUMBER_OF_GHOST_LEVELS(), everyGhostLevel);
+      data->GetInformation()->Set(
+        vtkDataObject::DATA_NUMBER_OF_GHOST_LEVELS(), port == 0 ? imageGhostLevels : EveryGhostLevel);
     }
   }
 }
@@ -202,7 +207,7 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
 /// with AdaptiveStorage, the surface.
 template <int D>
 int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, double z, const sltk::Context& ctx,
-  const sltk::Communicator& comm, vtkImageData* image, vtkPolyData* surface, vtkTable* history)
+  const sltk::Communicator& comm, int ghostLevels, vtkImageData* image, vtkPolyData* surface, vtkTable* history)
 {
   sltk::ReconstructionOptions options;
   sltk::Status status = optionsOf(self, options);
@@ -250,7 +255,7 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
     vtkErrorWithObjectMacro(self, "Reconstruction failed: " << status.message());
     return 0;
   }
-  sltk::vtkbridge::toImage(result, z, image);
+  sltk::vtkbridge::toImage(result, z, ghostLevels, image);
   sltk::vtkbridge::runSummary(result, image);
   sltk::vtkbridge::communicationSummary(comm.size(), counted.bytesSent(), counted.collectives(), image);
   if (comm.rank() == 0) // every rank has it; ParaView would append one copy per rank
@@ -330,11 +335,16 @@ int vtkSLLevelSetReconstruct::RequestData(
   ctx.Executor = &pool;
   ctx.Progress = &progress;
   ctx.Log = &logger;
+  // The ghost levels asked of the image (ParaView asks structured data for one under MPI).
+  vtkInformation* imageInfo = outputVector->GetInformationObject(0);
+  const int ghostLevels = imageInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
+    ? imageInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
+    : 0;
   sltk::PointCloud<2> flat;
   double z = 0.0;
   const int done = sltk::flattenIfPlanar(cloud, flat, z)
-    ? reconstructInto<2>(this, std::move(flat), z, ctx, *comm, image, surface, history)
-    : reconstructInto<3>(this, std::move(cloud), 0.0, ctx, *comm, image, surface, history);
+    ? reconstructInto<2>(this, std::move(flat), z, ctx, *comm, ghostLevels, image, surface, history)
+    : reconstructInto<3>(this, std::move(cloud), 0.0, ctx, *comm, ghostLevels, image, surface, history);
   if (!done)
   {
     return 0;
@@ -344,7 +354,9 @@ int vtkSLLevelSetReconstruct::RequestData(
     sltk::vtkbridge::zeroLevelSet(image, surface);
   }
   sltk::vtkbridge::transferCloudAttributes(input, surface);
-  markOutputsComplete(outputVector);
+  markOutputsComplete(outputVector,
+    comm->size() > 1 && !this->AdaptiveStorage ? std::min(ghostLevels, sltk::vtkbridge::ImageGhostLevelsAvailable)
+                                               : EveryGhostLevel);
   return 1;
 }
 

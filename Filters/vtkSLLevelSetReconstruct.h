@@ -26,9 +26,11 @@
  * stores and computes its slab, and outputs its block of the image (its
  * owned rows and the next rank's first row, in the whole grid's extent), its
  * piece of the zero level set (the pieces join: they share the block
- * boundaries' points) and, on rank 0, the whole history. The blocks carry no
- * ghost cells, although they are marked complete for any ghost level (so that
- * a ghost-level request does not run the reconstruction again).
+ * boundaries' points) and, on rank 0, the whole history. A block carries the
+ * ghost levels asked of it (up to 5 rows of the neighbours', flagged in
+ * vtkGhostType); the surface and the history are complete for any ghost level
+ * (so that ParaView's request of one for the surface does not run the
+ * reconstruction again), the image for the levels it holds.
  * AdaptiveStorage is not distributed: under several ranks it is refused.
  */
 #ifndef vtkSLLevelSetReconstruct_h

@@ -3,6 +3,7 @@
 
 #include "vtkAbstractArray.h"
 #include "vtkCleanPolyData.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFlyingEdges2D.h"
@@ -20,6 +21,7 @@
 #include "vtkStaticPointLocator.h"
 #include "vtkStringArray.h"
 #include "vtkTable.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -56,14 +58,20 @@ vtkSmartPointer<vtkDoubleArray> moveNodeValues(GridField<D>& field, Index firstR
 } // namespace
 
 template <int D>
-void toImage(ReconstructionResult<D>& result, double z, vtkImageData* image)
+void toImage(ReconstructionResult<D>& result, double z, int ghostLevels, vtkImageData* image)
 {
   // This rank's block: its owned rows and the next rank's first row (image
   // pieces share their boundary points, so the contour pieces join); on one
-  // rank the whole grid.
+  // rank the whole grid. Ghost levels add rows of the window beyond the block
+  // on each side another rank owns (at most the window's ghost rows, which
+  // hold the owners' values after every run).
   const GridSpec<D>& g = result.WholeGrid;
   const SlabPlan& slab = result.Slab;
-  const Index endRow = std::min(slab.End + 1, g.Dims[D - 1]);
+  const Index rows = g.Dims[D - 1];
+  const Index endRow = std::min(slab.End + 1, rows);
+  const Index levels = std::max(0, ghostLevels);
+  const Index below = std::min(levels, slab.Begin - slab.First);
+  const Index above = endRow < rows ? std::min(levels, slab.Stop - endRow) : 0;
   int extent[6] = { 0, 0, 0, 0, 0, 0 };
   double origin[3] = { 0.0, 0.0, z };
   double spacing[3] = { 1.0, 1.0, 1.0 };
@@ -75,6 +83,10 @@ void toImage(ReconstructionResult<D>& result, double z, vtkImageData* image)
   }
   extent[2 * (D - 1)] = static_cast<int>(slab.Begin);
   extent[2 * (D - 1) + 1] = static_cast<int>(endRow - 1);
+  int owned[6];
+  std::copy(extent, extent + 6, owned);
+  extent[2 * (D - 1)] -= static_cast<int>(below);
+  extent[2 * (D - 1) + 1] += static_cast<int>(above);
   if (D == 2)
   {
     spacing[2] = g.Spacing[0];
@@ -82,9 +94,13 @@ void toImage(ReconstructionResult<D>& result, double z, vtkImageData* image)
   image->SetExtent(extent);
   image->SetOrigin(origin);
   image->SetSpacing(spacing);
-  const Index first = slab.Begin - slab.First, rows = endRow - slab.Begin;
-  image->GetPointData()->SetScalars(moveNodeValues(result.SignedDistance, first, rows, "SignedDistance"));
-  image->GetPointData()->AddArray(moveNodeValues(result.Distance, first, rows, "DistanceToCloud"));
+  const Index first = slab.Begin - below - slab.First, count = endRow - slab.Begin + below + above;
+  image->GetPointData()->SetScalars(moveNodeValues(result.SignedDistance, first, count, "SignedDistance"));
+  image->GetPointData()->AddArray(moveNodeValues(result.Distance, first, count, "DistanceToCloud"));
+  if (below + above > 0)
+  {
+    image->GenerateGhostArray(owned); // vtkGhostType: DUPLICATEPOINT / DUPLICATECELL beyond the block
+  }
 }
 
 template <int D>
@@ -165,23 +181,71 @@ void runSummary(const ReconstructionResult<D>& result, vtkImageData* image)
   fd->AddArray(farFeet);
 }
 
+namespace
+{
+/// The rows of `image` that hold no ghost point (vtkGhostType, toImage()), as a
+/// view of the same memory when there are ghost rows: the last axis' rows are
+/// contiguous runs of the arrays.
+vtkSmartPointer<vtkImageData> withoutGhostRows(vtkImageData* image)
+{
+  auto* ghosts =
+    vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
+  auto* values = vtkDoubleArray::SafeDownCast(image->GetPointData()->GetArray("SignedDistance"));
+  if (!ghosts || !values)
+  {
+    return image;
+  }
+  int extent[6];
+  image->GetExtent(extent);
+  const int axis = extent[4] == extent[5] ? 1 : 2; // the slabs' axis: y of a planar image, else z
+  const int* dims = image->GetDimensions();
+  const vtkIdType rowNodes = axis == 1 ? dims[0] : vtkIdType(dims[0]) * dims[1];
+  int first = extent[2 * axis], last = extent[2 * axis + 1];
+  const auto ghostRow = [&](int row)
+  { return ghosts->GetValue((row - extent[2 * axis]) * rowNodes) & vtkDataSetAttributes::DUPLICATEPOINT; };
+  while (first < last && ghostRow(first))
+  {
+    ++first;
+  }
+  while (last > first && ghostRow(last))
+  {
+    --last;
+  }
+  auto view = vtkSmartPointer<vtkImageData>::New();
+  int owned[6];
+  std::copy(extent, extent + 6, owned);
+  owned[2 * axis] = first;
+  owned[2 * axis + 1] = last;
+  view->SetExtent(owned);
+  view->SetOrigin(image->GetOrigin());
+  view->SetSpacing(image->GetSpacing());
+  vtkNew<vtkDoubleArray> rows;
+  rows->SetName("SignedDistance");
+  rows->SetArray(values->GetPointer((first - extent[2 * axis]) * rowNodes), view->GetNumberOfPoints(), 1);
+  view->GetPointData()->SetScalars(rows);
+  return view;
+}
+} // namespace
+
 void zeroLevelSet(vtkImageData* image, vtkPolyData* surface)
 {
   // Flying edges puts a vertex on every edge that meets a node where phi is
   // exactly 0, all at that node, with zero-area triangles between them: the
   // coincident vertices are merged and the degenerate cells dropped (as rank
   // 0 does when it joins the ranks' pieces), so a surface has the same
-  // vertices on any rank count.
+  // vertices on any rank count. Ghost rows are not contoured (their cells are
+  // the next rank's).
+  const vtkSmartPointer<vtkImageData> block = withoutGhostRows(image);
   vtkNew<vtkCleanPolyData> merge;
   merge->SetTolerance(0.0);
   merge->ConvertLinesToPointsOff();
   merge->ConvertPolysToLinesOff();
   merge->ConvertStripsToPolysOff();
-  const bool flat = image->GetDimensions()[2] == 1;
+  const bool flat = block->GetDimensions()[2] == 1;
   if (flat)
   {
     vtkNew<vtkFlyingEdges2D> contour;
-    contour->SetInputData(image);
+    contour->SetInputData(block);
     contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "SignedDistance");
     contour->SetValue(0, 0.0);
     merge->SetInputConnection(contour->GetOutputPort());
@@ -189,7 +253,7 @@ void zeroLevelSet(vtkImageData* image, vtkPolyData* surface)
   else
   {
     vtkNew<vtkFlyingEdges3D> contour;
-    contour->SetInputData(image);
+    contour->SetInputData(block);
     contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "SignedDistance");
     contour->SetValue(0, 0.0);
     contour->ComputeNormalsOn();
@@ -293,8 +357,8 @@ void communicationSummary(int ranks, std::int64_t bytesSent, std::int64_t collec
   }
 }
 
-template void toImage(ReconstructionResult<2>&, double, vtkImageData*);
-template void toImage(ReconstructionResult<3>&, double, vtkImageData*);
+template void toImage(ReconstructionResult<2>&, double, int, vtkImageData*);
+template void toImage(ReconstructionResult<3>&, double, int, vtkImageData*);
 template void runSummary(const ReconstructionResult<2>&, vtkImageData*);
 template void runSummary(const ReconstructionResult<3>&, vtkImageData*);
 

@@ -7,6 +7,7 @@
 /// convergence history table.
 
 #include "sltk/recon/Reconstruction.h"
+#include "sltk/recon/SlabPolicy.h"
 
 #include <cstdint>
 
@@ -25,9 +26,16 @@ namespace vtkbridge
 /// peak memory holds three fields, not four); a 2D result becomes an image with
 /// one z layer at height z. A distributed result (several ranks) gives this
 /// rank's block of the whole grid's extent: its owned rows and the next rank's
-/// first row, so that neighbouring blocks share their boundary points.
+/// first row, so that neighbouring blocks share their boundary points, and
+/// up to `ghostLevels` rows beyond it on each side another rank owns (VTK's
+/// ghost levels of a structured piece: at most the window's ghost rows but
+/// the shared one; flagged DUPLICATEPOINT and DUPLICATECELL in vtkGhostType).
 template <int D>
-void toImage(ReconstructionResult<D>& result, double z, vtkImageData* image);
+void toImage(ReconstructionResult<D>& result, double z, int ghostLevels, vtkImageData* image);
+
+/// The most ghost levels a distributed image can carry: the window's ghost
+/// rows but the one the blocks share (SlabPolicy.h).
+constexpr int ImageGhostLevelsAvailable = static_cast<int>(SlabGhostRows) - 1;
 
 /// Per-run summary as field data of the image: CloudSpacing (h_P), the cleaning
 /// counts, CellSizeFactor and OutsideThresholdFactor used, AutomaticChoices and
@@ -45,7 +53,8 @@ void runSummary(const ReconstructionResult<D>& result, vtkImageData* image);
 void communicationSummary(int ranks, std::int64_t bytesSent, std::int64_t collectives, vtkImageData* image);
 
 /// Zero level set of the image's SignedDistance: triangles (3D, flying edges)
-/// or line segments (2D).
+/// or line segments (2D), coincident vertices merged; ghost rows (toImage())
+/// left out.
 void zeroLevelSet(vtkImageData* image, vtkPolyData* surface);
 
 /// Per-vertex data for users (beyond the thesis): "DistanceToCloud", the
@@ -60,8 +69,8 @@ void transferCloudAttributes(vtkPointSet* cloud, vtkPolyData* surface);
 /// CloudError (Err_P), BandSize, Seconds.
 void historyTable(const std::vector<IterationRecord>& history, vtkTable* table);
 
-extern template void toImage(ReconstructionResult<2>&, double, vtkImageData*);
-extern template void toImage(ReconstructionResult<3>&, double, vtkImageData*);
+extern template void toImage(ReconstructionResult<2>&, double, int, vtkImageData*);
+extern template void toImage(ReconstructionResult<3>&, double, int, vtkImageData*);
 extern template void runSummary(const ReconstructionResult<2>&, vtkImageData*);
 extern template void runSummary(const ReconstructionResult<3>&, vtkImageData*);
 
