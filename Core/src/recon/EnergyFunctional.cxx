@@ -309,11 +309,12 @@ void energiesFromIntegrals(EnergyResult& result, const EnergyOptions& options)
 
 void reduceEnergy(EnergyResult& local, const EnergyOptions& options, const Communicator& comm)
 {
-  double integrals[2] = { local.Integral, local.SecondIntegral };
-  comm.allReduce(integrals, 2, ReduceOp::Sum);
-  local.Integral = integrals[0];
-  local.SecondIntegral = integrals[1];
-  local.FrontCells = comm.allReduce(static_cast<std::int64_t>(local.FrontCells), ReduceOp::Sum);
+  // One all-reduce: the front cell count is exact as a double (below 2^53).
+  double sums[3] = { local.Integral, local.SecondIntegral, static_cast<double>(local.FrontCells) };
+  comm.allReduce(sums, 3, ReduceOp::Sum);
+  local.Integral = sums[0];
+  local.SecondIntegral = sums[1];
+  local.FrontCells = static_cast<decltype(local.FrontCells)>(sums[2]);
   energiesFromIntegrals(local, options);
 }
 

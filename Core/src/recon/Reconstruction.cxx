@@ -73,24 +73,18 @@ void gatherValues(const GridField<D>& phi, const NodeList& nodes, std::vector<do
   }
 }
 
-/// eps_1^n of (4.34) restricted to `nodes`: sum |phi^{n+1} - phi^n| / sum |phi^n|,
-/// with phi^{n+1} the iterate after reinitialisation and cut and `before` = phi^n
-/// at the same nodes (gatherValues). Nodes outside the set did not change.
+/// The sums of eps_1^n (4.34) restricted to `nodes`, added to sums[0] (sum
+/// |phi^{n+1} - phi^n|) and sums[1] (sum |phi^n|), with phi^{n+1} the iterate
+/// after reinitialisation and cut and `before` = phi^n at the same nodes
+/// (gatherValues). Nodes outside the set did not change.
 template <int D>
-double updateNorm(
-  const GridField<D>& phi, const NodeList& nodes, const std::vector<double>& before, const RunSlab<D>& slab)
+void addUpdateSums(const GridField<D>& phi, const NodeList& nodes, const std::vector<double>& before, double* sums)
 {
-  double sums[2] = { 0.0, 0.0 }; // moved, size
   for (size_t k = 0; k < nodes.size(); ++k)
   {
     sums[0] += std::fabs(phi(phi.nodeIndex(nodes[k])) - before[k]);
     sums[1] += std::fabs(before[k]);
   }
-  if (slab.distributed())
-  {
-    slab.comm().allReduce(sums, 2, ReduceOp::Sum);
-  }
-  return sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
 }
 
 /// The previous run's phi (ghosts filled, on `fromSlab`'s window) interpolated
@@ -270,9 +264,21 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     it.Run = run;
     it.Iteration = n + 1;
     it.Energy = e2.Energy;
-    it.Change = updateNorm(phi, reinitBand, previousValues, slab); // (4.34) between successive iterates
-    it.CloudError = cloudError<D, Interp>(phi, cloud, slab, ctx);
-    it.BandSize = static_cast<Index>(slab.sum(static_cast<double>(band.size())));
+    const double fraction = (run - 1 + double(n + 1) / options.MaxIterations) / options.Runs;
+    const bool interrupted = ctx.interrupter().wasInterrupted(fraction);
+    // This rank's sums of eps_1 (4.34) between successive iterates and of Err_P (4.35) over the
+    // points of its owned cells, its band size and whether it was interrupted: one all-reduce.
+    double sums[5] = { 0.0, 0.0,
+      cloudErrorSum<D, Interp>(phi, cloud, ctx, slab.slab().Begin, slab.slab().End, slab.rows()),
+      static_cast<double>(band.size()), interrupted ? 1.0 : 0.0 };
+    addUpdateSums(phi, reinitBand, previousValues, sums);
+    if (slab.distributed())
+    {
+      slab.comm().allReduce(sums, 5, ReduceOp::Sum);
+    }
+    it.Change = sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
+    it.CloudError = sums[2] / static_cast<double>(cloud.size());
+    it.BandSize = static_cast<Index>(sums[3]);
     it.Seconds = secondsSince(start);
     result.History.push_back(it);
     record.Iterations = n + 1;
@@ -281,8 +287,7 @@ Status iterate(const PointCloud<D>& cloud, const ReconstructionOptions& options,
     bandSizes += static_cast<double>(it.BandSize);
     phase[3] += secondsSince(clock);
 
-    const double fraction = (run - 1 + double(n + 1) / options.MaxIterations) / options.Runs;
-    if (slab.max(ctx.interrupter().wasInterrupted(fraction) ? 1.0 : 0.0) > 0.0) // every rank stops
+    if (sums[4] > 0.0) // every rank stops
     {
       result.Runs.push_back(record);
       return Status::aborted();
