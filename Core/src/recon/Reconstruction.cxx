@@ -90,9 +90,9 @@ void addUpdateSums(const GridField<D>& phi, const NodeList& nodes, const std::ve
 /// The previous run's phi (ghosts filled, on `fromSlab`'s window) interpolated
 /// at the owned nodes of `slab`'s window (Q1: monotone); the ghost rows then
 /// come from their owners. Each rank's owned rows lie inside its previous
-/// window with rows to spare (RunSlab::plan cuts a later run's grid at the
-/// coordinates where the previous run's slabs meet, and the windows have at
-/// least 6 ghost rows): checked.
+/// window with a row to spare (RunSlab::plan cuts a later run's grid near
+/// where the previous run's slabs meet, within laterCutRange(), SlabPolicy.h):
+/// checked.
 template <int D>
 Status transfer(
   const GridField<D>& from, const RunSlab<D>& fromSlab, const RunSlab<D>& slab, const Context& ctx, GridField<D>& to)
