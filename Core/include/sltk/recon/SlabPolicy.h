@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -74,6 +75,15 @@ Index slabRowAt(const GridSpec<D>& whole, double z)
   return static_cast<Index>(std::clamp(row, 0.0, static_cast<double>(whole.Dims[D - 1] - 1)));
 }
 
+/// The (fractional) row of `whole` at row `previousRow` of `previousWhole`,
+/// the grid of the run before: where a later run's cuts are placed from the
+/// previous run's.
+template <int D>
+double rowOfPreviousRow(const GridSpec<D>& whole, const GridSpec<D>& previousWhole, double previousRow)
+{
+  return whole.indexCoordinate(D - 1, previousWhole.coordinate(D - 1, 0) + previousRow * previousWhole.Spacing[D - 1]);
+}
+
 /// The rows of `whole` where a later run may cut between two ranks whose
 /// previous run (on `previousWhole`) was cut at `previousCut`: each rank's
 /// owned rows must lie inside its previous window, SlabGhostRows beyond the
@@ -83,7 +93,7 @@ template <int D>
 std::pair<Index, Index> laterCutRange(const GridSpec<D>& whole, const GridSpec<D>& previousWhole, Index previousCut)
 {
   const auto rowOf = [&](Index previousRow)
-  { return whole.indexCoordinate(D - 1, previousWhole.coordinate(D - 1, previousRow)); };
+  { return rowOfPreviousRow(whole, previousWhole, static_cast<double>(previousRow)); };
   return { static_cast<Index>(std::ceil(rowOf(previousCut - SlabGhostRows + 2))),
     static_cast<Index>(std::floor(rowOf(previousCut + SlabGhostRows - 3))) + 1 };
 }
@@ -95,11 +105,7 @@ template <int D>
 Index bandShareRow(
   const GridSpec<D>& whole, const GridSpec<D>& previousWhole, const std::vector<double>& previousBand, double share)
 {
-  double total = 0.0;
-  for (const double nodes : previousBand)
-  {
-    total += nodes;
-  }
+  const double total = std::accumulate(previousBand.begin(), previousBand.end(), 0.0);
   if (!(total > 0.0))
   {
     return -1;
@@ -112,8 +118,7 @@ Index bandShareRow(
     {
       // Rows as cells of one spacing: the goal's place inside this row.
       const double at = static_cast<double>(row) - 0.5 + (goal - below) / previousBand[row];
-      const double z = previousWhole.coordinate(D - 1, 0) + at * previousWhole.Spacing[D - 1];
-      return static_cast<Index>(std::lround(whole.indexCoordinate(D - 1, z)));
+      return static_cast<Index>(std::lround(rowOfPreviousRow(whole, previousWhole, at)));
     }
     below += previousBand[row];
   }
@@ -146,7 +151,7 @@ std::vector<Index> slabBoundaries(const GridSpec<D>& whole, int ranks, const Poi
     for (int r = 1; r < ranks; ++r)
     {
       const Index cut = (*previous)[static_cast<size_t>(r)];
-      Index row = static_cast<Index>(std::lround(whole.indexCoordinate(D - 1, previousWhole->coordinate(D - 1, cut))));
+      Index row = static_cast<Index>(std::lround(rowOfPreviousRow(whole, *previousWhole, static_cast<double>(cut))));
       const Index balanced =
         previousBand ? bandShareRow(whole, *previousWhole, *previousBand, static_cast<double>(r) / ranks) : -1;
       const auto [low, high] = laterCutRange(whole, *previousWhole, cut);
@@ -203,8 +208,7 @@ double largestLaterSlabWindowNodes(
   for (int r = 1; r < ranks; ++r)
   {
     const Index cut = previous[static_cast<size_t>(r)];
-    const Index met =
-      static_cast<Index>(std::lround(whole.indexCoordinate(D - 1, previousWhole.coordinate(D - 1, cut))));
+    const Index met = static_cast<Index>(std::lround(rowOfPreviousRow(whole, previousWhole, static_cast<double>(cut))));
     const auto [low, high] = laterCutRange(whole, previousWhole, cut);
     const Index down = std::clamp(limitRowShare(0, rows, r, ranks), low, std::max(low, high));
     const Index up = std::clamp(limitRowShare(rows, rows, r, ranks), low, std::max(low, high));
