@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace
 {
 double linear(const std::array<sltk::Index, 3>& i)
@@ -34,7 +36,6 @@ TEST(TiledField, ScratchCopiesTilesAndSidesAtAnyHalo)
   }
   field.setSide(field.slotIndex({ 1, 0, 2 }), true);
   EXPECT_EQ(field.tileCount(), 4);
-  EXPECT_FALSE(field.surrounded(first));
   for (int halo : { 1, 4, 8, 12, 20 })
   {
     sltk::GridField<3> phi, dist;
@@ -56,12 +57,59 @@ TEST(TiledField, ScratchCopiesTilesAndSidesAtAnyHalo)
       const bool inside = !beyond && t[0] == 1 && t[1] == 0 && t[2] == 2;
       const double expected = tile ? linear(g) : (inside ? -1e6 : 1e6);
       ASSERT_EQ(phi(b), expected) << "halo " << halo << " node " << g[0] << " " << g[1] << " " << g[2];
-      ASSERT_EQ(dist(b), tile ? 1.0 : 0.0);
+      if (tile)
+      {
+        ASSERT_EQ(dist(b), 1.0);
+      }
+      else
+      {
+        ASSERT_TRUE(std::isnan(dist(b))); // no tile: no distance stored
+      }
       ASSERT_EQ(field.value(g), expected);
     }
     for (int a = 0; a < 3; ++a)
     {
       EXPECT_DOUBLE_EQ(phi.spec().Origin[a], grid.coordinate(a, o[a] * sltk::TileEdge - halo));
+    }
+  }
+}
+
+TEST(TiledField, ScratchBlockCopiesSeveralTilesAtOnce)
+{
+  sltk::GridSpec<3> grid;
+  grid.Dims = { 40, 24, 20 };
+  grid.Spacing = { 0.5, 0.5, 0.5 };
+  grid.Origin = { -1.0, 2.0, 3.0 };
+  sltk::TiledField<3> field;
+  field.reset(grid, 1e6);
+  // Tiles on a diagonal, sides alternating around them.
+  for (sltk::Index x = 0; x < 3; ++x)
+  {
+    const std::int32_t id = field.addTile(field.slotIndex({ x + 1, x, x }));
+    for (sltk::Index k = 0; k < sltk::TiledField<3>::Nodes; ++k)
+    {
+      field.phi(id)[k] = linear(field.node(id, k));
+      field.distance(id)[k] = 2.0;
+    }
+  }
+  field.setSide(field.slotIndex({ 2, 1, 2 }), true);
+  const std::array<sltk::Index, 3> first{ 1, 0, 0 };
+  for (int halo : { 0, 3, 9 })
+  {
+    sltk::GridField<3> phi, dist;
+    field.scratchBlock(first, 2, halo, 1, phi, &dist);
+    ASSERT_EQ(phi.spec().Dims[0], 2 * sltk::TileEdge + 2 * halo);
+    for (sltk::Index k = 0; k < phi.spec().nodeCount(); ++k)
+    {
+      const auto b = phi.nodeIndex(k);
+      std::array<sltk::Index, 3> g{};
+      for (int a = 0; a < 3; ++a)
+      {
+        g[a] = first[a] * sltk::TileEdge - halo + b[a];
+      }
+      ASSERT_EQ(phi(b), field.value(g)) << "halo " << halo << " node " << g[0] << " " << g[1] << " " << g[2];
+      const bool stored = field.value(g) != 1e6 && field.value(g) != -1e6;
+      ASSERT_TRUE(stored ? dist(b) == 2.0 : std::isnan(dist(b)));
     }
   }
 }

@@ -71,6 +71,42 @@ void compareWithUniform(const sltk::PointCloud<D>& cloud, sltk::ReconstructionOp
   EXPECT_EQ(field.value(centre), -field.gamma());
   EXPECT_EQ(field.value(corner), field.gamma());
   EXPECT_LT(largest, 0.5 * field.grid().Spacing[0] * tiled.Box.Scale);
+  // Every node of the uniform result's band lies in a tile (the tiles follow
+  // the band), and every band node of the tiled result has its exact distance.
+  sltk::Index uniformBand = 0, untiled = 0;
+  for (sltk::Index k = 0; k < phi.spec().nodeCount(); ++k)
+  {
+    const auto i = phi.nodeIndex(k);
+    if (std::fabs(phi(i)) < field.gamma() * tiled.Box.Scale)
+    {
+      ++uniformBand;
+      std::array<sltk::Index, D> t{};
+      for (int a = 0; a < D; ++a)
+      {
+        t[a] = i[a] >> sltk::TileBits;
+      }
+      untiled += field.slot(field.slotIndex(t)) < 0 ? 1 : 0;
+    }
+  }
+  EXPECT_GT(uniformBand, 0);
+  EXPECT_EQ(untiled, 0);
+  sltk::Index bandNodes = 0;
+  double distanceError = 0.0;
+  for (std::int32_t id = 0; id < field.tileCount(); ++id)
+  {
+    for (sltk::Index k = 0; k < sltk::TiledField<D>::Nodes; ++k)
+    {
+      if (std::fabs(field.phi(id)[k]) < field.gamma())
+      {
+        ++bandNodes;
+        const double exact = plan.Locator->nearest(field.position(field.node(id, k))).Distance;
+        const double d = field.distance(id)[k];
+        distanceError = std::isnan(d) ? HUGE_VAL : std::max(distanceError, std::fabs(d - exact));
+      }
+    }
+  }
+  EXPECT_GT(bandNodes, 0);
+  EXPECT_EQ(distanceError, 0.0);
 }
 } // namespace
 

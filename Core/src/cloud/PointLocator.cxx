@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/cloud/PointLocator.h"
 
+#include "sltk/core/IndexBox.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -49,8 +51,8 @@ PointLocator<D>::PointLocator(const PointCloud<D>& cloud, double pointsPerBucket
     std::array<std::int64_t, D> b;
     for (int a = 0; a < D; ++a)
     {
-      b[a] = std::min(this->Count[a] - 1,
-        static_cast<std::int64_t>((cloud.Points[k][a] - this->Bounds.Min[a]) / this->Size));
+      b[a] = std::min(
+        this->Count[a] - 1, static_cast<std::int64_t>((cloud.Points[k][a] - this->Bounds.Min[a]) / this->Size));
     }
     bucket[k] = this->bucketOf(b);
     ++this->Start[static_cast<size_t>(bucket[k]) + 1];
@@ -107,16 +109,18 @@ void PointLocator<D>::search(const std::array<double, D>& x, std::int64_t exclud
       lo[a] = std::max<std::int64_t>(0, centre[a] - ring);
       hi[a] = std::min<std::int64_t>(this->Count[a] - 1, centre[a] + ring);
     }
-    std::array<std::int64_t, D> b = lo;
-    for (;;)
-    {
-      bool onShell = false;
-      for (int a = 0; a < D; ++a)
+    forEachIndexInBox<D>(lo, hi,
+      [&](const std::array<Index, D>& b)
       {
-        onShell = onShell || b[a] == centre[a] - ring || b[a] == centre[a] + ring;
-      }
-      if (onShell || ring == 0)
-      {
+        bool onShell = false;
+        for (int a = 0; a < D; ++a)
+        {
+          onShell = onShell || b[a] == centre[a] - ring || b[a] == centre[a] + ring;
+        }
+        if (!onShell && ring != 0)
+        {
+          return;
+        }
         const std::int64_t id = this->bucketOf(b);
         for (std::int64_t p = this->Start[static_cast<size_t>(id)]; p < this->Start[static_cast<size_t>(id) + 1]; ++p)
         {
@@ -133,21 +137,7 @@ void PointLocator<D>::search(const std::array<double, D>& x, std::int64_t exclud
           }
           visit(k, std::sqrt(d2));
         }
-      }
-      int a = 0;
-      for (; a < D; ++a)
-      {
-        if (++b[a] <= hi[a])
-        {
-          break;
-        }
-        b[a] = lo[a];
-      }
-      if (a == D)
-      {
-        break;
-      }
-    }
+      });
   }
 }
 
@@ -157,7 +147,8 @@ typename PointLocator<D>::Hit PointLocator<D>::nearest(const std::array<double, 
   Hit best;
   this->search(
     x, exclude,
-    [&](std::int64_t k, double d) {
+    [&](std::int64_t k, double d)
+    {
       if (d < best.Distance || (d == best.Distance && k < best.Index))
       {
         best.Distance = d;
@@ -177,12 +168,12 @@ void PointLocator<D>::nearest(const std::array<double, D>& x, int k, std::int64_
     return;
   }
   const size_t want = static_cast<size_t>(k);
-  const auto before = [](const Hit& u, const Hit& v) {
-    return u.Distance < v.Distance || (u.Distance == v.Distance && u.Index < v.Index);
-  };
+  const auto before = [](const Hit& u, const Hit& v)
+  { return u.Distance < v.Distance || (u.Distance == v.Distance && u.Index < v.Index); };
   this->search(
     x, exclude,
-    [&](std::int64_t q, double d) {
+    [&](std::int64_t q, double d)
+    {
       const Hit h{ q, d };
       if (hits.size() == want && !before(h, hits.back()))
       {

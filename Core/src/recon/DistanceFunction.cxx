@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/recon/DistanceFunction.h"
 
+#include "sltk/core/IndexBox.h"
 #include "sltk/levelset/FastSweeping.h"
 #include "sltk/levelset/FastSweepingSlabs.h"
 
@@ -78,29 +79,16 @@ Status exactNearPoints(const PointLocator<D>& locator, const GridSpec<D>& whole,
     {
       continue; // the box lies in another rank's rows
     }
-    std::array<Index, D> i = lo;
-    for (;;)
-    {
-      Index lin = 0;
-      for (int a = D - 1; a >= 0; --a)
+    forEachIndexInBox<D>(lo, hi,
+      [&](const std::array<Index, D>& i)
       {
-        lin = lin * window.Dims[a] + i[a];
-      }
-      exact[static_cast<size_t>(lin)] = 1;
-      int a = 0;
-      for (; a < D; ++a)
-      {
-        if (++i[a] <= hi[a])
+        Index lin = 0;
+        for (int a = D - 1; a >= 0; --a)
         {
-          break;
+          lin = lin * window.Dims[a] + i[a];
         }
-        i[a] = lo[a];
-      }
-      if (a == D)
-      {
-        break;
-      }
-    }
+        exact[static_cast<size_t>(lin)] = 1;
+      });
   }
   // Exact distance on the marked nodes, per node: independent of the thread count.
   count = static_cast<Index>(ctx.parallelSum(0, nodes,

@@ -2,6 +2,7 @@
 #include "sltk/tiled/TiledField.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace sltk
 {
@@ -20,8 +21,7 @@ void TiledField<D>::reset(const GridSpec<D>& grid, double gamma)
   this->Slots.assign(static_cast<size_t>(slots), Outside);
   this->Origins.clear();
   this->SlotOf.clear();
-  this->Phi.clear();
-  this->Dist.clear();
+  this->Chunks.clear();
 }
 
 template <int D>
@@ -48,8 +48,12 @@ std::int32_t TiledField<D>::addTile(Index s)
   const std::int32_t id = static_cast<std::int32_t>(this->Origins.size());
   this->Origins.push_back(this->slotCoordinates(s));
   this->SlotOf.push_back(s);
-  this->Phi.resize(this->Phi.size() + static_cast<size_t>(Nodes), fill);
-  this->Dist.resize(this->Dist.size() + static_cast<size_t>(Nodes), 0.0);
+  if (id % ChunkTiles == 0)
+  {
+    this->Chunks.emplace_back(new double[static_cast<size_t>(2 * ChunkTiles * Nodes)]);
+  }
+  std::fill_n(this->phi(id), Nodes, fill);
+  std::fill_n(this->distance(id), Nodes, std::numeric_limits<double>::quiet_NaN());
   entry = id;
   return id;
 }
@@ -71,46 +75,24 @@ double TiledField<D>::value(const std::array<Index, D>& i) const
   const std::int32_t entry = this->Slots[static_cast<size_t>(this->slotIndex(t))];
   if (entry >= 0)
   {
-    return this->Phi[static_cast<size_t>(entry) * Nodes + static_cast<size_t>(local)];
+    return this->phi(entry)[local];
   }
   return entry == Inside ? -this->Gamma : this->Gamma;
 }
 
 template <int D>
-bool TiledField<D>::surrounded(std::int32_t id) const
+void TiledField<D>::scratchBlock(
+  const std::array<Index, D>& first, Index tiles, int halo, int ghost, GridField<D>& phi, GridField<D>* dist) const
 {
-  const std::array<Index, D>& o = this->Origins[static_cast<size_t>(id)];
-  constexpr int Neighbours = D == 2 ? 9 : 27;
-  for (int n = 0; n < Neighbours; ++n)
-  {
-    std::array<Index, D> t{};
-    bool beyond = false;
-    int rest = n;
-    for (int a = 0; a < D; ++a)
-    {
-      t[a] = o[a] + (rest % 3) - 1;
-      rest /= 3;
-      beyond = beyond || t[a] < 0 || t[a] >= this->SlotDims[a];
-    }
-    if (!beyond && this->Slots[static_cast<size_t>(this->slotIndex(t))] < 0)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
-template <int D>
-void TiledField<D>::scratch(std::int32_t id, int halo, int ghost, GridField<D>& phi, GridField<D>* dist) const
-{
-  const std::array<Index, D>& o = this->Origins[static_cast<size_t>(id)];
   const Index h = halo;
-  const Index edge = TileEdge + 2 * h;
+  const Index edge = tiles * TileEdge + 2 * h;
   GridSpec<D> block = this->Grid;
+  std::array<Index, D> start{}; // grid index of the block's first node
   for (int a = 0; a < D; ++a)
   {
+    start[a] = first[a] * TileEdge - h;
     block.Dims[a] = edge;
-    block.Origin[a] = this->Grid.coordinate(a, o[a] * TileEdge - h);
+    block.Origin[a] = this->Grid.coordinate(a, start[a]);
   }
   const auto shape = [&](GridField<D>& f)
   {
@@ -125,7 +107,9 @@ void TiledField<D>::scratch(std::int32_t id, int halo, int ghost, GridField<D>& 
   {
     shape(*dist);
   }
-  // Row by row along x: each row crosses at most three tiles.
+  const auto floorTile = [](Index g) { return g >= 0 ? g / TileEdge : -((TileEdge - 1 - g) / TileEdge); };
+  const double unknown = std::numeric_limits<double>::quiet_NaN();
+  // Row by row along x, tile by tile along the row.
   Index rows = 1;
   for (int a = 1; a < D; ++a)
   {
@@ -134,66 +118,48 @@ void TiledField<D>::scratch(std::int32_t id, int halo, int ghost, GridField<D>& 
   for (Index row = 0; row < rows; ++row)
   {
     std::array<Index, D> i{}; // block index of the row's first node
-    std::array<Index, D> t = o;
-    std::array<Index, D> inTile{};
+    std::array<Index, D> t{};
     bool beyond = false;
+    Index local = 0; // the row's node offset inside its tiles
     Index rest = row;
     for (int a = 1; a < D; ++a)
     {
       i[a] = rest % edge;
       rest /= edge;
-      const Index g = o[a] * TileEdge - h + i[a]; // grid index
-      const Index tile = g >= 0 ? g / TileEdge : -((TileEdge - 1 - g) / TileEdge); // floor(g / TileEdge)
-      t[a] = tile;
-      inTile[a] = g - tile * TileEdge;
-      beyond = beyond || tile < 0 || tile >= this->SlotDims[a];
+      const Index g = start[a] + i[a];
+      t[a] = floorTile(g);
+      local |= (g - t[a] * TileEdge) << (TileBits * a);
+      beyond = beyond || t[a] < 0 || t[a] >= this->SlotDims[a];
     }
     double* rowPhi = &phi(i);
     double* rowDist = dist ? &(*dist)(i) : nullptr;
-    Index x = 0;
-    const Index reach = (h + TileEdge - 1) / TileEdge; // tiles on each side along x
-    for (Index part = -reach; part <= reach; ++part)
+    for (Index g = start[0]; g < start[0] + edge;)
     {
-      // Nodes [first, last) of tile o[0] + part, in grid indices relative to the tile's first node.
-      const Index first = std::max<Index>(-h - part * TileEdge, 0);
-      const Index last = std::min<Index>(TileEdge + h - part * TileEdge, TileEdge);
-      if (first >= last)
-      {
-        continue;
-      }
-      t[0] = o[0] + part;
+      // Nodes [g, end) of the row lie in tile t[0], from its node `from`.
+      t[0] = floorTile(g);
+      const Index from = g - t[0] * TileEdge;
+      const Index end = std::min(start[0] + edge, (t[0] + 1) * TileEdge);
+      const Index count = end - g;
+      const Index x = g - start[0];
       const bool out = beyond || t[0] < 0 || t[0] >= this->SlotDims[0];
       const std::int32_t entry = out ? Outside : this->Slots[static_cast<size_t>(this->slotIndex(t))];
-      Index local = 0;
-      for (int a = 1; a < D; ++a)
-      {
-        local |= inTile[a] << (TileBits * a);
-      }
       if (entry >= 0)
       {
-        const double* p = this->phi(entry) + local;
-        const double* q = this->distance(entry) + local;
-        for (Index k = first; k < last; ++k, ++x)
+        std::copy_n(this->phi(entry) + local + from, count, rowPhi + x);
+        if (rowDist)
         {
-          rowPhi[x] = p[k];
-          if (rowDist)
-          {
-            rowDist[x] = q[k];
-          }
+          std::copy_n(this->distance(entry) + local + from, count, rowDist + x);
         }
       }
       else
       {
-        const double fill = entry == Inside ? -this->Gamma : this->Gamma;
-        for (Index k = first; k < last; ++k, ++x)
+        std::fill_n(rowPhi + x, count, entry == Inside ? -this->Gamma : this->Gamma);
+        if (rowDist)
         {
-          rowPhi[x] = fill;
-          if (rowDist)
-          {
-            rowDist[x] = 0.0;
-          }
+          std::fill_n(rowDist + x, count, unknown);
         }
       }
+      g = end;
     }
   }
   phi.fillGhosts();

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/tiled/TiledReconstruction.h"
 
+#include "BandReach.h"
+#include "TiledDistances.h"
 #include "TiledReinitialise.h"
 #include "sltk/exec/Memory.h"
 #include "sltk/interp/Interpolators.h"
@@ -19,10 +21,11 @@ namespace sltk
 
 namespace
 {
-constexpr int Ghost = 2;              ///< ghost layers of the scratch fields (WENO3 / CWENO stencils)
-constexpr int StencilReach = 2;       ///< nodes beyond a foot's cell the interpolators read
-constexpr int HaloStep = 4;           ///< the step's halo is a multiple of this (fewer scratch shapes)
-constexpr int MaxHalo = 4 * TileEdge; ///< the farthest the step reads around a tile
+constexpr int Ghost = 2;        ///< ghost layers of the scratch fields (WENO3 / CWENO stencils)
+constexpr int StencilReach = 2; ///< nodes beyond a foot's cell the interpolators read
+constexpr int HaloStep = 4;     ///< the step's halo is a multiple of this (fewer scratch shapes)
+constexpr int MaxHalo = 32;     ///< the farthest the step reads around a tile
+constexpr Index BlockTiles = 4; ///< the step copies blocks of 4^D tile positions (32^D nodes) at once
 
 using Clock = std::chrono::steady_clock;
 
@@ -31,15 +34,16 @@ double secondsSince(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-/// Index in the scratch block (tile and `halo` nodes around it) of node `local` of the tile.
+/// Index in a scratch block (`tiles`^D tile positions and `halo` nodes around
+/// them) of node `local` of the tile at position `offset` (tile units) in the block.
 template <int D>
-Index scratchNode(Index local, Index halo)
+Index scratchNode(Index local, Index halo, const std::array<Index, D>& offset = {}, Index tiles = 1)
 {
-  const Index edge = TileEdge + 2 * halo;
+  const Index edge = tiles * TileEdge + 2 * halo;
   Index k = 0, stride = 1;
   for (int a = 0; a < D; ++a)
   {
-    k += (halo + ((local >> (TileBits * a)) & (TileEdge - 1))) * stride;
+    k += (halo + offset[a] * TileEdge + ((local >> (TileBits * a)) & (TileEdge - 1))) * stride;
     stride *= edge;
   }
   return k;
@@ -81,6 +85,8 @@ struct PreviousLevelSet
 {
   const GridField<D>* Dense = nullptr;
   const TiledField<D>* Tiled = nullptr;
+
+  double spacing(int a) const { return this->Tiled ? this->Tiled->grid().Spacing[a] : this->Dense->spec().Spacing[a]; }
 
   double at(const std::array<double, D>& x) const
   {
@@ -141,29 +147,6 @@ std::array<Index, D> nearestNode(const GridSpec<D>& g, const std::array<double, 
   return i;
 }
 
-/// Calls f(slot) for the slots of the 3^D tiles around tile coordinates t (inside the slot grid).
-template <int D, class F>
-void forEachSlotAround(const TiledField<D>& field, const std::array<Index, D>& t, F&& f)
-{
-  constexpr int Count = D == 2 ? 9 : 27;
-  for (int n = 0; n < Count; ++n)
-  {
-    std::array<Index, D> s{};
-    bool inside = true;
-    int rest = n;
-    for (int a = 0; a < D; ++a)
-    {
-      s[a] = t[a] + rest % 3 - 1;
-      rest /= 3;
-      inside = inside && s[a] >= 0 && s[a] < field.slotDims()[a];
-    }
-    if (inside)
-    {
-      f(field.slotIndex(s));
-    }
-  }
-}
-
 /// The memory of `tiles` more tiles, refused when it does not fit.
 template <int D>
 Status checkTileMemory(const TiledField<D>& field, Index tiles, const ReconstructionOptions& options, int run)
@@ -182,29 +165,9 @@ Status checkTileMemory(const TiledField<D>& field, Index tiles, const Reconstruc
   return Status::ok();
 }
 
-/// Exact distances to the cloud at the nodes of tiles [first, tileCount()).
-template <int D>
-void exactDistances(TiledField<D>& field, std::int32_t first, const PointLocator<D>& locator, const Context& ctx)
-{
-  ctx.parallelFor(
-    first, field.tileCount(),
-    [&](Index b, Index e)
-    {
-      for (Index id = b; id < e; ++id)
-      {
-        const auto tile = static_cast<std::int32_t>(id);
-        double* d = field.distance(tile);
-        for (Index k = 0; k < TiledField<D>::Nodes; ++k)
-        {
-          d[k] = locator.nearest(field.position(field.node(tile, k))).Distance;
-        }
-      }
-    },
-    1);
-}
-
-/// Run r's field from run r-1's level set: tiles within one tile of its band,
-/// phi by Q1 cut at +-gamma, d exact; every other slot the side of its centre.
+/// Run r's field from run r-1's level set: tiles around its band,
+/// phi by Q1 cut at +-gamma, d not yet computed (TiledDistances); every other
+/// slot the side of its centre.
 template <int D>
 Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma, const GridSpec<D>& grid,
   const ReconstructionPlan<D>& plan, int run, const Context& ctx, TiledField<D>& field)
@@ -212,15 +175,31 @@ Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma
   const double gamma = plan.Options.GammaFactor * grid.Spacing[0];
   field.reset(grid, gamma);
   std::vector<std::uint8_t> marked(static_cast<size_t>(field.slotCount()), 0);
+  // A node where the transferred phi is inside the new band has a previous
+  // band node among the corners of its previous cell (elsewhere Q1 gives
+  // +-gamma): within one previous spacing per axis, one node more for the
+  // rounding to the nearest node.
+  std::array<Index, D> reach{};
+  for (int a = 0; a < D; ++a)
+  {
+    reach[a] = static_cast<Index>(std::ceil(previous.spacing(a) / grid.Spacing[a])) + 1;
+  }
   previous.forEachBandNode(previousGamma,
     [&](const std::array<double, D>& x)
     {
-      std::array<Index, D> t = nearestNode<D>(grid, x);
+      const std::array<Index, D> i = nearestNode<D>(grid, x);
+      std::array<Index, D> lo{}, hi{};
       for (int a = 0; a < D; ++a)
       {
-        t[a] = std::min(std::max<Index>(t[a] >> TileBits, 0), field.slotDims()[a] - 1);
+        lo[a] = std::max<Index>((i[a] - reach[a]) >> TileBits, 0);
+        hi[a] = std::min<Index>((i[a] + reach[a]) >> TileBits, field.slotDims()[a] - 1);
+        if (lo[a] > hi[a])
+        {
+          return; // beyond the new grid
+        }
       }
-      forEachSlotAround<D>(field, t, [&](Index s) { marked[static_cast<size_t>(s)] = 1; });
+      forEachIndexInBox<D>(
+        lo, hi, [&](const std::array<Index, D>& t) { marked[static_cast<size_t>(field.slotIndex(t))] = 1; });
     });
   Index count = 0;
   for (std::uint8_t m : marked)
@@ -268,7 +247,6 @@ Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma
       }
     },
     1);
-  exactDistances(field, 0, *plan.Locator, ctx);
   return Status::ok();
 }
 
@@ -303,28 +281,28 @@ void bandTiles(const TiledField<D>& field, const Context& ctx, std::vector<std::
   }
 }
 
-/// Gives every band tile all its neighbours (new tiles: the slot's +-gamma, d
-/// exact), so that the step and the reinitialisation find every node they
-/// read. Returns the number of tiles added.
+/// Gives tiles to the slots within `reach` nodes of a band node (new tiles:
+/// the slot's +-gamma, d not yet computed): the nodes the reinitialisation's
+/// dilated band (1.53) writes and the step's and the energy's distance
+/// stencils read. Elsewhere the step reads the slots' +-gamma, the value the
+/// uniform version holds there. Returns the number of tiles added.
 template <int D>
-Status surroundBand(const std::vector<std::int32_t>& band, const PointLocator<D>& locator,
-  const ReconstructionOptions& options, int run, const Context& ctx, TiledField<D>& field, Index& added)
+Status extendBand(const std::vector<std::int32_t>& band, Index reach, const ReconstructionOptions& options, int run,
+  const Context& ctx, TiledField<D>& field, Index& added)
 {
   added = 0;
+  const std::vector<std::uint32_t> reached = bandReach(field, band, reach, ctx);
   std::vector<Index> missing;
-  for (std::int32_t id : band)
+  for (size_t j = 0; j < band.size(); ++j)
   {
-    if (!field.surrounded(id))
-    {
-      forEachSlotAround<D>(field, field.tileOrigin(id),
-        [&](Index s)
+    forEachReachedSlot(field, band[j], reached[j],
+      [&](Index s)
+      {
+        if (field.slot(s) < 0)
         {
-          if (field.slot(s) < 0)
-          {
-            missing.push_back(s);
-          }
-        });
-    }
+          missing.push_back(s);
+        }
+      });
   }
   if (missing.empty())
   {
@@ -333,14 +311,19 @@ Status surroundBand(const std::vector<std::int32_t>& band, const PointLocator<D>
   std::sort(missing.begin(), missing.end());
   missing.erase(std::unique(missing.begin(), missing.end()), missing.end());
   SLTK_RETURN_IF_ERROR(checkTileMemory(field, static_cast<Index>(missing.size()), options, run));
-  const std::int32_t first = static_cast<std::int32_t>(field.tileCount());
   for (Index s : missing)
   {
     field.addTile(s);
   }
-  exactDistances(field, first, locator, ctx);
   added = static_cast<Index>(missing.size());
   return Status::ok();
+}
+
+/// How far from a band node extendBand gives tiles: the reinitialisation's
+/// dilation, and at least the one node of the distance stencils.
+Index bandReachNodes(const ReconstructionOptions& options)
+{
+  return std::max<Index>(options.ReinitDilation, 1);
 }
 
 /// Per-thread scratch of a tile and its neighbourhood.
@@ -423,72 +406,141 @@ double largestFoot(
   return largest;
 }
 
-/// One step (4.22)/(4.24) on the band, tile by tile: each band tile's new
-/// values from the uniform kernel on a copy of the tile and the nodes around
-/// it that its feet can reach (measured first on a copy with one node
-/// around), stored once all tiles are computed.
+/// The band tiles grouped by the block of BlockTiles^D tile positions they
+/// lie in (blocks in slot order, tiles in band order within a block).
+template <int D>
+struct BandBlocks
+{
+  std::vector<std::array<Index, D>> First; ///< each block's first tile coordinates
+  std::vector<size_t> Begin;               ///< block b's members: Members[Begin[b], Begin[b + 1])
+  std::vector<size_t> Members;             ///< indices into the band
+
+  BandBlocks(const TiledField<D>& field, const std::vector<std::int32_t>& band)
+  {
+    std::vector<std::pair<Index, size_t>> keyed(band.size());
+    for (size_t j = 0; j < band.size(); ++j)
+    {
+      Index key = 0;
+      for (int a = D - 1; a >= 0; --a)
+      {
+        const Index blocks = (field.slotDims()[a] + BlockTiles - 1) / BlockTiles;
+        key = key * blocks + field.tileOrigin(band[j])[a] / BlockTiles;
+      }
+      keyed[j] = { key, j };
+    }
+    std::sort(keyed.begin(), keyed.end());
+    for (size_t j = 0; j < keyed.size(); ++j)
+    {
+      if (j == 0 || keyed[j].first != keyed[j - 1].first)
+      {
+        Begin.push_back(j);
+        std::array<Index, D> first = field.tileOrigin(band[keyed[j].second]);
+        for (int a = 0; a < D; ++a)
+        {
+          first[a] = first[a] / BlockTiles * BlockTiles;
+        }
+        First.push_back(first);
+      }
+      Members.push_back(keyed[j].second);
+    }
+    Begin.push_back(keyed.size());
+  }
+  Index count() const { return static_cast<Index>(First.size()); }
+};
+
+/// One step (4.22)/(4.24) on the band, block by block: each block of band
+/// tiles gets its new values from the uniform kernel on one copy of the block
+/// and the nodes around it that its feet can reach (measured first on a copy
+/// with one node around), stored once all blocks are computed.
 template <class Interp, int D>
 Status tiledStep(
   TiledField<D>& field, const std::vector<std::int32_t>& band, const LevelSetStepParameters& par, const Context& ctx)
 {
   const Context serial;
   const double dx = field.grid().Spacing[0];
+  const BandBlocks<D> blocks(field, band);
   std::vector<double> next(band.size() * static_cast<size_t>(TiledField<D>::Nodes));
-  std::vector<Status> failures(band.size());
-  std::vector<double> feet(band.size(), 0.0);
+  std::vector<Status> failures(static_cast<size_t>(blocks.count()));
+  std::vector<double> feet(static_cast<size_t>(blocks.count()), 0.0);
   ctx.parallelFor(
-    0, static_cast<Index>(band.size()),
+    0, blocks.count(),
     [&](Index b, Index e)
     {
       TileScratch<D> s;
-      for (Index j = b; j < e; ++j)
+      for (Index block = b; block < e; ++block)
       {
-        const std::int32_t id = band[static_cast<size_t>(j)];
-        const double* p = field.phi(id);
+        const auto& first = blocks.First[static_cast<size_t>(block)];
+        const auto offset = [&](size_t j)
+        {
+          std::array<Index, D> o = field.tileOrigin(band[j]);
+          for (int a = 0; a < D; ++a)
+          {
+            o[a] -= first[a];
+          }
+          return o;
+        };
+        const auto forEachMember = [&](auto&& f)
+        {
+          for (size_t m = blocks.Begin[static_cast<size_t>(block)]; m < blocks.Begin[static_cast<size_t>(block) + 1];
+               ++m)
+          {
+            f(blocks.Members[m]);
+          }
+        };
         const auto bandNodes = [&](Index halo)
         {
           s.Nodes.clear();
-          for (Index k = 0; k < TiledField<D>::Nodes; ++k)
-          {
-            if (std::fabs(p[k]) < field.gamma())
+          forEachMember(
+            [&](size_t j)
             {
-              s.Nodes.push_back(scratchNode<D>(k, halo));
-            }
-          }
+              const double* p = field.phi(band[j]);
+              const auto o = offset(j);
+              for (Index k = 0; k < TiledField<D>::Nodes; ++k)
+              {
+                if (std::fabs(p[k]) < field.gamma())
+                {
+                  s.Nodes.push_back(scratchNode<D>(k, halo, o, BlockTiles));
+                }
+              }
+            });
         };
-        field.scratch(id, 1, 1, s.Phi, &s.Dist);
+        field.scratchBlock(first, BlockTiles, 1, 1, s.Phi, &s.Dist);
         bandNodes(1);
         const double foot = largestFoot(s.Phi, s.Dist, s.Nodes, par);
-        feet[static_cast<size_t>(j)] = foot;
+        feet[static_cast<size_t>(block)] = foot;
         const Index need = static_cast<Index>(std::ceil(foot / dx)) + StencilReach;
         if (need > MaxHalo)
         {
           continue; // reported below
         }
         const Index halo = std::max<Index>(HaloStep, (need + HaloStep - 1) / HaloStep * HaloStep);
-        field.scratch(id, static_cast<int>(halo), Ghost, s.Phi, &s.Dist);
+        field.scratchBlock(first, BlockTiles, static_cast<int>(halo), Ghost, s.Phi, &s.Dist);
         bandNodes(halo);
-        Status status = levelSetStep<Interp, D>(serial, s.Phi, s.Dist, s.Nodes, par, s.Values);
-        double* out = next.data() + static_cast<size_t>(j) * TiledField<D>::Nodes;
-        for (Index k = 0; k < TiledField<D>::Nodes; ++k)
-        {
-          out[k] = s.Phi(s.Phi.nodeIndex(scratchNode<D>(k, halo)));
-        }
-        failures[static_cast<size_t>(j)] = std::move(status);
+        failures[static_cast<size_t>(block)] = levelSetStep<Interp, D>(serial, s.Phi, s.Dist, s.Nodes, par, s.Values);
+        forEachMember(
+          [&](size_t j)
+          {
+            const auto o = offset(j);
+            double* out = next.data() + j * TiledField<D>::Nodes;
+            for (Index k = 0; k < TiledField<D>::Nodes; ++k)
+            {
+              out[k] = s.Phi(s.Phi.nodeIndex(scratchNode<D>(k, halo, o, BlockTiles)));
+            }
+          });
       }
     },
-    4);
-  for (size_t j = 0; j < band.size(); ++j)
+    1);
+  for (size_t block = 0; block < feet.size(); ++block)
   {
-    if (feet[j] > (MaxHalo - StencilReach) * dx)
+    if (feet[block] > (MaxHalo - StencilReach) * dx)
     {
       std::ostringstream m;
-      m << "a foot of the semi-Lagrangian step moved " << feet[j] / dx << " cells, beyond the "
+      m << "a foot of the semi-Lagrangian step moved " << feet[block] / dx << " cells, beyond the "
         << MaxHalo - StencilReach
         << " the tiled reconstruction reads around a tile: use the uniform version or a smaller eta";
       return Status::numericalFailure(m.str());
     }
-    SLTK_RETURN_IF_ERROR(failures[j]);
+    SLTK_RETURN_IF_ERROR(failures[block]);
   }
   ctx.parallelFor(0, static_cast<Index>(band.size()),
     [&](Index b, Index e)
@@ -503,14 +555,16 @@ Status tiledStep(
 }
 
 /// Err_P (4.35) and the far-point fraction: |I[phi](Q)| at every point, the
-/// points grouped by the tile around them (points in slots without a tile are
+/// points grouped by the block of BlockTiles^D tile positions around them,
+/// interpolated on one copy of the block (points in slots without a tile are
 /// gamma or more from the front).
 template <class Interp, int D>
 void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double far, const Context& ctx,
   double& meanError, double& farFraction)
 {
   const GridSpec<D>& g = field.grid();
-  std::vector<std::vector<Index>> byTile(static_cast<size_t>(field.tileCount()));
+  std::vector<std::pair<Index, Index>> byBlock; // (block key, point)
+  byBlock.reserve(static_cast<size_t>(cloud.size()));
   double sum = 0.0, farCount = 0.0;
   for (Index q = 0; q < cloud.size(); ++q)
   {
@@ -523,10 +577,14 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
       t[a] = i >> TileBits;
       inside = inside && i >= 0 && t[a] < field.slotDims()[a];
     }
-    const std::int32_t entry = inside ? field.slot(field.slotIndex(t)) : TiledField<D>::Outside;
-    if (entry >= 0)
+    if (inside && field.slot(field.slotIndex(t)) >= 0)
     {
-      byTile[static_cast<size_t>(entry)].push_back(q);
+      Index key = 0;
+      for (int a = D - 1; a >= 0; --a)
+      {
+        key = key * ((field.slotDims()[a] + BlockTiles - 1) / BlockTiles) + t[a] / BlockTiles;
+      }
+      byBlock.emplace_back(key, q);
     }
     else
     {
@@ -534,30 +592,46 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
       farCount += field.gamma() > far ? 1.0 : 0.0;
     }
   }
-  std::vector<double> sums(byTile.size(), 0.0), fars(byTile.size(), 0.0);
+  std::sort(byBlock.begin(), byBlock.end());
+  std::vector<size_t> starts;
+  for (size_t j = 0; j < byBlock.size(); ++j)
+  {
+    if (j == 0 || byBlock[j].first != byBlock[j - 1].first)
+    {
+      starts.push_back(j);
+    }
+  }
+  starts.push_back(byBlock.size());
+  const Index blocks = static_cast<Index>(starts.size()) - 1;
+  std::vector<double> sums(static_cast<size_t>(blocks), 0.0), fars(static_cast<size_t>(blocks), 0.0);
   ctx.parallelFor(
-    0, static_cast<Index>(byTile.size()),
+    0, blocks,
     [&](Index b, Index e)
     {
       TileScratch<D> s;
-      for (Index id = b; id < e; ++id)
+      for (Index block = b; block < e; ++block)
       {
-        const auto& points = byTile[static_cast<size_t>(id)];
-        if (points.empty())
+        const size_t from = starts[static_cast<size_t>(block)], to = starts[static_cast<size_t>(block) + 1];
+        std::array<Index, D> first{};
+        Index key = byBlock[from].first;
+        for (int a = 0; a < D; ++a)
         {
-          continue;
+          const Index count = (field.slotDims()[a] + BlockTiles - 1) / BlockTiles;
+          first[a] = key % count * BlockTiles;
+          key /= count;
         }
-        field.scratch(static_cast<std::int32_t>(id), TileEdge / 2, Ghost, s.Phi, nullptr);
+        field.scratchBlock(first, BlockTiles, TileEdge / 2, Ghost, s.Phi, nullptr);
         Interp interp(s.Phi);
-        for (Index q : points)
+        for (size_t j = from; j < to; ++j)
         {
-          const double v = std::fabs(interpolate(interp, s.Phi.spec(), cloud.Points[static_cast<size_t>(q)].data()));
-          sums[static_cast<size_t>(id)] += v;
-          fars[static_cast<size_t>(id)] += v > far ? 1.0 : 0.0;
+          const double v =
+            std::fabs(interpolate(interp, s.Phi.spec(), cloud.Points[static_cast<size_t>(byBlock[j].second)].data()));
+          sums[static_cast<size_t>(block)] += v;
+          fars[static_cast<size_t>(block)] += v > far ? 1.0 : 0.0;
         }
       }
     },
-    16);
+    1);
   for (size_t j = 0; j < sums.size(); ++j)
   {
     sum += sums[j];
@@ -596,12 +670,14 @@ Status iterateTiled(const ReconstructionPlan<D>& plan, int run, const Context& c
   std::vector<double> energies;
   double bandSizes = 0.0;
   TiledReinitialiser<D> reinit;
+  TiledDistances<D> distances;
   for (int n = 0; n < options.MaxIterations; ++n)
   {
     bandTiles(field, ctx, band);
     Index added = 0;
-    SLTK_RETURN_IF_ERROR(surroundBand(band, *plan.Locator, options, run, ctx, field, added));
+    SLTK_RETURN_IF_ERROR(extendBand(band, bandReachNodes(options), options, run, ctx, field, added));
     storage.AddedTiles += added;
+    storage.ExactDistances += distances.ensure(field, band, *plan.Locator, ctx);
     EnergyOptions energyOptions;
     energyOptions.P = model.P;
     energyOptions.SecondP = model.P != 2.0 ? 2.0 : 0.0;
@@ -676,14 +752,14 @@ Status iterateTiled(const ReconstructionPlan<D>& plan, int run, const Context& c
 }
 
 template <int D>
-void recordStorage(const TiledField<D>& field, int run, Index added, std::vector<TiledRunRecord>& storage)
+void recordStorage(
+  const TiledField<D>& field, int run, const TiledRunRecord& iterations, std::vector<TiledRunRecord>& storage)
 {
-  TiledRunRecord r;
+  TiledRunRecord r = iterations;
   r.Run = run;
   r.Tiles = field.tileCount();
   r.StoredNodes = field.tileCount() * TiledField<D>::Nodes;
   r.UniformNodes = field.grid().nodeCount();
-  r.AddedTiles = added;
   r.Bytes = field.bytes();
   storage.push_back(r);
 }
@@ -704,7 +780,7 @@ Status runTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReco
   {
     // One run: its uniform result, stored in tiles.
     SLTK_RETURN_IF_ERROR(transferToTiles(previous, firstGamma, first.spec(), plan, 1, ctx, result.Field));
-    recordStorage(result.Field, 1, 0, result.Storage);
+    recordStorage(result.Field, 1, TiledRunRecord{}, result.Storage);
     return Status::ok();
   }
   double previousGamma = firstGamma;
@@ -718,6 +794,8 @@ Status runTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReco
     TiledReinitialiser<D> reinit;
     std::vector<std::int32_t> band;
     bandTiles(field, ctx, band);
+    Index added = 0;
+    SLTK_RETURN_IF_ERROR(extendBand(band, bandReachNodes(plan.Options), plan.Options, run, ctx, field, added));
     reinit.markBand(field, band, plan.Options.ReinitDilation, ctx);
     SLTK_RETURN_IF_ERROR(reinit.run(field, plan.Options.Reinit, ctx));
     std::ostringstream log;
@@ -736,7 +814,7 @@ Status runTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReco
     bool vanished = false;
     const Status status = iterateTiled<D, Interp>(plan, run, ctx, field, records, storage, vanished);
     ctx.interrupter().end();
-    recordStorage(field, run, storage.AddedTiles, result.Storage);
+    recordStorage(field, run, storage, result.Storage);
     SLTK_RETURN_IF_ERROR(status);
     last = std::move(field);
     previous.Dense = nullptr;
@@ -753,6 +831,12 @@ Status reconstructTiled(const ReconstructionPlan<D>& plan, const Context& ctx, T
 {
   result = TiledReconstructionResult<D>{};
   result.Box = plan.Box;
+  if (plan.Options.ReinitDilation >= TileEdge)
+  {
+    return Status::invalidArgument("the tiled reconstruction takes a reinitialisation dilation of at most " +
+      std::to_string(TileEdge - 1) + " nodes (one tile), not " + std::to_string(plan.Options.ReinitDilation) +
+      ": use a smaller dilation or the uniform version");
+  }
   const Status status = withInterpolator<D>(
     plan.Options.Interpolator, [&](auto tag) { return runTiled<D, typename decltype(tag)::type>(plan, ctx, result); });
   recordsToUser(plan.Box, result.Records);

@@ -49,6 +49,16 @@ public:
         ball.push_back(v);
       }
     }
+    std::vector<Index> ballOffsets; // the ball's offsets within one tile
+    for (const auto& v : ball)
+    {
+      Index offset = 0;
+      for (int a = 0; a < D; ++a)
+      {
+        offset += v[a] * (Index(1) << (TileBits * a));
+      }
+      ballOffsets.push_back(offset);
+    }
     // Serial: neighbouring tiles share mask entries.
     for (std::int32_t id : band)
     {
@@ -57,6 +67,20 @@ public:
       {
         if (!(std::fabs(p[k]) < field.gamma()))
         {
+          continue;
+        }
+        bool interior = true; // the whole ball inside this tile
+        for (int a = 0; a < D; ++a)
+        {
+          const Index c = (k >> (TileBits * a)) & (TileEdge - 1);
+          interior = interior && c >= dilation && c < TileEdge - dilation;
+        }
+        if (interior)
+        {
+          for (Index offset : ballOffsets)
+          {
+            this->Mask[static_cast<size_t>(id * nodes + k + offset)] = 1;
+          }
           continue;
         }
         const auto i = field.node(id, k);
@@ -77,6 +101,8 @@ public:
       }
     }
     this->Nodes.clear();
+    this->Nodes.shrink_to_fit();
+    this->Nodes.reserve(static_cast<size_t>(std::count(this->Mask.begin(), this->Mask.end(), std::uint8_t(1))));
     for (std::int32_t id = 0; id < field.tileCount(); ++id)
     {
       for (Index k = 0; k < nodes; ++k)
@@ -116,6 +142,7 @@ public:
     this->Coefficient.assign(count, 0.0);
     this->Next.assign(count, 0.0);
     this->classify(field, options, ctx);
+    this->findFaceNeighbours(field);
     for (size_t n = 0; n < count; ++n)
     {
       if (this->Fixed[n])
@@ -157,13 +184,18 @@ public:
         },
         0);
       // parallelSum adds the chunks' maxima: an upper bound of the largest change, enough for the test below.
-      for (size_t n = 0; n < count; ++n)
-      {
-        if (!this->Fixed[n])
+      ctx.parallelFor(0, static_cast<Index>(count),
+        [&](Index b, Index e)
         {
-          field.phi(this->Nodes[n].Tile)[this->Nodes[n].Local] = this->Next[n];
-        }
-      }
+          for (Index n = b; n < e; ++n)
+          {
+            if (!this->Fixed[static_cast<size_t>(n)])
+            {
+              const Node& node = this->Nodes[static_cast<size_t>(n)];
+              field.phi(node.Tile)[node.Local] = this->Next[static_cast<size_t>(n)];
+            }
+          }
+        });
       if (!std::isfinite(change))
       {
         return Status::numericalFailure(
@@ -224,36 +256,64 @@ private:
     return field.slot(field.slotIndex(t));
   }
 
-  /// u = (node, then the lower and upper neighbour of every axis) as ReinitStencil::axes.
+  /// Face neighbours of every tile: for each axis the lower then the upper
+  /// slot's entry (a tile id, or TiledField's Outside / Inside), Outside beyond
+  /// the slots above, Self beyond the grid's first node (constant extension).
+  static constexpr std::int32_t Self = -3;
+  void findFaceNeighbours(const TiledField<D>& field)
+  {
+    this->FaceNeighbours.resize(static_cast<size_t>(field.tileCount()));
+    for (std::int32_t id = 0; id < field.tileCount(); ++id)
+    {
+      const auto& o = field.tileOrigin(id);
+      for (int a = 0; a < D; ++a)
+      {
+        for (int side = 0; side < 2; ++side)
+        {
+          auto t = o;
+          t[a] += side ? 1 : -1;
+          std::int32_t entry = TiledField<D>::Outside;
+          if (t[a] < 0)
+          {
+            entry = Self;
+          }
+          else if (t[a] < field.slotDims()[a])
+          {
+            entry = field.slot(field.slotIndex(t));
+          }
+          this->FaceNeighbours[static_cast<size_t>(id)][static_cast<size_t>(2 * a + side)] = entry;
+        }
+      }
+    }
+  }
+
+  /// u = (node, then the lower and upper neighbour of every axis) as
+  /// ReinitStencil::axes: from the node's tile, or across a tile face from
+  /// the neighbouring tile or slot.
   void axes(const TiledField<D>& field, const Node& node, double* u) const
   {
     const double* p = field.phi(node.Tile);
     u[0] = p[node.Local];
-    bool interior = true;
+    const auto& neighbours = this->FaceNeighbours[static_cast<size_t>(node.Tile)];
     for (int a = 0; a < D; ++a)
     {
+      const Index s = Index(1) << (TileBits * a);
       const Index c = (node.Local >> (TileBits * a)) & (TileEdge - 1);
-      interior = interior && c > 0 && c < TileEdge - 1;
+      const Index across = (TileEdge - 1) * s; // the same node's place in the neighbouring tile
+      u[1 + 2 * a] = c > 0 ? p[node.Local - s] : this->acrossFace(field, neighbours[2 * a], node.Local + across, u[0]);
+      u[2 + 2 * a] = c < TileEdge - 1 ? p[node.Local + s]
+                                      : this->acrossFace(field, neighbours[2 * a + 1], node.Local - across, u[0]);
     }
-    if (interior)
+  }
+
+  /// The value at `local` of a face neighbour `entry`; `self` for Self.
+  double acrossFace(const TiledField<D>& field, std::int32_t entry, Index local, double self) const
+  {
+    if (entry >= 0)
     {
-      for (int a = 0; a < D; ++a)
-      {
-        const Index s = Index(1) << (TileBits * a);
-        u[1 + 2 * a] = p[node.Local - s];
-        u[2 + 2 * a] = p[node.Local + s];
-      }
-      return;
+      return field.phi(entry)[local];
     }
-    const auto i = field.node(node.Tile, node.Local);
-    for (int a = 0; a < D; ++a)
-    {
-      auto j = i;
-      j[a] = std::max<Index>(i[a] - 1, 0); // the grid's first node: constant extension
-      u[1 + 2 * a] = field.value(j);
-      j[a] = i[a] + 1;
-      u[2 + 2 * a] = field.value(j);
-    }
+    return entry == Self ? self : (entry == TiledField<D>::Inside ? -field.gamma() : field.gamma());
   }
 
   /// Role and coefficient of every marked node from phi0 (BandSolver::classify of Reinitialise.cxx).
@@ -319,6 +379,7 @@ private:
 
   std::vector<std::uint8_t> Mask;
   std::vector<Node> Nodes;
+  std::vector<std::array<std::int32_t, 2 * D>> FaceNeighbours;
   std::vector<double> Before, Coefficient, Next;
   std::vector<std::uint8_t> Fixed, Relax;
   double Spacing[D] = {};

@@ -11,15 +11,15 @@
 /// gives the uniform version's nodes away from the front. The slots form a
 /// dense grid over the run's grid (one int32 per 8^D nodes: 8 MB for the
 /// thesis's finest dragon grid of 295M nodes); the stored tiles cost 16 bytes
-/// a node. A band tile whose neighbours are all tiles has every node the
-/// semi-Lagrangian step can reach (its feet are checked, TiledReconstruction)
-/// in the 3^D block of tiles around it: scratch() copies that block into a
-/// uniform GridField, on which the uniform version's kernels run unchanged.
+/// a node. scratch() and scratchBlock() copy a tile or a block of tiles and
+/// the nodes around it (tiles or slots) into a uniform GridField, on which the
+/// uniform version's kernels run unchanged.
 
 #include "sltk/grid/GridField.h"
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace sltk
@@ -72,16 +72,16 @@ public:
   std::array<Index, D> slotCoordinates(Index s) const;
 
   /// Allocates a tile in slot s (when it has none): its phi is the slot's
-  /// +-gamma, its distance 0 until set. Returns the tile's id.
+  /// +-gamma, its distance NaN (not computed) until set. Returns the tile's id.
   std::int32_t addTile(Index s);
   /// Tile coordinates of tile `id`.
   const std::array<Index, D>& tileOrigin(std::int32_t id) const { return this->Origins[static_cast<size_t>(id)]; }
   Index tileSlot(std::int32_t id) const { return this->SlotOf[static_cast<size_t>(id)]; }
 
-  double* phi(std::int32_t id) { return this->Phi.data() + static_cast<size_t>(id) * Nodes; }
-  const double* phi(std::int32_t id) const { return this->Phi.data() + static_cast<size_t>(id) * Nodes; }
-  double* distance(std::int32_t id) { return this->Dist.data() + static_cast<size_t>(id) * Nodes; }
-  const double* distance(std::int32_t id) const { return this->Dist.data() + static_cast<size_t>(id) * Nodes; }
+  double* phi(std::int32_t id) { return this->values(id); }
+  const double* phi(std::int32_t id) const { return this->values(id); }
+  double* distance(std::int32_t id) { return this->values(id) + ChunkTiles * Nodes; }
+  const double* distance(std::int32_t id) const { return this->values(id) + ChunkTiles * Nodes; }
 
   /// Grid index of node `local` (x fastest, in [0, Nodes)) of tile `id`.
   std::array<Index, D> node(std::int32_t id, Index local) const
@@ -106,19 +106,22 @@ public:
   /// phi at grid index i (any integers: beyond the slots, +gamma).
   double value(const std::array<Index, D>& i) const;
 
-  /// Whether all 3^D - 1 neighbours of tile `id` are tiles (those beyond the
-  /// slots count as present: phi is +gamma there).
-  bool surrounded(std::int32_t id) const;
-
   /// Tile `id` and `halo` nodes around it as a uniform field with `ghost`
   /// ghost layers filled by the grid's boundary policy: phi, and d when
-  /// `dist` is not null. Missing tiles read +-gamma (phi) and 0 (d).
-  void scratch(std::int32_t id, int halo, int ghost, GridField<D>& phi, GridField<D>* dist) const;
+  /// `dist` is not null. Missing tiles read +-gamma (phi) and NaN (d).
+  void scratch(std::int32_t id, int halo, int ghost, GridField<D>& phi, GridField<D>* dist) const
+  {
+    this->scratchBlock(this->tileOrigin(id), 1, halo, ghost, phi, dist);
+  }
+  /// The same for the block of `tiles`^D tile positions whose first tile
+  /// coordinates are `first` (slots with or without a tile, or beyond them).
+  void scratchBlock(
+    const std::array<Index, D>& first, Index tiles, int halo, int ghost, GridField<D>& phi, GridField<D>* dist) const;
 
   /// Bytes held (tiles and slots).
   double bytes() const
   {
-    return static_cast<double>(this->Phi.capacity() + this->Dist.capacity()) * sizeof(double) +
+    return static_cast<double>(this->Chunks.size()) * ChunkTiles * Nodes * 2.0 * sizeof(double) +
       static_cast<double>(this->Slots.capacity()) * sizeof(std::int32_t) +
       static_cast<double>(this->Origins.capacity()) * (sizeof(std::array<Index, D>) + sizeof(Index));
   }
@@ -130,7 +133,14 @@ private:
   std::vector<std::int32_t> Slots;
   std::vector<std::array<Index, D>> Origins;
   std::vector<Index> SlotOf;
-  std::vector<double> Phi, Dist;
+  /// Tiles are stored in chunks of ChunkTiles (phi of each, then d of each),
+  /// so that adding tiles never moves or copies the stored ones.
+  static constexpr Index ChunkTiles = 64;
+  double* values(std::int32_t id) const
+  {
+    return this->Chunks[static_cast<size_t>(id / ChunkTiles)].get() + (id % ChunkTiles) * Nodes;
+  }
+  std::vector<std::unique_ptr<double[]>> Chunks;
 };
 
 extern template class TiledField<2>;

@@ -9,14 +9,16 @@
 ///  - Run 1 is the uniform version's (its grid is the coarsest, 1/4^(R-1)
 ///    of the finest in 3D, and the outside marking 4.4.4 needs the whole box).
 ///  - Run r >= 2 keeps the tiles within one tile of run r-1's band, with phi
-///    transferred by Q1 and d exact at every stored node; every other tile is a
-///    side (+-gamma) taken from the sign of run r-1's phi.
+///    transferred by Q1 and d exact where the band reaches (within one node of
+///    a band node, computed the first time); every other tile is a side
+///    (+-gamma) taken from the sign of run r-1's phi.
 ///  - Every iteration is the uniform version's (4.22)/(4.24) step, energy
 ///    (4.29)/(4.30), reinitialisation (4.4.5), cut (1.49) and stopping rule
-///    (4.33), run tile by tile on the 3^D block of tiles around each band tile;
-///    a band tile whose neighbours are not all tiles gets them first, so the
-///    band may move anywhere. The feet of (4.24) must stay within one tile of
-///    their node's tile (checked: an error names the displacement otherwise).
+///    (4.33), run on copies of tiles or blocks of tiles and the nodes around
+///    them; the slots within the reinitialisation's reach of a band node get
+///    tiles first, so the band may move anywhere. The feet of (4.24) must stay
+///    within 30 nodes of their tile (checked: an error names the displacement
+///    otherwise).
 ///  - One deviation: the reinitialisation's pseudo-time steps evaluate the sign
 ///    (1.31) from the current iterate rather than from phi0 (the steady state
 ///    is the same; every step needs its tiles' neighbours, Documentation/Octree.md).
@@ -34,11 +36,12 @@ namespace sltk
 struct TiledRunRecord
 {
   int Run = 0;
-  Index Tiles = 0;        ///< tiles at the end of the run
-  Index StoredNodes = 0;  ///< Tiles * 8^D
-  Index UniformNodes = 0; ///< the uniform grid of the run
-  Index AddedTiles = 0;   ///< tiles added during the run (the band moved)
-  double Bytes = 0.0;     ///< the field's memory at the end of the run
+  Index Tiles = 0;          ///< tiles at the end of the run
+  Index StoredNodes = 0;    ///< Tiles * 8^D
+  Index UniformNodes = 0;   ///< the uniform grid of the run
+  Index AddedTiles = 0;     ///< tiles added during the run (the band moved)
+  Index ExactDistances = 0; ///< nodes whose distance to the cloud was computed (TiledDistances)
+  double Bytes = 0.0;       ///< the field's memory at the end of the run
 };
 
 template <int D>
