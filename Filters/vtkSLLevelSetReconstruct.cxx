@@ -5,6 +5,7 @@
 #include "SLTKCommunicator.h"
 #include "SLTKGuard.h"
 #include "SLTKReconstructionOutput.h"
+#include "SLTKTiledGrid.h"
 #include "SLTKTiledSurface.h"
 
 #include "sltk/exec/CountingCommunicator.h"
@@ -16,6 +17,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
+#include "vtkHyperTreeGrid.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -23,6 +25,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
 
@@ -52,7 +55,8 @@ int vtkSLLevelSetReconstruct::FillInputPortInformation(int, vtkInformation* info
 
 int vtkSLLevelSetReconstruct::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  static const char* types[3] = { "vtkImageData", "vtkPolyData", "vtkTable" };
+  // Port 0: vtkImageData or, with AdaptiveStorage, vtkHyperTreeGrid (RequestDataObject).
+  static const char* types[3] = { "vtkDataObject", "vtkPolyData", "vtkTable" };
   info->Set(vtkDataObject::DATA_TYPE_NAME(), types[port]);
   return 1;
 }
@@ -166,12 +170,34 @@ void markOutputsComplete(vtkInformationVector* outputs, int imageGhostLevels = E
   }
 }
 
-/// Runs 2..R stored as tiles (AdaptiveStorage): the surface contoured tile by
-/// tile, the run summary with the stored and the uniform node counts per run;
-/// no image.
-int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionPlan<3>& plan,
-  const sltk::Context& ctx, vtkImageData* image, vtkPolyData* surface, vtkTable* history)
+/// Port 0 as the type RequestDataObject makes for AdaptiveStorage (a hyper
+/// tree grid with it, an image without); null, with the error, otherwise.
+template <class T>
+T* portZeroAs(vtkSLLevelSetReconstruct* self, vtkDataObject* output)
 {
+  T* typed = T::SafeDownCast(output);
+  if (!typed)
+  {
+    vtkErrorWithObjectMacro(self,
+      "port 0 is a " << (output ? output->GetClassName() : "null") << " where AdaptiveStorage "
+                     << (self->GetAdaptiveStorage() ? "on" : "off")
+                     << " needs another type: update the pipeline after changing it");
+  }
+  return typed;
+}
+
+/// Runs 2..R stored as tiles (AdaptiveStorage): the field as a hyper tree grid
+/// (every stored node's distance to the cloud computed first), the surface
+/// contoured tile by tile, the run summary with the stored and the uniform
+/// node counts per run.
+int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionPlan<3>& plan,
+  const sltk::Context& ctx, vtkDataObject* output, vtkPolyData* surface, vtkTable* history)
+{
+  auto* grid = portZeroAs<vtkHyperTreeGrid>(self, output);
+  if (!grid)
+  {
+    return 0;
+  }
   sltk::TiledReconstructionResult<3> result;
   const sltk::Status status = sltk::reconstructTiled(plan, ctx, result);
   if (!status.isOk())
@@ -179,7 +205,11 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
     vtkErrorWithObjectMacro(self, "Reconstruction failed: " << status.message());
     return 0;
   }
-  sltk::vtkbridge::runSummary(result.Records, image);
+  sltk::completeTiledDistances(plan, ctx, result.Field);
+  const sltk::PointLocator<3>& locator = *plan.Locator;
+  sltk::vtkbridge::tiledToHyperTreeGrid(
+    result.Field, result.Box, [&locator](const std::array<double, 3>& x) { return locator.nearest(x).Distance; }, grid);
+  sltk::vtkbridge::runSummary(result.Records, grid);
   vtkNew<vtkDoubleArray> stored, uniform;
   stored->SetName("RunStoredNodes");
   uniform->SetName("RunUniformNodes");
@@ -195,8 +225,8 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
     stored->InsertNextValue(held);
     uniform->InsertNextValue(all);
   }
-  image->GetFieldData()->AddArray(stored);
-  image->GetFieldData()->AddArray(uniform);
+  grid->GetFieldData()->AddArray(stored);
+  grid->GetFieldData()->AddArray(uniform);
   sltk::vtkbridge::historyTable(result.Records.History, history);
   sltk::vtkbridge::tiledZeroLevelSet(result.Field, result.Box, surface);
   return 1;
@@ -207,7 +237,7 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
 /// with AdaptiveStorage, the surface.
 template <int D>
 int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, double z, const sltk::Context& ctx,
-  const sltk::Communicator& comm, int ghostLevels, vtkImageData* image, vtkPolyData* surface, vtkTable* history)
+  const sltk::Communicator& comm, int ghostLevels, vtkDataObject* output, vtkPolyData* surface, vtkTable* history)
 {
   sltk::ReconstructionOptions options;
   sltk::Status status = optionsOf(self, options);
@@ -237,7 +267,7 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
   {
     if (self->GetAdaptiveStorage())
     {
-      return reconstructTiledInto(self, plan, ctx, image, surface, history);
+      return reconstructTiledInto(self, plan, ctx, output, surface, history);
     }
   }
   else if (self->GetAdaptiveStorage())
@@ -245,6 +275,11 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
     vtkErrorWithObjectMacro(self,
       "AdaptiveStorage is for 3D clouds; this cloud is planar (a 2D reconstruction): "
       "turn AdaptiveStorage off");
+    return 0;
+  }
+  auto* image = portZeroAs<vtkImageData>(self, output);
+  if (!image)
+  {
     return 0;
   }
   sltk::ReconstructionResult<D> result;
@@ -281,8 +316,36 @@ int vtkSLLevelSetReconstruct::RequestUpdateExtent(
 vtkTypeBool vtkSLLevelSetReconstruct::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  return sltk::vtkbridge::guardedRequest(
-    this, [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); });
+  return sltk::vtkbridge::guardedRequest(this,
+    [&]
+    {
+      if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+      {
+        return this->RequestDataObject(request, inputVector, outputVector);
+      }
+      return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+    });
+}
+
+int vtkSLLevelSetReconstruct::RequestDataObject(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  vtkDataObject* current = info->Get(vtkDataObject::DATA_OBJECT());
+  if (this->AdaptiveStorage ? !vtkHyperTreeGrid::SafeDownCast(current) : !vtkImageData::SafeDownCast(current))
+  {
+    vtkSmartPointer<vtkDataObject> made;
+    if (this->AdaptiveStorage)
+    {
+      made = vtkSmartPointer<vtkHyperTreeGrid>::New();
+    }
+    else
+    {
+      made = vtkSmartPointer<vtkImageData>::New();
+    }
+    info->Set(vtkDataObject::DATA_OBJECT(), made);
+  }
+  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -290,7 +353,7 @@ int vtkSLLevelSetReconstruct::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
-  vtkImageData* image = vtkImageData::GetData(outputVector, 0);
+  vtkDataObject* output = vtkDataObject::GetData(outputVector, 0); // image or hyper tree grid
   vtkPolyData* surface = vtkPolyData::GetData(outputVector, 1);
   vtkTable* history = vtkTable::GetData(outputVector, 2);
 
@@ -343,15 +406,15 @@ int vtkSLLevelSetReconstruct::RequestData(
   sltk::PointCloud<2> flat;
   double z = 0.0;
   const int done = sltk::flattenIfPlanar(cloud, flat, z)
-    ? reconstructInto<2>(this, std::move(flat), z, ctx, *comm, ghostLevels, image, surface, history)
-    : reconstructInto<3>(this, std::move(cloud), 0.0, ctx, *comm, ghostLevels, image, surface, history);
+    ? reconstructInto<2>(this, std::move(flat), z, ctx, *comm, ghostLevels, output, surface, history)
+    : reconstructInto<3>(this, std::move(cloud), 0.0, ctx, *comm, ghostLevels, output, surface, history);
   if (!done)
   {
     return 0;
   }
   if (!this->AdaptiveStorage)
   {
-    sltk::vtkbridge::zeroLevelSet(image, surface);
+    sltk::vtkbridge::zeroLevelSet(vtkImageData::SafeDownCast(output), surface);
   }
   sltk::vtkbridge::transferCloudAttributes(input, surface);
   markOutputsComplete(outputVector,

@@ -9,7 +9,8 @@
  *  - port 0: vtkImageData with the point arrays "SignedDistance" (negative
  *    inside; cut at +-4 dx away from the surface, (1.49)) and "DistanceToCloud",
  *    and a per-run summary in its field data (CloudSpacing, RunGridDimensions,
- *    RunIterations, RunEnergy, RunCloudError, RunSeconds);
+ *    RunIterations, RunEnergy, RunCloudError, RunSeconds); with
+ *    AdaptiveStorage a vtkHyperTreeGrid with the same values as cell data;
  *  - port 1: vtkPolyData, the zero isosurface (3D) or contour (2D);
  *  - port 2: vtkTable, the convergence history (run, iteration, energy E_2,
  *    eps_1, Err_P, band size, time) for ParaView line charts.
@@ -215,10 +216,13 @@ public:
   /// 8^3 nodes within one tile of the front, the finest levels of the octree
   /// (sltk/tiled/TiledReconstruction.h, Documentation/Octree.md "The tiled
   /// band"): the same iterations and surface as the uniform grids, with memory
-  /// that follows the surface. Port 0 then holds no SignedDistance image, only
-  /// the run summary in its field data (with RunStoredNodes and
-  /// RunUniformNodes); the surface (port 1) is contoured tile by tile. The
-  /// automatic restart with a finer C_dx for thin parts is not done.
+  /// that follows the surface. Port 0 is then a vtkHyperTreeGrid instead of
+  /// the image: one tree per 8^3 nodes, refined to one leaf per node where a
+  /// tile is stored and a single leaf (+-gamma) elsewhere, with the cell data
+  /// SignedDistance, DistanceToCloud and Level, and the run summary in its
+  /// field data (with RunStoredNodes and RunUniformNodes); the surface (port
+  /// 1) is contoured tile by tile. The automatic restart with a finer C_dx for
+  /// thin parts is not done.
   vtkSetMacro(AdaptiveStorage, bool);
   vtkGetMacro(AdaptiveStorage, bool);
   vtkBooleanMacro(AdaptiveStorage, bool);
@@ -246,6 +250,8 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// Port 0's type: vtkImageData, or vtkHyperTreeGrid with AdaptiveStorage.
+  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   /// Every request runs guarded: an exception becomes the filter's error (SLTKGuard.h).
   vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 

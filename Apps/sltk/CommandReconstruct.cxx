@@ -23,6 +23,7 @@
 #include <vtkDataArray.h>
 #include <vtkDelimitedTextWriter.h>
 #include <vtkFieldData.h>
+#include <vtkHyperTreeGrid.h>
 #include <vtkImageData.h>
 #include <vtkLogger.h>
 #include <vtkMultiProcessController.h>
@@ -144,10 +145,11 @@ std::string Reconstruct::problemBeforeWork(bool pieces, vtkPolyData* reference, 
   {
     return "give either --eta or --schedule (a schedule sets eta of every run)";
   }
-  const std::string paths = outputPathsProblem(
-    { { "input cloud", this->Cloud }, { "--reference mesh", this->Reference } },
-    { { "-o", this->Output, { "vti", "pvti" } }, { "--surface", this->Surface, {} }, { "--png", this->Png, { "png" } },
-      { "--csv", this->Csv, { "csv", "txt" } }, { "--json", this->Json, { "json" } } });
+  const std::string paths =
+    outputPathsProblem({ { "input cloud", this->Cloud }, { "--reference mesh", this->Reference } },
+      { { "-o", this->Output, { "vti", "pvti", "htg" } }, { "--surface", this->Surface, {} },
+        { "--png", this->Png, { "png" } }, { "--csv", this->Csv, { "csv", "txt" } },
+        { "--json", this->Json, { "json" } } });
   if (!paths.empty())
   {
     return paths;
@@ -162,10 +164,16 @@ std::string Reconstruct::problemBeforeWork(bool pieces, vtkPolyData* reference, 
   {
     return folder;
   }
-  if (this->Octree && this->given("--output"))
+  const bool treeOutput = this->given("--output") && extensionOf(this->Output) == "htg";
+  if (this->Octree && this->given("--output") && !treeOutput)
   {
-    return "--octree stores no full grid, so there is no image for -o: write --surface, --json or --csv "
-           "(the octree's .htg output is not built yet)";
+    return "--octree stores no full grid, so its -o is a hyper tree grid (one tree per 8^3 nodes, refined near the "
+           "front): write -o FILE.htg";
+  }
+  if (!this->Octree && treeOutput)
+  {
+    return "-o FILE.htg is --octree's output (a hyper tree grid): add --octree, or write the uniform grid as .vti "
+           "(.pvti under mpirun)";
   }
   if (MpiSession::rank() > 0)
   {
@@ -275,7 +283,8 @@ int Reconstruct::run() const
       withMergedScanHint(
         errors->Message, static_cast<size_t>(cloud->GetNumberOfPoints()), o.Cleaning.ThinningFactor > 0));
   }
-  auto* image = vtkImageData::SafeDownCast(filter->GetOutputDataObject(0));
+  vtkDataObject* grid = filter->GetOutputDataObject(0); // the image, or --octree's hyper tree grid
+  auto* image = vtkImageData::SafeDownCast(grid);
   auto* history = vtkTable::SafeDownCast(filter->GetOutputDataObject(2));
   const double seconds =
     MpiSession::maxOverRanks(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -302,7 +311,7 @@ int Reconstruct::run() const
   const double peakMb = MpiSession::maxOverRanks(static_cast<double>(sltk::peakResidentBytes()) / 1e6);
   const auto rankValue = [&](const char* name)
   {
-    vtkDataArray* a = image->GetFieldData()->GetArray(name);
+    vtkDataArray* a = grid->GetFieldData()->GetArray(name);
     return MpiSession::maxOverRanks(a ? a->GetTuple1(0) : 0.0);
   };
   const double bytesSent = rankValue("RankBytesSent"), collectives = rankValue("RankCollectives");
@@ -316,7 +325,7 @@ int Reconstruct::run() const
   vtkPolyData* surface = joined;
 
   // Summary table.
-  vtkFieldData* fd = image->GetFieldData();
+  vtkFieldData* fd = grid->GetFieldData();
   auto* grids = fd->GetArray("RunGridDimensions");
   auto* its = fd->GetArray("RunIterations");
   auto* energy = fd->GetArray("RunEnergy");
@@ -426,7 +435,8 @@ int Reconstruct::run() const
 
   if (this->given("--output") && !pieces)
   {
-    status = writeImage(this->Output, image);
+    status = this->Octree ? writeHyperTreeGrid(this->Output, vtkHyperTreeGrid::SafeDownCast(grid))
+                          : writeImage(this->Output, image);
     if (!status.isOk())
     {
       return fail(status.message());
@@ -502,7 +512,7 @@ Command addReconstructCommand(CLI::App& sltk)
     ->add_option("-o,--output", command->Output,
       "signed distance (and distance to the cloud) on the grid; under\nmpirun, .pvti: every rank writes its own "
       "block (FILE/FILE_<rank>.vti)")
-    ->option_text("FILE.vti|.pvti");
+    ->option_text("FILE.vti|.pvti|.htg");
   app->add_option("--surface", command->Surface, "zero level set: .vtp, .ply, .stl (3D) or .vtp (2D)")
     ->check(CLI::Validator(surfaceFormatProblem, ""))
     ->option_text("FILE");
@@ -551,7 +561,7 @@ Command addReconstructCommand(CLI::App& sltk)
     ->option_text("MESH");
   app->add_flag("--octree", command->Octree,
     "memory that follows the surface: runs 2..R store only 8^3-node tiles\naround the front (the octree's finest "
-    "levels; the same surface);\nno -o image");
+    "levels; the same surface);\n-o FILE.htg: the grid as a hyper tree grid");
   app->add_flag("--quiet", command->Quiet, "no progress bar");
   app->add_flag(
     "--verbose", command->Verbose, "the solver's log (cleaning counts, grids, per-run phase times) on stderr");

@@ -5,11 +5,13 @@
 
 #include "WriteAtomically.h"
 
+#include <vtkHyperTreeGrid.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPLYWriter.h>
 #include <vtkPolyData.h>
 #include <vtkSTLWriter.h>
+#include <vtkXMLHyperTreeGridWriter.h>
 #include <vtkXMLImageDataWriter.h>
 #include <vtkXMLPolyDataWriter.h>
 
@@ -60,6 +62,23 @@ sltk::Status writeImage(const std::string& path, vtkImageData* image)
 {
   return writeAtomically(
     path, [&](const std::string& temporary) { return writeWith<vtkXMLImageDataWriter>(image, temporary); });
+}
+
+sltk::Status writeHyperTreeGrid(const std::string& path, vtkHyperTreeGrid* grid)
+{
+  if (!grid)
+  {
+    return sltk::Status::invalidArgument("no hyper tree grid to write to " + path);
+  }
+  return writeAtomically(path,
+    [&](const std::string& temporary)
+    {
+      vtkNew<vtkXMLHyperTreeGridWriter> writer;
+      writer->SetInputData(grid);
+      writer->SetFileName(temporary.c_str());
+      writer->SetDataModeToBinary();
+      return writer->Write() == 1;
+    });
 }
 
 } // namespace sltkcli

@@ -2,12 +2,13 @@
 #pragma once
 /// \file WriteSurface.h
 /// Writes the CLI's VTK outputs atomically: a surface by its file extension
-/// (.vtp, .ply, .stl) and an image as .vti.
+/// (.vtp, .ply, .stl), an image as .vti and a hyper tree grid as .htg.
 
 #include "sltk/core/Status.h"
 
 #include <string>
 
+class vtkHyperTreeGrid;
 class vtkImageData;
 class vtkPolyData;
 
@@ -21,5 +22,9 @@ sltk::Status writeSurface(const std::string& path, vtkPolyData* surface);
 
 /// XML image data (.vti).
 sltk::Status writeImage(const std::string& path, vtkImageData* image);
+
+/// XML hyper tree grid (.htg), binary (VTK 9.2's appended mode corrupts hyper
+/// tree grids with several cell arrays, Documentation/Toolchain.md).
+sltk::Status writeHyperTreeGrid(const std::string& path, vtkHyperTreeGrid* grid);
 
 } // namespace sltkcli

@@ -104,7 +104,7 @@ void toImage(ReconstructionResult<D>& result, double z, int ghostLevels, vtkImag
 }
 
 template <int D>
-void runSummary(const ReconstructionResult<D>& result, vtkImageData* image)
+void runSummary(const ReconstructionResult<D>& result, vtkDataObject* image)
 {
   vtkNew<vtkDoubleArray> spacing;
   spacing->SetName("CloudSpacing");
@@ -344,7 +344,7 @@ void historyTable(const std::vector<IterationRecord>& history, vtkTable* table)
   table->AddColumn(seconds);
 }
 
-void communicationSummary(int ranks, std::int64_t bytesSent, std::int64_t collectives, vtkImageData* image)
+void communicationSummary(int ranks, std::int64_t bytesSent, std::int64_t collectives, vtkDataObject* image)
 {
   const std::pair<const char*, double> values[3] = { { "Ranks", static_cast<double>(ranks) },
     { "RankBytesSent", static_cast<double>(bytesSent) }, { "RankCollectives", static_cast<double>(collectives) } };
@@ -359,8 +359,8 @@ void communicationSummary(int ranks, std::int64_t bytesSent, std::int64_t collec
 
 template void toImage(ReconstructionResult<2>&, double, int, vtkImageData*);
 template void toImage(ReconstructionResult<3>&, double, int, vtkImageData*);
-template void runSummary(const ReconstructionResult<2>&, vtkImageData*);
-template void runSummary(const ReconstructionResult<3>&, vtkImageData*);
+template void runSummary(const ReconstructionResult<2>&, vtkDataObject*);
+template void runSummary(const ReconstructionResult<3>&, vtkDataObject*);
 
 } // namespace vtkbridge
 } // namespace sltk

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 
+class vtkDataObject;
 class vtkImageData;
 class vtkPointSet;
 class vtkPolyData;
@@ -37,7 +38,8 @@ void toImage(ReconstructionResult<D>& result, double z, int ghostLevels, vtkImag
 /// rows but the one the blocks share (SlabPolicy.h).
 constexpr int ImageGhostLevelsAvailable = static_cast<int>(SlabGhostRows) - 1;
 
-/// Per-run summary as field data of the image: CloudSpacing (h_P), the cleaning
+/// Per-run summary as field data of the output (the image, or the tiled
+/// reconstruction's hyper tree grid): CloudSpacing (h_P), the cleaning
 /// counts, CellSizeFactor and OutsideThresholdFactor used, AutomaticChoices and
 /// Recoveries (strings, AutomaticParameters.h), and one
 /// tuple per run in RunGridDimensions (3 components), RunIterations,
@@ -45,12 +47,12 @@ constexpr int ImageGhostLevelsAvailable = static_cast<int>(SlabGhostRows) - 1;
 /// more than one cell of run 1 from the surface), RunSeconds, RunGhostRows (the
 /// slabs' ghost rows at the run's end; 0 on one rank).
 template <int D>
-void runSummary(const ReconstructionResult<D>& result, vtkImageData* image);
+void runSummary(const ReconstructionResult<D>& result, vtkDataObject* image);
 
 /// The distributed run's traffic as field data of the image: Ranks, and this
 /// rank's RankBytesSent (point to point: the ghost-row exchanges) and
 /// RankCollectives (reductions and agreements) (CountingCommunicator.h).
-void communicationSummary(int ranks, std::int64_t bytesSent, std::int64_t collectives, vtkImageData* image);
+void communicationSummary(int ranks, std::int64_t bytesSent, std::int64_t collectives, vtkDataObject* image);
 
 /// Zero level set of the image's SignedDistance: triangles (3D, flying edges)
 /// or line segments (2D), coincident vertices merged; ghost rows (toImage())
@@ -71,8 +73,8 @@ void historyTable(const std::vector<IterationRecord>& history, vtkTable* table);
 
 extern template void toImage(ReconstructionResult<2>&, double, int, vtkImageData*);
 extern template void toImage(ReconstructionResult<3>&, double, int, vtkImageData*);
-extern template void runSummary(const ReconstructionResult<2>&, vtkImageData*);
-extern template void runSummary(const ReconstructionResult<3>&, vtkImageData*);
+extern template void runSummary(const ReconstructionResult<2>&, vtkDataObject*);
+extern template void runSummary(const ReconstructionResult<3>&, vtkDataObject*);
 
 } // namespace vtkbridge
 } // namespace sltk

@@ -123,6 +123,19 @@ expect(all(k in summary for k in ("seconds", "peak_memory_mb")) and
        all(k in summary["runs"][0] for k in ("grid", "iterations", "energy", "err_cloud")), "reconstruct JSON fields")
 expect(os.path.getsize(out_vti) > 0 and open(out_ply, "rb").read(3) == b"ply", "signed distance and PLY surface written")
 expect(open(out_csv).readline().startswith("Run,Iteration,Energy"), "convergence CSV written")
+# --octree: the tiled grid as a hyper tree grid (.htg), the surface and JSON as the uniform run's.
+out_htg = os.path.join(tmp, "sphere.htg")
+octree_json = os.path.join(tmp, "octree.json")
+rc, out, err = run("reconstruct", sphere, "--runs", "2", "--interpolator", "q1", "--octree", "-o", out_htg,
+                   "--json", octree_json, "--quiet")
+expect(rc == 0, "reconstruct --octree -o FILE.htg exits 0 (%s)" % err.strip())
+head = open(out_htg, "rb").read(400) if os.path.exists(out_htg) else b""
+expect(b'type="HyperTreeGrid"' in head and b"SignedDistance" in open(out_htg, "rb").read(),
+       "--octree -o writes a hyper tree grid with the signed distance")
+tree_runs = json.load(open(octree_json))["runs"]
+expect([r["iterations"] for r in tree_runs] == [r["iterations"] for r in summary["runs"]] and
+       0 < tree_runs[1]["stored_nodes"] < tree_runs[1]["uniform_nodes"],
+       "--octree: the uniform run's iterations, fewer nodes stored in run 2")
 # --reference: Chamfer/Hausdorff against a UV sphere mesh (OFF), radius 1.
 off = os.path.join(tmp, "sphere.off")
 rings, sectors = 40, 80

@@ -58,6 +58,33 @@ public:
     return total;
   }
 
+  /// Makes d exact at every stored node (for an output of the whole field).
+  /// Returns how many nodes were computed.
+  static Index completeAll(TiledField<D>& field, const PointLocator<D>& locator, const Context& ctx)
+  {
+    return static_cast<Index>(ctx.parallelSum(
+      0, field.tileCount(),
+      [&](Index b, Index e)
+      {
+        double computed = 0.0;
+        for (Index id = b; id < e; ++id)
+        {
+          const auto tile = static_cast<std::int32_t>(id);
+          double* d = field.distance(tile);
+          for (Index k = 0; k < TiledField<D>::Nodes; ++k)
+          {
+            if (std::isnan(d[k]))
+            {
+              d[k] = locator.nearest(field.position(field.node(tile, k))).Distance;
+              computed += 1.0;
+            }
+          }
+        }
+        return computed;
+      },
+      8));
+  }
+
 private:
   /// The tiles (not yet complete) within one node of a band node: each band
   /// tile and those of its neighbours that its band nodes touch.

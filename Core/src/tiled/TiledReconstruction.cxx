@@ -844,7 +844,15 @@ Status reconstructTiled(const ReconstructionPlan<D>& plan, const Context& ctx, T
   return status;
 }
 
+template <int D>
+Index completeTiledDistances(const ReconstructionPlan<D>& plan, const Context& ctx, TiledField<D>& field)
+{
+  return TiledDistances<D>::completeAll(field, *plan.Locator, ctx);
+}
+
 template Status reconstructTiled(const ReconstructionPlan<2>&, const Context&, TiledReconstructionResult<2>&);
+template Index completeTiledDistances(const ReconstructionPlan<2>&, const Context&, TiledField<2>&);
+template Index completeTiledDistances(const ReconstructionPlan<3>&, const Context&, TiledField<3>&);
 template Status reconstructTiled(const ReconstructionPlan<3>&, const Context&, TiledReconstructionResult<3>&);
 
 } // namespace sltk

@@ -4,12 +4,16 @@
 #include "vtkOctreeSDF.h"
 #include "vtkSLLevelSetReconstruct.h"
 
+#include "vtkBitArray.h"
+#include "vtkCellData.h"
+#include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFeatureEdges.h"
 #include "vtkFieldData.h"
 #include "vtkHyperTreeGrid.h"
+#include "vtkHyperTreeGridContour.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkLogger.h"
@@ -19,6 +23,8 @@
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
+#include "vtkXMLHyperTreeGridReader.h"
+#include "vtkXMLHyperTreeGridWriter.h"
 
 #include <cmath>
 #include <iostream>
@@ -51,8 +57,9 @@ vtkSmartPointer<vtkPolyData> cloud(int n, double scale)
 }
 } // namespace
 
-int main()
+int main(int argc, char* argv[])
 {
+  const std::string outDir = argc > 1 ? argv[1] : ".";     // files written and read back
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // expected errors stay quiet
 
   // HJB solver: whole extent, spacing, a sub-extent request, T = 0 and a real solve.
@@ -164,12 +171,58 @@ int main()
         " vs " + std::to_string(uniformPoints) + ")");
     auto* tiledTable = vtkTable::SafeDownCast(recon->GetOutputDataObject(2));
     check(tiledTable && tiledTable->GetNumberOfRows() == uniformRows, "AdaptiveStorage: the same iterations");
-    auto* summary = vtkImageData::SafeDownCast(recon->GetOutputDataObject(0));
-    auto* stored = summary->GetFieldData()->GetArray("RunStoredNodes");
-    auto* all = summary->GetFieldData()->GetArray("RunUniformNodes");
-    check(summary->GetNumberOfPoints() == 0 && stored && all && stored->GetNumberOfTuples() == 2 &&
-        stored->GetTuple1(0) == all->GetTuple1(0) && stored->GetTuple1(1) > 0,
-      "AdaptiveStorage: no image, stored and uniform node counts per run (run 1 uniform)");
+    auto* tree = vtkHyperTreeGrid::SafeDownCast(recon->GetOutputDataObject(0));
+    check(tree != nullptr, "AdaptiveStorage: port 0 is a hyper tree grid");
+    auto* stored = tree ? tree->GetFieldData()->GetArray("RunStoredNodes") : nullptr;
+    auto* all = tree ? tree->GetFieldData()->GetArray("RunUniformNodes") : nullptr;
+    check(stored && all && stored->GetNumberOfTuples() == 2 && stored->GetTuple1(0) == all->GetTuple1(0) &&
+        stored->GetTuple1(1) > 0 && stored->GetTuple1(1) < all->GetTuple1(1),
+      "AdaptiveStorage: stored and uniform node counts per run (run 1 uniform)");
+    if (tree)
+    {
+      // One leaf per stored node in the grid (level 3), one per slot without a tile (level 0);
+      // its dual grid contours to the tile-by-tile surface, watertight.
+      auto* level = tree->GetCellData()->GetArray("Level");
+      auto* phi = tree->GetCellData()->GetArray("SignedDistance");
+      auto* dist = tree->GetCellData()->GetArray("DistanceToCloud");
+      vtkIdType finest = 0;
+      for (vtkIdType c = 0; level && c < level->GetNumberOfTuples(); ++c)
+      {
+        finest += level->GetTuple1(c) == 3 && !(tree->HasMask() && tree->GetMask()->GetValue(c)) ? 1 : 0;
+      }
+      check(level && phi && dist && finest > 0 && finest <= stored->GetTuple1(1) && dist->GetRange()[0] >= 0.0 &&
+          std::isfinite(dist->GetRange()[1]),
+        "AdaptiveStorage: the tree's leaves hold the stored nodes' values (" + std::to_string(finest) + " of " +
+          std::to_string(static_cast<long long>(stored->GetTuple1(1))) + " stored nodes)");
+      vtkNew<vtkHyperTreeGridContour> contour;
+      contour->SetInputData(tree);
+      contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "SignedDistance");
+      contour->SetValue(0, 0.0);
+      vtkNew<vtkCleanPolyData> merged;
+      merged->SetInputConnection(contour->GetOutputPort());
+      vtkNew<vtkFeatureEdges> treeOpen;
+      treeOpen->SetInputConnection(merged->GetOutputPort());
+      treeOpen->BoundaryEdgesOn();
+      treeOpen->NonManifoldEdgesOn();
+      treeOpen->FeatureEdgesOff();
+      treeOpen->ManifoldEdgesOff();
+      treeOpen->Update();
+      check(merged->GetOutput()->GetNumberOfPoints() == tiled->GetNumberOfPoints() &&
+          treeOpen->GetOutput()->GetNumberOfCells() == 0,
+        "AdaptiveStorage: the tree's contour is the tiled surface (" +
+          std::to_string(merged->GetOutput()->GetNumberOfPoints()) + " vs " +
+          std::to_string(tiled->GetNumberOfPoints()) + " points), watertight");
+      const std::string htg = outDir + "/adaptive.htg";
+      vtkNew<vtkXMLHyperTreeGridWriter> writer;
+      writer->SetInputData(tree);
+      writer->SetFileName(htg.c_str());
+      writer->SetDataModeToBinary();
+      vtkNew<vtkXMLHyperTreeGridReader> reader;
+      reader->SetFileName(htg.c_str());
+      check(
+        writer->Write() == 1 && (reader->Update(), reader->GetOutput()->GetNumberOfCells() == tree->GetNumberOfCells()),
+        "AdaptiveStorage: the tree written as .htg reads back");
+    }
     recon->AdaptiveStorageOff();
     recon->SetNumberOfRuns(99);
     check(recon->GetNumberOfRuns() == 99 && recon->GetExecutive()->Update() == 0,

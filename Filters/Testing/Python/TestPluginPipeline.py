@@ -80,6 +80,21 @@ recon.RunParameters = [0.5, 1]
 recon.UpdatePipeline()
 assert recon.GetDataInformation().GetNumberOfPoints() == 0, "p < 1 is refused"
 recon.RunParameters = []
+# AdaptiveStorage switches the SignedDistance output to a hyper tree grid (and back); ParaView's
+# Contour of its dual grid at 0 is the Surface output.
+recon.AdaptiveStorage = 1
+recon.UpdatePipeline()
+assert recon.GetDataInformation().GetDataClassName() == "vtkHyperTreeGrid", recon.GetDataInformation().GetDataClassName()
+assert {"SignedDistance", "DistanceToCloud", "Level"} <= set(recon.CellData.keys()), recon.CellData.keys()
+tree_surface = Contour(Input=HyperTreeGridToDualGrid(Input=recon), ContourBy=["POINTS", "SignedDistance"], Isosurfaces=[0.0])
+tree_surface.UpdatePipeline()
+tiled_surface = servermanager.Fetch(recon, idx=1)
+bounds = tree_surface.GetDataInformation().GetBounds()
+assert tree_surface.GetDataInformation().GetNumberOfCells() == tiled_surface.GetNumberOfPolys() and \
+    abs(bounds[1] - 1.0) < 0.05, (tree_surface.GetDataInformation().GetNumberOfCells(), tiled_surface.GetNumberOfPolys())
+recon.AdaptiveStorage = 0
+recon.UpdatePipeline()
+assert recon.GetDataInformation().GetDataClassName() == "vtkImageData"
 
 octree = OctreeSignedDistancefromPoints(Input=cloud, MinimumLevel=2, MaximumLevel=5)
 octree.UpdatePipeline()

@@ -50,7 +50,7 @@ struct TiledReconstructionResult
   /// The records of every run and iteration (History, Runs, Choices,
   /// recoveries...) in the user's units; SignedDistance and Distance are empty.
   ReconstructionResult<D> Records;
-  TiledField<D> Field; ///< the last run's phi and d, unit-box units (4.5)
+  TiledField<D> Field; ///< the last run's phi and d (near the band), unit-box units (4.5)
   UnitBox<D> Box;      ///< unit box <-> the user's units
   std::vector<TiledRunRecord> Storage;
 };
@@ -60,7 +60,16 @@ struct TiledReconstructionResult
 template <int D>
 Status reconstructTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReconstructionResult<D>& result);
 
+/// The run computes the distance to the cloud only within one node of the
+/// band (TiledField's d is NaN elsewhere); this gives every stored node its
+/// exact distance (the plan's cloud), for an output of the whole field.
+/// Returns how many nodes were computed.
+template <int D>
+Index completeTiledDistances(const ReconstructionPlan<D>& plan, const Context& ctx, TiledField<D>& field);
+
 extern template Status reconstructTiled(const ReconstructionPlan<2>&, const Context&, TiledReconstructionResult<2>&);
+extern template Index completeTiledDistances(const ReconstructionPlan<2>&, const Context&, TiledField<2>&);
+extern template Index completeTiledDistances(const ReconstructionPlan<3>&, const Context&, TiledField<3>&);
 extern template Status reconstructTiled(const ReconstructionPlan<3>&, const Context&, TiledReconstructionResult<3>&);
 
 } // namespace sltk

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file SLTKTiledGrid.h
+/// A tiled reconstruction (sltk/tiled/TiledField.h, Documentation/Octree.md
+/// "The tiled band") as a vtkHyperTreeGrid, without the full grid: one hyper
+/// tree per slot of 8^3 nodes, its cell centred on the slot's nodes (the
+/// tree's cells are the uniform grid's dual cells). A slot with a tile is
+/// refined three levels, one leaf per node holding that node's values; a slot
+/// without one is a single leaf (+-gamma, the distance at its centre). The
+/// leaves of a last slot's tile beyond the grid's nodes are masked. A refined
+/// cell holds the mean of its unmasked children. The dual grid of the leaves
+/// (vtkHyperTreeGridContour) therefore contours the nodes' values as the
+/// uniform grid does near the front.
+
+#include "sltk/recon/UnitBox.h"
+#include "sltk/tiled/TiledField.h"
+
+#include <array>
+#include <functional>
+
+class vtkHyperTreeGrid;
+
+namespace sltk
+{
+namespace vtkbridge
+{
+
+/// The field (every stored d computed: completeTiledDistances) in the user's
+/// units (`box`) as cell data SignedDistance (active scalars), DistanceToCloud
+/// and Level; `distanceAt` gives the distance to the cloud at a unit-box
+/// point (a slot's centre).
+void tiledToHyperTreeGrid(const TiledField<3>& field, const UnitBox<3>& box,
+  const std::function<double(const std::array<double, 3>&)>& distanceAt, vtkHyperTreeGrid* output);
+
+} // namespace vtkbridge
+} // namespace sltk
