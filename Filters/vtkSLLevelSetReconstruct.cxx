@@ -256,6 +256,7 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
   }
   options.Ranks = comm.size(); // the memory check sizes this machine's ranks' windows
   options.RanksHere = sltk::ranksSharingThisMachine(comm.size());
+  options.TiledStorage = self->GetAdaptiveStorage() && D == 3;
   sltk::ReconstructionPlan<D> plan;
   status = comm.agree(sltk::planReconstruction(std::move(cloud), options, ctx, plan));
   if (!status.isOk())

@@ -3,6 +3,7 @@
 
 #include "sltk/cloud/SyntheticClouds.h"
 #include "sltk/recon/ReconstructionPlan.h"
+#include "sltk/tiled/TiledMemory.h"
 
 #include <gtest/gtest.h>
 
@@ -36,6 +37,13 @@ void compareWithUniform(const sltk::PointCloud<D>& cloud, sltk::ReconstructionOp
               << " added\n";
   }
   EXPECT_LT(tiled.Records.Runs.back().CloudError, errorRatio * uniform.Runs.back().CloudError);
+  // The memory check's estimate of the finest run's tiles (TiledMemory.h) is close to what the run
+  // stored: above it on the sphere (and the bunny, the dragon), 3% below on the 64-point circle,
+  // whose front lies farther than a tile from its points between them (the run's own check,
+  // checkTileMemory, stops a run whose tiles do not fit).
+  const double estimate = sltk::estimatedTiledNodes(plan.Cloud, plan.Grids.Runs.back());
+  std::cout << "finest run: " << tiled.Storage.back().StoredNodes << " stored nodes, " << estimate << " estimated\n";
+  EXPECT_GE(estimate, 0.9 * static_cast<double>(tiled.Storage.back().StoredNodes));
   // Same grid: phi agrees with the uniform result where both are near the front.
   const auto& field = tiled.Field;
   const auto& phi = uniform.SignedDistance; // user units
@@ -118,4 +126,35 @@ TEST(TiledReconstruction, SphereAgreesWithTheUniformVersion)
 TEST(TiledReconstruction, CircleAgreesWithTheUniformVersion)
 {
   compareWithUniform<2>(sltk::circleCloud(64), sltk::ReconstructionOptions::thesis(), 1.2);
+}
+
+TEST(TiledReconstruction, MemoryCheckSizesTheTilesNotTheUniformGrid)
+{
+  // A sphere on a fine grid: the tiles need far less than the uniform grid, and the plan's
+  // memory check (TiledStorage) sizes them; the uniform plan is refused at the same budget.
+  const auto cloud = sltk::sphereCloud(2562);
+  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
+  options.CellSizeFactor = 0.5;
+  sltk::Context ctx;
+  sltk::ReconstructionPlan<3> probe;
+  ASSERT_TRUE(sltk::planReconstruction(cloud, options, ctx, probe).isOk());
+  const auto& finest = probe.Grids.Runs.back();
+  const double uniformNeed = static_cast<double>(finest.nodeCount()) * sltk::ReconstructionBytesPerNode;
+  const double tiledNeed =
+    static_cast<double>(probe.Grids.Runs.front().nodeCount()) * sltk::ReconstructionBytesPerNode +
+    4.0 * static_cast<double>(finest.nodeCount()) / 512.0 +
+    sltk::estimatedTiledNodes(probe.Cloud, finest) * sltk::TiledBytesPerStoredNode;
+  ASSERT_LT(tiledNeed, 0.5 * uniformNeed);
+  options.MemoryBudget = static_cast<std::uint64_t>(0.5 * (tiledNeed + uniformNeed));
+  sltk::ReconstructionPlan<3> plan;
+  const sltk::Status uniformStatus = sltk::planReconstruction(cloud, options, ctx, plan);
+  EXPECT_EQ(uniformStatus.code(), sltk::StatusCode::OutOfMemory) << uniformStatus.message();
+  options.TiledStorage = true;
+  const sltk::Status tiledStatus = sltk::planReconstruction(cloud, options, ctx, plan);
+  EXPECT_TRUE(tiledStatus.isOk()) << tiledStatus.message();
+  options.MemoryBudget = static_cast<std::uint64_t>(0.5 * tiledNeed);
+  const sltk::Status refused = sltk::planReconstruction(cloud, options, ctx, plan);
+  EXPECT_EQ(refused.code(), sltk::StatusCode::OutOfMemory);
+  EXPECT_NE(refused.message().find("the tiled reconstruction"), std::string::npos) << refused.message();
+  EXPECT_NE(refused.message().find("use C_dx >="), std::string::npos) << refused.message();
 }

@@ -11,6 +11,8 @@
 #include "sltk/recon/CloudPreparation.h"
 #include "sltk/recon/SlabPolicy.h"
 #include "sltk/recon/StrayPoints.h"
+#include "sltk/tiled/TiledField.h"
+#include "sltk/tiled/TiledMemory.h"
 
 #include <algorithm>
 #include <cmath>
@@ -333,6 +335,35 @@ Status checkSlabMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor,
 }
 } // namespace
 
+/// With TiledStorage: run 1's uniform grid and the finest run's tiles (their
+/// slots, then the nodes estimated from the cloud, TiledMemory.h) must fit.
+template <int D>
+Status checkTiledMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor, GridPlan<D>& grids)
+{
+  const double budget = plan.Options.MemoryBudget ? static_cast<double>(plan.Options.MemoryBudget)
+                                                  : static_cast<double>(availableMemoryBytes());
+  const GridSpec<D>& finest = grids.Runs.back();
+  const double first = static_cast<double>(grids.Runs.front().nodeCount()) * ReconstructionBytesPerNode;
+  const double slots = static_cast<double>(finest.nodeCount()) / static_cast<double>(tileNodes<D>());
+  double need = first + 5.0 * slots;          // a slot: its int32 entry, and a byte while the tiles are counted
+  if (budget <= 0.0 || 5.0 * slots <= budget) // else the count itself would not fit
+  {
+    need = first + 4.0 * slots + estimatedTiledNodes(plan.Cloud, finest) * TiledBytesPerStoredNode;
+  }
+  if (budget > 0.0 && need > budget)
+  {
+    // The stored nodes follow the surface: about C_dx^-(D-1); the factor that fits with 10% headroom.
+    const double fit = cellSizeFactor * std::pow(need / (0.9 * budget), 1.0 / (D - 1));
+    std::ostringstream m;
+    m << "the tiled reconstruction (" << grids.Runs.size() << " runs, the finest grid " << finest.nodeCount()
+      << " nodes) would need about " << need / 1e9 << " GB for run 1's grid and the finest run's tiles, more than the "
+      << budget / 1e9 << " GB available: use C_dx >= " << fit << " or fewer runs";
+    grids.Runs.clear();
+    return Status::outOfMemory(m.str());
+  }
+  return Status::ok();
+}
+
 template <int D>
 Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor, GridPlan<D>& grids)
 {
@@ -345,6 +376,12 @@ Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSize
   // Room for run 1's initial surface, plus the band gamma and two cells.
   const double dx1 = cellSizeFactor * plan.CloudSpacing; // (4.36)
   po.FirstRunPadding = static_cast<int>(std::ceil(plan.FirstRunReach / dx1 + plan.Options.GammaFactor + 2.0));
+  if (plan.Options.TiledStorage)
+  {
+    po.MemoryBudget = std::numeric_limits<std::uint64_t>::max(); // not the uniform grids: their tiles
+    SLTK_RETURN_IF_ERROR(planGrids(boundingBox(plan.Cloud), plan.CloudSpacing, po, grids));
+    return checkTiledMemory(plan, cellSizeFactor, grids);
+  }
   if (plan.Options.Ranks <= 1)
   {
     return planGrids(boundingBox(plan.Cloud), plan.CloudSpacing, po, grids);
