@@ -205,10 +205,15 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
     vtkErrorWithObjectMacro(self, "Reconstruction failed: " << status.message());
     return 0;
   }
-  sltk::completeTiledDistances(plan, ctx, result.Field);
-  const sltk::PointLocator<3>& locator = *plan.Locator;
-  sltk::vtkbridge::tiledToHyperTreeGrid(
-    result.Field, result.Box, [&locator](const std::array<double, 3>& x) { return locator.nearest(x).Distance; }, grid);
+  grid->Initialize();
+  if (self->GetGenerateAdaptiveGrid())
+  {
+    sltk::completeTiledDistances(plan, ctx, result.Field);
+    const sltk::PointLocator<3>& locator = *plan.Locator;
+    sltk::vtkbridge::tiledToHyperTreeGrid(
+      result.Field, result.Box, [&locator](const std::array<double, 3>& x) { return locator.nearest(x).Distance; },
+      grid);
+  }
   sltk::vtkbridge::runSummary(result.Records, grid);
   vtkNew<vtkDoubleArray> stored, uniform;
   stored->SetName("RunStoredNodes");
@@ -496,6 +501,7 @@ void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RemoveOutliers: " << this->RemoveOutliers << "\n";
   os << indent << "DetectTunnels: " << this->DetectTunnels << "\n";
   os << indent << "AdaptiveStorage: " << this->AdaptiveStorage << "\n";
+  os << indent << "GenerateAdaptiveGrid: " << this->GenerateAdaptiveGrid << "\n";
   os << indent << "OutlierDeviations: " << this->OutlierDeviations << "\n";
   os << indent << "ThinningFactor: " << this->ThinningFactor << "\n";
 }

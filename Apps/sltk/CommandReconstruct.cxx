@@ -268,6 +268,7 @@ int Reconstruct::run() const
   filter->SetThinningFactor(o.Cleaning.ThinningFactor);
   filter->SetDetectTunnels(o.DetectTunnels);
   filter->SetAdaptiveStorage(this->Octree);
+  filter->SetGenerateAdaptiveGrid(this->given("--output")); // the trees only for -o FILE.htg
   if (ranks > 1)
   {
     filter->UpdatePiece(rank, ranks, 0); // each rank its slab (a collective update)

@@ -10,7 +10,8 @@
 #include "vtkNew.h"
 #include "vtkUnsignedCharArray.h"
 
-#include <vector>
+#include <stdexcept>
+#include <string>
 
 namespace sltk
 {
@@ -19,87 +20,102 @@ namespace vtkbridge
 
 namespace
 {
-/// Values of the cells of one tiled slot, by global cell index.
-struct TreeValues
+/// Whether the cell of a tile's tree starting at its node `first` lies wholly beyond the grid's last node.
+bool beyondGrid(const TiledField<3>& field, std::int32_t tile, const std::array<Index, 3>& first)
 {
-  const TiledField<3>& Field;
-  std::int32_t Tile;
-  double Scale;
-  std::vector<double>& Phi;
-  std::vector<double>& Distance;
-  std::vector<unsigned char>& Level;
-  std::vector<unsigned char>& Masked;
+  bool beyond = false;
+  for (int a = 0; a < 3; ++a)
+  {
+    beyond = beyond || field.tileOrigin(tile)[a] * TileEdge + first[a] >= field.grid().Dims[a];
+  }
+  return beyond;
+}
+
+/// The corner of child `child` (VTK's index x + 2y + 4z) of a cell at `first` of `half` nodes per axis.
+std::array<Index, 3> childCorner(const std::array<Index, 3>& first, Index half, unsigned char child)
+{
+  std::array<Index, 3> corner = first;
+  for (int a = 0; a < 3; ++a)
+  {
+    corner[a] += ((child >> a) & 1) ? half : 0;
+  }
+  return corner;
+}
+
+/// Cells of a tile's tree below (and with) the cell at `first` covering `size` nodes per axis.
+vtkIdType countCells(const TiledField<3>& field, std::int32_t tile, const std::array<Index, 3>& first, Index size)
+{
+  if (size == 1 || beyondGrid(field, tile, first))
+  {
+    return 1;
+  }
+  vtkIdType cells = 1;
+  for (unsigned char child = 0; child < 8; ++child)
+  {
+    cells += countCells(field, tile, childCorner(first, size / 2, child), size / 2);
+  }
+  return cells;
+}
+
+/// The cell data arrays, written by global cell index.
+struct CellValues
+{
+  double* Phi;
+  double* Distance;
+  unsigned char* Level;
+  vtkBitArray* Mask;
+  bool AnyMasked = false;
 
   void set(vtkIdType id, double phi, double distance, int level, bool masked)
   {
-    const size_t i = static_cast<size_t>(id);
-    if (this->Phi.size() <= i)
-    {
-      const size_t size = std::max(i + 1, 2 * this->Phi.size());
-      this->Phi.resize(size);
-      this->Distance.resize(size);
-      this->Level.resize(size);
-      this->Masked.resize(size);
-    }
-    this->Phi[i] = phi;
-    this->Distance[i] = distance;
-    this->Level[i] = static_cast<unsigned char>(level);
-    this->Masked[i] = masked ? 1 : 0;
-  }
-
-  /// The cell at `cursor` covering `size` nodes per axis from tile node
-  /// `first` (local coordinates): a leaf per node, refined above. Returns
-  /// whether it holds a value (not masked), with its values.
-  bool build(vtkHyperTreeGridNonOrientedCursor* cursor, const std::array<Index, 3>& first, Index size, int level,
-    double& phi, double& distance)
-  {
-    const std::array<Index, 3>& origin = this->Field.tileOrigin(this->Tile);
-    bool beyond = false; // the whole cell beyond the grid's last node
-    for (int a = 0; a < 3; ++a)
-    {
-      beyond = beyond || origin[a] * TileEdge + first[a] >= this->Field.grid().Dims[a];
-    }
-    const vtkIdType id = cursor->GetGlobalNodeIndex();
-    if (beyond)
-    {
-      this->set(id, 0.0, 0.0, level, true);
-      return false;
-    }
-    if (size == 1)
-    {
-      const Index local = first[0] | (first[1] << TileBits) | (first[2] << (2 * TileBits));
-      phi = this->Scale * this->Field.phi(this->Tile)[local];
-      distance = this->Scale * this->Field.distance(this->Tile)[local];
-      this->set(id, phi, distance, level, false);
-      return true;
-    }
-    cursor->SubdivideLeaf();
-    const Index half = size / 2;
-    double phiSum = 0.0, distanceSum = 0.0;
-    int defined = 0;
-    for (unsigned char child = 0; child < 8; ++child)
-    {
-      std::array<Index, 3> corner = first;
-      for (int a = 0; a < 3; ++a)
-      {
-        corner[a] += ((child >> a) & 1) ? half : 0; // VTK's child index: x + 2y + 4z
-      }
-      cursor->ToChild(child);
-      double p = 0.0, d = 0.0;
-      if (this->build(cursor, corner, half, level + 1, p, d))
-      {
-        phiSum += p;
-        distanceSum += d;
-        ++defined;
-      }
-      cursor->ToParent();
-    }
-    phi = phiSum / defined; // the cell's first node lies in the grid: one child at least
-    distance = distanceSum / defined;
-    this->set(id, phi, distance, level, false);
-    return true;
+    this->Phi[id] = phi;
+    this->Distance[id] = distance;
+    this->Level[id] = static_cast<unsigned char>(level);
+    this->Mask->SetValue(id, masked ? 1 : 0);
+    this->AnyMasked = this->AnyMasked || masked;
   }
 };
+
+/// Builds the cell at `cursor` of tile `tile` covering `size` nodes per axis
+/// from its node `first`: a leaf per node, refined above, masked beyond the
+/// grid. Returns whether it holds a value (not masked), with its values.
+bool build(const TiledField<3>& field, std::int32_t tile, double scale, vtkHyperTreeGridNonOrientedCursor* cursor,
+  const std::array<Index, 3>& first, Index size, int level, CellValues& out, double& phi, double& distance)
+{
+  const vtkIdType id = cursor->GetGlobalNodeIndex();
+  if (beyondGrid(field, tile, first))
+  {
+    out.set(id, 0.0, 0.0, level, true);
+    return false;
+  }
+  if (size == 1)
+  {
+    const Index local = first[0] | (first[1] << TileBits) | (first[2] << (2 * TileBits));
+    phi = scale * field.phi(tile)[local];
+    distance = scale * field.distance(tile)[local];
+    out.set(id, phi, distance, level, false);
+    return true;
+  }
+  cursor->SubdivideLeaf();
+  double phiSum = 0.0, distanceSum = 0.0;
+  int defined = 0;
+  for (unsigned char child = 0; child < 8; ++child)
+  {
+    cursor->ToChild(child);
+    double p = 0.0, d = 0.0;
+    if (build(field, tile, scale, cursor, childCorner(first, size / 2, child), size / 2, level + 1, out, p, d))
+    {
+      phiSum += p;
+      distanceSum += d;
+      ++defined;
+    }
+    cursor->ToParent();
+  }
+  phi = phiSum / defined; // the cell's first node lies in the grid: one child at least
+  distance = distanceSum / defined;
+  out.set(id, phi, distance, level, false);
+  return true;
+}
 } // namespace
 
 void tiledToHyperTreeGrid(const TiledField<3>& field, const UnitBox<3>& box,
@@ -126,38 +142,13 @@ void tiledToHyperTreeGrid(const TiledField<3>& field, const UnitBox<3>& box,
   output->SetYCoordinates(coordinates[1]);
   output->SetZCoordinates(coordinates[2]);
 
-  std::vector<double> phi, distance;
-  std::vector<unsigned char> level, masked;
-  vtkNew<vtkHyperTreeGridNonOrientedCursor> cursor;
+  // The cells first (a tile's tree: its nodes in the grid and the cells above them), then the arrays.
   vtkIdType cells = 0;
   for (Index s = 0; s < field.slotCount(); ++s)
   {
-    const std::array<Index, 3> t = field.slotCoordinates(s);
-    vtkIdType treeIndex = 0;
-    output->GetIndexFromLevelZeroCoordinates(
-      treeIndex, static_cast<unsigned int>(t[0]), static_cast<unsigned int>(t[1]), static_cast<unsigned int>(t[2]));
-    output->InitializeNonOrientedCursor(cursor, treeIndex, true);
-    cursor->SetGlobalIndexStart(cells);
     const std::int32_t entry = field.slot(s);
-    TreeValues values{ field, entry, box.Scale, phi, distance, level, masked };
-    if (entry >= 0)
-    {
-      double p = 0.0, d = 0.0;
-      values.build(cursor, { 0, 0, 0 }, TileEdge, 0, p, d);
-    }
-    else
-    {
-      std::array<double, 3> centre{};
-      for (int a = 0; a < 3; ++a)
-      {
-        centre[a] = grid.Origin[a] + (static_cast<double>(t[a] * TileEdge) + 0.5 * (TileEdge - 1)) * grid.Spacing[a];
-      }
-      const double side = entry == TiledField<3>::Inside ? -field.gamma() : field.gamma();
-      values.set(cursor->GetGlobalNodeIndex(), box.Scale * side, box.Scale * distanceAt(centre), 0, false);
-    }
-    cells += static_cast<vtkIdType>(cursor->GetTree()->GetNumberOfVertices());
+    cells += entry >= 0 ? countCells(field, entry, { 0, 0, 0 }, TileEdge) : 1;
   }
-
   vtkNew<vtkDoubleArray> phiArray, distanceArray;
   phiArray->SetName("SignedDistance");
   distanceArray->SetName("DistanceToCloud");
@@ -169,21 +160,46 @@ void tiledToHyperTreeGrid(const TiledField<3>& field, const UnitBox<3>& box,
   distanceArray->SetNumberOfTuples(cells);
   levelArray->SetNumberOfTuples(cells);
   mask->SetNumberOfTuples(cells);
-  bool anyMasked = false;
-  for (vtkIdType c = 0; c < cells; ++c)
+  CellValues out{ phiArray->GetPointer(0), distanceArray->GetPointer(0), levelArray->GetPointer(0), mask };
+
+  vtkNew<vtkHyperTreeGridNonOrientedCursor> cursor;
+  vtkIdType start = 0;
+  for (Index s = 0; s < field.slotCount(); ++s)
   {
-    const size_t i = static_cast<size_t>(c);
-    phiArray->SetValue(c, phi[i]);
-    distanceArray->SetValue(c, distance[i]);
-    levelArray->SetValue(c, level[i]);
-    mask->SetValue(c, masked[i]);
-    anyMasked = anyMasked || masked[i];
+    const std::array<Index, 3> t = field.slotCoordinates(s);
+    vtkIdType treeIndex = 0;
+    output->GetIndexFromLevelZeroCoordinates(
+      treeIndex, static_cast<unsigned int>(t[0]), static_cast<unsigned int>(t[1]), static_cast<unsigned int>(t[2]));
+    output->InitializeNonOrientedCursor(cursor, treeIndex, true);
+    cursor->SetGlobalIndexStart(start);
+    const std::int32_t entry = field.slot(s);
+    if (entry >= 0)
+    {
+      double p = 0.0, d = 0.0;
+      build(field, entry, box.Scale, cursor, { 0, 0, 0 }, TileEdge, 0, out, p, d);
+    }
+    else
+    {
+      std::array<double, 3> centre{};
+      for (int a = 0; a < 3; ++a)
+      {
+        centre[a] = grid.Origin[a] + (static_cast<double>(t[a] * TileEdge) + 0.5 * (TileEdge - 1)) * grid.Spacing[a];
+      }
+      const double side = entry == TiledField<3>::Inside ? -field.gamma() : field.gamma();
+      out.set(cursor->GetGlobalNodeIndex(), box.Scale * side, box.Scale * distanceAt(centre), 0, false);
+    }
+    start += static_cast<vtkIdType>(cursor->GetTree()->GetNumberOfVertices());
+  }
+  if (start != cells)
+  {
+    throw std::logic_error("tiledToHyperTreeGrid: the trees have " + std::to_string(start) + " cells, not the " +
+      std::to_string(cells) + " counted");
   }
   output->GetCellData()->AddArray(phiArray);
   output->GetCellData()->AddArray(distanceArray);
   output->GetCellData()->AddArray(levelArray);
   output->GetCellData()->SetActiveScalars("SignedDistance");
-  if (anyMasked)
+  if (out.AnyMasked)
   {
     output->SetMask(mask);
   }

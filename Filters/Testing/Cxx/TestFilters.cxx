@@ -223,6 +223,14 @@ int main(int argc, char* argv[])
         writer->Write() == 1 && (reader->Update(), reader->GetOutput()->GetNumberOfCells() == tree->GetNumberOfCells()),
         "AdaptiveStorage: the tree written as .htg reads back");
     }
+    recon->GenerateAdaptiveGridOff(); // the surface alone: no trees, the run summary kept
+    check(recon->GetExecutive()->Update() == 1, "AdaptiveStorage without the grid: reconstructed");
+    auto* bare = vtkHyperTreeGrid::SafeDownCast(recon->GetOutputDataObject(0));
+    auto* bareSurface = vtkPolyData::SafeDownCast(recon->GetOutputDataObject(1));
+    check(bare && bare->GetNumberOfCells() == 0 && bare->GetFieldData()->GetArray("RunStoredNodes") && bareSurface &&
+        bareSurface->GetNumberOfPoints() == tiled->GetNumberOfPoints(),
+      "GenerateAdaptiveGrid off: no trees, the run summary and the same surface");
+    recon->GenerateAdaptiveGridOn();
     recon->AdaptiveStorageOff();
     recon->SetNumberOfRuns(99);
     check(recon->GetNumberOfRuns() == 99 && recon->GetExecutive()->Update() == 0,
