@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numeric>
 #include <sstream>
 
 namespace sltk
@@ -459,7 +460,21 @@ Status tiledStep(
   const Context serial;
   const double dx = field.grid().Spacing[0];
   const BandBlocks<D> blocks(field, band);
-  std::vector<double> next(band.size() * static_cast<size_t>(TiledField<D>::Nodes));
+  // The new values of the band nodes only: tile after tile (band order), each tile's in node order.
+  const auto inBand = [&field](double v) { return std::fabs(v) < field.gamma(); };
+  std::vector<size_t> valuesStart(band.size() + 1, 0);
+  ctx.parallelFor(0, static_cast<Index>(band.size()),
+    [&](Index b, Index e)
+    {
+      for (Index j = b; j < e; ++j)
+      {
+        const double* p = field.phi(band[static_cast<size_t>(j)]);
+        valuesStart[static_cast<size_t>(j) + 1] =
+          static_cast<size_t>(std::count_if(p, p + TiledField<D>::Nodes, inBand));
+      }
+    });
+  std::partial_sum(valuesStart.begin(), valuesStart.end(), valuesStart.begin());
+  std::vector<double> next(valuesStart.back());
   std::vector<Status> failures(static_cast<size_t>(blocks.count()));
   std::vector<double> feet(static_cast<size_t>(blocks.count()), 0.0);
   ctx.parallelFor(
@@ -521,10 +536,14 @@ Status tiledStep(
           [&](size_t j)
           {
             const auto o = offset(j);
-            double* out = next.data() + j * TiledField<D>::Nodes;
+            const double* p = field.phi(band[j]);
+            double* out = next.data() + valuesStart[j];
             for (Index k = 0; k < TiledField<D>::Nodes; ++k)
             {
-              out[k] = s.Phi(s.Phi.nodeIndex(scratchNode<D>(k, halo, o, BlockTiles)));
+              if (inBand(p[k]))
+              {
+                *out++ = s.Phi(s.Phi.nodeIndex(scratchNode<D>(k, halo, o, BlockTiles)));
+              }
             }
           });
       }
@@ -547,8 +566,15 @@ Status tiledStep(
     {
       for (Index j = b; j < e; ++j)
       {
-        std::copy_n(
-          next.data() + j * TiledField<D>::Nodes, TiledField<D>::Nodes, field.phi(band[static_cast<size_t>(j)]));
+        double* p = field.phi(band[static_cast<size_t>(j)]);
+        const double* in = next.data() + valuesStart[static_cast<size_t>(j)];
+        for (Index k = 0; k < TiledField<D>::Nodes; ++k)
+        {
+          if (inBand(p[k])) // the band before the step: the nodes the step computed
+          {
+            p[k] = *in++;
+          }
+        }
       }
     });
   return Status::ok();
