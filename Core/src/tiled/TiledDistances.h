@@ -29,13 +29,14 @@ class TiledDistances
 {
 public:
   /// Makes d exact within one node of `band`'s band nodes (`band`: the tiles
-  /// with a band node; the slots within one node of them hold tiles, extendBand).
-  /// Returns how many nodes were computed.
-  Index ensure(
-    TiledField<D>& field, const std::vector<std::int32_t>& band, const PointLocator<D>& locator, const Context& ctx)
+  /// with a band node; `reached`: the directions from each in which slots lie
+  /// within one node or more of its band nodes, bandReach, and hold tiles,
+  /// extendBand). Returns how many nodes were computed.
+  Index ensure(TiledField<D>& field, const std::vector<std::int32_t>& band, const std::vector<std::uint32_t>& reached,
+    const PointLocator<D>& locator, const Context& ctx)
   {
     this->Complete.resize(static_cast<size_t>(field.tileCount()), 0);
-    this->collectCandidates(field, band, ctx);
+    this->collectCandidates(field, band, reached);
     std::vector<Index> computed(this->Candidates.size(), 0);
     ctx.parallelFor(
       0, static_cast<Index>(this->Candidates.size()),
@@ -86,11 +87,11 @@ public:
   }
 
 private:
-  /// The tiles (not yet complete) within one node of a band node: each band
-  /// tile and those of its neighbours that its band nodes touch.
-  void collectCandidates(const TiledField<D>& field, const std::vector<std::int32_t>& band, const Context& ctx)
+  /// The tiles (not yet complete) that may hold a node within one node of a
+  /// band node: each band tile and the neighbours its band nodes reach.
+  void collectCandidates(
+    const TiledField<D>& field, const std::vector<std::int32_t>& band, const std::vector<std::uint32_t>& reach)
   {
-    const std::vector<std::uint32_t> reach = bandReach(field, band, 1, ctx);
     this->Marked.assign(static_cast<size_t>(field.tileCount()), 0);
     this->Candidates.clear();
     for (size_t j = 0; j < band.size(); ++j)

@@ -282,17 +282,16 @@ void bandTiles(const TiledField<D>& field, const Context& ctx, std::vector<std::
   }
 }
 
-/// Gives tiles to the slots within `reach` nodes of a band node (new tiles:
+/// Gives tiles to the slots `reached` (bandReach) from the band tiles (new tiles:
 /// the slot's +-gamma, d not yet computed): the nodes the reinitialisation's
 /// dilated band (1.53) writes and the step's and the energy's distance
 /// stencils read. Elsewhere the step reads the slots' +-gamma, the value the
 /// uniform version holds there. Returns the number of tiles added.
 template <int D>
-Status extendBand(const std::vector<std::int32_t>& band, Index reach, const ReconstructionOptions& options, int run,
-  const Context& ctx, TiledField<D>& field, Index& added)
+Status extendBand(const std::vector<std::int32_t>& band, const std::vector<std::uint32_t>& reached,
+  const ReconstructionOptions& options, int run, TiledField<D>& field, Index& added)
 {
   added = 0;
-  const std::vector<std::uint32_t> reached = bandReach(field, band, reach, ctx);
   std::vector<Index> missing;
   for (size_t j = 0; j < band.size(); ++j)
   {
@@ -320,11 +319,14 @@ Status extendBand(const std::vector<std::int32_t>& band, Index reach, const Reco
   return Status::ok();
 }
 
-/// How far from a band node extendBand gives tiles: the reinitialisation's
-/// dilation, and at least the one node of the distance stencils.
-Index bandReachNodes(const ReconstructionOptions& options)
+/// The slots around the band tiles that get tiles (extendBand) and whose d
+/// may be needed (TiledDistances): those within the reinitialisation's
+/// dilation of a band node, and at least the one node of the distance stencils.
+template <int D>
+std::vector<std::uint32_t> bandReachOf(const TiledField<D>& field, const std::vector<std::int32_t>& band,
+  const ReconstructionOptions& options, const Context& ctx)
 {
-  return std::max<Index>(options.ReinitDilation, 1);
+  return bandReach(field, band, std::max<Index>(options.ReinitDilation, 1), ctx);
 }
 
 /// Per-thread scratch of a tile and its neighbourhood.
@@ -407,46 +409,60 @@ double largestFoot(
   return largest;
 }
 
-/// The band tiles grouped by the block of BlockTiles^D tile positions they
-/// lie in (blocks in slot order, tiles in band order within a block).
+/// Items (band tiles, cloud points) grouped by the block of BlockTiles^D
+/// tile positions they lie in: blocks in slot order, items in their order
+/// within a block.
 template <int D>
-struct BandBlocks
+struct TileBlocks
 {
   std::vector<std::array<Index, D>> First; ///< each block's first tile coordinates
-  std::vector<size_t> Begin;               ///< block b's members: Members[Begin[b], Begin[b + 1])
-  std::vector<size_t> Members;             ///< indices into the band
+  std::vector<size_t> Begin;               ///< block b's items: Items[Begin[b], Begin[b + 1])
+  std::vector<Index> Items;
 
-  BandBlocks(const TiledField<D>& field, const std::vector<std::int32_t>& band)
+  /// `keyed`: (block key of the item's tile coordinates, item), in item order.
+  TileBlocks(const TiledField<D>& field, std::vector<std::pair<Index, Index>> keyed)
   {
-    std::vector<std::pair<Index, size_t>> keyed(band.size());
-    for (size_t j = 0; j < band.size(); ++j)
-    {
-      Index key = 0;
-      for (int a = D - 1; a >= 0; --a)
-      {
-        const Index blocks = (field.slotDims()[a] + BlockTiles - 1) / BlockTiles;
-        key = key * blocks + field.tileOrigin(band[j])[a] / BlockTiles;
-      }
-      keyed[j] = { key, j };
-    }
-    std::sort(keyed.begin(), keyed.end());
+    std::stable_sort(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     for (size_t j = 0; j < keyed.size(); ++j)
     {
       if (j == 0 || keyed[j].first != keyed[j - 1].first)
       {
-        Begin.push_back(j);
-        std::array<Index, D> first = field.tileOrigin(band[keyed[j].second]);
-        for (int a = 0; a < D; ++a)
-        {
-          first[a] = first[a] / BlockTiles * BlockTiles;
-        }
-        First.push_back(first);
+        this->Begin.push_back(j);
+        this->First.push_back(firstTile(field, keyed[j].first));
       }
-      Members.push_back(keyed[j].second);
+      this->Items.push_back(keyed[j].second);
     }
-    Begin.push_back(keyed.size());
+    this->Begin.push_back(keyed.size());
   }
-  Index count() const { return static_cast<Index>(First.size()); }
+
+  Index count() const { return static_cast<Index>(this->First.size()); }
+
+  /// The key of the block holding tile coordinates t.
+  static Index key(const TiledField<D>& field, const std::array<Index, D>& t)
+  {
+    Index k = 0;
+    for (int a = D - 1; a >= 0; --a)
+    {
+      k = k * blocksAlong(field, a) + t[a] / BlockTiles;
+    }
+    return k;
+  }
+
+private:
+  static Index blocksAlong(const TiledField<D>& field, int a)
+  {
+    return (field.slotDims()[a] + BlockTiles - 1) / BlockTiles;
+  }
+  static std::array<Index, D> firstTile(const TiledField<D>& field, Index key)
+  {
+    std::array<Index, D> first{};
+    for (int a = 0; a < D; ++a)
+    {
+      first[a] = key % blocksAlong(field, a) * BlockTiles;
+      key /= blocksAlong(field, a);
+    }
+    return first;
+  }
 };
 
 /// One step (4.22)/(4.24) on the band, block by block: each block of band
@@ -459,7 +475,12 @@ Status tiledStep(
 {
   const Context serial;
   const double dx = field.grid().Spacing[0];
-  const BandBlocks<D> blocks(field, band);
+  std::vector<std::pair<Index, Index>> keyed(band.size());
+  for (size_t j = 0; j < band.size(); ++j)
+  {
+    keyed[j] = { TileBlocks<D>::key(field, field.tileOrigin(band[j])), static_cast<Index>(j) };
+  }
+  const TileBlocks<D> blocks(field, std::move(keyed));
   // The new values of the band nodes only: tile after tile (band order), each tile's in node order.
   const auto inBand = [&field](double v) { return std::fabs(v) < field.gamma(); };
   std::vector<size_t> valuesStart(band.size() + 1, 0);
@@ -499,7 +520,7 @@ Status tiledStep(
           for (size_t m = blocks.Begin[static_cast<size_t>(block)]; m < blocks.Begin[static_cast<size_t>(block) + 1];
                ++m)
           {
-            f(blocks.Members[m]);
+            f(static_cast<size_t>(blocks.Items[m]));
           }
         };
         const auto bandNodes = [&](Index halo)
@@ -512,7 +533,7 @@ Status tiledStep(
               const auto o = offset(j);
               for (Index k = 0; k < TiledField<D>::Nodes; ++k)
               {
-                if (std::fabs(p[k]) < field.gamma())
+                if (inBand(p[k]))
                 {
                   s.Nodes.push_back(scratchNode<D>(k, halo, o, BlockTiles));
                 }
@@ -589,8 +610,8 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
   double& meanError, double& farFraction)
 {
   const GridSpec<D>& g = field.grid();
-  std::vector<std::pair<Index, Index>> byBlock; // (block key, point)
-  byBlock.reserve(static_cast<size_t>(cloud.size()));
+  std::vector<std::pair<Index, Index>> keyed; // (block key, point)
+  keyed.reserve(static_cast<size_t>(cloud.size()));
   double sum = 0.0, farCount = 0.0;
   for (Index q = 0; q < cloud.size(); ++q)
   {
@@ -605,12 +626,7 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
     }
     if (inside && field.slot(field.slotIndex(t)) >= 0)
     {
-      Index key = 0;
-      for (int a = D - 1; a >= 0; --a)
-      {
-        key = key * ((field.slotDims()[a] + BlockTiles - 1) / BlockTiles) + t[a] / BlockTiles;
-      }
-      byBlock.emplace_back(key, q);
+      keyed.emplace_back(TileBlocks<D>::key(field, t), q);
     }
     else
     {
@@ -618,40 +634,21 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
       farCount += field.gamma() > far ? 1.0 : 0.0;
     }
   }
-  std::sort(byBlock.begin(), byBlock.end());
-  std::vector<size_t> starts;
-  for (size_t j = 0; j < byBlock.size(); ++j)
-  {
-    if (j == 0 || byBlock[j].first != byBlock[j - 1].first)
-    {
-      starts.push_back(j);
-    }
-  }
-  starts.push_back(byBlock.size());
-  const Index blocks = static_cast<Index>(starts.size()) - 1;
-  std::vector<double> sums(static_cast<size_t>(blocks), 0.0), fars(static_cast<size_t>(blocks), 0.0);
+  const TileBlocks<D> blocks(field, std::move(keyed));
+  std::vector<double> sums(static_cast<size_t>(blocks.count()), 0.0), fars(static_cast<size_t>(blocks.count()), 0.0);
   ctx.parallelFor(
-    0, blocks,
+    0, blocks.count(),
     [&](Index b, Index e)
     {
       TileScratch<D> s;
       for (Index block = b; block < e; ++block)
       {
-        const size_t from = starts[static_cast<size_t>(block)], to = starts[static_cast<size_t>(block) + 1];
-        std::array<Index, D> first{};
-        Index key = byBlock[from].first;
-        for (int a = 0; a < D; ++a)
-        {
-          const Index count = (field.slotDims()[a] + BlockTiles - 1) / BlockTiles;
-          first[a] = key % count * BlockTiles;
-          key /= count;
-        }
-        field.scratchBlock(first, BlockTiles, TileEdge / 2, Ghost, s.Phi, nullptr);
+        field.scratchBlock(blocks.First[static_cast<size_t>(block)], BlockTiles, TileEdge / 2, Ghost, s.Phi, nullptr);
         Interp interp(s.Phi);
-        for (size_t j = from; j < to; ++j)
+        for (size_t j = blocks.Begin[static_cast<size_t>(block)]; j < blocks.Begin[static_cast<size_t>(block) + 1]; ++j)
         {
           const double v =
-            std::fabs(interpolate(interp, s.Phi.spec(), cloud.Points[static_cast<size_t>(byBlock[j].second)].data()));
+            std::fabs(interpolate(interp, s.Phi.spec(), cloud.Points[static_cast<size_t>(blocks.Items[j])].data()));
           sums[static_cast<size_t>(block)] += v;
           fars[static_cast<size_t>(block)] += v > far ? 1.0 : 0.0;
         }
@@ -701,9 +698,10 @@ Status iterateTiled(const ReconstructionPlan<D>& plan, int run, const Context& c
   {
     bandTiles(field, ctx, band);
     Index added = 0;
-    SLTK_RETURN_IF_ERROR(extendBand(band, bandReachNodes(options), options, run, ctx, field, added));
+    const std::vector<std::uint32_t> reached = bandReachOf(field, band, options, ctx);
+    SLTK_RETURN_IF_ERROR(extendBand(band, reached, options, run, field, added));
     storage.AddedTiles += added;
-    storage.ExactDistances += distances.ensure(field, band, *plan.Locator, ctx);
+    storage.ExactDistances += distances.ensure(field, band, reached, *plan.Locator, ctx);
     EnergyOptions energyOptions;
     energyOptions.P = model.P;
     energyOptions.SecondP = model.P != 2.0 ? 2.0 : 0.0;
@@ -821,7 +819,8 @@ Status runTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReco
     std::vector<std::int32_t> band;
     bandTiles(field, ctx, band);
     Index added = 0;
-    SLTK_RETURN_IF_ERROR(extendBand(band, bandReachNodes(plan.Options), plan.Options, run, ctx, field, added));
+    SLTK_RETURN_IF_ERROR(
+      extendBand(band, bandReachOf(field, band, plan.Options, ctx), plan.Options, run, field, added));
     reinit.markBand(field, band, plan.Options.ReinitDilation, ctx);
     SLTK_RETURN_IF_ERROR(reinit.run(field, plan.Options.Reinit, ctx));
     std::ostringstream log;
