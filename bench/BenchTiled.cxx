@@ -65,16 +65,19 @@ int main(int argc, char** argv)
     return 1;
   }
   const auto& records = storage == "tiled" ? tiled.Records : uniform;
-  std::printf("%-8s %4s %6s %12s %12s %14s %8s\n", "storage", "run", "iters", "Err_P", "stored", "uniform", "%");
+  // stored: at the end of the run; most: the most held at once during its iterations.
+  std::printf("%-8s %4s %6s %12s %12s %8s %12s %8s %14s\n", "storage", "run", "iters", "Err_P", "stored", "%", "most",
+    "%", "uniform");
   for (size_t r = 0; r < records.Runs.size(); ++r)
   {
     const auto& run = records.Runs[r];
     const double nodes = static_cast<double>(run.Grid.nodeCount());
-    const double stored = storage == "tiled" && r > 0 && r - 1 < tiled.Storage.size()
-      ? static_cast<double>(tiled.Storage[r - 1].StoredNodes)
-      : nodes;
-    std::printf("%-8s %4zu %6d %12.4e %12.0f %14.0f %8.2f\n", storage.c_str(), r + 1, run.Iterations, run.CloudError,
-      stored, nodes, 100.0 * stored / nodes);
+    const bool tiledRun = storage == "tiled" && r > 0 && r - 1 < tiled.Storage.size();
+    const double stored = tiledRun ? static_cast<double>(tiled.Storage[r - 1].StoredNodes) : nodes;
+    const double most =
+      tiledRun ? static_cast<double>(tiled.Storage[r - 1].PeakTiles) * sltk::TiledField<3>::Nodes : nodes;
+    std::printf("%-8s %4zu %6d %12.4e %12.0f %8.2f %12.0f %8.2f %14.0f\n", storage.c_str(), r + 1, run.Iterations,
+      run.CloudError, stored, 100.0 * stored / nodes, most, 100.0 * most / nodes, nodes);
   }
   std::printf("%-8s C_dx %.3g K_P %.3g wall %.2f s peak %.0f MB\n", storage.c_str(), plan.Options.CellSizeFactor,
     plan.Options.OutsideThresholdFactor, seconds, static_cast<double>(sltk::peakResidentBytes()) / 1048576.0);

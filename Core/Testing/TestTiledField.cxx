@@ -113,3 +113,52 @@ TEST(TiledField, ScratchBlockCopiesSeveralTilesAtOnce)
     }
   }
 }
+
+TEST(TiledField, RemovedTilesBecomeTheirSideAndTheOthersKeepTheirValues)
+{
+  sltk::GridSpec<3> grid;
+  grid.Dims = { 48, 48, 48 };
+  grid.Spacing = { 1.0, 1.0, 1.0 };
+  sltk::TiledField<3> field;
+  const double gamma = 3.0;
+  field.reset(grid, gamma);
+  // 200 tiles (more than three chunks of 64): even ids removed, at -gamma or +gamma by id.
+  std::vector<std::uint8_t> remove;
+  for (sltk::Index s = 0; s < 200; ++s)
+  {
+    const std::int32_t id = field.addTile(s);
+    const bool removed = id % 2 == 0;
+    remove.push_back(removed ? 1 : 0);
+    for (sltk::Index k = 0; k < sltk::TiledField<3>::Nodes; ++k)
+    {
+      field.phi(id)[k] = removed ? (id % 4 == 0 ? -gamma : gamma) : linear(field.node(id, k));
+      field.distance(id)[k] = static_cast<double>(id);
+    }
+  }
+  const double before = field.bytes();
+  field.removeTiles(remove);
+  ASSERT_EQ(field.tileCount(), 100);
+  EXPECT_LT(field.bytes(), before); // two of the four chunks freed
+  for (sltk::Index s = 0; s < 200; ++s)
+  {
+    const std::int32_t id = field.slot(s);
+    if (s % 2 == 0)
+    {
+      EXPECT_EQ(id, s % 4 == 0 ? sltk::TiledField<3>::Inside : sltk::TiledField<3>::Outside) << "slot " << s;
+      continue;
+    }
+    ASSERT_EQ(id, s / 2) << "the kept tiles keep their order";
+    EXPECT_EQ(field.tileSlot(id), s);
+    EXPECT_EQ(field.tileOrigin(id), field.slotCoordinates(s));
+    for (sltk::Index k = 0; k < sltk::TiledField<3>::Nodes; ++k)
+    {
+      ASSERT_EQ(field.phi(id)[k], linear(field.node(id, k)));
+      ASSERT_EQ(field.distance(id)[k], static_cast<double>(s));
+    }
+  }
+  // A removed slot takes a tile again at its side's value.
+  const std::int32_t again = field.addTile(0);
+  EXPECT_EQ(again, 100);
+  EXPECT_EQ(field.phi(again)[17], -gamma);
+  EXPECT_TRUE(std::isnan(field.distance(again)[17]));
+}

@@ -2,6 +2,7 @@
 #include "sltk/tiled/TiledReconstruction.h"
 
 #include "sltk/cloud/SyntheticClouds.h"
+#include "sltk/core/IndexBox.h"
 #include "sltk/recon/ReconstructionPlan.h"
 #include "sltk/tiled/TiledMemory.h"
 
@@ -34,7 +35,8 @@ void compareWithUniform(const sltk::PointCloud<D>& cloud, sltk::ReconstructionOp
   {
     std::cout << "run " << s.Run << ": " << s.Tiles << " tiles, " << s.StoredNodes << " stored nodes of "
               << s.UniformNodes << " (" << 100.0 * s.StoredNodes / s.UniformNodes << "%), " << s.AddedTiles
-              << " added\n";
+              << " added, " << s.FreedTiles << " freed, at most " << s.PeakTiles << " held\n";
+    EXPECT_GE(s.PeakTiles, s.Tiles);
   }
   EXPECT_LT(tiled.Records.Runs.back().CloudError, errorRatio * uniform.Runs.back().CloudError);
   // The memory check's estimate of the finest run's tiles (TiledMemory.h) is close to what the run
@@ -115,6 +117,55 @@ void compareWithUniform(const sltk::PointCloud<D>& cloud, sltk::ReconstructionOp
   }
   EXPECT_GT(bandNodes, 0);
   EXPECT_EQ(distanceError, 0.0);
+  // The tiles follow the band (PruneTiles.h): a tile at one +-gamma throughout
+  // holds a node within the reinitialisation's dilation (at least one node) of
+  // a band node, where the last iteration may write or read it.
+  const sltk::Index reach = std::max(options.ReinitDilation, 1);
+  const auto nearBand = [&](std::int32_t id)
+  {
+    const auto& o = field.tileOrigin(id);
+    std::array<sltk::Index, D> lo{}, hi{};
+    for (int a = 0; a < D; ++a)
+    {
+      lo[a] = std::max<sltk::Index>(o[a] - 1, 0);
+      hi[a] = std::min<sltk::Index>(o[a] + 1, field.slotDims()[a] - 1);
+    }
+    bool near = false;
+    sltk::forEachIndexInBox<D>(lo, hi,
+      [&](const std::array<sltk::Index, D>& t)
+      {
+        const std::int32_t other = field.slot(field.slotIndex(t));
+        for (sltk::Index k = 0; other >= 0 && !near && k < sltk::TiledField<D>::Nodes; ++k)
+        {
+          if (!(std::fabs(field.phi(other)[k]) < field.gamma()))
+          {
+            continue;
+          }
+          const auto i = field.node(other, k);
+          bool within = true; // i within `reach` of the tile's nodes, each axis
+          for (int a = 0; a < D; ++a)
+          {
+            within = within && i[a] >= o[a] * sltk::TileEdge - reach && i[a] < (o[a] + 1) * sltk::TileEdge + reach;
+          }
+          near = within;
+        }
+      });
+    return near;
+  };
+  sltk::Index lonely = 0, flat = 0;
+  for (std::int32_t id = 0; id < field.tileCount(); ++id)
+  {
+    const double* p = field.phi(id);
+    bool atGamma = true;
+    for (sltk::Index k = 0; k < sltk::TiledField<D>::Nodes; ++k)
+    {
+      atGamma = atGamma && std::fabs(p[k]) == field.gamma() && p[k] == p[0];
+    }
+    flat += atGamma ? 1 : 0;
+    lonely += atGamma && !nearBand(id) ? 1 : 0;
+  }
+  std::cout << flat << " tiles at one +-gamma throughout, " << lonely << " of them away from the band\n";
+  EXPECT_EQ(lonely, 0);
 }
 } // namespace
 

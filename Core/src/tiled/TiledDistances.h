@@ -181,6 +181,22 @@ private:
     }
   }
 
+public:
+  /// Follows TiledField::removeTiles(remove): the kept tiles' state, renumbered.
+  void removeTiles(const std::vector<std::uint8_t>& remove)
+  {
+    size_t kept = 0;
+    for (size_t id = 0; id < this->Complete.size(); ++id)
+    {
+      if (!remove[id])
+      {
+        this->Complete[kept++] = this->Complete[id];
+      }
+    }
+    this->Complete.resize(kept);
+  }
+
+private:
   std::vector<std::uint8_t> Complete; ///< per tile: d is known at every node
   std::vector<std::uint8_t> Marked;   ///< per tile: a candidate of this call
   std::vector<std::int32_t> Candidates;

@@ -2,7 +2,10 @@
 #include "sltk/tiled/TiledField.h"
 
 #include <algorithm>
+#include <array>
+#include <cstring>
 #include <limits>
+#include <stdexcept>
 
 namespace sltk
 {
@@ -59,6 +62,33 @@ std::int32_t TiledField<D>::addTile(Index s)
 }
 
 template <int D>
+void TiledField<D>::removeTiles(const std::vector<std::uint8_t>& remove)
+{
+  std::int32_t kept = 0;
+  for (std::int32_t id = 0; id < this->tileCount(); ++id)
+  {
+    const Index s = this->SlotOf[static_cast<size_t>(id)];
+    if (remove[static_cast<size_t>(id)])
+    {
+      this->Slots[static_cast<size_t>(s)] = this->phi(id)[0] < 0.0 ? Inside : Outside;
+      continue;
+    }
+    if (kept != id)
+    {
+      std::copy_n(this->phi(id), Nodes, this->phi(kept));
+      std::copy_n(this->distance(id), Nodes, this->distance(kept));
+      this->Origins[static_cast<size_t>(kept)] = this->Origins[static_cast<size_t>(id)];
+      this->SlotOf[static_cast<size_t>(kept)] = s;
+      this->Slots[static_cast<size_t>(s)] = kept;
+    }
+    ++kept;
+  }
+  this->Origins.resize(static_cast<size_t>(kept));
+  this->SlotOf.resize(static_cast<size_t>(kept));
+  this->Chunks.resize(static_cast<size_t>((kept + ChunkTiles - 1) / ChunkTiles)); // the emptied chunks freed
+}
+
+template <int D>
 double TiledField<D>::value(const std::array<Index, D>& i) const
 {
   std::array<Index, D> t{};
@@ -79,6 +109,28 @@ double TiledField<D>::value(const std::array<Index, D>& i) const
   }
   return entry == Inside ? -this->Gamma : this->Gamma;
 }
+
+namespace
+{
+/// A tile row's `count` (<= TileEdge) values without a library call: a whole
+/// row (most of them) as one fixed-size copy, a part of one (the halo's) value
+/// by value.
+inline void copyRow(const double* from, Index count, double* to)
+{
+  if (count == TileEdge)
+  {
+    std::memcpy(to, from, TileEdge * sizeof(double)); // inlined: a fixed size, no overlap
+    return;
+  }
+  for (Index k = 0; k < TileEdge; ++k)
+  {
+    if (k < count)
+    {
+      to[k] = from[k];
+    }
+  }
+}
+} // namespace
 
 template <int D>
 void TiledField<D>::scratchBlock(
@@ -109,57 +161,89 @@ void TiledField<D>::scratchBlock(
   }
   const auto floorTile = [](Index g) { return g >= 0 ? g / TileEdge : -((TileEdge - 1 - g) / TileEdge); };
   const double unknown = std::numeric_limits<double>::quiet_NaN();
-  // Row by row along x, tile by tile along the row.
+  // A row along x crosses the same tile columns in every row: its segments
+  // (nodes [x, x + count) from node `from` of tile column t) once.
+  struct Segment
+  {
+    Index Column, From, Count, X;
+  };
+  if (edge > (MaxScratchSegments - 2) * TileEdge)
+  {
+    throw std::logic_error("TiledField::scratchBlock: a block wider than MaxScratchSegments tiles");
+  }
+  std::array<Segment, MaxScratchSegments> segments{};
+  std::array<std::int32_t, MaxScratchSegments> entries{};
+  int segmentCount = 0;
+  for (Index g = start[0]; g < start[0] + edge; ++segmentCount)
+  {
+    const Index t = floorTile(g);
+    const Index end = std::min(start[0] + edge, (t + 1) * TileEdge);
+    segments[static_cast<size_t>(segmentCount)] = { t, g - t * TileEdge, end - g, g - start[0] };
+    g = end;
+  }
+  // Row by row along x, tile by tile along the row; the rows of one row of
+  // tiles share their tiles' entries.
   Index rows = 1;
   for (int a = 1; a < D; ++a)
   {
     rows *= edge;
   }
+  Index lastBase = -2;
   for (Index row = 0; row < rows; ++row)
   {
     std::array<Index, D> i{}; // block index of the row's first node
-    std::array<Index, D> t{};
     bool beyond = false;
     Index local = 0; // the row's node offset inside its tiles
+    Index base = 0;  // slotIndex of the row's tiles with t[0] = 0
+    Index stride = 1;
     Index rest = row;
     for (int a = 1; a < D; ++a)
     {
       i[a] = rest % edge;
       rest /= edge;
       const Index g = start[a] + i[a];
-      t[a] = floorTile(g);
-      local |= (g - t[a] * TileEdge) << (TileBits * a);
-      beyond = beyond || t[a] < 0 || t[a] >= this->SlotDims[a];
+      const Index t = floorTile(g);
+      local |= (g - t * TileEdge) << (TileBits * a);
+      beyond = beyond || t < 0 || t >= this->SlotDims[a];
+      stride *= this->SlotDims[a - 1];
+      base += t * stride;
+    }
+    if (beyond)
+    {
+      base = -1;
+    }
+    if (base != lastBase)
+    {
+      for (int k = 0; k < segmentCount; ++k)
+      {
+        const Index t = segments[static_cast<size_t>(k)].Column;
+        entries[static_cast<size_t>(k)] =
+          beyond || t < 0 || t >= this->SlotDims[0] ? Outside : this->Slots[static_cast<size_t>(base + t)];
+      }
+      lastBase = base;
     }
     double* rowPhi = &phi(i);
     double* rowDist = dist ? &(*dist)(i) : nullptr;
-    for (Index g = start[0]; g < start[0] + edge;)
+    for (int k = 0; k < segmentCount; ++k)
     {
-      // Nodes [g, end) of the row lie in tile t[0], from its node `from`.
-      t[0] = floorTile(g);
-      const Index from = g - t[0] * TileEdge;
-      const Index end = std::min(start[0] + edge, (t[0] + 1) * TileEdge);
-      const Index count = end - g;
-      const Index x = g - start[0];
-      const bool out = beyond || t[0] < 0 || t[0] >= this->SlotDims[0];
-      const std::int32_t entry = out ? Outside : this->Slots[static_cast<size_t>(this->slotIndex(t))];
+      const Segment& seg = segments[static_cast<size_t>(k)];
+      const std::int32_t entry = entries[static_cast<size_t>(k)];
       if (entry >= 0)
       {
-        std::copy_n(this->phi(entry) + local + from, count, rowPhi + x);
+        copyRow(this->phi(entry) + local + seg.From, seg.Count, rowPhi + seg.X);
         if (rowDist)
         {
-          std::copy_n(this->distance(entry) + local + from, count, rowDist + x);
+          copyRow(this->distance(entry) + local + seg.From, seg.Count, rowDist + seg.X);
         }
       }
       else
       {
-        std::fill_n(rowPhi + x, count, entry == Inside ? -this->Gamma : this->Gamma);
+        std::fill_n(rowPhi + seg.X, seg.Count, entry == Inside ? -this->Gamma : this->Gamma);
         if (rowDist)
         {
-          std::fill_n(rowDist + x, count, unknown);
+          std::fill_n(rowDist + seg.X, seg.Count, unknown);
         }
       }
-      g = end;
     }
   }
   phi.fillGhosts();

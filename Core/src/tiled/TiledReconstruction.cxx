@@ -2,6 +2,7 @@
 #include "sltk/tiled/TiledReconstruction.h"
 
 #include "BandReach.h"
+#include "PruneTiles.h"
 #include "TiledDistances.h"
 #include "TiledReinitialise.h"
 #include "sltk/exec/Memory.h"
@@ -226,11 +227,52 @@ Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma
         }
       }
     });
+  // A marked slot whose transferred phi is one +-gamma throughout gets no
+  // tile, only that side (PruneTiles.h: extendBand allocates it again,
+  // at the same values, where the band reaches).
+  std::vector<Index> candidates;
+  candidates.reserve(static_cast<size_t>(count));
   for (Index s = 0; s < field.slotCount(); ++s)
   {
     if (marked[static_cast<size_t>(s)])
     {
-      field.addTile(s);
+      candidates.push_back(s);
+    }
+  }
+  const auto transferred = [&](const std::array<Index, D>& i)
+  { return std::min(gamma, std::max(-gamma, previous.at(field.position(i)))); };
+  std::vector<std::int8_t> side(candidates.size(), 0); // -1 / +1: one side throughout; 0: a tile
+  ctx.parallelFor(0, static_cast<Index>(candidates.size()),
+    [&](Index b, Index e)
+    {
+      for (Index c = b; c < e; ++c)
+      {
+        const auto t = field.slotCoordinates(candidates[static_cast<size_t>(c)]);
+        double first = 0.0;
+        bool uniform = true;
+        for (Index k = 0; k < TiledField<D>::Nodes && uniform; ++k)
+        {
+          std::array<Index, D> i{};
+          for (int a = 0; a < D; ++a)
+          {
+            i[a] = t[a] * TileEdge + ((k >> (TileBits * a)) & (TileEdge - 1));
+          }
+          const double v = transferred(i);
+          first = k == 0 ? v : first;
+          uniform = std::fabs(v) == gamma && v == first;
+        }
+        side[static_cast<size_t>(c)] = uniform ? (first < 0.0 ? -1 : 1) : 0;
+      }
+    });
+  for (size_t c = 0; c < candidates.size(); ++c)
+  {
+    if (side[c] == 0)
+    {
+      field.addTile(candidates[c]);
+    }
+    else
+    {
+      field.setSide(candidates[c], side[c] < 0);
     }
   }
   ctx.parallelFor(
@@ -243,7 +285,7 @@ Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma
         double* p = field.phi(tile);
         for (Index k = 0; k < TiledField<D>::Nodes; ++k)
         {
-          p[k] = std::min(gamma, std::max(-gamma, previous.at(field.position(field.node(tile, k)))));
+          p[k] = transferred(field.node(tile, k));
         }
       }
     },
@@ -437,6 +479,17 @@ struct TileBlocks
 
   Index count() const { return static_cast<Index>(this->First.size()); }
 
+  /// The number of block positions over the field's slots (the range of key()).
+  static Index positions(const TiledField<D>& field)
+  {
+    Index n = 1;
+    for (int a = 0; a < D; ++a)
+    {
+      n *= blocksAlong(field, a);
+    }
+    return n;
+  }
+
   /// The key of the block holding tile coordinates t.
   static Index key(const TiledField<D>& field, const std::array<Index, D>& t)
   {
@@ -467,12 +520,15 @@ private:
 
 /// One step (4.22)/(4.24) on the band, block by block: each block of band
 /// tiles gets its new values from the uniform kernel on one copy of the block
-/// and the nodes around it that its feet can reach (measured first on a copy
-/// with one node around), stored once all blocks are computed.
+/// and the nodes around it that its feet can reach, stored once all blocks
+/// are computed. The reach is measured on a copy with the halo this block
+/// needed at the last step (`halos`, by block position; 0: none yet, then a
+/// copy with one node around): another copy only when the feet grew.
 template <class Interp, int D>
-Status tiledStep(
-  TiledField<D>& field, const std::vector<std::int32_t>& band, const LevelSetStepParameters& par, const Context& ctx)
+Status tiledStep(TiledField<D>& field, const std::vector<std::int32_t>& band, const LevelSetStepParameters& par,
+  const Context& ctx, std::vector<std::uint8_t>& halos)
 {
+  halos.resize(static_cast<size_t>(TileBlocks<D>::positions(field)), 0);
   const Context serial;
   const double dx = field.grid().Spacing[0];
   std::vector<std::pair<Index, Index>> keyed(band.size());
@@ -540,8 +596,17 @@ Status tiledStep(
               }
             });
         };
-        field.scratchBlock(first, BlockTiles, 1, 1, s.Phi, &s.Dist);
-        bandNodes(1);
+        std::uint8_t& last = halos[static_cast<size_t>(TileBlocks<D>::key(field, first))];
+        const Index guess = last;
+        if (guess > 0)
+        {
+          field.scratchBlock(first, BlockTiles, static_cast<int>(guess), Ghost, s.Phi, &s.Dist);
+        }
+        else
+        {
+          field.scratchBlock(first, BlockTiles, 1, 1, s.Phi, &s.Dist);
+        }
+        bandNodes(std::max<Index>(guess, 1));
         const double foot = largestFoot(s.Phi, s.Dist, s.Nodes, par);
         feet[static_cast<size_t>(block)] = foot;
         const Index need = static_cast<Index>(std::ceil(foot / dx)) + StencilReach;
@@ -549,9 +614,14 @@ Status tiledStep(
         {
           continue; // reported below
         }
-        const Index halo = std::max<Index>(HaloStep, (need + HaloStep - 1) / HaloStep * HaloStep);
-        field.scratchBlock(first, BlockTiles, static_cast<int>(halo), Ghost, s.Phi, &s.Dist);
-        bandNodes(halo);
+        const Index needed = std::max<Index>(HaloStep, (need + HaloStep - 1) / HaloStep * HaloStep);
+        last = static_cast<std::uint8_t>(needed);
+        const Index halo = std::max(needed, guess); // the copy made is wide enough when the feet shrank
+        if (halo > guess)
+        {
+          field.scratchBlock(first, BlockTiles, static_cast<int>(halo), Ghost, s.Phi, &s.Dist);
+          bandNodes(halo);
+        }
         failures[static_cast<size_t>(block)] = levelSetStep<Interp, D>(serial, s.Phi, s.Dist, s.Nodes, par, s.Values);
         forEachMember(
           [&](size_t j)
@@ -643,7 +713,8 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
       TileScratch<D> s;
       for (Index block = b; block < e; ++block)
       {
-        field.scratchBlock(blocks.First[static_cast<size_t>(block)], BlockTiles, TileEdge / 2, Ghost, s.Phi, nullptr);
+        // A point's cell is in the block's tiles: the interpolator reads StencilReach nodes beyond it.
+        field.scratchBlock(blocks.First[static_cast<size_t>(block)], BlockTiles, StencilReach, Ghost, s.Phi, nullptr);
         Interp interp(s.Phi);
         for (size_t j = blocks.Begin[static_cast<size_t>(block)]; j < blocks.Begin[static_cast<size_t>(block) + 1]; ++j)
         {
@@ -694,13 +765,17 @@ Status iterateTiled(const ReconstructionPlan<D>& plan, int run, const Context& c
   double bandSizes = 0.0;
   TiledReinitialiser<D> reinit;
   TiledDistances<D> distances;
+  std::vector<std::uint8_t> stepHalos; // by block position: the halo its feet needed at the last step
   for (int n = 0; n < options.MaxIterations; ++n)
   {
     bandTiles(field, ctx, band);
     Index added = 0;
     const std::vector<std::uint32_t> reached = bandReachOf(field, band, options, ctx);
+    storage.FreedTiles += pruneTiles(
+      field, band, reached, ctx, [&](const std::vector<std::uint8_t>& left) { distances.removeTiles(left); });
     SLTK_RETURN_IF_ERROR(extendBand(band, reached, options, run, field, added));
     storage.AddedTiles += added;
+    storage.PeakTiles = std::max(storage.PeakTiles, field.tileCount());
     storage.ExactDistances += distances.ensure(field, band, reached, *plan.Locator, ctx);
     EnergyOptions energyOptions;
     energyOptions.P = model.P;
@@ -732,7 +807,7 @@ Status iterateTiled(const ReconstructionPlan<D>& plan, int run, const Context& c
     }
     step.Energy = ep.Energy;
     reinit.markBand(field, band, options.ReinitDilation, ctx); // the band before the step, dilated (1.53)
-    SLTK_RETURN_IF_ERROR((tiledStep<Interp, D>(field, band, step, ctx)));
+    SLTK_RETURN_IF_ERROR((tiledStep<Interp, D>(field, band, step, ctx, stepHalos)));
     SLTK_RETURN_IF_ERROR(reinit.run(field, options.Reinit, ctx));
     IterationRecord it;
     it.Run = run;
@@ -788,6 +863,21 @@ void recordStorage(
   storage.push_back(r);
 }
 
+/// The transferred level set reinitialised on its band before run `run`'s
+/// iterations; the reinitialiser's per-node arrays are freed on return (they
+/// were as large as the tiles on the bunny's run 3).
+template <int D>
+Status reinitialiseTransferred(const ReconstructionPlan<D>& plan, int run, const Context& ctx, TiledField<D>& field)
+{
+  std::vector<std::int32_t> band;
+  bandTiles(field, ctx, band);
+  Index added = 0;
+  SLTK_RETURN_IF_ERROR(extendBand(band, bandReachOf(field, band, plan.Options, ctx), plan.Options, run, field, added));
+  TiledReinitialiser<D> reinit;
+  reinit.markBand(field, band, plan.Options.ReinitDilation, ctx);
+  return reinit.run(field, plan.Options.Reinit, ctx);
+}
+
 template <int D, class Interp>
 Status runTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReconstructionResult<D>& result)
 {
@@ -815,14 +905,7 @@ Status runTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReco
     const auto setup = Clock::now();
     TiledField<D> field;
     SLTK_RETURN_IF_ERROR(transferToTiles(previous, previousGamma, grid, plan, run, ctx, field));
-    TiledReinitialiser<D> reinit;
-    std::vector<std::int32_t> band;
-    bandTiles(field, ctx, band);
-    Index added = 0;
-    SLTK_RETURN_IF_ERROR(
-      extendBand(band, bandReachOf(field, band, plan.Options, ctx), plan.Options, run, field, added));
-    reinit.markBand(field, band, plan.Options.ReinitDilation, ctx);
-    SLTK_RETURN_IF_ERROR(reinit.run(field, plan.Options.Reinit, ctx));
+    SLTK_RETURN_IF_ERROR(reinitialiseTransferred(plan, run, ctx, field));
     std::ostringstream log;
     log << "run " << run << " (tiled): " << field.tileCount() << " tiles of " << field.slotCount() << " ("
         << field.bytes() / 1048576.0 << " MB), set up in " << secondsSince(setup) << " s";
@@ -836,6 +919,7 @@ Status runTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReco
       last = TiledField<D>{};
     }
     TiledRunRecord storage;
+    storage.PeakTiles = field.tileCount(); // the transfer's and the setup reinitialisation's
     bool vanished = false;
     const Status status = iterateTiled<D, Interp>(plan, run, ctx, field, records, storage, vanished);
     ctx.interrupter().end();

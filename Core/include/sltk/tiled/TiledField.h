@@ -74,6 +74,10 @@ public:
   /// Allocates a tile in slot s (when it has none): its phi is the slot's
   /// +-gamma, its distance NaN (not computed) until set. Returns the tile's id.
   std::int32_t addTile(Index s);
+  /// Frees the tiles with remove[id] != 0, each a slot again on the side of
+  /// its first node's sign (the caller removes only tiles at +-gamma
+  /// throughout); the others keep their order and take ids 0, 1, ...
+  void removeTiles(const std::vector<std::uint8_t>& remove);
   /// Tile coordinates of tile `id`.
   const std::array<Index, D>& tileOrigin(std::int32_t id) const { return this->Origins[static_cast<size_t>(id)]; }
   Index tileSlot(std::int32_t id) const { return this->SlotOf[static_cast<size_t>(id)]; }
@@ -114,7 +118,9 @@ public:
     this->scratchBlock(this->tileOrigin(id), 1, halo, ghost, phi, dist);
   }
   /// The same for the block of `tiles`^D tile positions whose first tile
-  /// coordinates are `first` (slots with or without a tile, or beyond them).
+  /// coordinates are `first` (slots with or without a tile, or beyond them);
+  /// tiles * TileEdge + 2 * halo is at most (MaxScratchSegments - 2) * TileEdge.
+  static constexpr int MaxScratchSegments = 16;
   void scratchBlock(
     const std::array<Index, D>& first, Index tiles, int halo, int ghost, GridField<D>& phi, GridField<D>* dist) const;
 

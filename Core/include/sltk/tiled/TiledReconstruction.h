@@ -40,6 +40,8 @@ struct TiledRunRecord
   Index StoredNodes = 0;    ///< Tiles * 8^D
   Index UniformNodes = 0;   ///< the uniform grid of the run
   Index AddedTiles = 0;     ///< tiles added during the run (the band moved)
+  Index FreedTiles = 0;     ///< tiles freed during the run (the band left them: PruneTiles.h)
+  Index PeakTiles = 0;      ///< the most tiles held at once during the run's iterations
   Index ExactDistances = 0; ///< nodes whose distance to the cloud was computed (TiledDistances)
   double Bytes = 0.0;       ///< the field's memory at the end of the run
 };

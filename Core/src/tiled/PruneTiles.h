@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file PruneTiles.h (private)
+/// Frees the tiles the band has left (Documentation/Octree.md, "The tiled
+/// band"): a tile that holds no band node (|phi| < gamma, 1.48), lies beyond
+/// the reach of every band node (BandReach.h: the reinitialisation's dilation
+/// (1.53) and the distance stencils) and holds +gamma or -gamma at every node
+/// says no more than its slot does, so its slot takes that side again. Where
+/// the band comes back, extendBand allocates it again at the same +-gamma and
+/// TiledDistances computes its d again where it is read: the iterations are
+/// unchanged.
+
+#include "BandReach.h"
+
+#include "sltk/exec/Context.h"
+#include "sltk/tiled/TiledField.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace sltk
+{
+
+/// The tiles of `field` to free: not in `band`, not in a slot `reached` from
+/// a band tile, and at one +-gamma throughout.
+template <int D>
+std::vector<std::uint8_t> tilesLeftBehind(const TiledField<D>& field, const std::vector<std::int32_t>& band,
+  const std::vector<std::uint32_t>& reached, const Context& ctx)
+{
+  std::vector<std::uint8_t> needed(static_cast<size_t>(field.tileCount()), 0);
+  for (size_t j = 0; j < band.size(); ++j)
+  {
+    needed[static_cast<size_t>(band[j])] = 1;
+    forEachReachedSlot(field, band[j], reached[j],
+      [&](Index s)
+      {
+        const std::int32_t id = field.slot(s);
+        if (id >= 0)
+        {
+          needed[static_cast<size_t>(id)] = 1;
+        }
+      });
+  }
+  std::vector<std::uint8_t> left(needed.size(), 0);
+  ctx.parallelFor(0, field.tileCount(),
+    [&](Index b, Index e)
+    {
+      for (Index id = b; id < e; ++id)
+      {
+        if (needed[static_cast<size_t>(id)])
+        {
+          continue;
+        }
+        const double* p = field.phi(static_cast<std::int32_t>(id));
+        const double side = p[0] < 0.0 ? -field.gamma() : field.gamma();
+        Index k = 0;
+        while (k < TiledField<D>::Nodes && p[k] == side)
+        {
+          ++k;
+        }
+        left[static_cast<size_t>(id)] = k == TiledField<D>::Nodes ? 1 : 0;
+      }
+    });
+  return left;
+}
+
+/// Frees tilesLeftBehind(); `band` (kept tiles) is renumbered and `forget(left)`
+/// is called so that per-tile state elsewhere follows. Returns the tiles freed.
+template <int D, class Forget>
+Index pruneTiles(TiledField<D>& field, std::vector<std::int32_t>& band, const std::vector<std::uint32_t>& reached,
+  const Context& ctx, Forget&& forget)
+{
+  const std::vector<std::uint8_t> left = tilesLeftBehind(field, band, reached, ctx);
+  std::vector<std::int32_t> newId(left.size(), -1);
+  std::int32_t kept = 0;
+  for (size_t id = 0; id < left.size(); ++id)
+  {
+    if (!left[id])
+    {
+      newId[id] = kept++;
+    }
+  }
+  const Index freed = static_cast<Index>(left.size()) - kept;
+  if (freed == 0)
+  {
+    return 0;
+  }
+  field.removeTiles(left);
+  for (std::int32_t& id : band)
+  {
+    id = newId[static_cast<size_t>(id)];
+  }
+  forget(left);
+  return freed;
+}
+
+} // namespace sltk
