@@ -12,6 +12,8 @@
 #include <vtkStaticCleanPolyData.h>
 
 #include <algorithm>
+#include <array>
+#include <vector>
 
 namespace sltk
 {
@@ -21,18 +23,35 @@ namespace vtkbridge
 void tiledZeroLevelSet(const TiledField<3>& field, const UnitBox<3>& box, vtkPolyData* surface)
 {
   const GridSpec<3> grid = box.toUser(field.grid());
-  vtkNew<vtkAppendPolyData> append;
-  GridField<3> block; // the tile and one node around it (TiledField::scratch)
+  // The tiles' cells (lower corner in a tile) are contoured by blocks of
+  // BlockTiles^3 tile positions, one image each (a pipeline per tile cost more
+  // than the contour). Each image's extent is its block's within the global grid,
+  // so a node shared by two blocks has bitwise the same coordinates in both.
+  constexpr Index BlockTiles = 4;
+  std::vector<std::array<Index, 3>> blocks;
   for (std::int32_t id = 0; id < static_cast<std::int32_t>(field.tileCount()); ++id)
+  {
+    std::array<Index, 3> first = field.tileOrigin(id);
+    for (Index& t : first)
+    {
+      t -= t % BlockTiles;
+    }
+    blocks.push_back(first);
+  }
+  std::sort(blocks.begin(), blocks.end());
+  blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
+  vtkNew<vtkAppendPolyData> append;
+  GridField<3> block; // the block and one node around it (TiledField::scratchBlock)
+  for (const auto& first : blocks)
   {
     int extent[6];
     for (int a = 0; a < 3; ++a)
     {
-      const Index first = field.tileOrigin(id)[a] * TileEdge;
-      extent[2 * a] = static_cast<int>(first);
-      extent[2 * a + 1] = static_cast<int>(std::min(first + TileEdge, grid.Dims[a] - 1)); // the cells' upper corners
+      const Index start = first[a] * TileEdge;
+      extent[2 * a] = static_cast<int>(start);
+      extent[2 * a + 1] = static_cast<int>(std::min(start + BlockTiles * TileEdge, grid.Dims[a] - 1));
     }
-    field.scratch(id, 1, 0, block, nullptr);
+    field.scratchBlock(first, BlockTiles, 1, 0, block, nullptr);
     bool negative = false, positive = false;
     vtkNew<vtkDoubleArray> values;
     values->SetName("SignedDistance");
@@ -54,7 +73,7 @@ void tiledZeroLevelSet(const TiledField<3>& field, const UnitBox<3>& box, vtkPol
     }
     if (!(negative && positive))
     {
-      continue; // no front in this tile's cells
+      continue; // no front in this block's cells
     }
     vtkNew<vtkImageData> image;
     image->SetExtent(extent);
@@ -77,7 +96,7 @@ void tiledZeroLevelSet(const TiledField<3>& field, const UnitBox<3>& box, vtkPol
     surface->Initialize();
     return;
   }
-  vtkNew<vtkStaticCleanPolyData> merge; // points shared by neighbouring tiles are bitwise equal
+  vtkNew<vtkStaticCleanPolyData> merge; // points shared by neighbouring blocks are bitwise equal
   merge->SetInputConnection(append->GetOutputPort());
   merge->ToleranceIsAbsoluteOn();
   merge->SetAbsoluteTolerance(0.0);
