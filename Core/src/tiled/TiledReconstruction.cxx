@@ -322,6 +322,10 @@ void bandTiles(const TiledField<D>& field, const Context& ctx, std::vector<std::
       tiles.push_back(id);
     }
   }
+  // In slot order: the energy's and Err_P's sums then do not depend on the tiles' ids, which
+  // follow the order tiles were allocated and freed in (PruneTiles.h).
+  std::sort(tiles.begin(), tiles.end(),
+    [&field](std::int32_t x, std::int32_t y) { return field.tileSlot(x) < field.tileSlot(y); });
 }
 
 /// Gives tiles to the slots `reached` (bandReach) from the band tiles (new tiles:
@@ -523,7 +527,7 @@ private:
 /// and the nodes around it that its feet can reach, stored once all blocks
 /// are computed. The reach is measured on a copy with the halo this block
 /// needed at the last step (`halos`, by block position; 0: none yet, then a
-/// copy with one node around): another copy only when the feet grew.
+/// copy with one node around): another copy only when it changed.
 template <class Interp, int D>
 Status tiledStep(TiledField<D>& field, const std::vector<std::int32_t>& band, const LevelSetStepParameters& par,
   const Context& ctx, std::vector<std::uint8_t>& halos)
@@ -614,10 +618,11 @@ Status tiledStep(TiledField<D>& field, const std::vector<std::int32_t>& band, co
         {
           continue; // reported below
         }
-        const Index needed = std::max<Index>(HaloStep, (need + HaloStep - 1) / HaloStep * HaloStep);
-        last = static_cast<std::uint8_t>(needed);
-        const Index halo = std::max(needed, guess); // the copy made is wide enough when the feet shrank
-        if (halo > guess)
+        // The copy's origin enters the feet's coordinates: always the needed halo, so that the
+        // result does not depend on the last step's (a wider copy changed the scans' iterations).
+        const Index halo = std::max<Index>(HaloStep, (need + HaloStep - 1) / HaloStep * HaloStep);
+        last = static_cast<std::uint8_t>(halo);
+        if (halo != guess)
         {
           field.scratchBlock(first, BlockTiles, static_cast<int>(halo), Ghost, s.Phi, &s.Dist);
           bandNodes(halo);

@@ -11,12 +11,14 @@
 /// the uniform version; the values are cut at +-gamma (1.49) afterwards.
 
 #include "sltk/exec/Context.h"
+#include "sltk/exec/ThreadPool.h"
 #include "sltk/levelset/ReinitInterface.h"
 #include "sltk/levelset/ReinitOptions.h"
 #include "sltk/tiled/TiledField.h"
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <vector>
 
 namespace sltk
@@ -103,7 +105,12 @@ public:
     this->Nodes.clear();
     this->Nodes.shrink_to_fit();
     this->Nodes.reserve(static_cast<size_t>(std::count(this->Mask.begin(), this->Mask.end(), std::uint8_t(1))));
-    for (std::int32_t id = 0; id < field.tileCount(); ++id)
+    // Tile after tile in slot order, so that eps_1's sums do not depend on the tiles' ids.
+    std::vector<std::int32_t> order(static_cast<size_t>(field.tileCount()));
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(),
+      [&field](std::int32_t x, std::int32_t y) { return field.tileSlot(x) < field.tileSlot(y); });
+    for (std::int32_t id : order)
     {
       for (Index k = 0; k < nodes; ++k)
       {
@@ -141,6 +148,8 @@ public:
     this->Fixed.assign(count, 0);
     this->Coefficient.assign(count, 0.0);
     this->Next.assign(count, 0.0);
+    this->ChunkChange.assign(
+      static_cast<size_t>(std::max<Index>(1, ThreadPool::chunkCount(0, static_cast<Index>(count), ChangeGrain))), 0.0);
     this->classify(field, options, ctx);
     this->findFaceNeighbours(field);
     for (size_t n = 0; n < count; ++n)
@@ -153,7 +162,9 @@ public:
     const double dtau = options.Courant * h; // (1.34)
     for (int iteration = 1; iteration <= options.MaxIterations; ++iteration)
     {
-      const double change = ctx.parallelSum(
+      // The largest change, as the uniform version's BandSolver::step: the chunks' maxima, then
+      // their maximum (independent of the nodes' order, which follows the tiles' ids).
+      ctx.parallelFor(
         0, static_cast<Index>(count),
         [&](Index b, Index e)
         {
@@ -180,10 +191,10 @@ public:
             this->Next[static_cast<size_t>(n)] = v;
             largest = std::isfinite(v) ? std::max(largest, std::fabs(v - u[0])) : HUGE_VAL;
           }
-          return largest;
+          this->ChunkChange[static_cast<size_t>(b / ChangeGrain)] = largest;
         },
-        0);
-      // parallelSum adds the chunks' maxima: an upper bound of the largest change, enough for the test below.
+        ChangeGrain);
+      const double change = *std::max_element(this->ChunkChange.begin(), this->ChunkChange.end());
       ctx.parallelFor(0, static_cast<Index>(count),
         [&](Index b, Index e)
         {
@@ -380,7 +391,8 @@ private:
   std::vector<std::uint8_t> Mask;
   std::vector<Node> Nodes;
   std::vector<std::array<std::int32_t, 2 * D>> FaceNeighbours;
-  std::vector<double> Before, Coefficient, Next;
+  static constexpr Index ChangeGrain = 2048; ///< nodes a chunk of the largest change
+  std::vector<double> Before, Coefficient, Next, ChunkChange;
   std::vector<std::uint8_t> Fixed, Relax;
   double Spacing[D] = {};
   double InverseSpacing[D] = {};
