@@ -2,7 +2,7 @@
 # The tiled reconstruction (sltk reconstruct --octree) on grids the uniform
 # version cannot hold here (Documentation/Octree.md): the full Stanford dragon
 # at the thesis's finest resolution (Table 4.8) and the merged raw bunny scans
-# on a 624M-node grid. Each case runs once under /usr/bin/time -v and prints
+# on a 624M-node grid (measured: Documentation/Octree.md). Each case runs once under /usr/bin/time -v and prints
 # its run table, the surface's pieces and Euler characteristic, the wall time
 # and the peak RSS. Without ../shared the script has nothing to measure.
 #   bench/tiled/large-clouds.sh BUILD_DIR [dragon|scans ...]
