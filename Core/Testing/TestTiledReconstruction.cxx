@@ -200,6 +200,8 @@ TEST(TiledReconstruction, MemoryCheckSizesTheTilesNotTheUniformGrid)
   sltk::ReconstructionPlan<3> plan;
   const sltk::Status uniformStatus = sltk::planReconstruction(cloud, options, ctx, plan);
   EXPECT_EQ(uniformStatus.code(), sltk::StatusCode::OutOfMemory) << uniformStatus.message();
+  // The uniform refusal names the tiled storage, which fits.
+  EXPECT_NE(uniformStatus.message().find("--octree"), std::string::npos) << uniformStatus.message();
   options.TiledStorage = true;
   const sltk::Status tiledStatus = sltk::planReconstruction(cloud, options, ctx, plan);
   EXPECT_TRUE(tiledStatus.isOk()) << tiledStatus.message();
@@ -208,4 +210,9 @@ TEST(TiledReconstruction, MemoryCheckSizesTheTilesNotTheUniformGrid)
   EXPECT_EQ(refused.code(), sltk::StatusCode::OutOfMemory);
   EXPECT_NE(refused.message().find("the tiled reconstruction"), std::string::npos) << refused.message();
   EXPECT_NE(refused.message().find("use C_dx >="), std::string::npos) << refused.message();
+  // Where the tiles do not fit either, the uniform refusal does not offer them.
+  options.TiledStorage = false;
+  const sltk::Status neither = sltk::planReconstruction(cloud, options, ctx, plan);
+  EXPECT_EQ(neither.code(), sltk::StatusCode::OutOfMemory);
+  EXPECT_EQ(neither.message().find("--octree"), std::string::npos) << neither.message();
 }

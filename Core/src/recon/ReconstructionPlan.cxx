@@ -335,27 +335,45 @@ Status checkSlabMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor,
 }
 } // namespace
 
-/// With TiledStorage: run 1's uniform grid and the finest run's tiles (their
-/// slots, then the nodes estimated from the cloud, TiledMemory.h) must fit.
-template <int D>
-Status checkTiledMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor, GridPlan<D>& grids)
+namespace
 {
-  const double budget = plan.Options.MemoryBudget ? static_cast<double>(plan.Options.MemoryBudget)
-                                                  : static_cast<double>(availableMemoryBytes());
+/// The tiled reconstruction's memory (TiledStorage): run 1's uniform grid and
+/// the finest run's tiles (their slots, then the nodes estimated from the
+/// cloud, TiledMemory.h), against `budget` (0: none).
+template <int D>
+double tiledNeedBytes(const ReconstructionPlan<D>& plan, const GridPlan<D>& grids, double budget)
+{
   const GridSpec<D>& finest = grids.Runs.back();
   const double first = static_cast<double>(grids.Runs.front().nodeCount()) * ReconstructionBytesPerNode;
   const double slots = static_cast<double>(finest.nodeCount()) / static_cast<double>(tileNodes<D>());
-  double need = first + 5.0 * slots;          // a slot: its int32 entry, and a byte while the tiles are counted
-  if (budget <= 0.0 || 5.0 * slots <= budget) // else the count itself would not fit
+  if (budget > 0.0 && 5.0 * slots > budget) // the count itself would not fit
   {
-    need = first + 4.0 * slots + estimatedTiledNodes(plan.Cloud, finest) * TiledBytesPerStoredNode;
+    return first + 5.0 * slots; // a slot: its int32 entry, and a byte while the tiles are counted
   }
+  return first + 4.0 * slots + estimatedTiledNodes(plan.Cloud, finest) * TiledBytesPerStoredNode;
+}
+
+template <int D>
+double memoryBudgetBytes(const ReconstructionPlan<D>& plan)
+{
+  return plan.Options.MemoryBudget ? static_cast<double>(plan.Options.MemoryBudget)
+                                   : static_cast<double>(availableMemoryBytes());
+}
+
+} // namespace
+
+/// With TiledStorage: tiledNeedBytes must fit.
+template <int D>
+Status checkTiledMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor, GridPlan<D>& grids)
+{
+  const double budget = memoryBudgetBytes(plan);
+  const double need = tiledNeedBytes(plan, grids, budget);
   if (budget > 0.0 && need > budget)
   {
     // The stored nodes follow the surface: about C_dx^-(D-1); the factor that fits with 10% headroom.
     const double fit = cellSizeFactor * std::pow(need / (0.9 * budget), 1.0 / (D - 1));
     std::ostringstream m;
-    m << "the tiled reconstruction (" << grids.Runs.size() << " runs, the finest grid " << finest.nodeCount()
+    m << "the tiled reconstruction (" << grids.Runs.size() << " runs, the finest grid " << grids.Runs.back().nodeCount()
       << " nodes) would need about " << need / 1e9 << " GB for run 1's grid and the finest run's tiles, more than the "
       << budget / 1e9 << " GB available: use C_dx >= " << fit << " or fewer runs";
     grids.Runs.clear();
@@ -363,6 +381,37 @@ Status checkTiledMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor
   }
   return Status::ok();
 }
+
+namespace
+{
+/// A uniform plan refused for memory (`refusal`): in 3D, where the tiled
+/// storage would fit, the refusal says so, with its estimate.
+template <int D>
+Status withTiledAlternative(const ReconstructionPlan<D>& plan, GridPlanOptions po, const Status& refusal)
+{
+  if (D != 3 || refusal.code() != StatusCode::OutOfMemory)
+  {
+    return refusal;
+  }
+  po.MemoryBudget = std::numeric_limits<std::uint64_t>::max();
+  GridPlan<D> grids;
+  const double budget = memoryBudgetBytes(plan);
+  if (!planGrids(boundingBox(plan.Cloud), plan.CloudSpacing, po, grids).isOk() || budget <= 0.0)
+  {
+    return refusal;
+  }
+  const double need = tiledNeedBytes(plan, grids, budget);
+  if (need > budget)
+  {
+    return refusal;
+  }
+  std::ostringstream m;
+  m << refusal.message() << "; or store only the tiles near the surface (about " << need / 1e9
+    << " GB): AdaptiveStorage in the filter, --octree with sltk reconstruct";
+  return Status::outOfMemory(m.str());
+}
+
+} // namespace
 
 template <int D>
 Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor, GridPlan<D>& grids)
@@ -384,7 +433,7 @@ Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSize
   }
   if (plan.Options.Ranks <= 1)
   {
-    return planGrids(boundingBox(plan.Cloud), plan.CloudSpacing, po, grids);
+    return withTiledAlternative(plan, po, planGrids(boundingBox(plan.Cloud), plan.CloudSpacing, po, grids));
   }
   // Split over ranks: the windows of the ranks on this machine must fit, not the whole grid.
   po.MemoryBudget = std::numeric_limits<std::uint64_t>::max();
