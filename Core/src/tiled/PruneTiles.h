@@ -21,6 +21,21 @@
 namespace sltk
 {
 
+/// -1 or +1 when the `count` values `p` are all -gamma or all +gamma (a slot
+/// side holds them exactly), else 0.
+inline int oneSideOf(const double* p, Index count, double gamma)
+{
+  const double side = p[0] < 0.0 ? -gamma : gamma;
+  for (Index k = 0; k < count; ++k)
+  {
+    if (p[k] != side)
+    {
+      return 0;
+    }
+  }
+  return side < 0.0 ? -1 : 1;
+}
+
 /// The tiles of `field` to free: not in `band`, not in a slot `reached` from
 /// a band tile, and at one +-gamma throughout.
 template <int D>
@@ -52,13 +67,7 @@ std::vector<std::uint8_t> tilesLeftBehind(const TiledField<D>& field, const std:
           continue;
         }
         const double* p = field.phi(static_cast<std::int32_t>(id));
-        const double side = p[0] < 0.0 ? -field.gamma() : field.gamma();
-        Index k = 0;
-        while (k < TiledField<D>::Nodes && p[k] == side)
-        {
-          ++k;
-        }
-        left[static_cast<size_t>(id)] = k == TiledField<D>::Nodes ? 1 : 0;
+        left[static_cast<size_t>(id)] = oneSideOf(p, TiledField<D>::Nodes, field.gamma()) != 0 ? 1 : 0;
       }
     });
   return left;

@@ -245,23 +245,20 @@ Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma
   ctx.parallelFor(0, static_cast<Index>(candidates.size()),
     [&](Index b, Index e)
     {
+      std::array<double, TiledField<D>::Nodes> values;
       for (Index c = b; c < e; ++c)
       {
         const auto t = field.slotCoordinates(candidates[static_cast<size_t>(c)]);
-        double first = 0.0;
-        bool uniform = true;
-        for (Index k = 0; k < TiledField<D>::Nodes && uniform; ++k)
+        for (Index k = 0; k < TiledField<D>::Nodes; ++k)
         {
           std::array<Index, D> i{};
           for (int a = 0; a < D; ++a)
           {
             i[a] = t[a] * TileEdge + ((k >> (TileBits * a)) & (TileEdge - 1));
           }
-          const double v = transferred(i);
-          first = k == 0 ? v : first;
-          uniform = std::fabs(v) == gamma && v == first;
+          values[static_cast<size_t>(k)] = transferred(i);
         }
-        side[static_cast<size_t>(c)] = uniform ? (first < 0.0 ? -1 : 1) : 0;
+        side[static_cast<size_t>(c)] = static_cast<std::int8_t>(oneSideOf(values.data(), TiledField<D>::Nodes, gamma));
       }
     });
   for (size_t c = 0; c < candidates.size(); ++c)
