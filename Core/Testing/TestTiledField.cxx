@@ -36,7 +36,7 @@ TEST(TiledField, ScratchCopiesTilesAndSidesAtAnyHalo)
   }
   field.setSide(field.slotIndex({ 1, 0, 2 }), true);
   EXPECT_EQ(field.tileCount(), 4);
-  for (int halo : { 1, 4, 8, 12, 20 })
+  for (int halo : { 1, 4, 8, 12, 20, 60 }) // 60: a row wider than MaxScratchSegments tiles (the heap path)
   {
     sltk::GridField<3> phi, dist;
     field.scratch(first + 1, halo, 2, phi, &dist); // tile (1, 0, 1): the halo reaches negative y

@@ -3,8 +3,9 @@
 /// \file SLTKTiledSurface.h
 /// The zero level set of a tiled reconstruction (sltk/tiled/TiledField.h,
 /// Documentation/Octree.md "The tiled band") as one vtkPolyData, without the
-/// full grid: the cells of blocks of 4^3 tile positions that hold a tile are
-/// contoured by vtkFlyingEdges3D on one image a block, whose extent is the
+/// full grid: the cells of the blocks of 4^3 tile positions that hold a tile
+/// (the cells of their slots without a tile too, at +-gamma) are contoured by
+/// vtkFlyingEdges3D on one image a block, whose extent is the
 /// block's in the global grid (global origin and spacing, so a node shared by
 /// two blocks has the same coordinates in both), and the pieces are merged at
 /// identical points. The union is the uniform contour of the same nodes: as

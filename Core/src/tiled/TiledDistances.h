@@ -9,7 +9,8 @@
 /// 1.48). That covers every d the iteration reads: the band node for the scale
 /// (4.32), its axis neighbours for grad d in the feet (4.22)/(4.24), the
 /// other corners of its cells for the energy (4.29)/(4.30). Work: one
-/// nearest-point query per node the band reaches, once.
+/// nearest-point query per node the band reaches, once while its tile is kept
+/// (a tile freed and allocated again, PruneTiles.h, computes its d again).
 
 #include "BandReach.h"
 #include "sltk/cloud/PointLocator.h"

@@ -5,7 +5,7 @@
 #include <array>
 #include <cstring>
 #include <limits>
-#include <stdexcept>
+#include <vector>
 
 namespace sltk
 {
@@ -167,12 +167,22 @@ void TiledField<D>::scratchBlock(
   {
     Index Column, From, Count, X;
   };
-  if (edge > (MaxScratchSegments - 2) * TileEdge)
+  // A row crosses at most edge / TileEdge + 2 tile columns: on the stack for the
+  // blocks the solver copies, on the heap for wider ones.
+  std::array<Segment, MaxScratchSegments> stackSegments{};
+  std::array<std::int32_t, MaxScratchSegments> stackEntries{};
+  std::vector<Segment> heapSegments;
+  std::vector<std::int32_t> heapEntries;
+  Segment* segments = stackSegments.data();
+  std::int32_t* entries = stackEntries.data();
+  const size_t columns = static_cast<size_t>(edge / TileEdge + 2);
+  if (columns > static_cast<size_t>(MaxScratchSegments))
   {
-    throw std::logic_error("TiledField::scratchBlock: a block wider than MaxScratchSegments tiles");
+    heapSegments.resize(columns);
+    heapEntries.resize(columns);
+    segments = heapSegments.data();
+    entries = heapEntries.data();
   }
-  std::array<Segment, MaxScratchSegments> segments{};
-  std::array<std::int32_t, MaxScratchSegments> entries{};
   int segmentCount = 0;
   for (Index g = start[0]; g < start[0] + edge; ++segmentCount)
   {

@@ -675,8 +675,9 @@ Status tiledStep(TiledField<D>& field, const std::vector<std::int32_t>& band, co
 
 /// Err_P (4.35) and the far-point fraction: |I[phi](Q)| at every point, the
 /// points grouped by the block of BlockTiles^D tile positions around them,
-/// interpolated on one copy of the block (points in slots without a tile are
-/// gamma or more from the front).
+/// interpolated on one copy of the block (slots without a tile at their
+/// +-gamma: a point there can still read a neighbouring tile's nodes, as the
+/// uniform version reads them). Points beyond the slots are gamma away.
 template <class Interp, int D>
 void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double far, const Context& ctx,
   double& meanError, double& farFraction)
@@ -696,7 +697,7 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
       t[a] = i >> TileBits;
       inside = inside && i >= 0 && t[a] < field.slotDims()[a];
     }
-    if (inside && field.slot(field.slotIndex(t)) >= 0)
+    if (inside)
     {
       keyed.emplace_back(TileBlocks<D>::key(field, t), q);
     }
@@ -715,8 +716,11 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
       TileScratch<D> s;
       for (Index block = b; block < e; ++block)
       {
-        // A point's cell is in the block's tiles: the interpolator reads StencilReach nodes beyond it.
-        field.scratchBlock(blocks.First[static_cast<size_t>(block)], BlockTiles, StencilReach, Ghost, s.Phi, nullptr);
+        // A point's cell is in the block's tiles: the interpolator reads StencilReach nodes beyond
+        // it, and one more where the point lies within rounding of the next block's first node
+        // (GridSpec::locate snaps it there).
+        field.scratchBlock(
+          blocks.First[static_cast<size_t>(block)], BlockTiles, StencilReach + 1, Ghost, s.Phi, nullptr);
         Interp interp(s.Phi);
         for (size_t j = blocks.Begin[static_cast<size_t>(block)]; j < blocks.Begin[static_cast<size_t>(block) + 1]; ++j)
         {

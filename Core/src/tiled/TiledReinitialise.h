@@ -163,7 +163,7 @@ public:
     for (int iteration = 1; iteration <= options.MaxIterations; ++iteration)
     {
       // The largest change, as the uniform version's BandSolver::step: the chunks' maxima, then
-      // their maximum (independent of the nodes' order, which follows the tiles' ids).
+      // their maximum (independent of how the nodes fall into chunks).
       ctx.parallelFor(
         0, static_cast<Index>(count),
         [&](Index b, Index e)

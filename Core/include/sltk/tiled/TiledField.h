@@ -118,8 +118,9 @@ public:
     this->scratchBlock(this->tileOrigin(id), 1, halo, ghost, phi, dist);
   }
   /// The same for the block of `tiles`^D tile positions whose first tile
-  /// coordinates are `first` (slots with or without a tile, or beyond them);
-  /// tiles * TileEdge + 2 * halo is at most (MaxScratchSegments - 2) * TileEdge.
+  /// coordinates are `first` (slots with or without a tile, or beyond them).
+  /// Rows up to (MaxScratchSegments - 2) tiles wide, halo included, need no
+  /// allocation (the solver's blocks: at most 12).
   static constexpr int MaxScratchSegments = 16;
   void scratchBlock(
     const std::array<Index, D>& first, Index tiles, int halo, int ghost, GridField<D>& phi, GridField<D>* dist) const;
@@ -140,7 +141,8 @@ private:
   std::vector<std::array<Index, D>> Origins;
   std::vector<Index> SlotOf;
   /// Tiles are stored in chunks of ChunkTiles (phi of each, then d of each),
-  /// so that adding tiles never moves or copies the stored ones.
+  /// so that adding tiles never moves or copies the stored ones (removeTiles
+  /// moves the kept ones down: pointers from phi() and distance() then change).
   static constexpr Index ChunkTiles = 64;
   double* values(std::int32_t id) const
   {
