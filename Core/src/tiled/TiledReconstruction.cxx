@@ -688,14 +688,15 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
   double sum = 0.0, farCount = 0.0;
   for (Index q = 0; q < cloud.size(); ++q)
   {
+    // The point's cell as the interpolator finds it (GridSpec's locate: snapped to a node within
+    // rounding), so that its stencil stays within StencilReach nodes of its block.
+    const CellLocation<D> at = locate(g, cloud.Points[static_cast<size_t>(q)].data());
     std::array<Index, D> t{};
     bool inside = true;
     for (int a = 0; a < D; ++a)
     {
-      const Index i =
-        static_cast<Index>(std::floor((cloud.Points[static_cast<size_t>(q)][a] - g.Origin[a]) / g.Spacing[a]));
-      t[a] = i >> TileBits;
-      inside = inside && i >= 0 && t[a] < field.slotDims()[a];
+      t[a] = at.Cell[a] >> TileBits;
+      inside = inside && at.Cell[a] >= 0 && t[a] < field.slotDims()[a];
     }
     if (inside)
     {
@@ -716,11 +717,8 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
       TileScratch<D> s;
       for (Index block = b; block < e; ++block)
       {
-        // A point's cell is in the block's tiles: the interpolator reads StencilReach nodes beyond
-        // it, and one more where the point lies within rounding of the next block's first node
-        // (GridSpec::locate snaps it there).
-        field.scratchBlock(
-          blocks.First[static_cast<size_t>(block)], BlockTiles, StencilReach + 1, Ghost, s.Phi, nullptr);
+        // A point's cell is in the block's tiles: the interpolator reads StencilReach nodes beyond it.
+        field.scratchBlock(blocks.First[static_cast<size_t>(block)], BlockTiles, StencilReach, Ghost, s.Phi, nullptr);
         Interp interp(s.Phi);
         for (size_t j = blocks.Begin[static_cast<size_t>(block)]; j < blocks.Begin[static_cast<size_t>(block) + 1]; ++j)
         {
