@@ -311,18 +311,16 @@ void bandTiles(const TiledField<D>& field, const Context& ctx, std::vector<std::
         }
       }
     });
+  // In slot order: the energy's sums then do not depend on the tiles' ids (PruneTiles.h).
   tiles.clear();
-  for (std::int32_t id = 0; id < field.tileCount(); ++id)
-  {
-    if (in[static_cast<size_t>(id)])
+  field.forEachTileInSlotOrder(
+    [&](std::int32_t id)
     {
-      tiles.push_back(id);
-    }
-  }
-  // In slot order: the energy's and Err_P's sums then do not depend on the tiles' ids, which
-  // follow the order tiles were allocated and freed in (PruneTiles.h).
-  std::sort(tiles.begin(), tiles.end(),
-    [&field](std::int32_t x, std::int32_t y) { return field.tileSlot(x) < field.tileSlot(y); });
+      if (in[static_cast<size_t>(id)])
+      {
+        tiles.push_back(id);
+      }
+    });
 }
 
 /// Gives tiles to the slots `reached` (bandReach) from the band tiles (new tiles:

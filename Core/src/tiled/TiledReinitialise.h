@@ -18,7 +18,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <vector>
 
 namespace sltk
@@ -106,20 +105,17 @@ public:
     this->Nodes.shrink_to_fit();
     this->Nodes.reserve(static_cast<size_t>(std::count(this->Mask.begin(), this->Mask.end(), std::uint8_t(1))));
     // Tile after tile in slot order, so that eps_1's sums do not depend on the tiles' ids.
-    std::vector<std::int32_t> order(static_cast<size_t>(field.tileCount()));
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(),
-      [&field](std::int32_t x, std::int32_t y) { return field.tileSlot(x) < field.tileSlot(y); });
-    for (std::int32_t id : order)
-    {
-      for (Index k = 0; k < nodes; ++k)
+    field.forEachTileInSlotOrder(
+      [&](std::int32_t id)
       {
-        if (this->Mask[static_cast<size_t>(id * nodes + k)])
+        for (Index k = 0; k < nodes; ++k)
         {
-          this->Nodes.push_back({ id, static_cast<std::int32_t>(k) });
+          if (this->Mask[static_cast<size_t>(id * nodes + k)])
+          {
+            this->Nodes.push_back({ id, static_cast<std::int32_t>(k) });
+          }
         }
-      }
-    }
+      });
     this->Before.resize(this->Nodes.size());
     ctx.parallelFor(0, static_cast<Index>(this->Nodes.size()),
       [&](Index b, Index e)

@@ -81,6 +81,19 @@ public:
   /// Tile coordinates of tile `id`.
   const std::array<Index, D>& tileOrigin(std::int32_t id) const { return this->Origins[static_cast<size_t>(id)]; }
   Index tileSlot(std::int32_t id) const { return this->SlotOf[static_cast<size_t>(id)]; }
+  /// Calls f(id) for every tile in slot order: an order that does not depend on
+  /// the ids, which follow the order tiles were allocated and freed in.
+  template <class F>
+  void forEachTileInSlotOrder(F&& f) const
+  {
+    for (const std::int32_t entry : this->Slots)
+    {
+      if (entry >= 0)
+      {
+        f(entry);
+      }
+    }
+  }
 
   double* phi(std::int32_t id) { return this->values(id); }
   const double* phi(std::int32_t id) const { return this->values(id); }
