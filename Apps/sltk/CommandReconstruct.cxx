@@ -522,8 +522,8 @@ Command addReconstructCommand(CLI::App& sltk)
       "a picture of the surface and the cloud (renders through X:\nxvfb-run -a without a display)")
     ->option_text("FILE");
   app
-    ->add_option(
-      "--csv", command->Csv, "convergence history (run, iteration, energy, change, cloud error,\nband, time)")
+    ->add_option("--csv", command->Csv,
+      "convergence history (run, iteration, energy, change, cloud error,\nband, with --octree the nodes stored, time)")
     ->option_text("FILE");
   app
     ->add_option("--json", command->Json,

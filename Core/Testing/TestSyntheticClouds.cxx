@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace
@@ -53,6 +54,34 @@ TEST(SyntheticClouds, RotatedSquareIsTheThesisSquare)
   EXPECT_NEAR(sltk::rotatedSquareSdf({ 0.0, 0.0 }), -1.0 / std::sqrt(2.0), 1e-15); // centre to side
   EXPECT_NEAR(sltk::rotatedSquareSdf({ 2.0, 0.0 }), 1.0, 1e-15);                   // nearest point: the corner
   EXPECT_NEAR(sltk::rotatedSquareSdf({ 1.0, 1.0 }), 1.0 / std::sqrt(2.0), 1e-15);  // nearest point: mid-side
+}
+
+TEST(SyntheticClouds, HeartIsEvenlySpacedOnTheHeartCurve)
+{
+  // 24 points from the cusp (0, 5), through the point (0, -17), at equal arc
+  // length: neighbours about L / 24 apart (chords of equal arcs), mirror
+  // images in x = 0.
+  const auto cloud = sltk::heartCloud(24);
+  ASSERT_EQ(cloud.size(), 24);
+  EXPECT_NEAR(cloud.Points[0][0], 0.0, 1e-12);
+  EXPECT_NEAR(cloud.Points[0][1], 5.0, 1e-12);
+  EXPECT_NEAR(cloud.Points[12][0], 0.0, 1e-9);
+  EXPECT_NEAR(cloud.Points[12][1], -17.0, 1e-9);
+  double smallest = 1e300, largest = 0.0;
+  for (int k = 0; k < 24; ++k)
+  {
+    const auto& p = cloud.Points[static_cast<size_t>(k)];
+    const auto& q = cloud.Points[static_cast<size_t>((k + 1) % 24)];
+    const double chord = std::hypot(q[0] - p[0], q[1] - p[1]);
+    smallest = std::min(smallest, chord);
+    largest = std::max(largest, chord);
+    const auto& mirror = cloud.Points[static_cast<size_t>((24 - k) % 24)];
+    EXPECT_NEAR(p[0], -mirror[0], 1e-9);
+    EXPECT_NEAR(p[1], mirror[1], 1e-9);
+  }
+  EXPECT_GT(smallest, 0.75 * largest); // chords of equal arcs: shorter only where the curve bends
+  EXPECT_GT(largest, 3.5);
+  EXPECT_LT(largest, 4.26); // the curve is 102.17 long: arcs of 4.257, chords shorter
 }
 
 TEST(SyntheticClouds, PolygonCloudCutsEachSide)

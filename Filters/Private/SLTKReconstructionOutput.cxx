@@ -317,14 +317,18 @@ void historyTable(const std::vector<IterationRecord>& history, vtkTable* table)
 {
   vtkNew<vtkIntArray> run, iteration;
   vtkNew<vtkDoubleArray> energy, change, cloudError, seconds;
-  vtkNew<vtkIdTypeArray> band;
+  vtkNew<vtkIdTypeArray> band, stored;
   run->SetName("Run");
   iteration->SetName("Iteration");
   energy->SetName("Energy");
   change->SetName("Change");
   cloudError->SetName("CloudError");
   band->SetName("BandSize");
+  stored->SetName("StoredNodes");
   seconds->SetName("Seconds");
+  // Tiled storage (AdaptiveStorage) records the nodes held after each iteration.
+  const bool tiled =
+    std::any_of(history.begin(), history.end(), [](const IterationRecord& r) { return r.StoredNodes > 0; });
   for (const IterationRecord& r : history)
   {
     run->InsertNextValue(r.Run);
@@ -333,6 +337,7 @@ void historyTable(const std::vector<IterationRecord>& history, vtkTable* table)
     change->InsertNextValue(r.Change);
     cloudError->InsertNextValue(r.CloudError);
     band->InsertNextValue(static_cast<vtkIdType>(r.BandSize));
+    stored->InsertNextValue(static_cast<vtkIdType>(r.StoredNodes));
     seconds->InsertNextValue(r.Seconds);
   }
   table->AddColumn(run);
@@ -341,6 +346,10 @@ void historyTable(const std::vector<IterationRecord>& history, vtkTable* table)
   table->AddColumn(change);
   table->AddColumn(cloudError);
   table->AddColumn(band);
+  if (tiled)
+  {
+    table->AddColumn(stored);
+  }
   table->AddColumn(seconds);
 }
 

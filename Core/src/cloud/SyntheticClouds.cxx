@@ -74,6 +74,34 @@ double rotatedSquareSdf(const std::array<double, 2>& x)
   return std::hypot(std::max(u, 0.0), std::max(v, 0.0)) + std::min(std::max(u, v), 0.0);
 }
 
+PointCloud<2> heartCloud(int n)
+{
+  constexpr double twoPi = 6.283185307179586;
+  const auto at = [](double t) -> Point2
+  {
+    const double s = std::sin(t);
+    return { 16.0 * s * s * s, 13.0 * std::cos(t) - 5.0 * std::cos(2 * t) - 2.0 * std::cos(3 * t) - std::cos(4 * t) };
+  };
+  // Arc length on a fine polyline, then the points at n equal steps of it.
+  constexpr int Fine = 1 << 16;
+  std::vector<double> length(Fine + 1, 0.0);
+  for (int k = 1; k <= Fine; ++k)
+  {
+    const Point2 a = at(twoPi * (k - 1) / Fine), b = at(twoPi * k / Fine);
+    length[static_cast<size_t>(k)] = length[static_cast<size_t>(k) - 1] + std::hypot(b[0] - a[0], b[1] - a[1]);
+  }
+  PointCloud<2> cloud;
+  for (int j = 0; j < n; ++j)
+  {
+    const double goal = length.back() * j / n;
+    const auto k = static_cast<size_t>(std::upper_bound(length.begin(), length.end(), goal) - length.begin());
+    // Polyline segment k - 1 holds the goal: [length[k - 1], length[k]).
+    const double fraction = (goal - length[k - 1]) / (length[k] - length[k - 1]);
+    cloud.Points.push_back(at(twoPi * (static_cast<double>(k - 1) + fraction) / Fine));
+  }
+  return cloud;
+}
+
 PointCloud<3> icosphereCloud(int levels)
 {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;

@@ -819,6 +819,7 @@ Status iterateTiled(const ReconstructionPlan<D>& plan, int run, const Context& c
     double fraction = 0.0;
     cloudErrors<Interp>(field, plan.Cloud, far, ctx, it.CloudError, fraction);
     it.BandSize = static_cast<Index>(band.size()) * TiledField<D>::Nodes;
+    it.StoredNodes = field.tileCount() * TiledField<D>::Nodes;
     it.Seconds = secondsSince(start);
     result.History.push_back(it);
     record.Iterations = n + 1;
@@ -885,6 +886,10 @@ Status runTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReco
 {
   ReconstructionResult<D>& records = result.Records;
   SLTK_RETURN_IF_ERROR(reconstructFirstRuns(plan, 1, ctx, records));
+  for (IterationRecord& it : records.History)
+  {
+    it.StoredNodes = records.Runs.front().Grid.nodeCount(); // run 1 is uniform
+  }
   GridField<D> first = std::move(records.SignedDistance);
   records.Distance = GridField<D>{};
   first.fillGhosts();

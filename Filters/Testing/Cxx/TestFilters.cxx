@@ -154,6 +154,7 @@ int main(int argc, char* argv[])
     // surface up to round-off (phi agrees to ~1e-14 cells, TestTiledReconstruction), watertight.
     const vtkIdType uniformPoints = surface ? surface->GetNumberOfPoints() : 0;
     const vtkIdType uniformRows = table ? table->GetNumberOfRows() : 0;
+    check(table && !table->GetColumnByName("StoredNodes"), "the uniform history has no StoredNodes column");
     recon->AdaptiveStorageOn();
     check(recon->GetExecutive()->Update() == 1, "AdaptiveStorage: the sphere is reconstructed");
     auto* tiled = vtkPolyData::SafeDownCast(recon->GetOutputDataObject(1));
@@ -178,6 +179,20 @@ int main(int argc, char* argv[])
     check(stored && all && stored->GetNumberOfTuples() == 2 && stored->GetTuple1(0) == all->GetTuple1(0) &&
         stored->GetTuple1(1) > 0 && stored->GetTuple1(1) < all->GetTuple1(1),
       "AdaptiveStorage: stored and uniform node counts per run (run 1 uniform)");
+    {
+      // Every iteration's stored nodes (thesis Fig. 5.7): run 1 its whole grid, run 2 its tiles.
+      auto* storedColumn =
+        tiledTable ? vtkDataArray::SafeDownCast(tiledTable->GetColumnByName("StoredNodes")) : nullptr;
+      auto* runColumn = tiledTable ? vtkDataArray::SafeDownCast(tiledTable->GetColumnByName("Run")) : nullptr;
+      double first = -1.0, lastStored = -1.0;
+      for (vtkIdType r = 0; storedColumn && runColumn && r < tiledTable->GetNumberOfRows(); ++r)
+      {
+        (runColumn->GetTuple1(r) == 1 ? first : lastStored) = storedColumn->GetTuple1(r);
+      }
+      check(storedColumn && all && first == all->GetTuple1(0) && lastStored > 0.0 && lastStored < all->GetTuple1(1),
+        "AdaptiveStorage: the history's StoredNodes per iteration (run 1 " + std::to_string(first) +
+          ", its grid; the last " + std::to_string(lastStored) + ", fewer than run 2's grid)");
+    }
     if (tree)
     {
       // One leaf per stored node in the grid (level 3), one per slot without a tile (level 0);

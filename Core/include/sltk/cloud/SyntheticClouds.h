@@ -66,6 +66,13 @@ PointCloud<2> polygonCloud(const std::vector<std::array<double, 2>>& corners, do
 /// corners included; the thesis's 24 points are segmentsPerSide = 6, h_P = sqrt(2) / 6).
 PointCloud<2> rotatedSquareCloud(int segmentsPerSide = 6);
 
+/// The heart of the thesis's chapter 5 (5.3.1: "a heart-shaped point cloud
+/// composed by 24 points", with rounded, straight and sharp parts; the thesis
+/// gives no formula): the classic heart curve x = 16 sin^3 t, y = 13 cos t -
+/// 5 cos 2t - 2 cos 3t - cos 4t (a cusp at the top, a point at the bottom,
+/// nearly straight flanks), n points at equal arc length from the cusp.
+PointCloud<2> heartCloud(int n = 24);
+
 /// Exact signed distance to the diamond |x| + |y| = 1: a box of half-side
 /// 1/sqrt(2) in the coordinates rotated by 45 degrees.
 double rotatedSquareSdf(const std::array<double, 2>& x);

@@ -141,6 +141,7 @@ struct IterationRecord
                            ///< nodes an iteration can change (the reinitialisation band)
   double CloudError = 0.0; ///< Err_P^n (4.35)
   Index BandSize = 0;      ///< |B^n|
+  Index StoredNodes = 0;   ///< tiled storage: nodes held after the iteration (run 1: its grid); 0 otherwise
   double Seconds = 0.0;    ///< wall time since the run started
 };
 
