@@ -141,6 +141,7 @@ sltk::Status optionsOf(vtkSLLevelSetReconstruct* self, sltk::ReconstructionOptio
   o.Cleaning.Outliers.Deviations = self->GetOutlierDeviations();
   o.Cleaning.ThinningFactor = self->GetThinningFactor();
   o.DetectTunnels = self->GetDetectTunnels();
+  o.LeastSquaresQ1 = self->GetLeastSquaresQ1();
   return sltk::vtkbridge::interpolatorOf(self->GetInterpolator(), o.Interpolator);
 }
 
@@ -500,6 +501,7 @@ void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
   os << (this->RunSchedule.empty() ? " none (Table 4.1)\n" : "\n");
   os << indent << "RemoveOutliers: " << this->RemoveOutliers << "\n";
   os << indent << "DetectTunnels: " << this->DetectTunnels << "\n";
+  os << indent << "LeastSquaresQ1: " << this->LeastSquaresQ1 << "\n";
   os << indent << "AdaptiveStorage: " << this->AdaptiveStorage << "\n";
   os << indent << "GenerateAdaptiveGrid: " << this->GenerateAdaptiveGrid << "\n";
   os << indent << "OutlierDeviations: " << this->OutlierDeviations << "\n";

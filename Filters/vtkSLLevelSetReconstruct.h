@@ -212,6 +212,17 @@ public:
   ///@}
 
   ///@{
+  /// LeastSquaresQ1 (default off): interpolate at the feet with the thesis's
+  /// chapter 5 scheme instead of Interpolator: the nearest node's Q1
+  /// polynomial fitted by least squares to its 3^D - 1 neighbours with the
+  /// centre constraint (5.5), first order and discontinuous between cells.
+  /// For comparison with the thesis's adaptive results (Documentation/Octree.md).
+  vtkSetMacro(LeastSquaresQ1, bool);
+  vtkGetMacro(LeastSquaresQ1, bool);
+  vtkBooleanMacro(LeastSquaresQ1, bool);
+  ///@}
+
+  ///@{
   /// AdaptiveStorage (default off; 3D clouds): runs 2..R store only the tiles of
   /// 8^3 nodes within one tile of the front, the finest levels of the octree
   /// (sltk/tiled/TiledReconstruction.h, Documentation/Octree.md "The tiled
@@ -285,6 +296,7 @@ protected:
   double OutlierDeviations = 3.0;
   double ThinningFactor = 0.0;
   bool DetectTunnels = false;
+  bool LeastSquaresQ1 = false;
   bool AdaptiveStorage = false;
   bool GenerateAdaptiveGrid = true;
   vtkMultiProcessController* Controller = nullptr;

@@ -144,22 +144,42 @@ CLI::Option* addChoice(CLI::App* app, const std::string& name, const std::string
     ->check(namedCheck(what, known, sltk::orList(names)));
 }
 
-CLI::Option* addInterpolatorOption(CLI::App* app, sltk::InterpolatorKind& kind, const std::string& defaultName)
+CLI::Option* addInterpolatorOption(
+  CLI::App* app, sltk::InterpolatorKind& kind, const std::string& defaultName, bool* leastSquares)
 {
+  constexpr const char* LeastSquaresName = "lsq-q1";
   std::string description = "spatial reconstruction at the feet of the characteristics (default " + defaultName + "):";
+  std::vector<std::string> names;
   for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
   {
     description += std::string("\n  ") + info.Name + ": " + info.Description;
+    names.emplace_back(info.Name);
   }
-  const auto known = [](const std::string& text)
+  if (leastSquares)
+  {
+    description += std::string("\n  ") + LeastSquaresName +
+      ": the thesis's chapter 5 least-squares Q1 (5.5), the nearest node's,\n    first order, discontinuous "
+      "between cells (for comparison)";
+    names.emplace_back(LeastSquaresName);
+  }
+  const auto known = [leastSquares](const std::string& text)
   {
     sltk::InterpolatorKind parsed;
-    return sltk::parseInterpolator(text, parsed);
+    return (leastSquares && text == LeastSquaresName) || sltk::parseInterpolator(text, parsed);
   };
   return app
     ->add_option_function<std::string>(
-      "--interpolator", [&kind](const std::string& text) { sltk::parseInterpolator(text, kind); }, description)
-    ->check(namedCheck("interpolator", known, sltk::interpolatorNameList()))
+      "--interpolator",
+      [&kind, leastSquares](const std::string& text)
+      {
+        if (leastSquares)
+        {
+          *leastSquares = text == LeastSquaresName;
+        }
+        sltk::parseInterpolator(text, kind);
+      },
+      description)
+    ->check(namedCheck("interpolator", known, sltk::orList(names)))
     ->option_text("NAME");
 }
 

@@ -248,6 +248,7 @@ int Reconstruct::run() const
   }
   filter->SetInputData(cloud);
   filter->SetInterpolator(static_cast<int>(o.Interpolator));
+  filter->SetLeastSquaresQ1(o.LeastSquaresQ1);
   filter->SetCellSizeFactor(o.CellSizeFactor);
   filter->SetOutsideThresholdFactor(o.OutsideThresholdFactor);
   filter->SetNumberOfRuns(o.Runs);
@@ -531,7 +532,7 @@ Command addReconstructCommand(CLI::App& sltk)
       "automatic_choices, recoveries, seconds, peak_memory_mb, ranks,\nsurface_pieces, "
       "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points]")
     ->option_text("FILE");
-  addInterpolatorOption(app, o.Interpolator, "weno3");
+  addInterpolatorOption(app, o.Interpolator, "weno3", &o.LeastSquaresQ1);
   addPlanOptions(app, o);
   app->get_option("--cdx")->check(within(sltk::CellSizeFactorRange[0], sltk::CellSizeFactorRange[1]));
   app->get_option("--kp")->check(within(sltk::OutsideThresholdFactorRange[0], sltk::OutsideThresholdFactorRange[1]));

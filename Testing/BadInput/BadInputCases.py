@@ -365,7 +365,10 @@ option_case("threads-10000", ("--threads", "10000"), 2, "--threads", "1024")
 option_case("schedule-odd", ("--schedule", "1:0,2"), 2, "p:eta pairs")
 option_case("schedule-out-of-range", ("--schedule", "1:0,2:200"), 2, "pair 2")
 option_case("eta-with-schedule", ("--schedule", "1:0,2:0,2:1", "--eta", "2"), 2, "either --eta or --schedule")
-option_case("unknown-interpolator", ("--interpolator", "rbf"), 2, "q1, weno3, cweno or cwenoz")
+option_case("unknown-interpolator", ("--interpolator", "rbf"), 2, "q1, weno3, cweno, cwenoz or lsq-q1")
+# The thesis's chapter 5 least squares is the reconstruction's only.
+option_case("hjb-lsq-interpolator", ("--preset", "test2", "--n", "41", "--interpolator", "lsq-q1"), 2,
+            "q1, weno3, cweno or cwenoz", command="hjb")
 option_case("thin-negative", ("--thin", "-1"), 2, "--thin")
 option_case("sigma-without-removal", ("--outlier-sigma", "2"), 2, "--remove-outliers")
 option_case("thin-to-nothing", ("--thin", "100"), 1, "after cleaning")

@@ -136,6 +136,14 @@ tree_runs = json.load(open(octree_json))["runs"]
 expect([r["iterations"] for r in tree_runs] == [r["iterations"] for r in summary["runs"]] and
        0 < tree_runs[1]["stored_nodes"] < tree_runs[1]["uniform_nodes"],
        "--octree: the uniform run's iterations, fewer nodes stored in run 2")
+# --interpolator lsq-q1: the thesis's chapter 5 least squares (5.5) instead of Q1, on the same grids.
+lsq_json = os.path.join(tmp, "lsq.json")
+rc, out, err = run("reconstruct", sphere, "--runs", "2", "--interpolator", "lsq-q1", "--json", lsq_json, "--quiet")
+lsq_runs = json.load(open(lsq_json))["runs"] if rc == 0 else []
+expect(rc == 0 and len(lsq_runs) == 2 and lsq_runs[1]["err_cloud"] < 0.01 and
+       lsq_runs[1]["err_cloud"] != summary["runs"][1]["err_cloud"],
+       "--interpolator lsq-q1 reconstructs the sphere, with its own Err_P (%s; q1 %g)" %
+       (lsq_runs[1]["err_cloud"] if lsq_runs else err.strip(), summary["runs"][1]["err_cloud"]))
 # --reference: Chamfer/Hausdorff against a UV sphere mesh (OFF), radius 1.
 off = os.path.join(tmp, "sphere.off")
 rings, sectors = 40, 80

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/recon/Reconstruction.h"
 
-#include "sltk/interp/Interpolators.h"
 #include "sltk/levelset/NarrowBand.h"
 #include "sltk/levelset/Reinitialise.h"
 #include "sltk/levelset/ReinitialiseSlabs.h"
@@ -14,6 +13,7 @@
 #include "sltk/recon/FarFeetExchange.h"
 #include "sltk/recon/LevelSetStep.h"
 #include "sltk/recon/LocalOffset.h"
+#include "sltk/recon/ReconstructionInterpolator.h"
 #include "sltk/recon/SlabPolicy.h"
 #include "sltk/recon/StoppingRule.h"
 #include "sltk/recon/StrayPoints.h"
@@ -571,7 +571,7 @@ Status reconstruct(
   {
     result.OutsideThresholdFactor = options.OutsideThresholdFactor;
     result.CellSizeFactor = options.CellSizeFactor;
-    return withInterpolator<D>(options.Interpolator,
+    return withReconstructionInterpolator<D>(options,
       [&](auto tag)
       { return runAll<D, typename decltype(tag)::type>(plan, options, grids, ctx, comm, result, options.Runs); });
   };
@@ -623,7 +623,7 @@ Status reconstructFirstRuns(
   result.CloudSpacing = plan.CloudSpacing;
   result.Cleaning = plan.Cleaning;
   result.Choices = plan.Choices;
-  return withInterpolator<D>(plan.Options.Interpolator,
+  return withReconstructionInterpolator<D>(plan.Options,
     [&](auto tag)
     {
       return runAll<D, typename decltype(tag)::type>(

@@ -6,10 +6,10 @@
 #include "TiledDistances.h"
 #include "TiledReinitialise.h"
 #include "sltk/exec/Memory.h"
-#include "sltk/interp/Interpolators.h"
 #include "sltk/levelset/ReinitInterface.h"
 #include "sltk/recon/EnergyFunctional.h"
 #include "sltk/recon/LevelSetStep.h"
+#include "sltk/recon/ReconstructionInterpolator.h"
 #include "sltk/recon/StoppingRule.h"
 
 #include <algorithm>
@@ -953,8 +953,8 @@ Status reconstructTiled(const ReconstructionPlan<D>& plan, const Context& ctx, T
       std::to_string(TileEdge - 1) + " nodes (one tile), not " + std::to_string(plan.Options.ReinitDilation) +
       ": use a smaller dilation or the uniform version");
   }
-  const Status status = withInterpolator<D>(
-    plan.Options.Interpolator, [&](auto tag) { return runTiled<D, typename decltype(tag)::type>(plan, ctx, result); });
+  const Status status = withReconstructionInterpolator<D>(
+    plan.Options, [&](auto tag) { return runTiled<D, typename decltype(tag)::type>(plan, ctx, result); });
   recordsToUser(plan.Box, result.Records);
   result.Records.CloudSpacing *= plan.Box.Scale;
   return status;

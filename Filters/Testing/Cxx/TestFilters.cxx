@@ -154,6 +154,8 @@ int main(int argc, char* argv[])
     // surface up to round-off (phi agrees to ~1e-14 cells, TestTiledReconstruction), watertight.
     const vtkIdType uniformPoints = surface ? surface->GetNumberOfPoints() : 0;
     const vtkIdType uniformRows = table ? table->GetNumberOfRows() : 0;
+    const double uniformCloudError =
+      table && uniformRows > 0 ? table->GetValueByName(uniformRows - 1, "CloudError").ToDouble() : 0.0;
     check(table && !table->GetColumnByName("StoredNodes"), "the uniform history has no StoredNodes column");
     recon->AdaptiveStorageOn();
     check(recon->GetExecutive()->Update() == 1, "AdaptiveStorage: the sphere is reconstructed");
@@ -247,6 +249,26 @@ int main(int argc, char* argv[])
       "GenerateAdaptiveGrid off: no trees, the run summary and the same surface");
     recon->GenerateAdaptiveGridOn();
     recon->AdaptiveStorageOff();
+    // LeastSquaresQ1: the thesis's chapter 5 interpolation (5.5) at the feet; its own result, watertight.
+    recon->LeastSquaresQ1On();
+    check(recon->GetExecutive()->Update() == 1, "LeastSquaresQ1: the sphere is reconstructed");
+    {
+      auto* lsqTable = vtkTable::SafeDownCast(recon->GetOutputDataObject(2));
+      const vtkIdType rows = lsqTable ? lsqTable->GetNumberOfRows() : 0;
+      const double lsqCloudError = rows > 0 ? lsqTable->GetValueByName(rows - 1, "CloudError").ToDouble() : 0.0;
+      vtkNew<vtkFeatureEdges> lsqOpen;
+      lsqOpen->SetInputData(recon->GetOutputDataObject(1));
+      lsqOpen->BoundaryEdgesOn();
+      lsqOpen->NonManifoldEdgesOn();
+      lsqOpen->FeatureEdgesOff();
+      lsqOpen->ManifoldEdgesOff();
+      lsqOpen->Update();
+      check(lsqCloudError > 0.0 && lsqCloudError < 0.05 && lsqCloudError != uniformCloudError &&
+          lsqOpen->GetOutput()->GetNumberOfCells() == 0,
+        "LeastSquaresQ1: Err_P " + std::to_string(lsqCloudError) + " (WENO3 " + std::to_string(uniformCloudError) +
+          "), no boundary or non-manifold edge");
+    }
+    recon->LeastSquaresQ1Off();
     recon->SetNumberOfRuns(99);
     check(recon->GetNumberOfRuns() == 99 && recon->GetExecutive()->Update() == 0,
       "NumberOfRuns outside 1-6 is refused, not clamped");

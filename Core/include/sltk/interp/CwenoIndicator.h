@@ -169,9 +169,9 @@ private:
     }
   }
 
-  std::vector<double> Matrix;          ///< dense M, row-major
-  std::vector<double> Packed;          ///< upper triangle of the active block, off-diagonal doubled
-  std::array<int, Size> Active{};      ///< indices of the non-zero rows of M
+  std::vector<double> Matrix;     ///< dense M, row-major
+  std::vector<double> Packed;     ///< upper triangle of the active block, off-diagonal doubled
+  std::array<int, Size> Active{}; ///< indices of the non-zero rows of M
   int ActiveCount = 0;
 };
 

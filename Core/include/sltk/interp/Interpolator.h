@@ -66,6 +66,49 @@ inline std::array<Index, ipow(W, D)> stencilOffsets(const std::array<Index, D>& 
   return offset;
 }
 
+/// The values of the W^D nodes around a cell (nodes first .. first + W - 1 along
+/// each axis, digit c of the stencil x fastest), read once per cell: the
+/// prepare() of interpolators that do all their work in eval() (WENO3, the
+/// least squares Q1 of LsqQ1.h).
+template <int D, int W>
+class StencilCache
+{
+public:
+  static constexpr int Size = ipow(W, D);
+
+  StencilCache(const GridField<D, double>& field, int first)
+    : Field(&field)
+    , Offset(stencilOffsets<D, W>(field.strides(), first))
+  {
+  }
+
+  void prepare(const std::array<Index, D>& cell)
+  {
+    const double* p = this->Field->pointer(cell);
+    for (int c = 0; c < Size; ++c)
+    {
+      this->Values[c] = p[this->Offset[c]];
+    }
+    this->Prepared.set(cell);
+  }
+
+  void prepareIfNeeded(const std::array<Index, D>& cell)
+  {
+    if (!this->Prepared.matches(cell))
+    {
+      this->prepare(cell);
+    }
+  }
+
+  double operator[](int c) const { return this->Values[c]; }
+
+private:
+  const GridField<D, double>* Field;
+  std::array<Index, Size> Offset{};
+  double Values[Size] = {};
+  PreparedCell<D> Prepared;
+};
+
 /// Interpolates at a physical point x (clipped or wrapped per the grid's boundary policy).
 template <class Interp>
 inline double interpolate(Interp& interp, const GridSpec<Interp::Dim>& spec, const double* x)

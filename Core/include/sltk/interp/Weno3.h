@@ -30,37 +30,19 @@ public:
   static constexpr int GhostWidth = 2;
 
   explicit Weno3Interpolator(const GridField<D, double>& field)
-    : Field(&field)
+    : Stencil(field, -1) // stencil digit 0..3 is node -1..2 along each axis
   {
     assert(field.ghost() >= GhostWidth);
-    const auto& s = field.strides();
     for (int a = 0; a < D; ++a)
     {
       const double dx = field.spec().Spacing[a];
       this->Eps[a] = dx * dx; // epsilon = dx^2 (2.67), per axis
     }
-    // Stencil node c (base-4 digits per axis, x fastest): digit 0..3 is node -1..2.
-    this->Offset = stencilOffsets<D, 4>(s, -1);
   }
 
   /// Caches the 4^D stencil values of the cell (nodes -1..2 along each axis).
-  void prepare(const std::array<Index, D>& cell)
-  {
-    const double* p = this->Field->pointer(cell);
-    for (int c = 0; c < StencilSize; ++c)
-    {
-      this->Stencil[c] = p[this->Offset[c]];
-    }
-    this->Prepared.set(cell);
-  }
-
-  void prepareIfNeeded(const std::array<Index, D>& cell)
-  {
-    if (!this->Prepared.matches(cell))
-    {
-      this->prepare(cell);
-    }
-  }
+  void prepare(const std::array<Index, D>& cell) { this->Stencil.prepare(cell); }
+  void prepareIfNeeded(const std::array<Index, D>& cell) { this->Stencil.prepareIfNeeded(cell); }
 
   /// Dimension-split WENO3 at local coordinates t in [0, 1]^D: each pass
   /// applies the 1D reconstruction (2.69) along one axis, last axis first.
@@ -88,13 +70,10 @@ public:
   }
 
 private:
-  static constexpr int StencilSize = D == 1 ? 4 : (D == 2 ? 16 : 64);
+  static constexpr int StencilSize = StencilCache<D, 4>::Size;
 
-  const GridField<D, double>* Field;
+  StencilCache<D, 4> Stencil;
   double Eps[D] = {};
-  std::array<Index, StencilSize> Offset{};
-  double Stencil[StencilSize] = {};
-  PreparedCell<D> Prepared;
 };
 
 } // namespace sltk

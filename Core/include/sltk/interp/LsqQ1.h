@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file LsqQ1.h
+/// The interpolation of the thesis's adaptive scheme (5.2.1, (5.5)) on a
+/// uniform grid: the value at x comes from the polynomial of the cell whose
+/// centre is nearest to x. On the thesis's trees the values sit at quadrant
+/// centres; here they sit at nodes, so "the quadrant i" is the node nearest
+/// to x and its neighbours are the 3^D - 1 nodes around it (edge and corner
+/// neighbours, Fig. 5.3). The polynomial is Q1 in x' = (x - x_i) / dx,
+/// p_i = sum_k c_k phi_k(x') with the basis {1, x'_1, x'_2, x'_1 x'_2} (2D) or
+/// its trilinear analogue (3D), fitted to the neighbours' values by least
+/// squares with the constraint p_i(x_i) = phi_i (c_0 = phi_i, "the reduced
+/// system").
+///
+/// On a uniform stencil the reduced system is diagonal: every basis monomial
+/// m_S = prod_{a in S} x'_a is odd in some axis, so the monomials are
+/// orthogonal over the offsets {-1, 0, 1}^D and c_S = sum_o m_S(o) phi(i + o) /
+/// (2^|S| 3^(D - |S|)). That is a tensor product of the 1D operators
+/// "average" (v_-1 + v_0 + v_1) / 3 and "half difference" (v_1 - v_-1) / 2, so
+///   p_i(x') = [prod_a (avg_a + x'_a diff_a)] phi - [prod_a avg_a] phi + phi_i,
+/// which eval() computes axis by axis, as Q1 and WENO3 do.
+///
+/// The result is first order and, as the thesis notes (5.3.1), discontinuous
+/// where the nearest node changes (t = 1/2 along an axis); it is here for the
+/// side-by-side comparison with the thesis's scheme (Documentation/Octree.md).
+
+#include "sltk/interp/Interpolator.h"
+
+#include <array>
+#include <cassert>
+
+namespace sltk
+{
+
+template <int D>
+class LsqQ1Interpolator
+{
+public:
+  static constexpr int Dim = D;
+  static constexpr int GhostWidth = 2; ///< the nearest node's neighbours: nodes -1..2 of the cell
+
+  explicit LsqQ1Interpolator(const GridField<D, double>& field)
+    : Stencil(field, -1) // stencil digit 0..3 is node -1..2 along each axis
+  {
+    assert(field.ghost() >= GhostWidth);
+  }
+
+  /// Caches the 4^D nodes around the cell: the 3^D neighbourhoods of its 2^D corners.
+  void prepare(const std::array<Index, D>& cell) { this->Stencil.prepare(cell); }
+  void prepareIfNeeded(const std::array<Index, D>& cell) { this->Stencil.prepareIfNeeded(cell); }
+
+  /// p_i(x') of the corner i nearest to local coordinates t in [0, 1]^D.
+  double eval(const std::array<double, D>& t) const
+  {
+    // The corner: node k_a = round(t_a) of the cell along each axis; x'_a = t_a - k_a.
+    int first = 0, stride = 1;
+    std::array<double, D> x{};
+    for (int a = 0; a < D; ++a)
+    {
+      const int k = t[a] >= 0.5 ? 1 : 0;
+      x[a] = t[a] - k;
+      first += k * stride; // its neighbourhood's digits k_a .. k_a + 2
+      stride *= 4;
+    }
+    // Its 3^D neighbourhood, x fastest.
+    double full[Neighbours], average[Neighbours];
+    for (int c = 0; c < Neighbours; ++c)
+    {
+      int rest = c, digit = first, place = 1;
+      for (int a = 0; a < D; ++a)
+      {
+        digit += (rest % 3) * place;
+        rest /= 3;
+        place *= 4;
+      }
+      full[c] = average[c] = this->Stencil[digit];
+    }
+    const double centre = full[Neighbours / 2];
+    // Collapse the last axis first: the triples of axis a sit at stride 3^a.
+    int n = Neighbours;
+    for (int a = D - 1; a >= 0; --a)
+    {
+      n /= 3;
+      for (int c = 0; c < n; ++c)
+      {
+        const double sum = full[c] + full[c + n] + full[c + 2 * n];
+        full[c] = sum / 3.0 + x[a] * 0.5 * (full[c + 2 * n] - full[c]);
+        average[c] = (average[c] + average[c + n] + average[c + 2 * n]) / 3.0;
+      }
+    }
+    return full[0] - average[0] + centre;
+  }
+
+private:
+  static constexpr int Neighbours = ipow(3, D);
+
+  StencilCache<D, 4> Stencil;
+};
+
+} // namespace sltk
