@@ -215,7 +215,7 @@ public:
   /// LeastSquaresQ1 (default off): interpolate at the feet with the thesis's
   /// chapter 5 scheme instead of Interpolator: the nearest node's Q1
   /// polynomial fitted by least squares to its 3^D - 1 neighbours with the
-  /// centre constraint (5.5), first order and discontinuous between cells.
+  /// centre constraint (5.5), discontinuous between cells.
   /// For comparison with the thesis's adaptive results (Documentation/Octree.md).
   vtkSetMacro(LeastSquaresQ1, bool);
   vtkGetMacro(LeastSquaresQ1, bool);

@@ -2,6 +2,7 @@
 #include "CliOptions.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -158,23 +159,28 @@ CLI::Option* addInterpolatorOption(
   if (leastSquares)
   {
     description += std::string("\n  ") + LeastSquaresName +
-      ": the thesis's chapter 5 least-squares Q1 (5.5), the nearest node's,\n    first order, discontinuous "
-      "between cells (for comparison)";
+      ": the thesis's chapter 5 least-squares Q1 (5.5), the nearest node's,\n    discontinuous between cells (for "
+      "comparison)";
     names.emplace_back(LeastSquaresName);
   }
-  const auto known = [leastSquares](const std::string& text)
+  const auto isLeastSquares = [leastSquares](std::string text)
+  {
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+    return leastSquares && text == LeastSquaresName;
+  };
+  const auto known = [isLeastSquares](const std::string& text)
   {
     sltk::InterpolatorKind parsed;
-    return (leastSquares && text == LeastSquaresName) || sltk::parseInterpolator(text, parsed);
+    return isLeastSquares(text) || sltk::parseInterpolator(text, parsed);
   };
   return app
     ->add_option_function<std::string>(
       "--interpolator",
-      [&kind, leastSquares](const std::string& text)
+      [&kind, leastSquares, isLeastSquares](const std::string& text)
       {
         if (leastSquares)
         {
-          *leastSquares = text == LeastSquaresName;
+          *leastSquares = isLeastSquares(text);
         }
         sltk::parseInterpolator(text, kind);
       },

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "reconstruction/Synthetic.h"
 
+#include "common/SdfErrors.h"
 #include "reconstruction/Report.h"
 
 #include <algorithm>
@@ -15,45 +16,6 @@ namespace
 {
 const double NaN = std::nan("");
 
-template <int D>
-using Point = std::array<double, D>;
-template <int D>
-using Sdf = std::function<double(const Point<D>&)>;
-
-/// L1 errors of phi against the exact SDF (4.5.1; the text gives no formula): over all nodes
-/// against the SDF cut at +-gamma (1.49)/(1.51), and over the band |phi*| < gamma.
-template <int D>
-std::pair<double, double> l1Errors(const sltk::GridField<D>& phi, const Sdf<D>& exact, double gammaFactor)
-{
-  const auto& g = phi.spec();
-  const double gamma = gammaFactor * g.Spacing[0];
-  double cell = 1.0;
-  for (int a = 0; a < D; ++a)
-  {
-    cell *= g.Spacing[a];
-  }
-  double cut = 0.0, band = 0.0;
-  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
-  {
-    std::array<sltk::Index, D> i{};
-    Point<D> x{};
-    sltk::Index rest = k;
-    for (int a = 0; a < D; ++a)
-    {
-      i[a] = rest % g.Dims[a];
-      rest /= g.Dims[a];
-      x[a] = g.coordinate(a, i[a]);
-    }
-    const double e = exact(x);
-    const double v = phi(i);
-    cut += std::fabs(v - std::max(-gamma, std::min(gamma, e)));
-    if (std::fabs(e) < gamma)
-    {
-      band += std::fabs(v - e);
-    }
-  }
-  return { cut * cell, band * cell };
-}
 } // namespace
 
 template <int D>
@@ -134,7 +96,10 @@ void runSynthetic(const SyntheticCase<D>& c, const std::vector<std::string>& int
         failed = true;
         break;
       }
-      l1[static_cast<size_t>(r - 1)] = l1Errors<D>(res.SignedDistance, c.Exact, options.GammaFactor);
+      const auto& phi = res.SignedDistance;
+      l1[static_cast<size_t>(r - 1)] = l1Errors<D>(
+        phi.spec(), [&phi](const std::array<sltk::Index, D>& i) { return phi(i); }, c.Exact,
+        options.GammaFactor * phi.spec().Spacing[0]);
       last[static_cast<size_t>(r - 1)] = res.Runs.back();
       if (r == runs)
       {

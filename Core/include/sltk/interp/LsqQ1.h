@@ -18,11 +18,16 @@
 /// (2^|S| 3^(D - |S|)). That is a tensor product of the 1D operators
 /// "average" (v_-1 + v_0 + v_1) / 3 and "half difference" (v_1 - v_-1) / 2, so
 ///   p_i(x') = [prod_a (avg_a + x'_a diff_a)] phi - [prod_a avg_a] phi + phi_i,
-/// which eval() computes axis by axis, as Q1 and WENO3 do.
+/// which eval() computes axis by axis, as Q1 and WENO3 do. The second term is
+/// the mean of the 3^D values (the unconstrained c_0); collapsing it with the
+/// same operations as the first makes p_i(x_i) = phi_i exactly.
 ///
-/// The result is first order and, as the thesis notes (5.3.1), discontinuous
-/// where the nearest node changes (t = 1/2 along an axis); it is here for the
-/// side-by-side comparison with the thesis's scheme (Documentation/Octree.md).
+/// The polynomial has degree one in each variable and reproduces multilinear
+/// data (second-order accurate on smooth data, its slopes central
+/// differences), but, as the thesis notes (5.3.1), it jumps where the nearest
+/// node changes (t = 1/2 along an axis; O(h^3) on smooth data, more at kinks);
+/// it is here for the side-by-side comparison with the thesis's scheme
+/// (Documentation/Octree.md).
 
 #include "sltk/interp/Interpolator.h"
 
@@ -83,8 +88,8 @@ public:
       n /= 3;
       for (int c = 0; c < n; ++c)
       {
-        const double sum = full[c] + full[c + n] + full[c + 2 * n];
-        full[c] = sum / 3.0 + x[a] * 0.5 * (full[c + 2 * n] - full[c]);
+        const double line = full[c] + full[c + n] + full[c + 2 * n];
+        full[c] = line / 3.0 + x[a] * 0.5 * (full[c + 2 * n] - full[c]);
         average[c] = (average[c] + average[c + n] + average[c + 2 * n]) / 3.0;
       }
     }

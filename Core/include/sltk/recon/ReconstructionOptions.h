@@ -63,8 +63,8 @@ struct ReconstructionOptions
   int EnergyWindow = 10;   ///< k = min(n, EnergyWindow) of (4.33)
   InterpolatorKind Interpolator = InterpolatorKind::Weno3;
   /// The thesis's chapter 5 interpolation instead of Interpolator: the nearest
-  /// node's least-squares Q1 with the centre constraint (5.5, LsqQ1.h), first
-  /// order and discontinuous between cells; for comparison with the thesis.
+  /// node's least-squares Q1 with the centre constraint (5.5, LsqQ1.h),
+  /// discontinuous between cells; for comparison with the thesis.
   bool LeastSquaresQ1 = false;
   InitialGuess Guess = InitialGuess::OutsideMarking;
   /// Per-run p and eta; empty: Table 4.1. Run r uses entry min(r, size) - 1.
