@@ -17,34 +17,13 @@ public:
   static constexpr int GhostWidth = 1;
 
   explicit Q1Interpolator(const GridField<D, double>& field)
-    : Field(&field)
+    : Corner(field, 0) // corner c: bit a of c is the offset along axis a
   {
   }
 
   /// Caches the 2^D corner values of the cell.
-  void prepare(const std::array<Index, D>& cell)
-  {
-    const double* p = this->Field->pointer(cell);
-    const auto& s = this->Field->strides();
-    for (int c = 0; c < (1 << D); ++c)
-    {
-      Index o = 0;
-      for (int a = 0; a < D; ++a)
-      {
-        o += ((c >> a) & 1) * s[a];
-      }
-      this->Corner[c] = p[o];
-    }
-    this->Prepared.set(cell);
-  }
-
-  void prepareIfNeeded(const std::array<Index, D>& cell)
-  {
-    if (!this->Prepared.matches(cell))
-    {
-      this->prepare(cell);
-    }
-  }
+  void prepare(const std::array<Index, D>& cell) { this->Corner.prepare(cell); }
+  void prepareIfNeeded(const std::array<Index, D>& cell) { this->Corner.prepareIfNeeded(cell); }
 
   /// (4.28): sum over corners of value * prod_a (t_a or 1 - t_a).
   double eval(const std::array<double, D>& t) const
@@ -68,9 +47,7 @@ public:
   }
 
 private:
-  const GridField<D, double>* Field;
-  double Corner[1 << D] = {};
-  PreparedCell<D> Prepared;
+  StencilCache<D, 2> Corner;
 };
 
 } // namespace sltk
