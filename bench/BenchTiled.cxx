@@ -29,7 +29,8 @@
 namespace
 {
 /// What distributing the last run's tiles over `ranks` slabs of slot rows
-/// (the last axis) would cost (Documentation/Octree.md, "Next"): the cuts
+/// (the last axis) would cost (Documentation/Octree.md, "Distributing the
+/// tiled band: slabs or a Morton partition"): the cuts
 /// balance the stored tiles, each rank keeps one slot row beyond each inner
 /// cut (8 node rows, at least the 6 ghost rows the stencils need), and an
 /// exchange sends the tiles of the owned slot row next to each cut (phi only,
@@ -214,6 +215,10 @@ int main(int argc, char** argv)
       tiledRun ? static_cast<double>(tiled.Storage[r - 1].PeakTiles) * sltk::TiledField<3>::Nodes : nodes;
     std::printf("%-8s %4zu %6d %12.4e %12.0f %8.2f %12.0f %8.2f %14.0f\n", storage.c_str(), r + 1, run.Iterations,
       run.CloudError, stored, 100.0 * stored / nodes, most, 100.0 * most / nodes, nodes);
+  }
+  if (!slabs.empty() && storage != "tiled")
+  {
+    std::fprintf(stderr, "--slabs splits the tiles of a tiled run: ignored with --storage %s\n", storage.c_str());
   }
   for (const std::string& ranks : sltkbench::splitList(slabs))
   {
