@@ -179,6 +179,14 @@ TEST(TiledReconstruction, CircleAgreesWithTheUniformVersion)
   compareWithUniform<2>(sltk::circleCloud(64), sltk::ReconstructionOptions::thesis(), 1.2);
 }
 
+TEST(TiledReconstruction, CircleAgreesWithTheUniformVersionWithTheThesisLeastSquares)
+{
+  // The chapter 5 interpolation (5.5, LsqQ1.h) through both storages' dispatch.
+  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
+  options.LeastSquaresQ1 = true;
+  compareWithUniform<2>(sltk::circleCloud(64), options, 1.2);
+}
+
 TEST(TiledReconstruction, MemoryCheckSizesTheTilesNotTheUniformGrid)
 {
   // A sphere on a fine grid: the tiles need far less than the uniform grid, and the plan's
