@@ -80,19 +80,6 @@ Chapter5Grid chapter5Grid(double edge, double spacing)
   return g;
 }
 
-/// The longest edge of the cloud's box (Delta_P of 5.10).
-template <int D>
-double longestEdge(const sltk::PointCloud<D>& cloud)
-{
-  const sltk::Box<D> box = sltk::boundingBox(cloud);
-  double edge = 0.0;
-  for (int a = 0; a < D; ++a)
-  {
-    edge = std::max(edge, box.extent(a));
-  }
-  return edge;
-}
-
 /// "within +-50%" when value / reference lies in [0.5, 1.5], "OUTSIDE +-50%"
 /// when not, "" without a reference (issue 14's tolerance on iterations).
 std::string verdictWithinHalf(double value, double reference)
@@ -195,7 +182,8 @@ void runCase(const std::string& name, const sltk::PointCloud<D>& cloud, const Ex
     Chapter5Grid level;
     if (status.isOk())
     {
-      level = chapter5Grid(longestEdge(plan.Cloud), plan.CloudSpacing);
+      // Delta_P: the unit box (4.5, UnitBox.h) maps the cloud's longest edge to 2.
+      level = chapter5Grid(2.0, plan.CloudSpacing);
       options.CellSizeFactor = level.CellSizeFactor;
       status = sltk::planReconstruction(cloud, options, ctx, plan);
     }

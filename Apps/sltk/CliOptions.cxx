@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "CliOptions.h"
 
+#include "sltk/core/LowerCase.h"
+
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -163,11 +164,8 @@ CLI::Option* addInterpolatorOption(
       "comparison)";
     names.emplace_back(LeastSquaresName);
   }
-  const auto isLeastSquares = [leastSquares](std::string text)
-  {
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-    return leastSquares && text == LeastSquaresName;
-  };
+  const auto isLeastSquares = [leastSquares](const std::string& text)
+  { return leastSquares && sltk::lowerCase(text) == LeastSquaresName; };
   const auto known = [isLeastSquares](const std::string& text)
   {
     sltk::InterpolatorKind parsed;

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "FileNames.h"
 
-#include <algorithm>
-#include <cctype>
+#include "sltk/core/LowerCase.h"
 
 namespace sltkcli
 {
@@ -15,9 +14,7 @@ std::string extensionOf(const std::string& path)
   {
     return "";
   }
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
+  return sltk::lowerCase(path.substr(dot + 1));
 }
 
 } // namespace sltkcli

@@ -1,23 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/interp/InterpolatorKind.h"
 
+#include "sltk/core/LowerCase.h"
 #include "sltk/core/OrList.h"
 
-#include <algorithm>
-#include <cctype>
 #include <vector>
 
 namespace sltk
 {
-
-namespace
-{
-std::string lowerCase(std::string s)
-{
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
-} // namespace
 
 bool parseInterpolator(const std::string& name, InterpolatorKind& kind)
 {
