@@ -190,9 +190,12 @@ T* portZeroAs(vtkSLLevelSetReconstruct* self, vtkDataObject* output)
 /// Runs 2..R stored as tiles (AdaptiveStorage): the field as a hyper tree grid
 /// (every stored node's distance to the cloud computed first), the surface
 /// contoured tile by tile, the run summary with the stored and the uniform
-/// node counts per run.
+/// node counts per run. Under MPI the ranks share the tiles out while they
+/// compute (Documentation/Octree.md, "Distributing the tiled band"); rank 0
+/// then gathers them and outputs the whole field, the other ranks nothing.
 int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionPlan<3>& plan,
-  const sltk::Context& ctx, vtkDataObject* output, vtkPolyData* surface, vtkTable* history)
+  const sltk::Context& ctx, const sltk::Communicator& comm, vtkDataObject* output, vtkPolyData* surface,
+  vtkTable* history)
 {
   auto* grid = portZeroAs<vtkHyperTreeGrid>(self, output);
   if (!grid)
@@ -200,13 +203,21 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
     return 0;
   }
   sltk::TiledReconstructionResult<3> result;
-  const sltk::Status status = sltk::reconstructTiled(plan, ctx, result);
+  const sltk::CountingCommunicator counted(comm);
+  const sltk::Status status = sltk::reconstructTiled(plan, ctx, result, counted); // the same status on every rank
   if (!status.isOk())
   {
     vtkErrorWithObjectMacro(self, "Reconstruction failed: " << status.message());
     return 0;
   }
+  const std::int64_t bytesSent = counted.bytesSent(), collectives = counted.collectives();
+  sltk::gatherTiles(result, comm, 0);
   grid->Initialize();
+  sltk::vtkbridge::communicationSummary(comm.size(), bytesSent, collectives, grid);
+  if (comm.rank() > 0)
+  {
+    return 1; // rank 0 holds the whole field
+  }
   if (self->GetGenerateAdaptiveGrid())
   {
     sltk::completeTiledDistances(plan, ctx, result.Field);
@@ -252,14 +263,6 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
     vtkErrorWithObjectMacro(self, << status.message());
     return 0;
   }
-  if (self->GetAdaptiveStorage() && comm.size() > 1) // known before any planning
-  {
-    vtkErrorWithObjectMacro(self,
-      "AdaptiveStorage is not distributed over MPI ranks yet: turn it off (the uniform "
-      "grids are split over the "
-        << comm.size() << " ranks) or run on one rank");
-    return 0;
-  }
   options.Ranks = comm.size(); // the memory check sizes this machine's ranks' windows
   options.RanksHere = sltk::ranksSharingThisMachine(comm.size());
   options.TiledStorage = self->GetAdaptiveStorage() && D == 3;
@@ -274,7 +277,7 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
   {
     if (self->GetAdaptiveStorage())
     {
-      return reconstructTiledInto(self, plan, ctx, output, surface, history);
+      return reconstructTiledInto(self, plan, ctx, comm, output, surface, history);
     }
   }
   else if (self->GetAdaptiveStorage())

@@ -32,7 +32,11 @@
  * vtkGhostType); the surface and the history are complete for any ghost level
  * (so that ParaView's request of one for the surface does not run the
  * reconstruction again), the image for the levels it holds.
- * AdaptiveStorage is not distributed: under several ranks it is refused.
+ * With AdaptiveStorage, runs 2..R share their tiles out over the ranks in
+ * Morton order while they compute (Documentation/Octree.md, "Distributing the
+ * tiled band"), with the one-rank result to the last bit; rank 0 then gathers
+ * the tiles and outputs the whole hyper tree grid, surface and history, the
+ * other ranks empty outputs.
  */
 #ifndef vtkSLLevelSetReconstruct_h
 #define vtkSLLevelSetReconstruct_h

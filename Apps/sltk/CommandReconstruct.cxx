@@ -136,11 +136,6 @@ std::string Reconstruct::problemBeforeWork(bool pieces, vtkPolyData* reference, 
 {
   const int ranks = MpiSession::size();
   code = 2;
-  if (ranks > 1 && this->Octree)
-  {
-    return "--octree is not distributed over MPI ranks yet: run it without mpirun (or -np 1), or drop "
-           "--octree (the uniform grids are split over the ranks)";
-  }
   if (this->given("--eta") && this->given("--schedule"))
   {
     return "give either --eta or --schedule (a schedule sets eta of every run)";
@@ -154,7 +149,7 @@ std::string Reconstruct::problemBeforeWork(bool pieces, vtkPolyData* reference, 
   {
     return paths;
   }
-  if (ranks > 1 && this->given("--output") && !pieces)
+  if (ranks > 1 && this->given("--output") && !pieces && !this->Octree) // --octree: rank 0 writes the whole .htg
   {
     return "under mpirun every rank holds only its block of the grid: write -o as .pvti (one piece per rank, "
            "FILE.pvti and FILE/FILE_<rank>.vti)";
@@ -420,8 +415,8 @@ int Reconstruct::run() const
     seconds, peakMb, ranks);
   if (ranks > 1)
   {
-    std::printf("traffic    %.1f MB sent by the busiest rank (ghost rows), %.0f collective calls\n", bytesSent / 1e6,
-      collectives);
+    std::printf("traffic    %.1f MB sent by the busiest rank (%s), %.0f collective calls\n", bytesSent / 1e6,
+      this->Octree ? "ghost rows of run 1, then ghost tiles" : "ghost rows", collectives);
   }
   SurfaceDistances distances;
   if (this->given("--reference"))

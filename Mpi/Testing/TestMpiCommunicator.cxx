@@ -117,6 +117,31 @@ TEST(MpiCommunicator, GathersFixedAndVariableCounts)
   EXPECT_EQ(gathered, expected);
 }
 
+TEST(MpiCommunicator, SendsPersonalisedCountsToEveryRank)
+{
+  auto comm = world();
+  const int r = comm->rank(), n = comm->size();
+  // Rank r sends r + k bytes to rank k (rank 0 sends none to itself), each byte 16 r + k.
+  std::vector<std::int64_t> sendCounts;
+  std::vector<unsigned char> send;
+  for (int k = 0; k < n; ++k)
+  {
+    sendCounts.push_back(r + k);
+    send.insert(send.end(), static_cast<size_t>(r + k), static_cast<unsigned char>(16 * r + k));
+  }
+  std::vector<unsigned char> received;
+  std::vector<std::int64_t> receiveCounts;
+  comm->allToAllV(send.data(), sendCounts, received, receiveCounts);
+  ASSERT_EQ(receiveCounts.size(), static_cast<size_t>(n));
+  std::vector<unsigned char> expected;
+  for (int k = 0; k < n; ++k)
+  {
+    EXPECT_EQ(receiveCounts[static_cast<size_t>(k)], k + r);
+    expected.insert(expected.end(), static_cast<size_t>(k + r), static_cast<unsigned char>(16 * k + r));
+  }
+  EXPECT_EQ(received, expected);
+}
+
 TEST(MpiCommunicator, AgreementOkWhenEveryRankIsOk)
 {
   auto comm = world();

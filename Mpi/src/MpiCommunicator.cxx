@@ -240,6 +240,63 @@ void MpiCommunicator::allGatherV(
   }
 }
 
+void MpiCommunicator::allToAllV(const void* send, const std::vector<std::int64_t>& sendCounts,
+  std::vector<unsigned char>& out, std::vector<std::int64_t>& receiveCounts) const
+{
+  const int ranks = this->P->Size;
+  receiveCounts.assign(static_cast<size_t>(ranks), 0);
+  MPI_Alltoall(sendCounts.data(), 1, MPI_INT64_T, receiveCounts.data(), 1, MPI_INT64_T, this->P->Comm);
+  std::vector<std::int64_t> sendOffsets(static_cast<size_t>(ranks) + 1, 0), receiveOffsets(sendOffsets);
+  for (int r = 0; r < ranks; ++r)
+  {
+    sendOffsets[static_cast<size_t>(r) + 1] = sendOffsets[static_cast<size_t>(r)] + sendCounts[static_cast<size_t>(r)];
+    receiveOffsets[static_cast<size_t>(r) + 1] =
+      receiveOffsets[static_cast<size_t>(r)] + receiveCounts[static_cast<size_t>(r)];
+  }
+  out.assign(static_cast<size_t>(receiveOffsets.back()), 0);
+  // Rounds in which every pair moves at most `chunk` bytes, so that every
+  // count and displacement of one MPI_Alltoallv fits in an int.
+  const std::int64_t chunk = static_cast<std::int64_t>(MaxChunk) / ranks;
+  std::int64_t largest = 0;
+  for (int r = 0; r < ranks; ++r)
+  {
+    largest = std::max({ largest, sendCounts[static_cast<size_t>(r)], receiveCounts[static_cast<size_t>(r)] });
+  }
+  largest = this->allReduce(largest, ReduceOp::Max); // every rank takes part in every round
+  std::vector<int> sendSizes(static_cast<size_t>(ranks)), sendAt(sendSizes), receiveSizes(sendSizes),
+    receiveAt(sendSizes);
+  std::vector<unsigned char> outRound, inRound;
+  const auto* b = static_cast<const unsigned char*>(send);
+  for (std::int64_t start = 0; start < largest; start += chunk)
+  {
+    int sendTotal = 0, receiveTotal = 0;
+    for (int r = 0; r < ranks; ++r)
+    {
+      const size_t k = static_cast<size_t>(r);
+      sendSizes[k] = static_cast<int>(std::clamp<std::int64_t>(sendCounts[k] - start, 0, chunk));
+      sendAt[k] = sendTotal;
+      sendTotal += sendSizes[k];
+      receiveSizes[k] = static_cast<int>(std::clamp<std::int64_t>(receiveCounts[k] - start, 0, chunk));
+      receiveAt[k] = receiveTotal;
+      receiveTotal += receiveSizes[k];
+    }
+    outRound.resize(static_cast<size_t>(std::max(sendTotal, 1)));
+    inRound.resize(static_cast<size_t>(std::max(receiveTotal, 1)));
+    for (int r = 0; r < ranks; ++r)
+    {
+      const size_t k = static_cast<size_t>(r);
+      std::copy_n(b + sendOffsets[k] + (sendSizes[k] ? start : 0), sendSizes[k], outRound.data() + sendAt[k]);
+    }
+    MPI_Alltoallv(outRound.data(), sendSizes.data(), sendAt.data(), MPI_BYTE, inRound.data(), receiveSizes.data(),
+      receiveAt.data(), MPI_BYTE, this->P->Comm);
+    for (int r = 0; r < ranks; ++r)
+    {
+      const size_t k = static_cast<size_t>(r);
+      std::copy_n(inRound.data() + receiveAt[k], receiveSizes[k], out.data() + receiveOffsets[k] + start);
+    }
+  }
+}
+
 void* MpiCommunicator::nativeHandle() const
 {
   return &this->P->Comm;

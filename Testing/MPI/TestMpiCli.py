@@ -138,8 +138,25 @@ check(j2.get("surface_points") == j1.get("surface_points"), "the joined surface 
       (j1.get("surface_points"), j2.get("surface_points")))
 r = run(MPI + ["-n", "2", sltk] + RECON + ["-o", os.path.join(outdir, "never.vti")])
 check(r.returncode == 2 and "write -o as .pvti" in r.stderr, "reconstruct -o FILE.vti on 2 ranks refused with the fix")
-r = run(MPI + ["-n", "2", sltk] + RECON + ["--octree", "--json", os.path.join(outdir, "never.json")])
-check(r.returncode == 2 and "--octree is not distributed" in r.stderr, "reconstruct --octree on 2 ranks refused")
+# --octree: the ranks share the tiles of run 2 out; rank 0 gathers them and writes the one .htg and surface.
+octree = {}
+for ranks in (1, 2):
+    tree, summary = [os.path.join(outdir, "cli_octree_%d.%s" % (ranks, e)) for e in ("htg", "json")]
+    for f in (tree, summary):
+        if os.path.exists(f):
+            os.remove(f)
+    r = run(MPI + ["-n", str(ranks), sltk] + RECON + ["--octree", "-o", tree, "--json", summary])
+    check(r.returncode == 0 and os.path.exists(tree), "reconstruct --octree -o FILE.htg on %d rank(s): exit 0 and the "
+          "tree written (%s)" % (ranks, r.stderr.strip()[-300:]))
+    octree[ranks] = json.load(open(summary)) if r.returncode == 0 else {}
+o1, o2 = octree[1], octree[2]
+check([x["iterations"] for x in o1.get("runs", [])] == [x["iterations"] for x in o2.get("runs", [])] and
+      len(o1.get("runs", [])) == 2, "--octree: the same iterations per run on 1 and 2 ranks")
+check(all(abs(a["err_cloud"] - b["err_cloud"]) <= 1e-12 * a["err_cloud"] for a, b in zip(o1["runs"], o2["runs"])),
+      "--octree: the same Err_P on 1 and 2 ranks")
+check(o2.get("surface_points") == o1.get("surface_points") and o2.get("surface_pieces") == 1 and
+      o2.get("euler_characteristic") == 2, "--octree: the 1-rank surface, one closed piece, on 2 ranks (%s, %s)" %
+      (o1.get("surface_points"), o2.get("surface_points")))
 # Bad input on 2 ranks: one clear message, a failing exit code, no output, no hang.
 empty, nan = os.path.join(outdir, "cli_empty.xyz"), os.path.join(outdir, "cli_nan.xyz")
 open(empty, "w").close()

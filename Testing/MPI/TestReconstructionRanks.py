@@ -5,7 +5,9 @@ image is split into one block per rank, each rank contours its block, and the
 pieces join into one closed surface (ParaView's parallel Connectivity finds
 one region), with the whole convergence history; one execution serves the
 three ports; a filter that needs a ghost level (Gradient) gets one flagged
-row of the neighbour's."""
+row of the neighbour's. With AdaptiveStorage the ranks share the tiles out
+(the one-rank iterations) and rank 0 outputs the whole hyper tree grid and
+the one closed surface."""
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
@@ -60,3 +62,21 @@ assert mine.GetExtent() == block[:5] + (block[5] + 1,), \
     "rank 0's block %s grew by one row of rank 1's: %s" % (block, mine.GetExtent())
 assert len(executions) == 2, "one more run for the ghost level (%d runs)" % len(executions)
 print("split cloud reconstructed on 2 slabs: bounds %s, one region" % (bounds,))
+
+# AdaptiveStorage: the tiles of run 2 shared out over the ranks; rank 0 gathers them.
+tiled = SemiLagrangianLevelSetReconstruction(Input=cloud, NumberOfRuns=2, AdaptiveStorage=1)
+tiled.UpdatePipeline()
+single = servermanager.Fetch(recon, idx=2)
+tiled_history = servermanager.Fetch(tiled, idx=2)
+assert tiled_history.GetNumberOfRows() == single.GetNumberOfRows(), \
+    "the same iterations as the uniform grids (%d, %d)" % (tiled_history.GetNumberOfRows(), single.GetNumberOfRows())
+tree = tiled.GetDataInformation(0)
+assert tree.GetNumberOfCells() > 0, "the hyper tree grid has leaves"
+tiled_regions = Connectivity(Input=OutputPort(tiled, 1))
+tiled_regions.UpdatePipeline()
+assert tiled_regions.CellData["RegionId"].GetRange() == (0.0, 0.0), "one closed surface from the shared tiles"
+tiled_bounds = tiled.GetDataInformation(1).GetBounds()
+assert all(abs(a - b) < 1e-6 for a, b in zip(tiled_bounds, bounds)), \
+    "the tiled surface spans the uniform one: %s, %s" % (tiled_bounds, bounds)
+print("AdaptiveStorage on 2 ranks: %d rows of history, %d leaves, one region" %
+      (tiled_history.GetNumberOfRows(), tree.GetNumberOfCells()))

@@ -64,6 +64,13 @@ public:
     out.assign(b, b + count);
     counts.assign(1, static_cast<std::int64_t>(count));
   }
+  void allToAllV(const void* send, const std::vector<std::int64_t>& sendCounts, std::vector<unsigned char>& out,
+    std::vector<std::int64_t>& receiveCounts) const override
+  {
+    const auto* b = static_cast<const unsigned char*>(send);
+    out.assign(b, b + sendCounts.at(0));
+    receiveCounts.assign(1, sendCounts.at(0));
+  }
   void sendReceive(const void* send, std::size_t sendBytes, int destination, void* receive, std::size_t receiveBytes,
     int source) const override
   {

@@ -609,14 +609,18 @@ Status reconstruct(
 }
 
 template <int D>
-Status reconstructFirstRuns(
-  const ReconstructionPlan<D>& plan, int runs, const Context& ctx, ReconstructionResult<D>& result)
+Status reconstructFirstRuns(const ReconstructionPlan<D>& plan, int runs, const Context& ctx,
+  ReconstructionResult<D>& result, const Communicator& comm)
 {
   result = ReconstructionResult<D>{};
   if (!plan.Locator || runs < 1 || runs > plan.Options.Runs ||
     plan.Grids.Runs.size() != static_cast<size_t>(plan.Options.Runs))
   {
     return Status::invalidArgument("reconstructFirstRuns: the plan is incomplete or has fewer runs than asked");
+  }
+  if (comm.size() > 1)
+  {
+    SLTK_RETURN_IF_ERROR(samePlanOnEveryRank(plan, comm));
   }
   result.OutsideThresholdFactor = plan.Options.OutsideThresholdFactor;
   result.CellSizeFactor = plan.Options.CellSizeFactor;
@@ -625,10 +629,7 @@ Status reconstructFirstRuns(
   result.Choices = plan.Choices;
   return withReconstructionInterpolator<D>(plan.Options,
     [&](auto tag)
-    {
-      return runAll<D, typename decltype(tag)::type>(
-        plan, plan.Options, plan.Grids.Runs, ctx, serialCommunicator(), result, runs);
-    });
+    { return runAll<D, typename decltype(tag)::type>(plan, plan.Options, plan.Grids.Runs, ctx, comm, result, runs); });
 }
 
 template <int D>
@@ -647,8 +648,10 @@ template Status reconstruct(
   const PointCloud<3>&, const ReconstructionOptions&, const Context&, ReconstructionResult<3>&);
 template Status reconstruct(
   const ReconstructionPlan<2>&, const Context&, ReconstructionResult<2>&, const Communicator&);
-template Status reconstructFirstRuns(const ReconstructionPlan<2>&, int, const Context&, ReconstructionResult<2>&);
-template Status reconstructFirstRuns(const ReconstructionPlan<3>&, int, const Context&, ReconstructionResult<3>&);
+template Status reconstructFirstRuns(
+  const ReconstructionPlan<2>&, int, const Context&, ReconstructionResult<2>&, const Communicator&);
+template Status reconstructFirstRuns(
+  const ReconstructionPlan<3>&, int, const Context&, ReconstructionResult<3>&, const Communicator&);
 template Status reconstruct(
   const ReconstructionPlan<3>&, const Context&, ReconstructionResult<3>&, const Communicator&);
 

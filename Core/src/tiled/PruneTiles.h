@@ -37,10 +37,11 @@ inline int oneSideOf(const double* p, Index count, double gamma)
 }
 
 /// The tiles of `field` to free: not in `band`, not in a slot `reached` from
-/// a band tile, and at one +-gamma throughout.
-template <int D>
+/// a band tile, at one +-gamma throughout, and `mayFree(id)` (distributed: a
+/// rank frees only its own tiles, TileDistribution.h).
+template <int D, class MayFree>
 std::vector<std::uint8_t> tilesLeftBehind(const TiledField<D>& field, const std::vector<std::int32_t>& band,
-  const std::vector<std::uint32_t>& reached, const Context& ctx)
+  const std::vector<std::uint32_t>& reached, const Context& ctx, MayFree&& mayFree)
 {
   std::vector<std::uint8_t> needed(static_cast<size_t>(field.tileCount()), 0);
   for (size_t j = 0; j < band.size(); ++j)
@@ -62,7 +63,7 @@ std::vector<std::uint8_t> tilesLeftBehind(const TiledField<D>& field, const std:
     {
       for (Index id = b; id < e; ++id)
       {
-        if (needed[static_cast<size_t>(id)])
+        if (needed[static_cast<size_t>(id)] || !mayFree(static_cast<std::int32_t>(id)))
         {
           continue;
         }
@@ -74,12 +75,13 @@ std::vector<std::uint8_t> tilesLeftBehind(const TiledField<D>& field, const std:
 }
 
 /// Frees tilesLeftBehind(); `band` (kept tiles) is renumbered and `forget(left)`
-/// is called so that per-tile state elsewhere follows. Returns the tiles freed.
-template <int D, class Forget>
+/// is called so that per-tile state elsewhere follows. The freed tiles' slots
+/// are appended to `freedSlots`. Returns the tiles freed.
+template <int D, class MayFree, class Forget>
 Index pruneTiles(TiledField<D>& field, std::vector<std::int32_t>& band, const std::vector<std::uint32_t>& reached,
-  const Context& ctx, Forget&& forget)
+  const Context& ctx, MayFree&& mayFree, Forget&& forget, std::vector<Index>& freedSlots)
 {
-  const std::vector<std::uint8_t> left = tilesLeftBehind(field, band, reached, ctx);
+  const std::vector<std::uint8_t> left = tilesLeftBehind(field, band, reached, ctx, mayFree);
   std::vector<std::int32_t> newId(left.size(), -1);
   std::int32_t kept = 0;
   for (size_t id = 0; id < left.size(); ++id)
@@ -94,6 +96,14 @@ Index pruneTiles(TiledField<D>& field, std::vector<std::int32_t>& band, const st
   {
     return 0;
   }
+  field.forEachTileInSlotOrder(
+    [&](std::int32_t id)
+    {
+      if (left[static_cast<size_t>(id)])
+      {
+        freedSlots.push_back(field.tileSlot(id));
+      }
+    });
   field.removeTiles(left);
   for (std::int32_t& id : band)
   {

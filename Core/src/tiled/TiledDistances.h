@@ -32,12 +32,14 @@ public:
   /// Makes d exact within one node of `band`'s band nodes (`band`: the tiles
   /// with a band node; `reached`: the directions from each in which slots lie
   /// within one node or more of its band nodes, bandReach, and hold tiles,
-  /// extendBand). Returns how many nodes were computed.
+  /// extendBand), in the tiles for which `mine(id)` (distributed: the
+  /// rank's own, TileDistribution.h). Returns how many nodes were computed.
+  template <class Mine>
   Index ensure(TiledField<D>& field, const std::vector<std::int32_t>& band, const std::vector<std::uint32_t>& reached,
-    const PointLocator<D>& locator, const Context& ctx)
+    const PointLocator<D>& locator, const Context& ctx, Mine&& mine)
   {
     this->Complete.resize(static_cast<size_t>(field.tileCount()), 0);
-    this->collectCandidates(field, band, reached);
+    this->collectCandidates(field, band, reached, mine);
     std::vector<Index> computed(this->Candidates.size(), 0);
     ctx.parallelFor(
       0, static_cast<Index>(this->Candidates.size()),
@@ -90,8 +92,9 @@ public:
 private:
   /// The tiles (not yet complete) that may hold a node within one node of a
   /// band node: each band tile and the neighbours its band nodes reach.
-  void collectCandidates(
-    const TiledField<D>& field, const std::vector<std::int32_t>& band, const std::vector<std::uint32_t>& reach)
+  template <class Mine>
+  void collectCandidates(const TiledField<D>& field, const std::vector<std::int32_t>& band,
+    const std::vector<std::uint32_t>& reach, Mine&& mine)
   {
     this->Marked.assign(static_cast<size_t>(field.tileCount()), 0);
     this->Candidates.clear();
@@ -101,7 +104,7 @@ private:
         [&](Index slot)
         {
           const std::int32_t id = field.slot(slot);
-          if (id >= 0 && !this->Complete[static_cast<size_t>(id)] && !this->Marked[static_cast<size_t>(id)])
+          if (id >= 0 && !this->Complete[static_cast<size_t>(id)] && !this->Marked[static_cast<size_t>(id)] && mine(id))
           {
             this->Marked[static_cast<size_t>(id)] = 1;
             this->Candidates.push_back(id);

@@ -70,7 +70,8 @@ void TiledField<D>::removeTiles(const std::vector<std::uint8_t>& remove)
     const Index s = this->SlotOf[static_cast<size_t>(id)];
     if (remove[static_cast<size_t>(id)])
     {
-      this->Slots[static_cast<size_t>(s)] = this->phi(id)[0] < 0.0 ? Inside : Outside;
+      this->Slots[static_cast<size_t>(s)] =
+        remove[static_cast<size_t>(id)] == RemoveToRemote ? Remote : (this->phi(id)[0] < 0.0 ? Inside : Outside);
       continue;
     }
     if (kept != id)
@@ -107,7 +108,7 @@ double TiledField<D>::value(const std::array<Index, D>& i) const
   {
     return this->phi(entry)[local];
   }
-  return entry == Inside ? -this->Gamma : this->Gamma;
+  return entry == Remote ? std::numeric_limits<double>::quiet_NaN() : (entry == Inside ? -this->Gamma : this->Gamma);
 }
 
 namespace
@@ -248,7 +249,8 @@ void TiledField<D>::scratchBlock(
       }
       else
       {
-        std::fill_n(rowPhi + seg.X, seg.Count, entry == Inside ? -this->Gamma : this->Gamma);
+        std::fill_n(
+          rowPhi + seg.X, seg.Count, entry == Remote ? unknown : (entry == Inside ? -this->Gamma : this->Gamma));
         if (rowDist)
         {
           std::fill_n(rowDist + seg.X, seg.Count, unknown);

@@ -3,9 +3,11 @@
 
 #include "BandReach.h"
 #include "PruneTiles.h"
+#include "TileDistribution.h"
 #include "TiledDistances.h"
 #include "TiledReinitialise.h"
 #include "sltk/exec/Memory.h"
+#include "sltk/grid/SlabExchange.h"
 #include "sltk/levelset/ReinitInterface.h"
 #include "sltk/recon/EnergyFunctional.h"
 #include "sltk/recon/LevelSetStep.h"
@@ -15,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 #include <sstream>
 
@@ -28,6 +31,7 @@ constexpr int StencilReach = 2; ///< nodes beyond a foot's cell the interpolator
 constexpr int HaloStep = 4;     ///< the step's halo is a multiple of this (fewer scratch shapes)
 constexpr int MaxHalo = 32;     ///< the farthest the step reads around a tile
 constexpr Index BlockTiles = 4; ///< the step copies blocks of 4^D tile positions (32^D nodes) at once
+static_assert(MaxHalo <= MaxGhostLayers * TileEdge, "the ghost layers cover the step's farthest read");
 
 using Clock = std::chrono::steady_clock;
 
@@ -167,12 +171,49 @@ Status checkTileMemory(const TiledField<D>& field, Index tiles, const Reconstruc
   return Status::ok();
 }
 
+/// Does nothing with the per-tile state of removed tiles (no state yet).
+constexpr auto NothingToForget = [](const std::vector<std::uint8_t>&) {};
+
+/// The owners of the new run's slots when the band is distributed: run 1's
+/// field is on every rank, so the marked slots are shared out in Morton order
+/// at once; a tiled previous run gives each slot to the owner of the previous
+/// slot at its centre (that rank holds the previous values around it), and
+/// migrate() balances them after the transfer.
+template <int D>
+std::vector<std::int32_t> transferOwners(const PreviousLevelSet<D>& previous, const TiledField<D>& field,
+  const std::vector<std::uint8_t>& marked, const TileDistribution<D>& distribution)
+{
+  if (!previous.Tiled)
+  {
+    return distribution.balancedOwners(field, marked);
+  }
+  const TiledField<D>& before = *previous.Tiled;
+  const GridSpec<D>& grid = field.grid();
+  std::vector<std::int32_t> owners(static_cast<size_t>(field.slotCount()));
+  for (Index s = 0; s < field.slotCount(); ++s)
+  {
+    const auto t = field.slotCoordinates(s);
+    std::array<Index, D> p{};
+    for (int a = 0; a < D; ++a)
+    {
+      const double x = grid.Origin[a] + (static_cast<double>(t[a] * TileEdge) + 0.5 * (TileEdge - 1)) * grid.Spacing[a];
+      const Index node = static_cast<Index>(std::floor((x - before.grid().Origin[a]) / before.grid().Spacing[a]));
+      p[a] = std::min(std::max<Index>(node >> TileBits, 0), before.slotDims()[a] - 1);
+    }
+    owners[static_cast<size_t>(s)] = distribution.ownerOf(before.slotIndex(p));
+  }
+  return owners;
+}
+
 /// Run r's field from run r-1's level set: tiles around its band,
 /// phi by Q1 cut at +-gamma, d not yet computed (TiledDistances); every other
-/// slot the side of its centre.
+/// slot the side of its centre. Distributed, each rank computes its own slots
+/// (transferOwners), tells the others, and the tiles are then balanced over the
+/// ranks with one ghost layer.
 template <int D>
 Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma, const GridSpec<D>& grid,
-  const ReconstructionPlan<D>& plan, int run, const Context& ctx, TiledField<D>& field)
+  const ReconstructionPlan<D>& plan, int run, const Context& ctx, TiledField<D>& field,
+  TileDistribution<D>& distribution)
 {
   const double gamma = plan.Options.GammaFactor * grid.Spacing[0];
   field.reset(grid, gamma);
@@ -203,19 +244,23 @@ Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma
       forEachIndexInBox<D>(
         lo, hi, [&](const std::array<Index, D>& t) { marked[static_cast<size_t>(field.slotIndex(t))] = 1; });
     });
-  Index count = 0;
-  for (std::uint8_t m : marked)
+  if (distribution.distributed())
   {
-    count += m;
+    distribution.setOwners(field, transferOwners(previous, field, marked, distribution));
   }
-  SLTK_RETURN_IF_ERROR(checkTileMemory(field, count, plan.Options, run));
+  Index count = 0;
+  for (Index s = 0; s < field.slotCount(); ++s)
+  {
+    count += marked[static_cast<size_t>(s)] && distribution.ownsSlot(s) ? 1 : 0;
+  }
+  SLTK_RETURN_IF_ERROR(distribution.agree(checkTileMemory(field, count, plan.Options, run)));
   // Sides of the slots without tiles: the sign of the previous phi at their centre.
   ctx.parallelFor(0, field.slotCount(),
     [&](Index b, Index e)
     {
       for (Index s = b; s < e; ++s)
       {
-        if (!marked[static_cast<size_t>(s)])
+        if (!marked[static_cast<size_t>(s)] && distribution.ownsSlot(s))
         {
           const auto t = field.slotCoordinates(s);
           std::array<double, D> x{};
@@ -234,7 +279,7 @@ Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma
   candidates.reserve(static_cast<size_t>(count));
   for (Index s = 0; s < field.slotCount(); ++s)
   {
-    if (marked[static_cast<size_t>(s)])
+    if (marked[static_cast<size_t>(s)] && distribution.ownsSlot(s))
     {
       candidates.push_back(s);
     }
@@ -287,6 +332,26 @@ Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma
       }
     },
     1);
+  if (distribution.distributed())
+  {
+    using State = typename TileDistribution<D>::SlotState;
+    std::vector<std::int64_t> changes;
+    for (Index s = 0; s < field.slotCount(); ++s)
+    {
+      if (distribution.ownsSlot(s) && (field.slot(s) >= 0 || field.slot(s) == TiledField<D>::Inside))
+      {
+        distribution.recordChange(changes, s, field.slot(s) >= 0 ? State::Tile : State::Inside);
+      }
+    }
+    distribution.shareChanges(field, changes, NothingToForget);
+    if (previous.Tiled)
+    {
+      distribution.migrate(
+        field, distribution.balancedOwners(field, TileDistribution<D>::tileSlots(field)), NothingToForget);
+    }
+    distribution.holdGhosts(field, 1, NothingToForget);
+    distribution.exchange(field, true);
+  }
   return Status::ok();
 }
 
@@ -327,10 +392,13 @@ void bandTiles(const TiledField<D>& field, const Context& ctx, std::vector<std::
 /// the slot's +-gamma, d not yet computed): the nodes the reinitialisation's
 /// dilated band (1.53) writes and the step's and the energy's distance
 /// stencils read. Elsewhere the step reads the slots' +-gamma, the value the
-/// uniform version holds there. Returns the number of tiles added.
+/// uniform version holds there. Distributed, a rank fills its own slots (its
+/// ghosts' band reaches them too) and records them in `changes`. Returns the
+/// number of tiles added through `added`.
 template <int D>
 Status extendBand(const std::vector<std::int32_t>& band, const std::vector<std::uint32_t>& reached,
-  const ReconstructionOptions& options, int run, TiledField<D>& field, Index& added)
+  const ReconstructionOptions& options, int run, TiledField<D>& field, Index& added,
+  const TileDistribution<D>& distribution, std::vector<std::int64_t>& changes)
 {
   added = 0;
   std::vector<Index> missing;
@@ -339,7 +407,8 @@ Status extendBand(const std::vector<std::int32_t>& band, const std::vector<std::
     forEachReachedSlot(field, band[j], reached[j],
       [&](Index s)
       {
-        if (field.slot(s) < 0)
+        const std::int32_t entry = field.slot(s);
+        if (entry < 0 && entry != TiledField<D>::Remote && distribution.ownsSlot(s))
         {
           missing.push_back(s);
         }
@@ -355,6 +424,7 @@ Status extendBand(const std::vector<std::int32_t>& band, const std::vector<std::
   for (Index s : missing)
   {
     field.addTile(s);
+    distribution.recordChange(changes, s, TileDistribution<D>::SlotState::Tile);
   }
   added = static_cast<Index>(missing.size());
   return Status::ok();
@@ -379,10 +449,12 @@ struct TileScratch
   std::vector<double> Values;
 };
 
-/// E_p (and E_2) of (4.29)/(4.30) over the band's cells, tile by tile.
+/// E_p (and E_2) of (4.29)/(4.30) over the band's cells, tile by tile
+/// (`band`: this rank's band tiles, in slot order), added in slot order over
+/// every rank; `bandTiles` receives the band tiles of every rank.
 template <int D>
 Status tiledEnergy(const TiledField<D>& field, const std::vector<std::int32_t>& band, const EnergyOptions& options,
-  const Context& ctx, EnergyResult& result)
+  const Context& ctx, const TileDistribution<D>& distribution, EnergyResult& result, Index& bandTiles)
 {
   const Context serial;
   std::vector<EnergyResult> parts(band.size());
@@ -410,16 +482,22 @@ Status tiledEnergy(const TiledField<D>& field, const std::vector<std::int32_t>& 
       }
     },
     16);
-  result = EnergyResult{};
+  Status failed = Status::ok();
+  std::vector<KeyedSums<4>> tiles(band.size());
   for (size_t j = 0; j < parts.size(); ++j)
   {
-    SLTK_RETURN_IF_ERROR(failures[j]);
-    result.Integral += parts[j].Integral;
-    result.SecondIntegral += parts[j].SecondIntegral;
-    result.FrontCells += parts[j].FrontCells;
+    failed = failed.isOk() ? failures[j] : failed;
+    tiles[j] = { static_cast<std::uint64_t>(field.tileSlot(band[j])),
+      { parts[j].Integral, parts[j].SecondIntegral, static_cast<double>(parts[j].FrontCells), 1.0 } };
   }
+  const std::array<double, 4> sums = distribution.orderedSum(std::move(tiles), std::array<double, 4>{});
+  result = EnergyResult{};
+  result.Integral = sums[0];
+  result.SecondIntegral = sums[1];
+  result.FrontCells = static_cast<Index>(sums[2]);
+  bandTiles = static_cast<Index>(sums[3]);
   energiesFromIntegrals(result, options);
-  return Status::ok();
+  return failed;
 }
 
 /// The largest displacement of a foot of (4.22)/(4.24) from its node, in the
@@ -517,6 +595,84 @@ private:
   }
 };
 
+/// The band tiles grouped by block (TileBlocks: items are positions in `band`).
+template <int D>
+TileBlocks<D> bandBlocks(const TiledField<D>& field, const std::vector<std::int32_t>& band)
+{
+  std::vector<std::pair<Index, Index>> keyed(band.size());
+  for (size_t j = 0; j < band.size(); ++j)
+  {
+    keyed[j] = { TileBlocks<D>::key(field, field.tileOrigin(band[j])), static_cast<Index>(j) };
+  }
+  return TileBlocks<D>(field, std::move(keyed));
+}
+
+/// The band nodes (|phi| < gamma) of block `block`'s tiles, numbered in the
+/// block's copy with `halo` nodes around it (scratchBlock), tile after tile.
+template <int D>
+void blockBandNodes(const TiledField<D>& field, const std::vector<std::int32_t>& band, const TileBlocks<D>& blocks,
+  Index block, Index halo, NodeList& nodes)
+{
+  nodes.clear();
+  const auto& first = blocks.First[static_cast<size_t>(block)];
+  for (size_t m = blocks.Begin[static_cast<size_t>(block)]; m < blocks.Begin[static_cast<size_t>(block) + 1]; ++m)
+  {
+    const std::int32_t id = band[static_cast<size_t>(blocks.Items[m])];
+    std::array<Index, D> o = field.tileOrigin(id);
+    for (int a = 0; a < D; ++a)
+    {
+      o[a] -= first[a];
+    }
+    const double* p = field.phi(id);
+    for (Index k = 0; k < TiledField<D>::Nodes; ++k)
+    {
+      if (std::fabs(p[k]) < field.gamma())
+      {
+        nodes.push_back(scratchNode<D>(k, halo, o, BlockTiles));
+      }
+    }
+  }
+}
+
+/// The largest foot (largestFoot) of block `block`'s band nodes, measured on
+/// a copy of the block with `halo` nodes and `ghost` ghost layers around it
+/// (left in `s`, its band nodes in s.Nodes).
+template <int D>
+double blockFoot(const TiledField<D>& field, const std::vector<std::int32_t>& band, const TileBlocks<D>& blocks,
+  Index block, Index halo, int ghost, const LevelSetStepParameters& par, TileScratch<D>& s)
+{
+  field.scratchBlock(
+    blocks.First[static_cast<size_t>(block)], BlockTiles, static_cast<int>(halo), ghost, s.Phi, &s.Dist);
+  blockBandNodes(field, band, blocks, block, halo, s.Nodes);
+  return largestFoot(s.Phi, s.Dist, s.Nodes, par);
+}
+
+/// The ghost layers (slots) the next step reads around this rank's band
+/// tiles `band`: its farthest foot (largestFoot) and the interpolation
+/// stencil, over every rank (at least 1, at most MaxGhostLayers; a farther
+/// foot is refused by tiledStep). Collective.
+template <int D>
+int stepGhostLayers(const TiledField<D>& field, const std::vector<std::int32_t>& band,
+  const LevelSetStepParameters& par, const Context& ctx, const TileDistribution<D>& distribution)
+{
+  const TileBlocks<D> blocks = bandBlocks(field, band);
+  std::vector<double> feet(static_cast<size_t>(blocks.count()), 0.0);
+  ctx.parallelFor(
+    0, blocks.count(),
+    [&](Index b, Index e)
+    {
+      TileScratch<D> s;
+      for (Index block = b; block < e; ++block)
+      {
+        feet[static_cast<size_t>(block)] = blockFoot(field, band, blocks, block, 1, 1, par, s);
+      }
+    },
+    1);
+  const double foot = feet.empty() ? 0.0 : *std::max_element(feet.begin(), feet.end());
+  const Index need = static_cast<Index>(std::ceil(distribution.max(foot) / field.grid().Spacing[0])) + StencilReach;
+  return static_cast<int>(std::min<Index>(std::max<Index>((need + TileEdge - 1) / TileEdge, 1), MaxGhostLayers));
+}
+
 /// One step (4.22)/(4.24) on the band, block by block: each block of band
 /// tiles gets its new values from the uniform kernel on one copy of the block
 /// and the nodes around it that its feet can reach, stored once all blocks
@@ -530,12 +686,7 @@ Status tiledStep(TiledField<D>& field, const std::vector<std::int32_t>& band, co
   halos.resize(static_cast<size_t>(TileBlocks<D>::positions(field)), 0);
   const Context serial;
   const double dx = field.grid().Spacing[0];
-  std::vector<std::pair<Index, Index>> keyed(band.size());
-  for (size_t j = 0; j < band.size(); ++j)
-  {
-    keyed[j] = { TileBlocks<D>::key(field, field.tileOrigin(band[j])), static_cast<Index>(j) };
-  }
-  const TileBlocks<D> blocks(field, std::move(keyed));
+  const TileBlocks<D> blocks = bandBlocks(field, band);
   // The new values of the band nodes only: tile after tile (band order), each tile's in node order.
   const auto inBand = [&field](double v) { return std::fabs(v) < field.gamma(); };
   std::vector<size_t> valuesStart(band.size() + 1, 0);
@@ -578,35 +729,11 @@ Status tiledStep(TiledField<D>& field, const std::vector<std::int32_t>& band, co
             f(static_cast<size_t>(blocks.Items[m]));
           }
         };
-        const auto bandNodes = [&](Index halo)
-        {
-          s.Nodes.clear();
-          forEachMember(
-            [&](size_t j)
-            {
-              const double* p = field.phi(band[j]);
-              const auto o = offset(j);
-              for (Index k = 0; k < TiledField<D>::Nodes; ++k)
-              {
-                if (inBand(p[k]))
-                {
-                  s.Nodes.push_back(scratchNode<D>(k, halo, o, BlockTiles));
-                }
-              }
-            });
-        };
+        const auto bandNodes = [&](Index halo) { blockBandNodes(field, band, blocks, block, halo, s.Nodes); };
         std::uint8_t& last = halos[static_cast<size_t>(TileBlocks<D>::key(field, first))];
         const Index guess = last;
-        if (guess > 0)
-        {
-          field.scratchBlock(first, BlockTiles, static_cast<int>(guess), Ghost, s.Phi, &s.Dist);
-        }
-        else
-        {
-          field.scratchBlock(first, BlockTiles, 1, 1, s.Phi, &s.Dist);
-        }
-        bandNodes(std::max<Index>(guess, 1));
-        const double foot = largestFoot(s.Phi, s.Dist, s.Nodes, par);
+        const double foot = guess > 0 ? blockFoot(field, band, blocks, block, guess, Ghost, par, s)
+                                      : blockFoot(field, band, blocks, block, 1, 1, par, s);
         feet[static_cast<size_t>(block)] = foot;
         const Index need = static_cast<Index>(std::ceil(foot / dx)) + StencilReach;
         if (need > MaxHalo)
@@ -676,9 +803,12 @@ Status tiledStep(TiledField<D>& field, const std::vector<std::int32_t>& band, co
 /// interpolated on one copy of the block (slots without a tile at their
 /// +-gamma: a point there can still read a neighbouring tile's nodes, as the
 /// uniform version reads them). Points beyond the slots are gamma away.
+///
+/// Distributed, a rank takes the points in its own slots; the blocks' sums are
+/// added in block order over every rank (the one-rank order). Collective.
 template <class Interp, int D>
 void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double far, const Context& ctx,
-  double& meanError, double& farFraction)
+  const TileDistribution<D>& distribution, double& meanError, double& farFraction)
 {
   const GridSpec<D>& g = field.grid();
   std::vector<std::pair<Index, Index>> keyed; // (block key, point)
@@ -698,7 +828,10 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
     }
     if (inside)
     {
-      keyed.emplace_back(TileBlocks<D>::key(field, t), q);
+      if (distribution.ownsSlot(field.slotIndex(t)))
+      {
+        keyed.emplace_back(TileBlocks<D>::key(field, t), q);
+      }
     }
     else
     {
@@ -728,19 +861,44 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
       }
     },
     1);
+  std::vector<KeyedSums<2>> parts(sums.size());
   for (size_t j = 0; j < sums.size(); ++j)
   {
-    sum += sums[j];
-    farCount += fars[j];
+    const auto first = blocks.First[j];
+    parts[j] = { static_cast<std::uint64_t>(TileBlocks<D>::key(field, first)), { sums[j], fars[j] } };
   }
-  meanError = sum / static_cast<double>(cloud.size());
-  farFraction = farCount / static_cast<double>(cloud.size());
+  const std::array<double, 2> total = distribution.orderedSum(std::move(parts), std::array<double, 2>{ sum, farCount });
+  meanError = total[0] / static_cast<double>(cloud.size());
+  farFraction = total[1] / static_cast<double>(cloud.size());
 }
 
-/// The iterations of run `run` >= 2 on its tiled field (the uniform version's iterate()).
+/// The other ranks' changes of this iteration's band (prune, extend)
+/// applied here, the ghosts held one layer deep again and the band tiles
+/// and their reach found again (ids changed). Nothing on one rank.
+template <int D>
+void shareBand(TiledField<D>& field, const std::vector<std::int64_t>& changes, const ReconstructionOptions& options,
+  const Context& ctx, TileDistribution<D>& distribution, TiledDistances<D>& distances, std::vector<std::int32_t>& band,
+  std::vector<std::uint32_t>& reached)
+{
+  if (!distribution.distributed())
+  {
+    return;
+  }
+  const auto forget = [&](const std::vector<std::uint8_t>& removed) { distances.removeTiles(removed); };
+  distribution.shareChanges(field, changes, forget);
+  distribution.holdGhosts(field, 1, forget);
+  bandTiles(field, ctx, band);
+  reached = bandReachOf(field, band, options, ctx);
+}
+
+/// The iterations of run `run` >= 2 on its tiled field (the uniform
+/// version's iterate()). Distributed (TileDistribution.h), each rank steps,
+/// reinitialises and measures its own tiles; every sum is added in the
+/// one-rank order and every decision is taken from the same numbers on every
+/// rank.
 template <int D, class Interp>
 Status iterateTiled(const ReconstructionPlan<D>& plan, int run, const Context& ctx, TiledField<D>& field,
-  ReconstructionResult<D>& result, TiledRunRecord& storage, bool& vanished)
+  TileDistribution<D>& distribution, ReconstructionResult<D>& result, TiledRunRecord& storage, bool& vanished)
 {
   vanished = false;
   const ReconstructionOptions& options = plan.Options;
@@ -768,22 +926,38 @@ Status iterateTiled(const ReconstructionPlan<D>& plan, int run, const Context& c
   TiledReinitialiser<D> reinit;
   TiledDistances<D> distances;
   std::vector<std::uint8_t> stepHalos; // by block position: the halo its feet needed at the last step
+  const auto mine = [&](std::int32_t id) { return distribution.owns(field, id); };
   for (int n = 0; n < options.MaxIterations; ++n)
   {
     bandTiles(field, ctx, band);
     Index added = 0;
-    const std::vector<std::uint32_t> reached = bandReachOf(field, band, options, ctx);
+    std::vector<std::uint32_t> reached = bandReachOf(field, band, options, ctx);
+    std::vector<Index> freed;
     storage.FreedTiles += pruneTiles(
-      field, band, reached, ctx, [&](const std::vector<std::uint8_t>& left) { distances.removeTiles(left); });
-    SLTK_RETURN_IF_ERROR(extendBand(band, reached, options, run, field, added));
+      field, band, reached, ctx, mine, [&](const std::vector<std::uint8_t>& left) { distances.removeTiles(left); },
+      freed);
+    std::vector<std::int64_t> changes;
+    for (Index s : freed)
+    {
+      distribution.recordChange(changes, s,
+        field.slot(s) == TiledField<D>::Inside ? TileDistribution<D>::SlotState::Inside
+                                               : TileDistribution<D>::SlotState::Outside);
+    }
+    SLTK_RETURN_IF_ERROR(
+      distribution.agree(extendBand(band, reached, options, run, field, added, distribution, changes)));
+    shareBand(field, changes, options, ctx, distribution, distances, band, reached);
     storage.AddedTiles += added;
     storage.PeakTiles = std::max(storage.PeakTiles, field.tileCount());
-    storage.ExactDistances += distances.ensure(field, band, reached, *plan.Locator, ctx);
+    storage.ExactDistances += distances.ensure(field, band, reached, *plan.Locator, ctx, mine);
+    distribution.exchange(field, true); // the ghosts' new tiles and distances
+    const std::vector<std::int32_t> ownBand = distribution.owned(field, band);
     EnergyOptions energyOptions;
     energyOptions.P = model.P;
     energyOptions.SecondP = model.P != 2.0 ? 2.0 : 0.0;
     EnergyResult ep;
-    SLTK_RETURN_IF_ERROR(tiledEnergy(field, band, energyOptions, ctx, ep));
+    Index bandCount = 0;
+    SLTK_RETURN_IF_ERROR(
+      distribution.agree(tiledEnergy(field, ownBand, energyOptions, ctx, distribution, ep, bandCount)));
     const double e2 = model.P != 2.0 ? ep.SecondEnergy : ep.Energy;
     if (ep.FrontCells == 0)
     {
@@ -799,7 +973,7 @@ Status iterateTiled(const ReconstructionPlan<D>& plan, int run, const Context& c
         break;
       }
       double error = 0.0, fraction = 0.0;
-      cloudErrors<Interp>(field, plan.Cloud, far, ctx, error, fraction);
+      cloudErrors<Interp>(field, plan.Cloud, far, ctx, distribution, error, fraction);
       if (!stillApproaching(fraction, checkedFar))
       {
         break;
@@ -808,18 +982,31 @@ Status iterateTiled(const ReconstructionPlan<D>& plan, int run, const Context& c
       nextFarCheck = n + options.EnergyWindow;
     }
     step.Energy = ep.Energy;
-    reinit.markBand(field, band, options.ReinitDilation, ctx); // the band before the step, dilated (1.53)
-    SLTK_RETURN_IF_ERROR((tiledStep<Interp, D>(field, band, step, ctx, stepHalos)));
-    SLTK_RETURN_IF_ERROR(reinit.run(field, options.Reinit, ctx));
+    if (distribution.distributed())
+    {
+      const int layers = stepGhostLayers(field, ownBand, step, ctx, distribution);
+      storage.GhostLayers = std::max(storage.GhostLayers, layers);
+      if (layers > distribution.heldDepth())
+      {
+        // New ghost tiles come after the others: the ids in band and ownBand stay.
+        distribution.holdGhosts(
+          field, layers, [&](const std::vector<std::uint8_t>& removed) { distances.removeTiles(removed); });
+        distribution.exchange(field, true);
+      }
+    }
+    reinit.markBand(field, band, options.ReinitDilation, ctx, distribution); // the band before the step (1.53)
+    SLTK_RETURN_IF_ERROR(distribution.agree(tiledStep<Interp, D>(field, ownBand, step, ctx, stepHalos)));
+    distribution.exchange(field, false);
+    SLTK_RETURN_IF_ERROR(distribution.agree(reinit.run(field, options.Reinit, ctx, distribution)));
     IterationRecord it;
     it.Run = run;
     it.Iteration = n + 1;
     it.Energy = e2;
     it.Change = reinit.relativeChange();
     double fraction = 0.0;
-    cloudErrors<Interp>(field, plan.Cloud, far, ctx, it.CloudError, fraction);
-    it.BandSize = static_cast<Index>(band.size()) * TiledField<D>::Nodes;
-    it.StoredNodes = field.tileCount() * TiledField<D>::Nodes;
+    cloudErrors<Interp>(field, plan.Cloud, far, ctx, distribution, it.CloudError, fraction);
+    it.BandSize = bandCount * TiledField<D>::Nodes;
+    it.StoredNodes = distribution.globalTileCount(field) * TiledField<D>::Nodes;
     it.Seconds = secondsSince(start);
     result.History.push_back(it);
     record.Iterations = n + 1;
@@ -827,7 +1014,8 @@ Status iterateTiled(const ReconstructionPlan<D>& plan, int run, const Context& c
     record.CloudError = it.CloudError;
     bandSizes += static_cast<double>(it.BandSize);
     const double progress = (run - 1 + double(n + 1) / options.MaxIterations) / options.Runs;
-    if (ctx.interrupter().wasInterrupted(progress))
+    const bool stop = ctx.interrupter().wasInterrupted(progress);
+    if (!distribution.agree(stop ? Status::aborted() : Status::ok()).isOk())
     {
       result.Runs.push_back(record);
       return Status::aborted();
@@ -836,33 +1024,50 @@ Status iterateTiled(const ReconstructionPlan<D>& plan, int run, const Context& c
   record.Seconds = secondsSince(start);
   record.MeanBandSize = record.Iterations ? static_cast<Index>(bandSizes / record.Iterations) : 0;
   double error = 0.0;
-  cloudErrors<Interp>(field, plan.Cloud, far, ctx, error, record.FarPoints);
+  cloudErrors<Interp>(field, plan.Cloud, far, ctx, distribution, error, record.FarPoints);
   if (record.Iterations == 0)
   {
     record.CloudError = error;
     record.Energy = energies.empty() ? 0.0 : energies.back();
   }
+  const Index tiles = distribution.globalTileCount(field);
   std::ostringstream log;
   log << "run " << run << " (tiled): " << record.Iterations << " iterations, E_2 = " << record.Energy
-      << ", Err_P = " << record.CloudError << ", " << field.tileCount() << " tiles ("
-      << static_cast<double>(field.tileCount()) * TiledField<D>::Nodes / static_cast<double>(field.grid().nodeCount()) *
-      100.0
+      << ", Err_P = " << record.CloudError << ", " << tiles << " tiles ("
+      << static_cast<double>(tiles) * TiledField<D>::Nodes / static_cast<double>(field.grid().nodeCount()) * 100.0
       << "% of the grid), " << record.Seconds << " s";
+  if (distribution.distributed())
+  {
+    log << "; rank " << distribution.rank() << " of " << distribution.comm().size() << " holds " << field.tileCount()
+        << " tiles, ghosts included";
+  }
   ctx.logger().log(LogLevel::Info, log.str());
   result.Runs.push_back(record);
   return Status::ok();
 }
 
+/// The run's storage record: tiles and node counts over every rank (each
+/// tile counted by its owner; AddedTiles, FreedTiles, PeakTiles and
+/// ExactDistances summed over the ranks), the bytes this rank holds.
 template <int D>
-void recordStorage(
-  const TiledField<D>& field, int run, const TiledRunRecord& iterations, std::vector<TiledRunRecord>& storage)
+void recordStorage(const TiledField<D>& field, int run, const TiledRunRecord& iterations,
+  const TileDistribution<D>& distribution, std::vector<TiledRunRecord>& storage)
 {
   TiledRunRecord r = iterations;
   r.Run = run;
-  r.Tiles = field.tileCount();
-  r.StoredNodes = field.tileCount() * TiledField<D>::Nodes;
+  r.Tiles = distribution.globalTileCount(field);
+  r.StoredNodes = r.Tiles * TiledField<D>::Nodes;
   r.UniformNodes = field.grid().nodeCount();
   r.Bytes = field.bytes();
+  if (distribution.distributed())
+  {
+    std::int64_t counts[4] = { r.AddedTiles, r.FreedTiles, r.PeakTiles, r.ExactDistances };
+    distribution.comm().allReduce(counts, 4, ReduceOp::Sum);
+    r.AddedTiles = counts[0];
+    r.FreedTiles = counts[1];
+    r.PeakTiles = counts[2];
+    r.ExactDistances = counts[3];
+  }
   storage.push_back(r);
 }
 
@@ -870,27 +1075,38 @@ void recordStorage(
 /// iterations; the reinitialiser's per-node arrays are freed on return (they
 /// were as large as the tiles on the bunny's run 3).
 template <int D>
-Status reinitialiseTransferred(const ReconstructionPlan<D>& plan, int run, const Context& ctx, TiledField<D>& field)
+Status reinitialiseTransferred(const ReconstructionPlan<D>& plan, int run, const Context& ctx, TiledField<D>& field,
+  TileDistribution<D>& distribution)
 {
   std::vector<std::int32_t> band;
   bandTiles(field, ctx, band);
   Index added = 0;
-  SLTK_RETURN_IF_ERROR(extendBand(band, bandReachOf(field, band, plan.Options, ctx), plan.Options, run, field, added));
+  std::vector<std::int64_t> changes;
+  SLTK_RETURN_IF_ERROR(distribution.agree(extendBand(
+    band, bandReachOf(field, band, plan.Options, ctx), plan.Options, run, field, added, distribution, changes)));
+  distribution.shareChanges(field, changes, NothingToForget); // only new tiles: the band's ids stay
   TiledReinitialiser<D> reinit;
-  reinit.markBand(field, band, plan.Options.ReinitDilation, ctx);
-  return reinit.run(field, plan.Options.Reinit, ctx);
+  reinit.markBand(field, band, plan.Options.ReinitDilation, ctx, distribution);
+  return distribution.agree(reinit.run(field, plan.Options.Reinit, ctx, distribution));
 }
 
 template <int D, class Interp>
-Status runTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReconstructionResult<D>& result)
+Status runTiled(
+  const ReconstructionPlan<D>& plan, const Context& ctx, const Communicator& comm, TiledReconstructionResult<D>& result)
 {
   ReconstructionResult<D>& records = result.Records;
-  SLTK_RETURN_IF_ERROR(reconstructFirstRuns(plan, 1, ctx, records));
+  TileDistribution<D> distribution(comm);
+  // Run 1 is uniform (the coarsest grid), split in slabs over the ranks
+  // (reconstruct()'s), then gathered whole on every rank for the transfer.
+  SLTK_RETURN_IF_ERROR(reconstructFirstRuns(plan, 1, ctx, records, comm)); // the same status on every rank
   for (IterationRecord& it : records.History)
   {
     it.StoredNodes = records.Runs.front().Grid.nodeCount(); // run 1 is uniform
   }
-  GridField<D> first = std::move(records.SignedDistance);
+  GridField<D> first = distribution.distributed()
+    ? gatherSlabRows(records.SignedDistance, records.Slab, records.WholeGrid, records.SignedDistance.ghost(), comm)
+    : std::move(records.SignedDistance);
+  records.SignedDistance = GridField<D>{};
   records.Distance = GridField<D>{};
   first.fillGhosts();
   const double firstGamma = plan.Options.GammaFactor * first.spec().Spacing[0];
@@ -900,8 +1116,9 @@ Status runTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReco
   if (plan.Options.Runs == 1)
   {
     // One run: its uniform result, stored in tiles.
-    SLTK_RETURN_IF_ERROR(transferToTiles(previous, firstGamma, first.spec(), plan, 1, ctx, result.Field));
-    recordStorage(result.Field, 1, TiledRunRecord{}, result.Storage);
+    SLTK_RETURN_IF_ERROR(transferToTiles(previous, firstGamma, first.spec(), plan, 1, ctx, result.Field, distribution));
+    recordStorage(result.Field, 1, TiledRunRecord{}, distribution, result.Storage);
+    result.Owners = distribution.owners();
     return Status::ok();
   }
   double previousGamma = firstGamma;
@@ -911,11 +1128,11 @@ Status runTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReco
     ctx.interrupter().start("run " + std::to_string(run) + "/" + std::to_string(plan.Options.Runs) + " (tiled)");
     const auto setup = Clock::now();
     TiledField<D> field;
-    SLTK_RETURN_IF_ERROR(transferToTiles(previous, previousGamma, grid, plan, run, ctx, field));
-    SLTK_RETURN_IF_ERROR(reinitialiseTransferred(plan, run, ctx, field));
+    SLTK_RETURN_IF_ERROR(transferToTiles(previous, previousGamma, grid, plan, run, ctx, field, distribution));
+    SLTK_RETURN_IF_ERROR(reinitialiseTransferred(plan, run, ctx, field, distribution));
     std::ostringstream log;
-    log << "run " << run << " (tiled): " << field.tileCount() << " tiles of " << field.slotCount() << " ("
-        << field.bytes() / 1048576.0 << " MB), set up in " << secondsSince(setup) << " s";
+    log << "run " << run << " (tiled): " << distribution.globalTileCount(field) << " tiles of " << field.slotCount()
+        << " (" << field.bytes() / 1048576.0 << " MB on this rank), set up in " << secondsSince(setup) << " s";
     ctx.logger().log(LogLevel::Info, log.str());
     if (run == 2)
     {
@@ -928,9 +1145,9 @@ Status runTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReco
     TiledRunRecord storage;
     storage.PeakTiles = field.tileCount(); // the transfer's and the setup reinitialisation's
     bool vanished = false;
-    const Status status = iterateTiled<D, Interp>(plan, run, ctx, field, records, storage, vanished);
+    const Status status = iterateTiled<D, Interp>(plan, run, ctx, field, distribution, records, storage, vanished);
     ctx.interrupter().end();
-    recordStorage(field, run, storage, result.Storage);
+    recordStorage(field, run, storage, distribution, result.Storage);
     SLTK_RETURN_IF_ERROR(status);
     last = std::move(field);
     previous.Dense = nullptr;
@@ -938,12 +1155,14 @@ Status runTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReco
     previousGamma = last.gamma();
   }
   result.Field = std::move(last);
+  result.Owners = distribution.owners();
   return Status::ok();
 }
 } // namespace
 
 template <int D>
-Status reconstructTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReconstructionResult<D>& result)
+Status reconstructTiled(
+  const ReconstructionPlan<D>& plan, const Context& ctx, TiledReconstructionResult<D>& result, const Communicator& comm)
 {
   result = TiledReconstructionResult<D>{};
   result.Box = plan.Box;
@@ -954,7 +1173,7 @@ Status reconstructTiled(const ReconstructionPlan<D>& plan, const Context& ctx, T
       ": use a smaller dilation or the uniform version");
   }
   const Status status = withReconstructionInterpolator<D>(
-    plan.Options, [&](auto tag) { return runTiled<D, typename decltype(tag)::type>(plan, ctx, result); });
+    plan.Options, [&](auto tag) { return runTiled<D, typename decltype(tag)::type>(plan, ctx, comm, result); });
   recordsToUser(plan.Box, result.Records);
   result.Records.CloudSpacing *= plan.Box.Scale;
   return status;
@@ -966,9 +1185,60 @@ Index completeTiledDistances(const ReconstructionPlan<D>& plan, const Context& c
   return TiledDistances<D>::completeAll(field, *plan.Locator, ctx);
 }
 
-template Status reconstructTiled(const ReconstructionPlan<2>&, const Context&, TiledReconstructionResult<2>&);
+template <int D>
+void gatherTiles(TiledReconstructionResult<D>& result, const Communicator& comm, int root)
+{
+  if (comm.size() == 1)
+  {
+    return;
+  }
+  TiledField<D>& field = result.Field;
+  const size_t values = static_cast<size_t>(TiledField<D>::Nodes);
+  const size_t tileBytes = sizeof(std::int64_t) + 2 * values * sizeof(double);
+  std::vector<unsigned char> send;
+  field.forEachTileInSlotOrder(
+    [&](std::int32_t id)
+    {
+      const std::int64_t slot = field.tileSlot(id);
+      if (result.Owners[static_cast<size_t>(slot)] != comm.rank() || comm.rank() == root)
+      {
+        return;
+      }
+      const size_t at = send.size();
+      send.resize(at + tileBytes);
+      std::memcpy(send.data() + at, &slot, sizeof(slot));
+      std::memcpy(send.data() + at + sizeof(slot), field.phi(id), values * sizeof(double));
+      std::memcpy(
+        send.data() + at + sizeof(slot) + values * sizeof(double), field.distance(id), values * sizeof(double));
+    });
+  std::vector<std::int64_t> counts(static_cast<size_t>(comm.size()), 0);
+  counts[static_cast<size_t>(root)] = static_cast<std::int64_t>(send.size());
+  std::vector<unsigned char> incoming;
+  std::vector<std::int64_t> received;
+  comm.allToAllV(send.data(), counts, incoming, received);
+  if (comm.rank() != root)
+  {
+    return;
+  }
+  for (size_t at = 0; at + tileBytes <= incoming.size(); at += tileBytes)
+  {
+    std::int64_t slot = 0;
+    std::memcpy(&slot, incoming.data() + at, sizeof(slot));
+    const std::int32_t id = field.slot(slot) >= 0 ? field.slot(slot) : field.addTile(slot);
+    std::memcpy(field.phi(id), incoming.data() + at + sizeof(slot), values * sizeof(double));
+    std::memcpy(
+      field.distance(id), incoming.data() + at + sizeof(slot) + values * sizeof(double), values * sizeof(double));
+  }
+  result.Owners.clear();
+}
+
+template Status reconstructTiled(
+  const ReconstructionPlan<2>&, const Context&, TiledReconstructionResult<2>&, const Communicator&);
+template void gatherTiles(TiledReconstructionResult<2>&, const Communicator&, int);
+template void gatherTiles(TiledReconstructionResult<3>&, const Communicator&, int);
 template Index completeTiledDistances(const ReconstructionPlan<2>&, const Context&, TiledField<2>&);
 template Index completeTiledDistances(const ReconstructionPlan<3>&, const Context&, TiledField<3>&);
-template Status reconstructTiled(const ReconstructionPlan<3>&, const Context&, TiledReconstructionResult<3>&);
+template Status reconstructTiled(
+  const ReconstructionPlan<3>&, const Context&, TiledReconstructionResult<3>&, const Communicator&);
 
 } // namespace sltk

@@ -9,7 +9,10 @@
 /// around it, and every pseudo-time step reads the axis neighbours straight
 /// from the tiles. The band is the band before the step dilated (1.53), as in
 /// the uniform version; the values are cut at +-gamma (1.49) afterwards.
+/// Distributed (TileDistribution.h), each rank updates the nodes of its own
+/// tiles and its ghosts' values follow every pseudo-time step.
 
+#include "TileDistribution.h"
 #include "sltk/exec/Context.h"
 #include "sltk/exec/ThreadPool.h"
 #include "sltk/levelset/ReinitInterface.h"
@@ -28,9 +31,11 @@ class TiledReinitialiser
 {
 public:
   /// The nodes to reinitialise: those of `band`'s tiles with |phi| < gamma
-  /// and every node within `dilation` of one (1.53); their values now are
-  /// phi^n of eps_1 (4.34).
-  void markBand(const TiledField<D>& field, const std::vector<std::int32_t>& band, int dilation, const Context& ctx)
+  /// and every node within `dilation` of one (1.53), in the tiles this rank
+  /// owns (`band`: every held tile with a band node, ghosts included); their
+  /// values now are phi^n of eps_1 (4.34).
+  void markBand(const TiledField<D>& field, const std::vector<std::int32_t>& band, int dilation, const Context& ctx,
+    const TileDistribution<D>& distribution)
   {
     const Index nodes = TiledField<D>::Nodes;
     this->Mask.assign(static_cast<size_t>(field.tileCount() * nodes), 0);
@@ -108,6 +113,10 @@ public:
     field.forEachTileInSlotOrder(
       [&](std::int32_t id)
       {
+        if (!distribution.owns(field, id))
+        {
+          return;
+        }
         for (Index k = 0; k < nodes; ++k)
         {
           if (this->Mask[static_cast<size_t>(id * nodes + k)])
@@ -128,8 +137,9 @@ public:
       });
   }
 
-  /// Reinitialises and cuts the marked nodes.
-  Status run(TiledField<D>& field, const ReinitOptions& options, const Context& ctx)
+  /// Reinitialises and cuts the marked nodes (collective when distributed:
+  /// every rank returns the same status).
+  Status run(TiledField<D>& field, const ReinitOptions& options, const Context& ctx, TileDistribution<D>& distribution)
   {
     SLTK_RETURN_IF_ERROR(options.template validate<D>());
     const GridSpec<D>& g = field.grid();
@@ -155,6 +165,7 @@ public:
         field.phi(this->Nodes[n].Tile)[this->Nodes[n].Local] = this->Coefficient[n]; // the one step procedure
       }
     }
+    distribution.exchange(field, false);
     const double dtau = options.Courant * h; // (1.34)
     for (int iteration = 1; iteration <= options.MaxIterations; ++iteration)
     {
@@ -190,7 +201,7 @@ public:
           this->ChunkChange[static_cast<size_t>(b / ChangeGrain)] = largest;
         },
         ChangeGrain);
-      const double change = *std::max_element(this->ChunkChange.begin(), this->ChunkChange.end());
+      const double change = distribution.max(*std::max_element(this->ChunkChange.begin(), this->ChunkChange.end()));
       ctx.parallelFor(0, static_cast<Index>(count),
         [&](Index b, Index e)
         {
@@ -203,6 +214,7 @@ public:
             }
           }
         });
+      distribution.exchange(field, false);
       if (!std::isfinite(change))
       {
         return Status::numericalFailure(
@@ -213,16 +225,23 @@ public:
         break;
       }
     }
-    // Cut (1.49) and eps_1 (4.34) over the marked nodes.
-    double moved = 0.0, size = 0.0;
+    // Cut (1.49) and eps_1 (4.34) over the marked nodes: tile by tile, the
+    // tiles added in slot order on any number of ranks.
+    std::vector<KeyedSums<2>> tiles;
     for (size_t n = 0; n < count; ++n)
     {
+      if (n == 0 || this->Nodes[n].Tile != this->Nodes[n - 1].Tile)
+      {
+        tiles.push_back({ static_cast<std::uint64_t>(field.tileSlot(this->Nodes[n].Tile)), {} });
+      }
       double& v = field.phi(this->Nodes[n].Tile)[this->Nodes[n].Local];
       v = std::min(field.gamma(), std::max(-field.gamma(), v));
-      moved += std::fabs(v - this->Before[n]);
-      size += std::fabs(this->Before[n]);
+      tiles.back().Values[0] += std::fabs(v - this->Before[n]);
+      tiles.back().Values[1] += std::fabs(this->Before[n]);
     }
-    this->Change = size > 0.0 ? moved / size : 0.0;
+    distribution.exchange(field, false);
+    const std::array<double, 2> sums = distribution.orderedSum(std::move(tiles), std::array<double, 2>{});
+    this->Change = sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
     return Status::ok();
   }
 

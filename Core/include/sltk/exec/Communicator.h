@@ -61,6 +61,14 @@ public:
   virtual void allGatherV(
     const void* bytes, std::size_t count, std::vector<unsigned char>& out, std::vector<std::int64_t>& counts) const = 0;
 
+  /// Personalised all-to-all: `send` holds the bytes for rank 0, then for
+  /// rank 1, ... (sendCounts[r] bytes for rank r, 0 allowed); `out` receives
+  /// every rank's bytes for this rank in rank order, receiveCounts[r] from
+  /// rank r. The ghost and migration exchanges of the distributed tiled band
+  /// (sltk/tiled/TileDistribution.h).
+  virtual void allToAllV(const void* send, const std::vector<std::int64_t>& sendCounts, std::vector<unsigned char>& out,
+    std::vector<std::int64_t>& receiveCounts) const = 0;
+
   /// Sends `sendBytes` bytes to rank `destination` and receives `receiveBytes`
   /// bytes from rank `source` at once (no deadlock when neighbours exchange in
   /// both directions); -1 as a rank skips that half. The halo exchange of a

@@ -59,6 +59,16 @@ public:
     ++this->Collectives;
     this->Inner->allGatherV(bytes, count, out, counts);
   }
+  void allToAllV(const void* send, const std::vector<std::int64_t>& sendCounts, std::vector<unsigned char>& out,
+    std::vector<std::int64_t>& receiveCounts) const override
+  {
+    ++this->Collectives;
+    for (size_t r = 0; r < sendCounts.size(); ++r)
+    {
+      this->Sent += static_cast<int>(r) == this->rank() ? 0 : sendCounts[r];
+    }
+    this->Inner->allToAllV(send, sendCounts, out, receiveCounts);
+  }
   void sendReceive(const void* send, std::size_t sendBytes, int destination, void* receive, std::size_t receiveBytes,
     int source) const override
   {

@@ -126,4 +126,26 @@ void exchangeGhostRows(GridField<D, T>& window, const SlabPlan& slab, const Comm
   }
 }
 
+/// The whole grid `whole` on every rank from each rank's owned rows of its
+/// `window` (slab.Begin .. slab.End - 1; the slabs tile the rows in rank
+/// order), with `ghost` ghost layers (not filled). A collective call: the
+/// tiled reconstruction's run 1, computed on slabs and small, read whole by
+/// every rank's transfer (tiled/TiledReconstruction.h).
+template <int D, class T>
+GridField<D, T> gatherSlabRows(
+  const GridField<D, T>& window, const SlabPlan& slab, const GridSpec<D>& whole, int ghost, const Communicator& comm)
+{
+  static_assert(std::is_trivially_copyable<T>::value, "rows are sent as raw bytes");
+  const Index rowNodes = whole.nodeCount() / whole.Dims[D - 1];
+  std::vector<T> mine(static_cast<size_t>((slab.End - slab.Begin) * rowNodes));
+  forEachRowLine(window, slab.Begin - slab.First, slab.End - slab.Begin,
+    [&](const T* line, Index length, Index node)
+    { std::copy(line, line + length, mine.data() + (node - (slab.Begin - slab.First) * rowNodes)); });
+  const std::vector<T> all = comm.allGatherV(mine);
+  GridField<D, T> field(whole, ghost);
+  forEachRowLine(field, 0, whole.Dims[D - 1],
+    [&](T* line, Index length, Index node) { std::copy(all.data() + node, all.data() + node + length, line); });
+  return field;
+}
+
 } // namespace sltk

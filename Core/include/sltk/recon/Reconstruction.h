@@ -33,8 +33,8 @@ namespace sltk
 template <int D>
 struct ReconstructionResult
 {
-  GridField<D> SignedDistance;         ///< phi of the last run (negative inside), cut at +-gamma far away
-  GridField<D> Distance;               ///< d of the last run (4.4.2)
+  GridField<D> SignedDistance; ///< phi of the last run (negative inside), cut at +-gamma far away
+  GridField<D> Distance;       ///< d of the last run (4.4.2)
   /// The last run's whole grid, and this rank's slab of it (grid/Slabs.h): on
   /// several ranks SignedDistance and Distance hold the window, rows
   /// Slab.First .. Slab.Stop - 1, of which Slab.Begin .. Slab.End - 1 are owned
@@ -99,10 +99,11 @@ void recordsToUser(const UnitBox<D>& box, ReconstructionResult<D>& result)
 /// Runs 1..`runs` of Algorithm 1 on the plan's uniform grids, with the same
 /// recoveries as reconstruct() for run 1 (a wider K_P) but not the finer
 /// restart, and leaves the result in unit-box units (4.5): the first run of
-/// the tiled reconstruction (tiled/TiledReconstruction.h).
+/// the tiled reconstruction (tiled/TiledReconstruction.h). With several ranks
+/// the runs are split in slabs as reconstruct()'s.
 template <int D>
-Status reconstructFirstRuns(
-  const ReconstructionPlan<D>& plan, int runs, const Context& ctx, ReconstructionResult<D>& result);
+Status reconstructFirstRuns(const ReconstructionPlan<D>& plan, int runs, const Context& ctx,
+  ReconstructionResult<D>& result, const Communicator& comm = serialCommunicator());
 
 extern template Status reconstruct(
   const PointCloud<2>&, const ReconstructionOptions&, const Context&, ReconstructionResult<2>&);
@@ -113,8 +114,8 @@ extern template Status reconstruct(
 extern template Status reconstruct(
   const ReconstructionPlan<3>&, const Context&, ReconstructionResult<3>&, const Communicator&);
 extern template Status reconstructFirstRuns(
-  const ReconstructionPlan<2>&, int, const Context&, ReconstructionResult<2>&);
+  const ReconstructionPlan<2>&, int, const Context&, ReconstructionResult<2>&, const Communicator&);
 extern template Status reconstructFirstRuns(
-  const ReconstructionPlan<3>&, int, const Context&, ReconstructionResult<3>&);
+  const ReconstructionPlan<3>&, int, const Context&, ReconstructionResult<3>&, const Communicator&);
 
 } // namespace sltk

@@ -45,6 +45,10 @@ class TiledField
 public:
   static constexpr std::int32_t Outside = -1; ///< slot without a tile: phi = +gamma
   static constexpr std::int32_t Inside = -2;  ///< slot without a tile: phi = -gamma
+  /// Slot whose tile another rank holds and this one does not (the distributed
+  /// band, TileDistribution.h): phi and d read NaN here, so that a read the
+  /// ghost layer should have covered shows in the result.
+  static constexpr std::int32_t Remote = -4;
   static constexpr Index Nodes = tileNodes<D>();
 
   /// An empty field over `grid` (every slot Outside) with the cut-off value gamma.
@@ -68,15 +72,18 @@ public:
   }
   std::int32_t slot(Index s) const { return this->Slots[static_cast<size_t>(s)]; }
   void setSide(Index s, bool inside) { this->Slots[static_cast<size_t>(s)] = inside ? Inside : Outside; }
+  void setRemote(Index s) { this->Slots[static_cast<size_t>(s)] = Remote; }
   /// Tile coordinates of slot s.
   std::array<Index, D> slotCoordinates(Index s) const;
 
   /// Allocates a tile in slot s (when it has none): its phi is the slot's
   /// +-gamma, its distance NaN (not computed) until set. Returns the tile's id.
   std::int32_t addTile(Index s);
-  /// Frees the tiles with remove[id] != 0, each a slot again on the side of
-  /// its first node's sign (the caller removes only tiles at +-gamma
-  /// throughout); the others keep their order and take ids 0, 1, ...
+  /// Frees the tiles with remove[id] != 0: with 1 the slot is a side again, the
+  /// side of the tile's first node's sign (the caller removes only tiles at
+  /// +-gamma throughout); with RemoveToRemote it is Remote (a ghost tile
+  /// dropped). The others keep their order and take ids 0, 1, ...
+  static constexpr std::uint8_t RemoveToRemote = 2;
   void removeTiles(const std::vector<std::uint8_t>& remove);
   /// Tile coordinates of tile `id`.
   const std::array<Index, D>& tileOrigin(std::int32_t id) const { return this->Origins[static_cast<size_t>(id)]; }
@@ -120,12 +127,13 @@ public:
     return x;
   }
 
-  /// phi at grid index i (any integers: beyond the slots, +gamma).
+  /// phi at grid index i (any integers: beyond the slots, +gamma; NaN in a Remote slot).
   double value(const std::array<Index, D>& i) const;
 
   /// Tile `id` and `halo` nodes around it as a uniform field with `ghost`
   /// ghost layers filled by the grid's boundary policy: phi, and d when
-  /// `dist` is not null. Missing tiles read +-gamma (phi) and NaN (d).
+  /// `dist` is not null. Missing tiles read +-gamma (phi) and NaN (d),
+  /// Remote ones NaN.
   void scratch(std::int32_t id, int halo, int ghost, GridField<D>& phi, GridField<D>* dist) const
   {
     this->scratchBlock(this->tileOrigin(id), 1, halo, ghost, phi, dist);

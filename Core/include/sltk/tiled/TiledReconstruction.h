@@ -26,6 +26,7 @@
 /// The result is the uniform version's finest grid, stored sparsely: the
 /// same nodes, with phi = +-gamma where no tile is.
 
+#include "sltk/exec/Communicator.h"
 #include "sltk/recon/Reconstruction.h"
 #include "sltk/tiled/TiledField.h"
 
@@ -43,7 +44,8 @@ struct TiledRunRecord
   Index FreedTiles = 0;     ///< tiles freed during the run (the band left them: PruneTiles.h)
   Index PeakTiles = 0;      ///< the most tiles held at once during the run's iterations
   Index ExactDistances = 0; ///< nodes whose distance to the cloud was computed (TiledDistances)
-  double Bytes = 0.0;       ///< the field's memory at the end of the run
+  double Bytes = 0.0;       ///< the field's memory at the end of the run (this rank's)
+  int GhostLayers = 0;      ///< distributed: the most layers of ghost tiles a step read (1 when the feet stay near)
 };
 
 template <int D>
@@ -55,12 +57,26 @@ struct TiledReconstructionResult
   TiledField<D> Field; ///< the last run's phi and d (near the band), unit-box units (4.5)
   UnitBox<D> Box;      ///< unit box <-> the user's units
   std::vector<TiledRunRecord> Storage;
+  /// Distributed: the rank that owns each slot of Field (empty on one rank).
+  /// Field then holds this rank's tiles and copies of the other ranks' tiles
+  /// next to its slots (ghosts); every other tile's slot is Remote.
+  std::vector<std::int32_t> Owners;
 };
 
 /// Runs Algorithm 1 on the plan (planReconstruction()) with runs >= 2 tiled.
-/// A plan with one run is run 1 alone, stored in tiles.
+/// A plan with one run is run 1 alone, stored in tiles. With a communicator
+/// of several ranks (each holding the same plan) the tiles are shared out in
+/// Morton order (Documentation/Octree.md, "Distributing the tiled band"): every
+/// rank returns the same records, and its tiles hold the one-rank values.
 template <int D>
-Status reconstructTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReconstructionResult<D>& result);
+Status reconstructTiled(const ReconstructionPlan<D>& plan, const Context& ctx, TiledReconstructionResult<D>& result,
+  const Communicator& comm = serialCommunicator());
+
+/// Gathers a distributed result's tiles on rank `root` (collective): there,
+/// Field becomes the whole field, as one rank computes it, and Owners is
+/// cleared; the other ranks keep theirs. Nothing on one rank.
+template <int D>
+void gatherTiles(TiledReconstructionResult<D>& result, const Communicator& comm, int root = 0);
 
 /// The run computes the distance to the cloud only within one node of the
 /// band (TiledField's d is NaN elsewhere); this gives every stored node its
@@ -69,9 +85,13 @@ Status reconstructTiled(const ReconstructionPlan<D>& plan, const Context& ctx, T
 template <int D>
 Index completeTiledDistances(const ReconstructionPlan<D>& plan, const Context& ctx, TiledField<D>& field);
 
-extern template Status reconstructTiled(const ReconstructionPlan<2>&, const Context&, TiledReconstructionResult<2>&);
+extern template Status reconstructTiled(
+  const ReconstructionPlan<2>&, const Context&, TiledReconstructionResult<2>&, const Communicator&);
+extern template void gatherTiles(TiledReconstructionResult<2>&, const Communicator&, int);
+extern template void gatherTiles(TiledReconstructionResult<3>&, const Communicator&, int);
 extern template Index completeTiledDistances(const ReconstructionPlan<2>&, const Context&, TiledField<2>&);
 extern template Index completeTiledDistances(const ReconstructionPlan<3>&, const Context&, TiledField<3>&);
-extern template Status reconstructTiled(const ReconstructionPlan<3>&, const Context&, TiledReconstructionResult<3>&);
+extern template Status reconstructTiled(
+  const ReconstructionPlan<3>&, const Context&, TiledReconstructionResult<3>&, const Communicator&);
 
 } // namespace sltk

@@ -1,0 +1,477 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file TileDistribution.h (private)
+/// The tiled band distributed over the ranks of a communicator
+/// (Documentation/Octree.md, "Distributing the tiled band"), p4est's way for a
+/// forest whose leaves are the tiles:
+///  - every rank keeps the whole slot map (one int32 per 8^D nodes), in which a
+///    tile another rank holds is Remote (TiledField.h);
+///  - each slot has an owner (TileOwners.h: runs of the Morton order with equal
+///    numbers of tiles); a rank computes on the tiles of its own slots only;
+///  - it also holds ghost tiles, copies of the other ranks' tiles within
+///    `depth` slots of its own (one layer: the reinitialisation's neighbours,
+///    the energy's cells, the distance stencils, the points' stencils; more for
+///    a step whose feet reach farther), refreshed from their owners in one
+///    personalised all-to-all (Communicator::allToAllV);
+///  - a rank that adds or frees a tile tells every rank (one gather per
+///    iteration), so that every slot map stays the same;
+///  - sums are added in the one-rank order (orderedSum), so the result does
+///    not depend on the number of ranks, to the last bit.
+/// With one rank every call is a no-op or the serial operation.
+
+#include "TileOwners.h"
+#include "sltk/core/IndexBox.h"
+#include "sltk/exec/Communicator.h"
+#include "sltk/tiled/TiledField.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sltk
+{
+
+/// The most ghost layers (slots) a step may ask for: its copies reach at
+/// most MaxHalo = 32 nodes (TiledReconstruction.cxx), four tiles.
+constexpr int MaxGhostLayers = 4;
+
+/// N partial sums of one item (a tile, a block of tiles) and the key that
+/// orders them (its slot or block index).
+template <size_t N>
+struct KeyedSums
+{
+  std::uint64_t Key = 0;
+  std::array<double, N> Values{};
+};
+
+template <int D>
+class TileDistribution
+{
+public:
+  explicit TileDistribution(const Communicator& comm)
+    : Comm(&comm)
+  {
+  }
+
+  const Communicator& comm() const { return *this->Comm; }
+  bool distributed() const { return this->Comm->size() > 1; }
+  int rank() const { return this->Comm->rank(); }
+
+  /// The owners of the field's slots; ghosts are then held again by holdGhosts().
+  void setOwners(const TiledField<D>& field, std::vector<std::int32_t> owners)
+  {
+    if (!this->distributed())
+    {
+      return;
+    }
+    this->Owners = std::move(owners);
+    this->Zone = distanceToRank<D>(field.slotDims(), this->Owners, this->rank(), MaxGhostLayers + 1);
+    this->PlanValid = false;
+  }
+  /// The owner of every slot when `weighted` (per slot) are the tiles to share out.
+  std::vector<std::int32_t> balancedOwners(const TiledField<D>& field, const std::vector<std::uint8_t>& weighted) const
+  {
+    return mortonOwners<D>(field.slotDims(), weighted, this->Comm->size(), BlockEdge);
+  }
+  /// The slots holding a tile on some rank (this rank's tiles, ghosts and Remote slots).
+  static std::vector<std::uint8_t> tileSlots(const TiledField<D>& field)
+  {
+    std::vector<std::uint8_t> tiles(static_cast<size_t>(field.slotCount()), 0);
+    for (Index s = 0; s < field.slotCount(); ++s)
+    {
+      tiles[static_cast<size_t>(s)] = field.slot(s) >= 0 || field.slot(s) == TiledField<D>::Remote;
+    }
+    return tiles;
+  }
+
+  /// The owner of every slot (empty on one rank).
+  const std::vector<std::int32_t>& owners() const { return this->Owners; }
+  bool ownsSlot(Index s) const { return !this->distributed() || this->Owners[static_cast<size_t>(s)] == this->rank(); }
+  int ownerOf(Index s) const { return this->distributed() ? this->Owners[static_cast<size_t>(s)] : 0; }
+  bool owns(const TiledField<D>& field, std::int32_t id) const { return this->ownsSlot(field.tileSlot(id)); }
+
+  /// The tiles of `tiles` this rank owns, in their order.
+  std::vector<std::int32_t> owned(const TiledField<D>& field, const std::vector<std::int32_t>& tiles) const
+  {
+    std::vector<std::int32_t> mine;
+    for (std::int32_t id : tiles)
+    {
+      if (this->owns(field, id))
+      {
+        mine.push_back(id);
+      }
+    }
+    return mine;
+  }
+
+  /// The tiles of every rank (each counted by its owner).
+  Index globalTileCount(const TiledField<D>& field) const
+  {
+    std::int64_t count = 0;
+    for (std::int32_t id = 0; id < field.tileCount(); ++id)
+    {
+      count += this->owns(field, id) ? 1 : 0;
+    }
+    return this->distributed() ? this->Comm->allReduce(count, ReduceOp::Sum) : count;
+  }
+
+  /// The same status on every rank (the lowest failing rank's), with any
+  /// internal error an exchange found.
+  Status agree(const Status& local)
+  {
+    const Status mine = local.isOk() ? this->Broken : local;
+    this->Broken = Status::ok();
+    return this->distributed() ? this->Comm->agree(mine) : mine;
+  }
+
+  /// Slot changes of this rank's own slots: a tile there, or a side.
+  enum class SlotState : std::int64_t
+  {
+    Tile = 0,
+    Outside = 1,
+    Inside = 2
+  };
+  void recordChange(std::vector<std::int64_t>& changes, Index slot, SlotState state) const
+  {
+    if (this->distributed())
+    {
+      changes.push_back(slot * 4 + static_cast<std::int64_t>(state));
+    }
+  }
+
+  /// Every rank's `changes` (recordChange) applied to this rank's slot map:
+  /// another rank's new tile is a ghost here when within the held depth of
+  /// this rank's slots, else Remote; a freed one is its side (a ghost copy
+  /// dropped: forget(remove) follows TiledField::removeTiles). Collective.
+  template <class Forget>
+  void shareChanges(TiledField<D>& field, const std::vector<std::int64_t>& changes, Forget&& forget)
+  {
+    if (!this->distributed())
+    {
+      return;
+    }
+    this->PlanValid = false;
+    const std::vector<std::int64_t> all = this->Comm->allGatherV(changes);
+    std::vector<std::uint8_t> remove;
+    std::vector<std::pair<Index, bool>> sides; // slots whose ghost tile goes, and their side
+    for (const std::int64_t change : all)
+    {
+      const Index s = change / 4;
+      const auto state = static_cast<SlotState>(change % 4);
+      if (this->ownsSlot(s))
+      {
+        continue; // this rank's own change
+      }
+      const std::int32_t entry = field.slot(s);
+      if (state == SlotState::Tile)
+      {
+        if (entry < 0 && entry != TiledField<D>::Remote)
+        {
+          if (this->Zone[static_cast<size_t>(s)] <= this->HeldDepth)
+          {
+            field.addTile(s); // at its side's +-gamma, as the owner's new tile
+          }
+          else
+          {
+            field.setRemote(s);
+          }
+        }
+        continue;
+      }
+      const bool inside = state == SlotState::Inside;
+      if (entry >= 0)
+      {
+        remove.resize(static_cast<size_t>(field.tileCount()), 0);
+        remove[static_cast<size_t>(entry)] = 1;
+        sides.emplace_back(s, inside);
+      }
+      else
+      {
+        field.setSide(s, inside);
+      }
+    }
+    if (!remove.empty())
+    {
+      remove.resize(static_cast<size_t>(field.tileCount()), 0);
+      field.removeTiles(remove);
+      forget(remove);
+      for (const auto& side : sides)
+      {
+        field.setSide(side.first, side.second);
+      }
+    }
+  }
+
+  /// Holds, as ghosts, exactly the other ranks' tiles within `depth` (<=
+  /// MaxGhostLayers) slots of this rank's slots: new ones are allocated (their
+  /// values come with the next exchange()), farther ones dropped.
+  template <class Forget>
+  void holdGhosts(TiledField<D>& field, int depth, Forget&& forget)
+  {
+    if (!this->distributed())
+    {
+      return;
+    }
+    this->HeldDepth = depth;
+    this->PlanValid = false;
+    std::vector<std::uint8_t> remove;
+    for (Index s = 0; s < field.slotCount(); ++s)
+    {
+      const std::int32_t entry = field.slot(s);
+      const bool near = this->Zone[static_cast<size_t>(s)] <= depth;
+      if (entry == TiledField<D>::Remote && near)
+      {
+        field.addTile(s);
+      }
+      else if (entry >= 0 && !near)
+      {
+        remove.resize(static_cast<size_t>(field.tileCount()), 0);
+        remove[static_cast<size_t>(entry)] = TiledField<D>::RemoveToRemote;
+      }
+    }
+    if (!remove.empty())
+    {
+      remove.resize(static_cast<size_t>(field.tileCount()), 0);
+      field.removeTiles(remove);
+      forget(remove);
+    }
+  }
+  int heldDepth() const { return this->HeldDepth; }
+
+  /// The ghosts' phi (and d with `withDistance`) from their owners: one
+  /// all-to-all. Collective.
+  void exchange(TiledField<D>& field, bool withDistance)
+  {
+    if (!this->distributed())
+    {
+      return;
+    }
+    this->plan(field);
+    const size_t values = static_cast<size_t>(TiledField<D>::Nodes) * (withDistance ? 2 : 1);
+    const size_t tileBytes = sizeof(std::int64_t) + values * sizeof(double);
+    const int ranks = this->Comm->size();
+    std::vector<std::int64_t> counts(static_cast<size_t>(ranks), 0);
+    size_t total = 0;
+    for (int r = 0; r < ranks; ++r)
+    {
+      counts[static_cast<size_t>(r)] =
+        static_cast<std::int64_t>(this->Sends[static_cast<size_t>(r)].size() * tileBytes);
+      total += this->Sends[static_cast<size_t>(r)].size();
+    }
+    this->Buffer.resize(total * tileBytes);
+    unsigned char* out = this->Buffer.data();
+    for (int r = 0; r < ranks; ++r)
+    {
+      for (std::int32_t id : this->Sends[static_cast<size_t>(r)])
+      {
+        out = this->pack(field, id, withDistance, out);
+      }
+    }
+    std::vector<std::int64_t> received;
+    this->Comm->allToAllV(this->Buffer.data(), counts, this->Incoming, received);
+    const unsigned char* in = this->Incoming.data();
+    for (int r = 0; r < ranks; ++r)
+    {
+      const auto& ghosts = this->Receives[static_cast<size_t>(r)];
+      if (received[static_cast<size_t>(r)] != static_cast<std::int64_t>(ghosts.size() * tileBytes))
+      {
+        this->fail("rank " + std::to_string(r) + " sent " + std::to_string(received[static_cast<size_t>(r)]) +
+          " bytes of ghost tiles where " + std::to_string(ghosts.size() * tileBytes) + " were expected");
+        return;
+      }
+      for (std::int32_t id : ghosts)
+      {
+        in = this->unpack(field, id, withDistance, in);
+      }
+    }
+  }
+
+  /// Gives each of this rank's tiles to its owner in `owners` (the other
+  /// ranks' tiles sent here are added, replacing a ghost copy), then makes
+  /// `owners` the partition and holds the ghosts again. Collective.
+  template <class Forget>
+  void migrate(TiledField<D>& field, std::vector<std::int32_t> owners, Forget&& forget)
+  {
+    if (!this->distributed())
+    {
+      return;
+    }
+    const int ranks = this->Comm->size();
+    const size_t tileBytes = sizeof(std::int64_t) + 2 * static_cast<size_t>(TiledField<D>::Nodes) * sizeof(double);
+    std::vector<std::vector<std::int32_t>> leaving(static_cast<size_t>(ranks));
+    std::vector<std::uint8_t> remove(static_cast<size_t>(field.tileCount()), 0);
+    field.forEachTileInSlotOrder(
+      [&](std::int32_t id)
+      {
+        const Index s = field.tileSlot(id);
+        const int to = owners[static_cast<size_t>(s)];
+        if (this->ownsSlot(s) && to != this->rank())
+        {
+          leaving[static_cast<size_t>(to)].push_back(id);
+          remove[static_cast<size_t>(id)] = TiledField<D>::RemoveToRemote;
+        }
+      });
+    std::vector<std::int64_t> counts(static_cast<size_t>(ranks), 0);
+    std::vector<unsigned char> send;
+    for (int r = 0; r < ranks; ++r)
+    {
+      counts[static_cast<size_t>(r)] = static_cast<std::int64_t>(leaving[static_cast<size_t>(r)].size() * tileBytes);
+      const size_t at = send.size();
+      send.resize(at + leaving[static_cast<size_t>(r)].size() * tileBytes);
+      unsigned char* out = send.data() + at;
+      for (std::int32_t id : leaving[static_cast<size_t>(r)])
+      {
+        out = this->pack(field, id, true, out);
+      }
+    }
+    std::vector<unsigned char> incoming;
+    std::vector<std::int64_t> received;
+    this->Comm->allToAllV(send.data(), counts, incoming, received);
+    send = std::vector<unsigned char>{};
+    field.removeTiles(remove);
+    forget(remove);
+    for (size_t at = 0; at + tileBytes <= incoming.size(); at += tileBytes)
+    {
+      std::int64_t slot = 0;
+      std::memcpy(&slot, incoming.data() + at, sizeof(slot));
+      const std::int32_t id = field.slot(slot) >= 0 ? field.slot(slot) : field.addTile(slot);
+      this->unpack(field, id, true, incoming.data() + at);
+    }
+    this->setOwners(field, std::move(owners));
+    this->holdGhosts(field, this->HeldDepth, forget);
+  }
+
+  /// The sums over every rank's `items` (key, N values) added in the order of
+  /// the keys, starting from `start`: on one rank, the items in their order
+  /// (the callers' are in key order). Collective.
+  template <size_t N>
+  std::array<double, N> orderedSum(std::vector<KeyedSums<N>> items, std::array<double, N> start) const
+  {
+    if (this->distributed())
+    {
+      items = this->Comm->allGatherV(items);
+      std::stable_sort(items.begin(), items.end(), [](const auto& x, const auto& y) { return x.Key < y.Key; });
+    }
+    for (const auto& item : items)
+    {
+      for (size_t k = 0; k < N; ++k)
+      {
+        start[k] += item.Values[k];
+      }
+    }
+    return start;
+  }
+
+  double max(double value) const { return this->distributed() ? this->Comm->allReduce(value, ReduceOp::Max) : value; }
+
+  /// Bytes of ghost values this rank received at its last exchange.
+  double lastExchangeBytes() const { return static_cast<double>(this->Incoming.size()); }
+
+private:
+  /// Who sends what: this rank's tiles to each rank within the held depth of
+  /// its slots, and its ghosts by owner, both in slot order.
+  void plan(const TiledField<D>& field)
+  {
+    if (this->PlanValid)
+    {
+      return;
+    }
+    const int ranks = this->Comm->size();
+    this->Sends.assign(static_cast<size_t>(ranks), {});
+    this->Receives.assign(static_cast<size_t>(ranks), {});
+    std::vector<std::uint8_t> to(static_cast<size_t>(ranks), 0);
+    const auto& dims = field.slotDims();
+    field.forEachTileInSlotOrder(
+      [&](std::int32_t id)
+      {
+        const Index s = field.tileSlot(id);
+        if (!this->ownsSlot(s))
+        {
+          this->Receives[static_cast<size_t>(this->Owners[static_cast<size_t>(s)])].push_back(id);
+          return;
+        }
+        std::fill(to.begin(), to.end(), 0);
+        const auto& t = field.tileOrigin(id);
+        std::array<Index, D> lo{}, hi{};
+        for (int a = 0; a < D; ++a)
+        {
+          lo[a] = std::max<Index>(t[a] - this->HeldDepth, 0);
+          hi[a] = std::min<Index>(t[a] + this->HeldDepth, dims[a] - 1);
+        }
+        forEachIndexInBox<D>(lo, hi,
+          [&](const std::array<Index, D>& u)
+          { to[static_cast<size_t>(this->Owners[static_cast<size_t>(field.slotIndex(u))])] = 1; });
+        for (int r = 0; r < ranks; ++r)
+        {
+          if (to[static_cast<size_t>(r)] && r != this->rank())
+          {
+            this->Sends[static_cast<size_t>(r)].push_back(id);
+          }
+        }
+      });
+    this->PlanValid = true;
+  }
+
+  unsigned char* pack(const TiledField<D>& field, std::int32_t id, bool withDistance, unsigned char* out) const
+  {
+    const std::int64_t slot = field.tileSlot(id);
+    std::memcpy(out, &slot, sizeof(slot));
+    out += sizeof(slot);
+    const size_t bytes = static_cast<size_t>(TiledField<D>::Nodes) * sizeof(double);
+    std::memcpy(out, field.phi(id), bytes);
+    out += bytes;
+    if (withDistance)
+    {
+      std::memcpy(out, field.distance(id), bytes);
+      out += bytes;
+    }
+    return out;
+  }
+
+  const unsigned char* unpack(TiledField<D>& field, std::int32_t id, bool withDistance, const unsigned char* in)
+  {
+    std::int64_t slot = 0;
+    std::memcpy(&slot, in, sizeof(slot));
+    in += sizeof(slot);
+    if (slot != field.tileSlot(id))
+    {
+      this->fail("a ghost tile arrived for slot " + std::to_string(slot) + " where slot " +
+        std::to_string(field.tileSlot(id)) + " was expected");
+    }
+    const size_t bytes = static_cast<size_t>(TiledField<D>::Nodes) * sizeof(double);
+    std::memcpy(field.phi(id), in, bytes);
+    in += bytes;
+    if (withDistance)
+    {
+      std::memcpy(field.distance(id), in, bytes);
+      in += bytes;
+    }
+    return in;
+  }
+
+  void fail(const std::string& what)
+  {
+    if (this->Broken.isOk())
+    {
+      this->Broken =
+        Status::numericalFailure("the distributed tiled band lost its ghost plan (an internal error): " + what);
+    }
+  }
+
+  /// Blocks of the step (TiledReconstruction.cxx's BlockTiles) are never split.
+  static constexpr Index BlockEdge = 4;
+  const Communicator* Comm;
+  std::vector<std::int32_t> Owners;
+  std::vector<std::uint8_t> Zone; ///< per slot: distance to this rank's slots (capped)
+  int HeldDepth = 1;
+  bool PlanValid = false;
+  std::vector<std::vector<std::int32_t>> Sends, Receives;
+  std::vector<unsigned char> Buffer, Incoming;
+  Status Broken = Status::ok();
+};
+
+} // namespace sltk
