@@ -191,8 +191,9 @@ T* portZeroAs(vtkSLLevelSetReconstruct* self, vtkDataObject* output)
 /// (every stored node's distance to the cloud computed first), the surface
 /// contoured tile by tile, the run summary with the stored and the uniform
 /// node counts per run. Under MPI the ranks share the tiles out while they
-/// compute (Documentation/Octree.md, "Distributing the tiled band"); rank 0
-/// then gathers them and outputs the whole field, the other ranks nothing.
+/// compute (Documentation/Octree.md, "Distributing the tiled band"); each rank
+/// outputs its piece of the surface, and rank 0 the whole hyper tree grid (it
+/// gathers the tiles) and the history.
 int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionPlan<3>& plan,
   const sltk::Context& ctx, const sltk::Communicator& comm, vtkDataObject* output, vtkPolyData* surface,
   vtkTable* history)
@@ -211,12 +212,17 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
     return 0;
   }
   const std::int64_t bytesSent = counted.bytesSent(), collectives = counted.collectives();
-  sltk::gatherTiles(result, comm, 0);
   grid->Initialize();
   sltk::vtkbridge::communicationSummary(comm.size(), bytesSent, collectives, grid);
+  // Each rank contours its own blocks of tiles (its ghosts hold the nodes around them): the pieces join.
+  sltk::vtkbridge::tiledZeroLevelSet(result.Field, result.Box, surface, result.Owners, comm.rank());
+  if (self->GetGenerateAdaptiveGrid())
+  {
+    sltk::gatherTiles(result, comm, 0); // the trees are written whole by rank 0
+  }
   if (comm.rank() > 0)
   {
-    return 1; // rank 0 holds the whole field
+    return 1;
   }
   if (self->GetGenerateAdaptiveGrid())
   {
@@ -245,7 +251,6 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
   grid->GetFieldData()->AddArray(stored);
   grid->GetFieldData()->AddArray(uniform);
   sltk::vtkbridge::historyTable(result.Records.History, history);
-  sltk::vtkbridge::tiledZeroLevelSet(result.Field, result.Box, surface);
   return 1;
 }
 

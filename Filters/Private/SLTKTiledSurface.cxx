@@ -20,7 +20,8 @@ namespace sltk
 namespace vtkbridge
 {
 
-void tiledZeroLevelSet(const TiledField<3>& field, const UnitBox<3>& box, vtkPolyData* surface)
+void tiledZeroLevelSet(const TiledField<3>& field, const UnitBox<3>& box, vtkPolyData* surface,
+  const std::vector<std::int32_t>& owners, int rank)
 {
   const GridSpec<3> grid = box.toUser(field.grid());
   // The tiles' cells (lower corner in a tile) are contoured by blocks of
@@ -31,6 +32,10 @@ void tiledZeroLevelSet(const TiledField<3>& field, const UnitBox<3>& box, vtkPol
   std::vector<std::array<Index, 3>> blocks;
   for (std::int32_t id = 0; id < static_cast<std::int32_t>(field.tileCount()); ++id)
   {
+    if (!owners.empty() && owners[static_cast<size_t>(field.tileSlot(id))] != rank)
+    {
+      continue; // a ghost: its owner contours it (a block has one owner, TiledReconstruction.h)
+    }
     std::array<Index, 3> first = field.tileOrigin(id);
     for (Index& t : first)
     {

@@ -14,6 +14,9 @@
 #include "sltk/recon/UnitBox.h"
 #include "sltk/tiled/TiledField.h"
 
+#include <cstdint>
+#include <vector>
+
 class vtkPolyData;
 
 namespace sltk
@@ -22,7 +25,11 @@ namespace vtkbridge
 {
 
 /// The zero level set of `field` in the user's units (`box`), with normals.
-void tiledZeroLevelSet(const TiledField<3>& field, const UnitBox<3>& box, vtkPolyData* surface);
+/// With `owners` (a distributed field's, per slot: TiledReconstructionResult)
+/// only the blocks `rank` owns: this rank's piece, which joins the others'
+/// at their shared points.
+void tiledZeroLevelSet(const TiledField<3>& field, const UnitBox<3>& box, vtkPolyData* surface,
+  const std::vector<std::int32_t>& owners = {}, int rank = 0);
 
 } // namespace vtkbridge
 } // namespace sltk

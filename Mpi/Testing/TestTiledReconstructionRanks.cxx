@@ -29,9 +29,15 @@ bool near(double x, double y, double tolerance, double scale)
 
 constexpr double Tolerance = 1e-10;
 
-/// Returns the most ghost layers a step of the distributed runs read.
+/// What a distributed run did on this rank.
+struct RankRun
+{
+  int GhostLayers = 0;      ///< the most ghost layers a step read
+  sltk::Index OwnTiles = 0; ///< the last run's tiles this rank owns
+};
+
 template <int D>
-int expectSameAsOneRank(const sltk::PointCloud<D>& cloud, const sltk::ReconstructionOptions& options)
+RankRun expectSameAsOneRank(const sltk::PointCloud<D>& cloud, const sltk::ReconstructionOptions& options)
 {
   auto comm = world();
   sltk::ReconstructionPlan<D> plan;
@@ -45,7 +51,7 @@ int expectSameAsOneRank(const sltk::PointCloud<D>& cloud, const sltk::Reconstruc
     mine.Storage.size() != one.Storage.size() || mine.Field.slotCount() != one.Field.slotCount())
   {
     ADD_FAILURE() << "the runs differ";
-    return 0;
+    return {};
   }
   for (size_t k = 0; k < one.Records.History.size(); ++k)
   {
@@ -115,7 +121,7 @@ int expectSameAsOneRank(const sltk::PointCloud<D>& cloud, const sltk::Reconstruc
     }
     EXPECT_EQ(gathered, 0) << "slots or nodes of the gathered field unlike the one-rank field";
   }
-  return layers;
+  return { layers, own };
 }
 
 } // namespace
@@ -137,10 +143,25 @@ TEST(TiledReconstructionRanks, FeetBeyondOneTileReadDeeperGhostLayers)
   // eta = 6 spreads the feet of runs 2 and 3 (4.9) beyond one tile of 8 nodes (p = 1: a stable run).
   sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
   options.Schedule = { { 1.0, 0.0 }, { 1.0, 6.0 }, { 1.0, 6.0 } };
-  const int layers = expectSameAsOneRank<2>(sltk::circleCloud(200), options);
+  const RankRun run = expectSameAsOneRank<2>(sltk::circleCloud(200), options);
   if (world()->size() > 1)
   {
-    EXPECT_GT(layers, 1) << "the test should make feet reach beyond one ghost layer";
+    EXPECT_GT(run.GhostLayers, 1) << "the test should make feet reach beyond one ghost layer";
+  }
+}
+
+TEST(TiledReconstructionRanks, ARankWithoutTilesTakesPartInEveryCollective)
+{
+  // Run 2's grid (29 x 29 nodes) has 4 x 4 slots, one block of the partition: one rank owns every tile.
+  sltk::ReconstructionOptions options;
+  options.Runs = 2;
+  options.CellSizeFactor = 2.0;
+  const RankRun run = expectSameAsOneRank<2>(sltk::circleCloud(24), options);
+  const auto comm = world();
+  const std::int64_t without = comm->allReduce(std::int64_t(run.OwnTiles == 0 ? 1 : 0), sltk::ReduceOp::Sum);
+  if (comm->size() > 1)
+  {
+    EXPECT_EQ(without, comm->size() - 1) << "the test should leave a rank without tiles";
   }
 }
 

@@ -5,7 +5,10 @@
 # on a 700M-node grid (measured: Documentation/Octree.md). Each case runs once under /usr/bin/time -v and prints
 # its run table, the surface's pieces and Euler characteristic, the wall time
 # and the peak RSS. Without ../shared the script has nothing to measure.
-#   bench/tiled/large-clouds.sh BUILD_DIR [dragon|scans|scans-thin2.5 ...]
+# RANKS=N runs each case on N MPI ranks of one thread (the tiles shared out,
+# Documentation/Octree.md "Distributing the tiled band") and prints every
+# rank's peak RSS and their sum.
+#   [RANKS=N] bench/tiled/large-clouds.sh BUILD_DIR [dragon|scans|scans-thin2.5 ...]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=$1
@@ -30,8 +33,21 @@ for name in "${cases[@]}"; do
     *) echo "unknown case $name (dragon, scans, scans-thin2.5)" >&2; exit 2 ;;
   esac
   echo "== $name"
-  /usr/bin/time -v -o "$out/$name.time" "$build/bin/sltk" reconstruct "${args[@]}" --octree \
-    --surface "$out/$name.vtp" --json "$out/$name.json" --quiet
-  grep -E "Elapsed|Maximum resident" "$out/$name.time"
+  if [ "${RANKS:-1}" -gt 1 ]; then
+    start=$(date +%s.%N)
+    OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun --oversubscribe -np "$RANKS" \
+      "$here/../mpi/rank-rss.sh" "$out/$name.time" "$build/bin/sltk" reconstruct "${args[@]}" --octree --threads 1 \
+      --surface "$out/$name.vtp" --json "$out/$name.json" --quiet
+    python3 - "$out/$name.time" "$start" <<'PY'
+import glob, re, sys, time
+peaks = [int(re.search(r"Maximum resident set size \(kbytes\): (\d+)", open(f).read()).group(1))
+         for f in sorted(glob.glob(sys.argv[1] + ".*"))]
+print(f"wall {time.time() - float(sys.argv[2]):.1f} s; peak RSS per rank {peaks} kB, sum {sum(peaks)} kB")
+PY
+  else
+    /usr/bin/time -v -o "$out/$name.time" "$build/bin/sltk" reconstruct "${args[@]}" --octree \
+      --surface "$out/$name.vtp" --json "$out/$name.json" --quiet
+    grep -E "Elapsed|Maximum resident" "$out/$name.time"
+  fi
 done
 rm -rf "$out"

@@ -290,6 +290,65 @@ public:
     }
   }
 
+  /// The ghosts' phi at the face layers next to this rank's slots only, all a
+  /// pseudo-time step of the reinitialisation reads of them (its axis
+  /// neighbours, TiledReinitialise.h): 1/8 of a tile a face. Collective.
+  void exchangeFaces(TiledField<D>& field)
+  {
+    if (!this->distributed())
+    {
+      return;
+    }
+    this->plan(field);
+    const int ranks = this->Comm->size();
+    std::vector<std::int64_t> counts(static_cast<size_t>(ranks), 0);
+    size_t total = 0;
+    for (int r = 0; r < ranks; ++r)
+    {
+      const size_t at = total;
+      for (std::uint8_t faces : this->SendFaces[static_cast<size_t>(r)])
+      {
+        forEachFaceNode(faces, [&](Index) { ++total; });
+      }
+      counts[static_cast<size_t>(r)] = static_cast<std::int64_t>((total - at) * sizeof(double));
+    }
+    this->Buffer.resize(total * sizeof(double));
+    auto* out = reinterpret_cast<double*>(this->Buffer.data());
+    for (int r = 0; r < ranks; ++r)
+    {
+      const auto& tiles = this->Sends[static_cast<size_t>(r)];
+      for (size_t j = 0; j < tiles.size(); ++j)
+      {
+        const double* p = field.phi(tiles[j]);
+        forEachFaceNode(this->SendFaces[static_cast<size_t>(r)][j], [&](Index k) { *out++ = p[k]; });
+      }
+    }
+    std::vector<std::int64_t> received;
+    this->Comm->allToAllV(this->Buffer.data(), counts, this->Incoming, received);
+    const auto* in = reinterpret_cast<const double*>(this->Incoming.data());
+    const double* end = in + this->Incoming.size() / sizeof(double);
+    for (int r = 0; r < ranks; ++r)
+    {
+      const auto& ghosts = this->Receives[static_cast<size_t>(r)];
+      for (size_t j = 0; j < ghosts.size(); ++j)
+      {
+        double* p = field.phi(ghosts[j]);
+        forEachFaceNode(this->ReceiveFaces[static_cast<size_t>(r)][j],
+          [&](Index k)
+          {
+            if (in < end)
+            {
+              p[k] = *in++;
+            }
+          });
+      }
+    }
+    if (in != end)
+    {
+      this->fail("the ranks disagree on the face layers of their ghost tiles");
+    }
+  }
+
   /// Gives each of this rank's tiles to its owner in `owners` (the other
   /// ranks' tiles sent here are added, replacing a ghost copy), then makes
   /// `owners` the partition and holds the ghosts again. Collective.
@@ -383,6 +442,8 @@ private:
     const int ranks = this->Comm->size();
     this->Sends.assign(static_cast<size_t>(ranks), {});
     this->Receives.assign(static_cast<size_t>(ranks), {});
+    this->SendFaces.assign(static_cast<size_t>(ranks), {});
+    this->ReceiveFaces.assign(static_cast<size_t>(ranks), {});
     std::vector<std::uint8_t> to(static_cast<size_t>(ranks), 0);
     const auto& dims = field.slotDims();
     field.forEachTileInSlotOrder(
@@ -391,7 +452,9 @@ private:
         const Index s = field.tileSlot(id);
         if (!this->ownsSlot(s))
         {
-          this->Receives[static_cast<size_t>(this->Owners[static_cast<size_t>(s)])].push_back(id);
+          const int owner = this->Owners[static_cast<size_t>(s)];
+          this->Receives[static_cast<size_t>(owner)].push_back(id);
+          this->ReceiveFaces[static_cast<size_t>(owner)].push_back(this->facesToward(field, id, this->rank()));
           return;
         }
         std::fill(to.begin(), to.end(), 0);
@@ -410,10 +473,55 @@ private:
           if (to[static_cast<size_t>(r)] && r != this->rank())
           {
             this->Sends[static_cast<size_t>(r)].push_back(id);
+            this->SendFaces[static_cast<size_t>(r)].push_back(this->facesToward(field, id, r));
           }
         }
       });
     this->PlanValid = true;
+  }
+
+  /// Bit 2 a + side of the faces of tile `id` whose neighbouring slot (axis
+  /// a, lower side 0, upper 1) `rank` owns.
+  std::uint8_t facesToward(const TiledField<D>& field, std::int32_t id, int rank) const
+  {
+    std::uint8_t faces = 0;
+    for (int a = 0; a < D; ++a)
+    {
+      for (int side = 0; side < 2; ++side)
+      {
+        std::array<Index, D> t = field.tileOrigin(id);
+        t[a] += side ? 1 : -1;
+        if (t[a] >= 0 && t[a] < field.slotDims()[a] && this->Owners[static_cast<size_t>(field.slotIndex(t))] == rank)
+        {
+          faces = static_cast<std::uint8_t>(faces | (1u << (2 * a + side)));
+        }
+      }
+    }
+    return faces;
+  }
+
+  /// Calls f(local node) for the nodes of the face layers `faces` of a tile
+  /// (facesToward), face after face.
+  template <class F>
+  static void forEachFaceNode(std::uint8_t faces, F&& f)
+  {
+    constexpr Index Layer = TiledField<D>::Nodes / TileEdge;
+    for (int face = 0; face < 2 * D; ++face)
+    {
+      if (!(faces >> face & 1u))
+      {
+        continue;
+      }
+      const int a = face / 2;
+      const Index c = face % 2 ? TileEdge - 1 : 0;
+      for (Index n = 0; n < Layer; ++n)
+      {
+        // n spreads over the other axes' bits; axis a's coordinate is c.
+        const Index low = n & ((Index(1) << (TileBits * a)) - 1);
+        const Index high = (n >> (TileBits * a)) << (TileBits * (a + 1));
+        f(high | (c << (TileBits * a)) | low);
+      }
+    }
   }
 
   unsigned char* pack(const TiledField<D>& field, std::int32_t id, bool withDistance, unsigned char* out) const
@@ -470,6 +578,7 @@ private:
   int HeldDepth = 1;
   bool PlanValid = false;
   std::vector<std::vector<std::int32_t>> Sends, Receives;
+  std::vector<std::vector<std::uint8_t>> SendFaces, ReceiveFaces; ///< per tile of Sends / Receives: facesToward
   std::vector<unsigned char> Buffer, Incoming;
   Status Broken = Status::ok();
 };

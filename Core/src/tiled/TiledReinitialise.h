@@ -165,7 +165,7 @@ public:
         field.phi(this->Nodes[n].Tile)[this->Nodes[n].Local] = this->Coefficient[n]; // the one step procedure
       }
     }
-    distribution.exchange(field, false);
+    distribution.exchangeFaces(field);       // the pseudo-time steps read the ghosts' faces only
     const double dtau = options.Courant * h; // (1.34)
     for (int iteration = 1; iteration <= options.MaxIterations; ++iteration)
     {
@@ -214,7 +214,7 @@ public:
             }
           }
         });
-      distribution.exchange(field, false);
+      distribution.exchangeFaces(field);
       if (!std::isfinite(change))
       {
         return Status::numericalFailure(
@@ -239,7 +239,7 @@ public:
       tiles.back().Values[0] += std::fabs(v - this->Before[n]);
       tiles.back().Values[1] += std::fabs(this->Before[n]);
     }
-    distribution.exchange(field, false);
+    distribution.exchange(field, false); // whole ghost tiles: the next iteration reads them all
     const std::array<double, 2> sums = distribution.orderedSum(std::move(tiles), std::array<double, 2>{});
     this->Change = sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
     return Status::ok();

@@ -57,7 +57,8 @@ struct TiledReconstructionResult
   TiledField<D> Field; ///< the last run's phi and d (near the band), unit-box units (4.5)
   UnitBox<D> Box;      ///< unit box <-> the user's units
   std::vector<TiledRunRecord> Storage;
-  /// Distributed: the rank that owns each slot of Field (empty on one rank).
+  /// Distributed: the rank that owns each slot of Field (empty on one rank);
+  /// the slots of a block of 4^D (aligned on multiples of 4) have one owner.
   /// Field then holds this rank's tiles and copies of the other ranks' tiles
   /// next to its slots (ghosts); every other tile's slot is Remote.
   std::vector<std::int32_t> Owners;
