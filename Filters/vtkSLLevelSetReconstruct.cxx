@@ -213,7 +213,6 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
   }
   const std::int64_t bytesSent = counted.bytesSent(), collectives = counted.collectives();
   grid->Initialize();
-  sltk::vtkbridge::communicationSummary(comm.size(), bytesSent, collectives, grid);
   // Each rank contours its own blocks of tiles (its ghosts hold the nodes around them): the pieces join.
   sltk::vtkbridge::tiledZeroLevelSet(result.Field, result.Box, surface, result.Owners, comm.rank());
   if (self->GetGenerateAdaptiveGrid())
@@ -222,6 +221,7 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
   }
   if (comm.rank() > 0)
   {
+    sltk::vtkbridge::communicationSummary(comm.size(), bytesSent, collectives, grid);
     return 1;
   }
   if (self->GetGenerateAdaptiveGrid())
@@ -230,8 +230,9 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
     const sltk::PointLocator<3>& locator = *plan.Locator;
     sltk::vtkbridge::tiledToHyperTreeGrid(
       result.Field, result.Box, [&locator](const std::array<double, 3>& x) { return locator.nearest(x).Distance; },
-      grid);
+      grid); // Initialize()s the grid: its field data after it
   }
+  sltk::vtkbridge::communicationSummary(comm.size(), bytesSent, collectives, grid);
   sltk::vtkbridge::runSummary(result.Records, grid);
   vtkNew<vtkDoubleArray> stored, uniform;
   stored->SetName("RunStoredNodes");

@@ -28,7 +28,7 @@ void tiledZeroLevelSet(const TiledField<3>& field, const UnitBox<3>& box, vtkPol
   // BlockTiles^3 tile positions, one image each (a pipeline per tile cost more
   // than the contour). Each image's extent is its block's within the global grid,
   // so a node shared by two blocks has bitwise the same coordinates in both.
-  constexpr Index BlockTiles = 4;
+  constexpr Index BlockTiles = TileBlockEdge; // the blocks a distributed band gives one owner
   std::vector<std::array<Index, 3>> blocks;
   for (std::int32_t id = 0; id < static_cast<std::int32_t>(field.tileCount()); ++id)
   {

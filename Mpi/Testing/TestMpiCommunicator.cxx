@@ -142,6 +142,28 @@ TEST(MpiCommunicator, SendsPersonalisedCountsToEveryRank)
   EXPECT_EQ(received, expected);
 }
 
+TEST(MpiCommunicator, ExchangesWithNeighboursOnly)
+{
+  auto comm = world();
+  const int r = comm->rank(), n = comm->size();
+  // A ring: 100 + r bytes (each r) to the next rank, an empty message to the one before (when
+  // distinct); the matching receives.
+  const int next = (r + 1) % n, before = (r + n - 1) % n;
+  std::vector<unsigned char> send(static_cast<size_t>(100 + r), static_cast<unsigned char>(r));
+  std::vector<unsigned char> fromBefore(static_cast<size_t>(100 + before), 255);
+  std::vector<sltk::Communicator::Outgoing> out = { { next, send.data(), send.size() } };
+  std::vector<sltk::Communicator::Incoming> in = { { before, fromBefore.data(), fromBefore.size() } };
+  unsigned char nothing = 0;
+  if (n > 2)
+  {
+    out.push_back({ before, &nothing, 0 });
+    in.push_back({ next, &nothing, 0 });
+  }
+  comm->neighbourExchange(out, in);
+  EXPECT_EQ(
+    fromBefore, std::vector<unsigned char>(static_cast<size_t>(100 + before), static_cast<unsigned char>(before)));
+}
+
 TEST(MpiCommunicator, AgreementOkWhenEveryRankIsOk)
 {
   auto comm = world();

@@ -221,3 +221,26 @@ TEST(TiledReconstructionRanks, RanksWithDifferentCloudsAreRefusedTogether)
   EXPECT_EQ(status.code(), sltk::StatusCode::InvalidArgument) << status.message();
   EXPECT_NE(status.message().find("different clouds"), std::string::npos) << status.message();
 }
+
+TEST(TiledReconstructionRanks, AFailureOnOneRankEndsEveryRankWithItsError)
+{
+  // The last rank alone has a memory budget too small for run 2's tiles (its check fails where
+  // the others' pass): every rank returns its error, none waits in a collective.
+  auto comm = world();
+  sltk::ReconstructionPlan<2> plan;
+  ASSERT_TRUE(
+    sltk::planReconstruction(sltk::circleCloud(64), sltk::ReconstructionOptions::thesis(), sltk::Context{}, plan)
+      .isOk());
+  if (comm->rank() == comm->size() - 1)
+  {
+    plan.Options.MemoryBudget = 4096;
+  }
+  sltk::TiledReconstructionResult<2> result;
+  const sltk::Status status = sltk::reconstructTiled(plan, sltk::Context{}, result, *comm);
+  EXPECT_EQ(status.code(), sltk::StatusCode::OutOfMemory) << status.message();
+  EXPECT_NE(status.message().find("run 2 of the tiled reconstruction needs"), std::string::npos) << status.message();
+  if (comm->size() > 1)
+  {
+    EXPECT_NE(status.message().find("rank " + std::to_string(comm->size() - 1)), std::string::npos) << status.message();
+  }
+}

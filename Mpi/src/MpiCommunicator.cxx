@@ -292,9 +292,49 @@ void MpiCommunicator::allToAllV(const void* send, const std::vector<std::int64_t
     for (int r = 0; r < ranks; ++r)
     {
       const size_t k = static_cast<size_t>(r);
-      std::copy_n(inRound.data() + receiveAt[k], receiveSizes[k], out.data() + receiveOffsets[k] + start);
+      if (receiveSizes[k] > 0)
+      {
+        std::copy_n(inRound.data() + receiveAt[k], receiveSizes[k], out.data() + receiveOffsets[k] + start);
+      }
     }
   }
+}
+
+void MpiCommunicator::neighbourExchange(const std::vector<Outgoing>& out, const std::vector<Incoming>& in) const
+{
+  // A message above an int count goes in chunks, each with its own tag (the
+  // chunk's number); an empty message is one empty chunk.
+  constexpr int Tag = 7700;
+  std::vector<MPI_Request> requests;
+  const auto post = [&](void* bytes, std::size_t count, int rank, bool receive)
+  {
+    auto* b = static_cast<unsigned char*>(bytes);
+    const std::size_t chunks = std::max<std::size_t>(1, (count + MaxChunk - 1) / MaxChunk);
+    for (std::size_t c = 0; c < chunks; ++c)
+    {
+      const std::size_t at = c * MaxChunk, n = std::min(MaxChunk, count - std::min(at, count));
+      requests.emplace_back();
+      if (receive)
+      {
+        MPI_Irecv(b + (n ? at : 0), static_cast<int>(n), MPI_BYTE, rank, Tag + static_cast<int>(c), this->P->Comm,
+          &requests.back());
+      }
+      else
+      {
+        MPI_Isend(b + (n ? at : 0), static_cast<int>(n), MPI_BYTE, rank, Tag + static_cast<int>(c), this->P->Comm,
+          &requests.back());
+      }
+    }
+  };
+  for (const Incoming& message : in)
+  {
+    post(message.Bytes, message.Count, message.Rank, true);
+  }
+  for (const Outgoing& message : out)
+  {
+    post(const_cast<void*>(message.Bytes), message.Count, message.Rank, false); // MPI_Isend reads only
+  }
+  MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
 }
 
 void* MpiCommunicator::nativeHandle() const

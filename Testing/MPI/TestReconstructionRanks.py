@@ -6,8 +6,9 @@ pieces join into one closed surface (ParaView's parallel Connectivity finds
 one region), with the whole convergence history; one execution serves the
 three ports; a filter that needs a ghost level (Gradient) gets one flagged
 row of the neighbour's. With AdaptiveStorage the ranks share the tiles out
-(the one-rank iterations) and rank 0 outputs the whole hyper tree grid and
-the one closed surface."""
+(the uniform grids' iterations: as many history rows), each rank contours
+its own tiles (one closed surface across the pieces) and rank 0 outputs the
+whole hyper tree grid."""
 import sys
 
 from paraview.simple import *  # noqa: F401,F403

@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bitset>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -70,12 +71,13 @@ public:
     }
     this->Owners = std::move(owners);
     this->Zone = distanceToRank<D>(field.slotDims(), this->Owners, this->rank(), MaxGhostLayers + 1);
+    this->HeldDepth = 1; // a new grid: one layer until a step asks for more
     this->PlanValid = false;
   }
   /// The owner of every slot when `weighted` (per slot) are the tiles to share out.
   std::vector<std::int32_t> balancedOwners(const TiledField<D>& field, const std::vector<std::uint8_t>& weighted) const
   {
-    return mortonOwners<D>(field.slotDims(), weighted, this->Comm->size(), BlockEdge);
+    return mortonOwners<D>(field.slotDims(), weighted, this->Comm->size(), TileBlockEdge);
   }
   /// The slots holding a tile on some rank (this rank's tiles, ghosts and Remote slots).
   static std::vector<std::uint8_t> tileSlots(const TiledField<D>& field)
@@ -243,7 +245,8 @@ public:
   int heldDepth() const { return this->HeldDepth; }
 
   /// The ghosts' phi (and d with `withDistance`) from their owners: one
-  /// all-to-all. Collective.
+  /// message to and from each neighbouring rank (Communicator::neighbourExchange).
+  /// Collective over the neighbours.
   void exchange(TiledField<D>& field, bool withDistance)
   {
     if (!this->distributed())
@@ -251,48 +254,17 @@ public:
       return;
     }
     this->plan(field);
-    const size_t values = static_cast<size_t>(TiledField<D>::Nodes) * (withDistance ? 2 : 1);
-    const size_t tileBytes = sizeof(std::int64_t) + values * sizeof(double);
-    const int ranks = this->Comm->size();
-    std::vector<std::int64_t> counts(static_cast<size_t>(ranks), 0);
-    size_t total = 0;
-    for (int r = 0; r < ranks; ++r)
-    {
-      counts[static_cast<size_t>(r)] =
-        static_cast<std::int64_t>(this->Sends[static_cast<size_t>(r)].size() * tileBytes);
-      total += this->Sends[static_cast<size_t>(r)].size();
-    }
-    this->Buffer.resize(total * tileBytes);
-    unsigned char* out = this->Buffer.data();
-    for (int r = 0; r < ranks; ++r)
-    {
-      for (std::int32_t id : this->Sends[static_cast<size_t>(r)])
-      {
-        out = this->pack(field, id, withDistance, out);
-      }
-    }
-    std::vector<std::int64_t> received;
-    this->Comm->allToAllV(this->Buffer.data(), counts, this->Incoming, received);
-    const unsigned char* in = this->Incoming.data();
-    for (int r = 0; r < ranks; ++r)
-    {
-      const auto& ghosts = this->Receives[static_cast<size_t>(r)];
-      if (received[static_cast<size_t>(r)] != static_cast<std::int64_t>(ghosts.size() * tileBytes))
-      {
-        this->fail("rank " + std::to_string(r) + " sent " + std::to_string(received[static_cast<size_t>(r)]) +
-          " bytes of ghost tiles where " + std::to_string(ghosts.size() * tileBytes) + " were expected");
-        return;
-      }
-      for (std::int32_t id : ghosts)
-      {
-        in = this->unpack(field, id, withDistance, in);
-      }
-    }
+    const size_t tileBytes =
+      sizeof(std::int64_t) + static_cast<size_t>(TiledField<D>::Nodes) * (withDistance ? 2 : 1) * sizeof(double);
+    this->exchangeWithNeighbours([&](std::uint8_t) { return tileBytes; },
+      [&](std::int32_t id, std::uint8_t, unsigned char* out) { this->pack(field, id, withDistance, out); },
+      [&](std::int32_t id, std::uint8_t, const unsigned char* in) { this->unpack(field, id, withDistance, in); });
   }
 
   /// The ghosts' phi at the face layers next to this rank's slots only, all a
   /// pseudo-time step of the reinitialisation reads of them (its axis
-  /// neighbours, TiledReinitialise.h): 1/8 of a tile a face. Collective.
+  /// neighbours, TiledReinitialise.h): 1/8 of a tile a face. Collective over
+  /// the neighbours.
   void exchangeFaces(TiledField<D>& field)
   {
     if (!this->distributed())
@@ -300,53 +272,20 @@ public:
       return;
     }
     this->plan(field);
-    const int ranks = this->Comm->size();
-    std::vector<std::int64_t> counts(static_cast<size_t>(ranks), 0);
-    size_t total = 0;
-    for (int r = 0; r < ranks; ++r)
-    {
-      const size_t at = total;
-      for (std::uint8_t faces : this->SendFaces[static_cast<size_t>(r)])
+    constexpr size_t FaceBytes = static_cast<size_t>(TiledField<D>::Nodes / TileEdge) * sizeof(double);
+    this->exchangeWithNeighbours([&](std::uint8_t faces) { return std::bitset<8>(faces).count() * FaceBytes; },
+      [&](std::int32_t id, std::uint8_t faces, unsigned char* out)
       {
-        forEachFaceNode(faces, [&](Index) { ++total; });
-      }
-      counts[static_cast<size_t>(r)] = static_cast<std::int64_t>((total - at) * sizeof(double));
-    }
-    this->Buffer.resize(total * sizeof(double));
-    auto* out = reinterpret_cast<double*>(this->Buffer.data());
-    for (int r = 0; r < ranks; ++r)
-    {
-      const auto& tiles = this->Sends[static_cast<size_t>(r)];
-      for (size_t j = 0; j < tiles.size(); ++j)
+        const double* p = field.phi(id);
+        auto* to = reinterpret_cast<double*>(out);
+        forEachFaceNode(faces, [&](Index k) { *to++ = p[k]; });
+      },
+      [&](std::int32_t id, std::uint8_t faces, const unsigned char* in)
       {
-        const double* p = field.phi(tiles[j]);
-        forEachFaceNode(this->SendFaces[static_cast<size_t>(r)][j], [&](Index k) { *out++ = p[k]; });
-      }
-    }
-    std::vector<std::int64_t> received;
-    this->Comm->allToAllV(this->Buffer.data(), counts, this->Incoming, received);
-    const auto* in = reinterpret_cast<const double*>(this->Incoming.data());
-    const double* end = in + this->Incoming.size() / sizeof(double);
-    for (int r = 0; r < ranks; ++r)
-    {
-      const auto& ghosts = this->Receives[static_cast<size_t>(r)];
-      for (size_t j = 0; j < ghosts.size(); ++j)
-      {
-        double* p = field.phi(ghosts[j]);
-        forEachFaceNode(this->ReceiveFaces[static_cast<size_t>(r)][j],
-          [&](Index k)
-          {
-            if (in < end)
-            {
-              p[k] = *in++;
-            }
-          });
-      }
-    }
-    if (in != end)
-    {
-      this->fail("the ranks disagree on the face layers of their ghost tiles");
-    }
+        double* p = field.phi(id);
+        const auto* from = reinterpret_cast<const double*>(in);
+        forEachFaceNode(faces, [&](Index k) { p[k] = *from++; });
+      });
   }
 
   /// Gives each of this rank's tiles to its owner in `owners` (the other
@@ -427,15 +366,12 @@ public:
 
   double max(double value) const { return this->distributed() ? this->Comm->allReduce(value, ReduceOp::Max) : value; }
 
-  /// Bytes of ghost values this rank received at its last exchange.
-  double lastExchangeBytes() const { return static_cast<double>(this->Incoming.size()); }
-
 private:
   /// Who sends what: this rank's tiles to each rank within the held depth of
   /// its slots, and its ghosts by owner, both in slot order.
   void plan(const TiledField<D>& field)
   {
-    if (this->PlanValid)
+    if (this->PlanValid && this->PlanGeneration == field.generation())
     {
       return;
     }
@@ -478,6 +414,63 @@ private:
         }
       });
     this->PlanValid = true;
+    this->PlanGeneration = field.generation();
+  }
+
+  /// One exchange with the ranks of the plan: `bytes(faces)` is the size of a
+  /// tile's part (`faces`: facesToward the receiver), `write(id, faces, out)`
+  /// packs a tile this rank sends, `read(id, faces, in)` unpacks a ghost. A
+  /// rank exchanges with every rank it shares tiles with, even when no byte
+  /// goes (both sides know the plan).
+  template <class Bytes, class Write, class Read>
+  void exchangeWithNeighbours(Bytes&& bytes, Write&& write, Read&& read)
+  {
+    const size_t ranks = static_cast<size_t>(this->Comm->size());
+    const auto offsets = [&](const std::vector<std::vector<std::uint8_t>>& faces)
+    {
+      std::vector<size_t> at(ranks + 1, 0);
+      for (size_t r = 0; r < ranks; ++r)
+      {
+        at[r + 1] = at[r];
+        for (std::uint8_t f : faces[r])
+        {
+          at[r + 1] += bytes(f);
+        }
+      }
+      return at;
+    };
+    const std::vector<size_t> sendAt = offsets(this->SendFaces), receiveAt = offsets(this->ReceiveFaces);
+    this->Buffer.resize(sendAt.back());
+    this->Received.resize(receiveAt.back());
+    std::vector<Communicator::Outgoing> out;
+    std::vector<Communicator::Incoming> in;
+    for (size_t r = 0; r < ranks; ++r)
+    {
+      size_t at = sendAt[r];
+      for (size_t j = 0; j < this->Sends[r].size(); ++j)
+      {
+        write(this->Sends[r][j], this->SendFaces[r][j], this->Buffer.data() + at);
+        at += bytes(this->SendFaces[r][j]);
+      }
+      if (!this->Sends[r].empty())
+      {
+        out.push_back({ static_cast<int>(r), this->Buffer.data() + sendAt[r], sendAt[r + 1] - sendAt[r] });
+      }
+      if (!this->Receives[r].empty())
+      {
+        in.push_back({ static_cast<int>(r), this->Received.data() + receiveAt[r], receiveAt[r + 1] - receiveAt[r] });
+      }
+    }
+    this->Comm->neighbourExchange(out, in);
+    for (size_t r = 0; r < ranks; ++r)
+    {
+      size_t at = receiveAt[r];
+      for (size_t j = 0; j < this->Receives[r].size(); ++j)
+      {
+        read(this->Receives[r][j], this->ReceiveFaces[r][j], this->Received.data() + at);
+        at += bytes(this->ReceiveFaces[r][j]);
+      }
+    }
   }
 
   /// Bit 2 a + side of the faces of tile `id` whose neighbouring slot (axis
@@ -570,16 +563,15 @@ private:
     }
   }
 
-  /// Blocks of the step (TiledReconstruction.cxx's BlockTiles) are never split.
-  static constexpr Index BlockEdge = 4;
   const Communicator* Comm;
   std::vector<std::int32_t> Owners;
   std::vector<std::uint8_t> Zone; ///< per slot: distance to this rank's slots (capped)
   int HeldDepth = 1;
-  bool PlanValid = false;
+  bool PlanValid = false;           ///< false when the owners or the held depth changed
+  std::uint64_t PlanGeneration = 0; ///< the field's tiles the plan was made for (TiledField::generation)
   std::vector<std::vector<std::int32_t>> Sends, Receives;
   std::vector<std::vector<std::uint8_t>> SendFaces, ReceiveFaces; ///< per tile of Sends / Receives: facesToward
-  std::vector<unsigned char> Buffer, Incoming;
+  std::vector<unsigned char> Buffer, Received;
   Status Broken = Status::ok();
 };
 

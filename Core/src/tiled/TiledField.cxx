@@ -22,6 +22,7 @@ void TiledField<D>::reset(const GridSpec<D>& grid, double gamma)
     slots *= this->SlotDims[a];
   }
   this->Slots.assign(static_cast<size_t>(slots), Outside);
+  ++this->Generation;
   this->Origins.clear();
   this->SlotOf.clear();
   this->Chunks.clear();
@@ -48,6 +49,7 @@ std::int32_t TiledField<D>::addTile(Index s)
     return entry;
   }
   const double fill = entry == Inside ? -this->Gamma : this->Gamma;
+  ++this->Generation;
   const std::int32_t id = static_cast<std::int32_t>(this->Origins.size());
   this->Origins.push_back(this->slotCoordinates(s));
   this->SlotOf.push_back(s);
@@ -65,6 +67,7 @@ template <int D>
 void TiledField<D>::removeTiles(const std::vector<std::uint8_t>& remove)
 {
   std::int32_t kept = 0;
+  ++this->Generation;
   for (std::int32_t id = 0; id < this->tileCount(); ++id)
   {
     const Index s = this->SlotOf[static_cast<size_t>(id)];

@@ -26,11 +26,11 @@ namespace sltk
 
 namespace
 {
-constexpr int Ghost = 2;        ///< ghost layers of the scratch fields (WENO3 / CWENO stencils)
-constexpr int StencilReach = 2; ///< nodes beyond a foot's cell the interpolators read
-constexpr int HaloStep = 4;     ///< the step's halo is a multiple of this (fewer scratch shapes)
-constexpr int MaxHalo = 32;     ///< the farthest the step reads around a tile
-constexpr Index BlockTiles = 4; ///< the step copies blocks of 4^D tile positions (32^D nodes) at once
+constexpr int Ghost = 2;                    ///< ghost layers of the scratch fields (WENO3 / CWENO stencils)
+constexpr int StencilReach = 2;             ///< nodes beyond a foot's cell the interpolators read
+constexpr int HaloStep = 4;                 ///< the step's halo is a multiple of this (fewer scratch shapes)
+constexpr int MaxHalo = 32;                 ///< the farthest the step reads around a tile
+constexpr Index BlockTiles = TileBlockEdge; ///< the step copies blocks of 4^D tile positions (32^D nodes) at once
 static_assert(MaxHalo <= MaxGhostLayers * TileEdge, "the ghost layers cover the step's farthest read");
 
 using Clock = std::chrono::steady_clock;
@@ -153,22 +153,39 @@ std::array<Index, D> nearestNode(const GridSpec<D>& g, const std::array<double, 
   return i;
 }
 
-/// The memory of `tiles` more tiles, refused when it does not fit.
+/// The memory of `tiles` more tiles, refused when it does not fit; distributed,
+/// every rank on this machine (ReconstructionOptions::RanksHere) is taken to
+/// hold as much as this one.
 template <int D>
 Status checkTileMemory(const TiledField<D>& field, Index tiles, const ReconstructionOptions& options, int run)
 {
-  const double need = field.bytes() + static_cast<double>(tiles) * TiledField<D>::Nodes * 2.0 * sizeof(double);
+  const int here = std::max(1, options.RanksHere);
+  const double need = here * (field.bytes() + static_cast<double>(tiles) * TiledField<D>::Nodes * 2.0 * sizeof(double));
   const double available = static_cast<double>(options.MemoryBudget ? options.MemoryBudget : availableMemoryBytes());
   if (available > 0.0 && need > available)
   {
     std::ostringstream m;
     m.precision(3);
     m << "run " << run << " of the tiled reconstruction needs " << need / 1048576.0 << " MB for "
-      << field.tileCount() + tiles << " tiles, more than the " << available / 1048576.0
-      << " MB available: use fewer runs or a larger C_dx";
+      << field.tileCount() + tiles << " tiles"
+      << (here > 1 ? " a rank on each of the " + std::to_string(here) + " ranks of this machine" : "")
+      << ", more than the " << available / 1048576.0 << " MB available: use fewer runs, a larger C_dx"
+      << (here > 1 ? " or the ranks on more machines" : "");
     return Status::outOfMemory(m.str());
   }
   return Status::ok();
+}
+
+/// The centre of the nodes of the slot at tile coordinates t.
+template <int D>
+std::array<double, D> slotCentre(const GridSpec<D>& grid, const std::array<Index, D>& t)
+{
+  std::array<double, D> x{};
+  for (int a = 0; a < D; ++a)
+  {
+    x[a] = grid.Origin[a] + (static_cast<double>(t[a] * TileEdge) + 0.5 * (TileEdge - 1)) * grid.Spacing[a];
+  }
+  return x;
 }
 
 /// Does nothing with the per-tile state of removed tiles (no state yet).
@@ -192,12 +209,11 @@ std::vector<std::int32_t> transferOwners(const PreviousLevelSet<D>& previous, co
   std::vector<std::int32_t> owners(static_cast<size_t>(field.slotCount()));
   for (Index s = 0; s < field.slotCount(); ++s)
   {
-    const auto t = field.slotCoordinates(s);
+    const std::array<double, D> x = slotCentre<D>(grid, field.slotCoordinates(s));
     std::array<Index, D> p{};
     for (int a = 0; a < D; ++a)
     {
-      const double x = grid.Origin[a] + (static_cast<double>(t[a] * TileEdge) + 0.5 * (TileEdge - 1)) * grid.Spacing[a];
-      const Index node = static_cast<Index>(std::floor((x - before.grid().Origin[a]) / before.grid().Spacing[a]));
+      const Index node = static_cast<Index>(std::floor((x[a] - before.grid().Origin[a]) / before.grid().Spacing[a]));
       p[a] = std::min(std::max<Index>(node >> TileBits, 0), before.slotDims()[a] - 1);
     }
     owners[static_cast<size_t>(s)] = distribution.ownerOf(before.slotIndex(p));
@@ -262,13 +278,7 @@ Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma
       {
         if (!marked[static_cast<size_t>(s)] && distribution.ownsSlot(s))
         {
-          const auto t = field.slotCoordinates(s);
-          std::array<double, D> x{};
-          for (int a = 0; a < D; ++a)
-          {
-            x[a] = grid.Origin[a] + (static_cast<double>(t[a] * TileEdge) + 0.5 * (TileEdge - 1)) * grid.Spacing[a];
-          }
-          field.setSide(s, previous.at(x) < 0.0);
+          field.setSide(s, previous.at(slotCentre<D>(grid, field.slotCoordinates(s))) < 0.0);
         }
       }
     });
@@ -668,8 +678,10 @@ int stepGhostLayers(const TiledField<D>& field, const std::vector<std::int32_t>&
       }
     },
     1);
-  const double foot = feet.empty() ? 0.0 : *std::max_element(feet.begin(), feet.end());
-  const Index need = static_cast<Index>(std::ceil(distribution.max(foot) / field.grid().Spacing[0])) + StencilReach;
+  const double foot = distribution.max(feet.empty() ? 0.0 : *std::max_element(feet.begin(), feet.end()));
+  // A non-finite or farther foot asks the most layers; tiledStep then refuses it.
+  const double reach = std::min(foot / field.grid().Spacing[0], static_cast<double>(MaxHalo));
+  const Index need = static_cast<Index>(std::ceil(std::isfinite(reach) ? reach : MaxHalo)) + StencilReach;
   return static_cast<int>(std::min<Index>(std::max<Index>((need + TileEdge - 1) / TileEdge, 1), MaxGhostLayers));
 }
 
@@ -982,20 +994,22 @@ Status iterateTiled(const ReconstructionPlan<D>& plan, int run, const Context& c
       nextFarCheck = n + options.EnergyWindow;
     }
     step.Energy = ep.Energy;
-    if (distribution.distributed())
-    {
-      const int layers = stepGhostLayers(field, ownBand, step, ctx, distribution);
-      storage.GhostLayers = std::max(storage.GhostLayers, layers);
-      if (layers > distribution.heldDepth())
-      {
-        // New ghost tiles come after the others: the ids in band and ownBand stay.
-        distribution.holdGhosts(
-          field, layers, [&](const std::vector<std::uint8_t>& removed) { distances.removeTiles(removed); });
-        distribution.exchange(field, true);
-      }
-    }
     reinit.markBand(field, band, options.ReinitDilation, ctx, distribution); // the band before the step (1.53)
+    const auto forget = [&](const std::vector<std::uint8_t>& removed) { distances.removeTiles(removed); };
+    const int layers = distribution.distributed() ? stepGhostLayers(field, ownBand, step, ctx, distribution) : 0;
+    storage.GhostLayers = std::max(storage.GhostLayers, layers);
+    if (layers > 1) // shareBand held one layer
+    {
+      // The deeper ghosts come after every other tile and go after the step: the ids
+      // of band, ownBand and the reinitialisation's nodes stay.
+      distribution.holdGhosts(field, layers, forget);
+      distribution.exchange(field, true);
+    }
     SLTK_RETURN_IF_ERROR(distribution.agree(tiledStep<Interp, D>(field, ownBand, step, ctx, stepHalos)));
+    if (layers > 1)
+    {
+      distribution.holdGhosts(field, 1, forget);
+    }
     distribution.exchange(field, false);
     SLTK_RETURN_IF_ERROR(distribution.agree(reinit.run(field, options.Reinit, ctx, distribution)));
     IterationRecord it;

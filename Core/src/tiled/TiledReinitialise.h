@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace sltk
@@ -338,6 +339,10 @@ private:
     if (entry >= 0)
     {
       return field.phi(entry)[local];
+    }
+    if (entry == TiledField<D>::Remote)
+    {
+      return std::numeric_limits<double>::quiet_NaN(); // a ghost the exchange should have held
     }
     return entry == Self ? self : (entry == TiledField<D>::Inside ? -field.gamma() : field.gamma());
   }

@@ -69,6 +69,29 @@ public:
   virtual void allToAllV(const void* send, const std::vector<std::int64_t>& sendCounts, std::vector<unsigned char>& out,
     std::vector<std::int64_t>& receiveCounts) const = 0;
 
+  /// A message of a neighbour exchange: `count` bytes to or from rank `rank`.
+  struct Outgoing
+  {
+    int Rank;
+    const void* Bytes;
+    std::size_t Count;
+  };
+  struct Incoming
+  {
+    int Rank;
+    void* Bytes;
+    std::size_t Count;
+  };
+  /// Sparse point-to-point exchange: every message of `out` goes to its rank,
+  /// every message of `in` (its size known to the receiver) comes from its
+  /// rank, at once (no order between them, no deadlock). The ranks must list
+  /// matching pairs: a message from r to q in r's `out`, with the same count
+  /// in q's `in`, in the same order per pair. Only the ranks that exchange
+  /// wait for each other: the cost grows with the neighbours, not with size()
+  /// (the ghost exchanges of sltk/tiled, TileDistribution.h). Serial: rank 0
+  /// to itself, a copy.
+  virtual void neighbourExchange(const std::vector<Outgoing>& out, const std::vector<Incoming>& in) const = 0;
+
   /// Sends `sendBytes` bytes to rank `destination` and receives `receiveBytes`
   /// bytes from rank `source` at once (no deadlock when neighbours exchange in
   /// both directions); -1 as a rank skips that half. The halo exchange of a

@@ -2,9 +2,10 @@
 #pragma once
 /// \file CountingCommunicator.h
 /// A communicator that forwards every call to another and counts this rank's
-/// traffic: the bytes it sends point to point (the halo exchanges of the slab
-/// decompositions, grid/SlabExchange.h) and the collective calls it makes
-/// (reductions, agreements, gathers). The distributed solvers report these
+/// traffic: the bytes it sends to other ranks (the halo exchanges of the slab
+/// decompositions, grid/SlabExchange.h; the ghost tiles and migrations of the
+/// tiled band, all-to-all or to neighbours) and the collective calls it makes
+/// (reductions, agreements, gathers; a neighbour exchange counts as none). The distributed solvers report these
 /// (Documentation/Distributed.md, "Communication volume") so that a scaling
 /// model rests on measured volumes, not estimates.
 
@@ -68,6 +69,14 @@ public:
       this->Sent += static_cast<int>(r) == this->rank() ? 0 : sendCounts[r];
     }
     this->Inner->allToAllV(send, sendCounts, out, receiveCounts);
+  }
+  void neighbourExchange(const std::vector<Outgoing>& out, const std::vector<Incoming>& in) const override
+  {
+    for (const Outgoing& message : out)
+    {
+      this->Sent += message.Rank == this->rank() ? 0 : static_cast<std::int64_t>(message.Count);
+    }
+    this->Inner->neighbourExchange(out, in);
   }
   void sendReceive(const void* send, std::size_t sendBytes, int destination, void* receive, std::size_t receiveBytes,
     int source) const override

@@ -27,6 +27,10 @@ namespace sltk
 
 constexpr int TileBits = 3;
 constexpr Index TileEdge = Index(1) << TileBits; ///< nodes per tile and axis
+/// Tile positions per axis of the blocks the level-set step copies at once,
+/// the surface is contoured by, and a distributed band never splits between
+/// ranks (aligned on multiples of it).
+constexpr Index TileBlockEdge = 4;
 
 template <int D>
 constexpr Index tileNodes()
@@ -59,6 +63,8 @@ public:
   const std::array<Index, D>& slotDims() const { return this->SlotDims; }
   Index slotCount() const { return static_cast<Index>(this->Slots.size()); }
   Index tileCount() const { return static_cast<Index>(this->Origins.size()); }
+  /// Changes whenever tiles are added or removed (their ids may have changed).
+  std::uint64_t generation() const { return this->Generation; }
 
   /// Slot of tile coordinates t (each in [0, slotDims)).
   Index slotIndex(const std::array<Index, D>& t) const
@@ -157,6 +163,7 @@ public:
 private:
   GridSpec<D> Grid;
   double Gamma = 0.0;
+  std::uint64_t Generation = 0;
   std::array<Index, D> SlotDims{};
   std::vector<std::int32_t> Slots;
   std::vector<std::array<Index, D>> Origins;

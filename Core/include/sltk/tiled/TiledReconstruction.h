@@ -42,7 +42,8 @@ struct TiledRunRecord
   Index UniformNodes = 0;   ///< the uniform grid of the run
   Index AddedTiles = 0;     ///< tiles added during the run (the band moved)
   Index FreedTiles = 0;     ///< tiles freed during the run (the band left them: PruneTiles.h)
-  Index PeakTiles = 0;      ///< the most tiles held at once during the run's iterations
+  Index PeakTiles = 0;      ///< the most tiles held at once during the run's iterations (distributed: the
+                            ///< sum of each rank's most, ghosts included)
   Index ExactDistances = 0; ///< nodes whose distance to the cloud was computed (TiledDistances)
   double Bytes = 0.0;       ///< the field's memory at the end of the run (this rank's)
   int GhostLayers = 0;      ///< distributed: the most layers of ghost tiles a step read (1 when the feet stay near)
