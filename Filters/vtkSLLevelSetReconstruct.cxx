@@ -192,8 +192,8 @@ T* portZeroAs(vtkSLLevelSetReconstruct* self, vtkDataObject* output)
 /// contoured tile by tile, the run summary with the stored and the uniform
 /// node counts per run. Under MPI the ranks share the tiles out while they
 /// compute (Documentation/Octree.md, "Distributing the tiled band"); each rank
-/// outputs its piece of the surface, and rank 0 the whole hyper tree grid (it
-/// gathers the tiles) and the history.
+/// outputs its pieces of the hyper tree grid and of the surface, rank 0 also
+/// the history and the run summary.
 int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionPlan<3>& plan,
   const sltk::Context& ctx, const sltk::Communicator& comm, vtkDataObject* output, vtkPolyData* surface,
   vtkTable* history)
@@ -213,26 +213,22 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
   }
   const std::int64_t bytesSent = counted.bytesSent(), collectives = counted.collectives();
   grid->Initialize();
-  // Each rank contours its own blocks of tiles (its ghosts hold the nodes around them): the pieces join.
+  // Each rank outputs its own trees and contours its own blocks of tiles (its ghosts hold the
+  // nodes around them): the pieces join.
   sltk::vtkbridge::tiledZeroLevelSet(result.Field, result.Box, surface, result.Owners, comm.rank());
-  if (self->GetGenerateAdaptiveGrid())
-  {
-    sltk::gatherTiles(result, comm, 0); // the trees are written whole by rank 0
-  }
-  if (comm.rank() > 0)
-  {
-    sltk::vtkbridge::communicationSummary(comm.size(), bytesSent, collectives, grid);
-    return 1;
-  }
   if (self->GetGenerateAdaptiveGrid())
   {
     sltk::completeTiledDistances(plan, ctx, result.Field);
     const sltk::PointLocator<3>& locator = *plan.Locator;
     sltk::vtkbridge::tiledToHyperTreeGrid(
       result.Field, result.Box, [&locator](const std::array<double, 3>& x) { return locator.nearest(x).Distance; },
-      grid); // Initialize()s the grid: its field data after it
+      grid, result.Owners, comm.rank()); // Initialize()s the grid: its field data after it
   }
   sltk::vtkbridge::communicationSummary(comm.size(), bytesSent, collectives, grid);
+  if (comm.rank() > 0)
+  {
+    return 1; // the history and the run summary once, on rank 0
+  }
   sltk::vtkbridge::runSummary(result.Records, grid);
   vtkNew<vtkDoubleArray> stored, uniform;
   stored->SetName("RunStoredNodes");

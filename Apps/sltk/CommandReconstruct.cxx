@@ -142,33 +142,38 @@ std::string Reconstruct::problemBeforeWork(bool pieces, vtkPolyData* reference, 
   }
   const std::string paths =
     outputPathsProblem({ { "input cloud", this->Cloud }, { "--reference mesh", this->Reference } },
-      { { "-o", this->Output, { "vti", "pvti", "htg" } }, { "--surface", this->Surface, {} },
+      { { "-o", this->Output, { "vti", "pvti", "htg", "phtg" } }, { "--surface", this->Surface, {} },
         { "--png", this->Png, { "png" } }, { "--csv", this->Csv, { "csv", "txt" } },
         { "--json", this->Json, { "json" } } });
   if (!paths.empty())
   {
     return paths;
   }
-  if (ranks > 1 && this->given("--output") && !pieces && !this->Octree) // --octree: rank 0 writes the whole .htg
+  const std::string extension = this->given("--output") ? extensionOf(this->Output) : "";
+  const bool treeOutput = extension == "htg" || extension == "phtg";
+  if (this->Octree && this->given("--output") && !treeOutput)
   {
-    return "under mpirun every rank holds only its block of the grid: write -o as .pvti (one piece per rank, "
-           "FILE.pvti and FILE/FILE_<rank>.vti)";
+    return "--octree stores no full grid, so its -o is a hyper tree grid (one tree per 8^3 nodes, refined near the "
+           "front): write -o FILE.htg (FILE.phtg under mpirun)";
+  }
+  if (!this->Octree && treeOutput)
+  {
+    return "-o FILE." + extension +
+      " is --octree's output (a hyper tree grid): add --octree, or write the uniform grid as .vti "
+      "(.pvti under mpirun)";
+  }
+  if (ranks > 1 && this->given("--output") && !pieces)
+  {
+    return this->Octree
+      ? "under mpirun every rank holds only its own trees: write -o as .phtg (one piece per rank, FILE.phtg and "
+        "FILE/FILE_<rank>.htg)"
+      : "under mpirun every rank holds only its block of the grid: write -o as .pvti (one piece per rank, "
+        "FILE.pvti and FILE/FILE_<rank>.vti)";
   }
   const std::string folder = pieces ? pieceFolderProblem(this->Output) : "";
   if (!folder.empty())
   {
     return folder;
-  }
-  const bool treeOutput = this->given("--output") && extensionOf(this->Output) == "htg";
-  if (this->Octree && this->given("--output") && !treeOutput)
-  {
-    return "--octree stores no full grid, so its -o is a hyper tree grid (one tree per 8^3 nodes, refined near the "
-           "front): write -o FILE.htg";
-  }
-  if (!this->Octree && treeOutput)
-  {
-    return "-o FILE.htg is --octree's output (a hyper tree grid): add --octree, or write the uniform grid as .vti "
-           "(.pvti under mpirun)";
   }
   if (MpiSession::rank() > 0)
   {
@@ -194,7 +199,8 @@ std::string Reconstruct::problemBeforeWork(bool pieces, vtkPolyData* reference, 
 int Reconstruct::run() const
 {
   const int rank = MpiSession::rank(), ranks = MpiSession::size();
-  const bool pieces = this->given("--output") && extensionOf(this->Output) == "pvti";
+  const bool pieces =
+    this->given("--output") && (extensionOf(this->Output) == "pvti" || extensionOf(this->Output) == "phtg");
   vtkNew<vtkPolyData> reference;
   int code = 0;
   const std::string problem = this->problemBeforeWork(pieces, reference, code);
@@ -285,7 +291,17 @@ int Reconstruct::run() const
   auto* history = vtkTable::SafeDownCast(filter->GetOutputDataObject(2));
   const double seconds =
     MpiSession::maxOverRanks(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  if (pieces)
+  if (pieces && this->Octree)
+  {
+    vtkNew<vtkTrivialProducer> producer; // each rank's own trees (the tiles it owns)
+    producer->SetOutput(grid);
+    status = writeHyperTreeGridPieces(this->Output, producer, vtkMultiProcessController::GetGlobalController());
+    if (!status.isOk())
+    {
+      return fail(status.message());
+    }
+  }
+  else if (pieces)
   {
     // Each rank's block, at its place in the whole extent (the blocks are the solver's slabs).
     vtkNew<vtkImageData> block;
@@ -508,8 +524,9 @@ Command addReconstructCommand(CLI::App& sltk)
   app
     ->add_option("-o,--output", command->Output,
       "signed distance (and distance to the cloud) on the grid; under\nmpirun, .pvti: every rank writes its own "
-      "block (FILE/FILE_<rank>.vti)")
-    ->option_text("FILE.vti|.pvti|.htg");
+      "block (FILE/FILE_<rank>.vti);\n--octree: a hyper tree grid, .htg (.phtg under mpirun: each rank\nits own "
+      "trees, FILE/FILE_<rank>.htg)")
+    ->option_text("FILE.vti|.pvti|.htg|.phtg");
   app->add_option("--surface", command->Surface, "zero level set: .vtp, .ply, .stl (3D) or .vtp (2D)")
     ->check(CLI::Validator(surfaceFormatProblem, ""))
     ->option_text("FILE");

@@ -2,16 +2,19 @@
 #include "WritePieces.h"
 
 #include "WriteAtomically.h"
+#include "sltk/core/LowerCase.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCommunicator.h>
 #include <vtkMultiProcessController.h>
 #include <vtkNew.h>
+#include <vtkXMLPHyperTreeGridWriter.h>
 #include <vtkXMLPImageDataWriter.h>
 
 #include <filesystem>
 #include <regex>
 #include <system_error>
+#include <type_traits>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -20,14 +23,18 @@ namespace sltkcli
 {
 namespace
 {
-/// FILE.pvti's folder, its stem and its piece folder.
+/// FILE.pvti's (or FILE.phtg's) folder, its stem, its piece folder and the
+/// extensions of the summary and of a piece.
 struct PieceNames
 {
   fs::path Folder, Stem, Pieces;
+  std::string Summary, Piece;
   explicit PieceNames(const std::string& path)
     : Folder(fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path())
     , Stem(fs::path(path).stem())
     , Pieces(Folder / Stem)
+    , Summary(fs::path(path).extension().string())
+    , Piece(sltk::lowerCase(Summary) == ".phtg" ? ".htg" : ".vti")
   {
   }
 };
@@ -52,7 +59,7 @@ std::string pieceFolderProblem(const std::string& path)
   {
     return "";
   }
-  const std::regex piece(names.Stem.string() + "_[0-9]+\\.vti");
+  const std::regex piece(names.Stem.string() + "_[0-9]+\\" + names.Piece);
   bool pieces = fs::is_directory(names.Pieces, error);
   for (auto it = fs::directory_iterator(names.Pieces, error); pieces && !error && it != fs::directory_iterator();
        it.increment(error))
@@ -67,7 +74,10 @@ std::string pieceFolderProblem(const std::string& path)
     ", which exists and holds other files: choose another output name or move that folder";
 }
 
-sltk::Status writeImagePieces(const std::string& path, vtkAlgorithm* producer, vtkMultiProcessController* controller)
+namespace
+{
+template <class Writer>
+sltk::Status writePiecesWith(const std::string& path, vtkAlgorithm* producer, vtkMultiProcessController* controller)
 {
   const int size = controller ? controller->GetNumberOfProcesses() : 1;
   const int rank = controller ? controller->GetLocalProcessId() : 0;
@@ -84,13 +94,17 @@ sltk::Status writeImagePieces(const std::string& path, vtkAlgorithm* producer, v
   {
     return sltk::Status::ioError("could not write " + path + ": check that its folder exists and is writable");
   }
-  const fs::path summary = temporary / (names.Stem.string() + ".pvti");
+  const fs::path summary = temporary / (names.Stem.string() + names.Summary);
   const fs::path pieces = temporary / names.Stem;
-  const fs::path mine = pieces / (names.Stem.string() + "_" + std::to_string(rank) + ".vti");
+  const fs::path mine = pieces / (names.Stem.string() + "_" + std::to_string(rank) + names.Piece);
   setPendingPaths({ mine.string(), rank == 0 ? summary.string() : "" }, { pieces.string(), temporary.string() });
 
-  vtkNew<vtkXMLPImageDataWriter> writer;
+  vtkNew<Writer> writer;
   writer->SetInputConnection(producer->GetOutputPort());
+  if constexpr (std::is_same<Writer, vtkXMLPHyperTreeGridWriter>::value)
+  {
+    writer->SetDataModeToBinary(); // as writeHyperTreeGrid (Documentation/Toolchain.md: the appended mode)
+  }
   writer->SetFileName(summary.string().c_str());
   writer->SetNumberOfPieces(size);
   writer->SetStartPiece(rank);
@@ -107,7 +121,7 @@ sltk::Status writeImagePieces(const std::string& path, vtkAlgorithm* producer, v
       fs::remove_all(names.Pieces, error); // an earlier run's pieces only (pieceFolderProblem)
       fs::rename(pieces, names.Pieces, error);
       moved = !error;
-      fs::rename(summary, names.Folder / (names.Stem.string() + ".pvti"), error);
+      fs::rename(summary, names.Folder / (names.Stem.string() + names.Summary), error);
       moved = moved && !error;
     }
     else
@@ -123,6 +137,18 @@ sltk::Status writeImagePieces(const std::string& path, vtkAlgorithm* producer, v
       (everyRank ? ": moving the finished pieces failed" : ": a rank could not write its piece (disk full?)"));
   }
   return sltk::Status::ok();
+}
+} // namespace
+
+sltk::Status writeImagePieces(const std::string& path, vtkAlgorithm* producer, vtkMultiProcessController* controller)
+{
+  return writePiecesWith<vtkXMLPImageDataWriter>(path, producer, controller);
+}
+
+sltk::Status writeHyperTreeGridPieces(
+  const std::string& path, vtkAlgorithm* producer, vtkMultiProcessController* controller)
+{
+  return writePiecesWith<vtkXMLPHyperTreeGridWriter>(path, producer, controller);
 }
 
 } // namespace sltkcli

@@ -21,13 +21,20 @@ class vtkMultiProcessController;
 namespace sltkcli
 {
 
-/// "" when `path`'s piece folder (FILE/ beside FILE.pvti) is absent or holds
-/// only an earlier run's pieces (FILE_<n>.vti); otherwise the problem and the fix.
+/// "" when `path`'s piece folder (FILE/ beside FILE.pvti or FILE.phtg) is
+/// absent or holds only an earlier run's pieces (FILE_<n>.vti or .htg);
+/// otherwise the problem and the fix.
 std::string pieceFolderProblem(const std::string& path);
 
 /// Writes the piece of `producer`'s output this rank was updated for
 /// (UpdatePiece(rank, N, 0)); a collective call on `controller`'s ranks
 /// (nullptr: one rank). Every rank returns the same status.
 sltk::Status writeImagePieces(const std::string& path, vtkAlgorithm* producer, vtkMultiProcessController* controller);
+
+/// The same for `mpirun -np N sltk reconstruct --octree -o FILE.phtg`: each
+/// rank's hyper tree grid (its own trees) as FILE/FILE_<rank>.htg, listed by
+/// FILE.phtg (vtkXMLPHyperTreeGridWriter).
+sltk::Status writeHyperTreeGridPieces(
+  const std::string& path, vtkAlgorithm* producer, vtkMultiProcessController* controller);
 
 } // namespace sltkcli

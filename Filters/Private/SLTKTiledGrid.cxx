@@ -7,6 +7,7 @@
 #include "vtkHyperTree.h"
 #include "vtkHyperTreeGrid.h"
 #include "vtkHyperTreeGridNonOrientedCursor.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -119,8 +120,10 @@ bool build(const TiledField<3>& field, std::int32_t tile, double scale, vtkHyper
 } // namespace
 
 void tiledToHyperTreeGrid(const TiledField<3>& field, const UnitBox<3>& box,
-  const std::function<double(const std::array<double, 3>&)>& distanceAt, vtkHyperTreeGrid* output)
+  const std::function<double(const std::array<double, 3>&)>& distanceAt, vtkHyperTreeGrid* output,
+  const std::vector<std::int32_t>& owners, int rank)
 {
+  const auto mine = [&](Index s) { return owners.empty() || owners[static_cast<size_t>(s)] == rank; };
   output->Initialize();
   const std::array<Index, 3>& slots = field.slotDims();
   output->SetDimensions(static_cast<unsigned int>(slots[0] + 1), static_cast<unsigned int>(slots[1] + 1),
@@ -147,7 +150,7 @@ void tiledToHyperTreeGrid(const TiledField<3>& field, const UnitBox<3>& box,
   for (Index s = 0; s < field.slotCount(); ++s)
   {
     const std::int32_t entry = field.slot(s);
-    cells += entry >= 0 ? countCells(field, entry, { 0, 0, 0 }, TileEdge) : 1;
+    cells += !mine(s) ? 0 : (entry >= 0 ? countCells(field, entry, { 0, 0, 0 }, TileEdge) : 1);
   }
   vtkNew<vtkDoubleArray> phiArray, distanceArray;
   phiArray->SetName("SignedDistance");
@@ -166,6 +169,10 @@ void tiledToHyperTreeGrid(const TiledField<3>& field, const UnitBox<3>& box,
   vtkIdType start = 0;
   for (Index s = 0; s < field.slotCount(); ++s)
   {
+    if (!mine(s))
+    {
+      continue; // another rank's tree
+    }
     const std::array<Index, 3> t = field.slotCoordinates(s);
     vtkIdType treeIndex = 0;
     output->GetIndexFromLevelZeroCoordinates(
@@ -195,9 +202,14 @@ void tiledToHyperTreeGrid(const TiledField<3>& field, const UnitBox<3>& box,
     throw std::logic_error("tiledToHyperTreeGrid: the trees have " + std::to_string(start) + " cells, not the " +
       std::to_string(cells) + " counted");
   }
+  vtkNew<vtkIntArray> rankArray; // the owning rank (vtkOctreeSDF's array of the same name)
+  rankArray->SetName("Rank");
+  rankArray->SetNumberOfTuples(cells);
+  rankArray->FillValue(rank);
   output->GetCellData()->AddArray(phiArray);
   output->GetCellData()->AddArray(distanceArray);
   output->GetCellData()->AddArray(levelArray);
+  output->GetCellData()->AddArray(rankArray);
   output->GetCellData()->SetActiveScalars("SignedDistance");
   if (out.AnyMasked)
   {

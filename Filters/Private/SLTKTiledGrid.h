@@ -16,7 +16,9 @@
 #include "sltk/tiled/TiledField.h"
 
 #include <array>
+#include <cstdint>
 #include <functional>
+#include <vector>
 
 class vtkHyperTreeGrid;
 
@@ -26,11 +28,14 @@ namespace vtkbridge
 {
 
 /// The field (every stored d computed: completeTiledDistances) in the user's
-/// units (`box`) as cell data SignedDistance (active scalars), DistanceToCloud
-/// and Level; `distanceAt` gives the distance to the cloud at a unit-box
-/// point (a slot's centre).
+/// units (`box`) as cell data SignedDistance (active scalars), DistanceToCloud,
+/// Level and Rank; `distanceAt` gives the distance to the cloud at a unit-box
+/// point (a slot's centre). With `owners` (a distributed field's, per slot:
+/// TiledReconstructionResult) only the trees of the slots `rank` owns: this
+/// rank's piece; the pieces' union is the whole grid of trees.
 void tiledToHyperTreeGrid(const TiledField<3>& field, const UnitBox<3>& box,
-  const std::function<double(const std::array<double, 3>&)>& distanceAt, vtkHyperTreeGrid* output);
+  const std::function<double(const std::array<double, 3>&)>& distanceAt, vtkHyperTreeGrid* output,
+  const std::vector<std::int32_t>& owners = {}, int rank = 0);
 
 } // namespace vtkbridge
 } // namespace sltk
