@@ -34,10 +34,10 @@
  * reconstruction again), the image for the levels it holds.
  * With AdaptiveStorage, runs 2..R share their tiles out over the ranks in
  * Morton order while they compute (Documentation/Octree.md, "Distributing the
- * tiled band"), with the one-rank iterations and values (to 2e-15 of a cell):
- * each rank outputs its piece of the surface (the pieces join), rank 0 the
- * whole hyper tree grid (it gathers the tiles for it) and the history, the
- * other ranks an empty hyper tree grid.
+ * tiled band"), with the one-rank iterations and values (to rounding,
+ * Documentation/Octree.md): each rank outputs the trees of its own tiles
+ * (cell array Rank) and its piece of the surface (the pieces join), rank 0
+ * also the history and the run summary.
  */
 #ifndef vtkSLLevelSetReconstruct_h
 #define vtkSLLevelSetReconstruct_h

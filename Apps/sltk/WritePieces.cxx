@@ -11,8 +11,8 @@
 #include <vtkXMLPHyperTreeGridWriter.h>
 #include <vtkXMLPImageDataWriter.h>
 
+#include <algorithm>
 #include <filesystem>
-#include <regex>
 #include <system_error>
 #include <type_traits>
 #include <unistd.h>
@@ -59,12 +59,23 @@ std::string pieceFolderProblem(const std::string& path)
   {
     return "";
   }
-  const std::regex piece(names.Stem.string() + "_[0-9]+\\" + names.Piece);
+  // STEM_<digits>.vti (or .htg), compared as text: the stem may hold any character.
+  const std::string prefix = names.Stem.string() + "_";
+  const auto isPiece = [&](const std::string& name)
+  {
+    if (name.size() <= prefix.size() + names.Piece.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+      name.compare(name.size() - names.Piece.size(), names.Piece.size(), names.Piece) != 0)
+    {
+      return false;
+    }
+    const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - names.Piece.size());
+    return std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+  };
   bool pieces = fs::is_directory(names.Pieces, error);
   for (auto it = fs::directory_iterator(names.Pieces, error); pieces && !error && it != fs::directory_iterator();
        it.increment(error))
   {
-    pieces = it->is_regular_file(error) && std::regex_match(it->path().filename().string(), piece);
+    pieces = it->is_regular_file(error) && isPiece(it->path().filename().string());
   }
   if (pieces && !error)
   {

@@ -159,7 +159,7 @@ TEST(MpiCommunicator, ExchangesWithNeighboursOnly)
     out.push_back({ before, &nothing, 0 });
     in.push_back({ next, &nothing, 0 });
   }
-  comm->neighbourExchange(out, in);
+  EXPECT_TRUE(comm->neighbourExchange(out, in));
   EXPECT_EQ(
     fromBefore, std::vector<unsigned char>(static_cast<size_t>(100 + before), static_cast<unsigned char>(before)));
 }

@@ -300,7 +300,7 @@ void MpiCommunicator::allToAllV(const void* send, const std::vector<std::int64_t
   }
 }
 
-void MpiCommunicator::neighbourExchange(const std::vector<Outgoing>& out, const std::vector<Incoming>& in) const
+bool MpiCommunicator::neighbourExchange(const std::vector<Outgoing>& out, const std::vector<Incoming>& in) const
 {
   // A message above an int count goes in chunks, each with its own tag (the
   // chunk's number); an empty message is one empty chunk.
@@ -334,7 +334,23 @@ void MpiCommunicator::neighbourExchange(const std::vector<Outgoing>& out, const 
   {
     post(const_cast<void*>(message.Bytes), message.Count, message.Rank, false); // MPI_Isend reads only
   }
-  MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+  std::vector<MPI_Status> statuses(requests.size());
+  MPI_Waitall(static_cast<int>(requests.size()), requests.data(), statuses.data());
+  // The receives were posted first: their statuses come first, in chunk order.
+  bool complete = true;
+  size_t r = 0;
+  for (const Incoming& message : in)
+  {
+    const std::size_t chunks = std::max<std::size_t>(1, (message.Count + MaxChunk - 1) / MaxChunk);
+    for (std::size_t c = 0; c < chunks; ++c, ++r)
+    {
+      const std::size_t at = c * MaxChunk, expected = std::min(MaxChunk, message.Count - std::min(at, message.Count));
+      int got = 0;
+      MPI_Get_count(&statuses[r], MPI_BYTE, &got);
+      complete = complete && static_cast<std::size_t>(got) == expected;
+    }
+  }
+  return complete;
 }
 
 void* MpiCommunicator::nativeHandle() const

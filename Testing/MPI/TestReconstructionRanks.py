@@ -64,7 +64,7 @@ assert mine.GetExtent() == block[:5] + (block[5] + 1,), \
 assert len(executions) == 2, "one more run for the ghost level (%d runs)" % len(executions)
 print("split cloud reconstructed on 2 slabs: bounds %s, one region" % (bounds,))
 
-# AdaptiveStorage: the tiles of run 2 shared out over the ranks; rank 0 gathers them.
+# AdaptiveStorage: the tiles of run 2 shared out over the ranks; each outputs its own trees.
 tiled = SemiLagrangianLevelSetReconstruction(Input=cloud, NumberOfRuns=2, AdaptiveStorage=1)
 tiled.UpdatePipeline()
 single = servermanager.Fetch(recon, idx=2)

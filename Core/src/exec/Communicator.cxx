@@ -71,15 +71,18 @@ public:
     out.assign(b, b + sendCounts.at(0));
     receiveCounts.assign(1, sendCounts.at(0));
   }
-  void neighbourExchange(const std::vector<Outgoing>& out, const std::vector<Incoming>& in) const override
+  bool neighbourExchange(const std::vector<Outgoing>& out, const std::vector<Incoming>& in) const override
   {
+    bool complete = out.size() == in.size();
     for (size_t k = 0; k < out.size() && k < in.size(); ++k)
     {
-      if (out[k].Rank == 0 && in[k].Rank == 0 && out[k].Count)
+      complete = complete && out[k].Rank == 0 && in[k].Rank == 0 && out[k].Count == in[k].Count;
+      if (out[k].Count && in[k].Count)
       {
         std::memcpy(in[k].Bytes, out[k].Bytes, std::min(out[k].Count, in[k].Count));
       }
     }
+    return complete;
   }
   void sendReceive(const void* send, std::size_t sendBytes, int destination, void* receive, std::size_t receiveBytes,
     int source) const override

@@ -11,8 +11,9 @@
 ///  - it also holds ghost tiles, copies of the other ranks' tiles within
 ///    `depth` slots of its own (one layer: the reinitialisation's neighbours,
 ///    the energy's cells, the distance stencils, the points' stencils; more for
-///    a step whose feet reach farther), refreshed from their owners in one
-///    personalised all-to-all (Communicator::allToAllV);
+///    a step whose feet reach farther), refreshed from their owners by messages
+///    to and from the neighbouring ranks only (Communicator::neighbourExchange;
+///    migrations use one personalised all-to-all, Communicator::allToAllV);
 ///  - a rank that adds or frees a tile tells every rank (one gather per
 ///    iteration), so that every slot map stays the same;
 ///  - sums are added in the one-rank order (orderedSum), so the result does
@@ -340,7 +341,7 @@ public:
       this->unpack(field, id, true, incoming.data() + at);
     }
     this->setOwners(field, std::move(owners));
-    this->holdGhosts(field, this->HeldDepth, forget);
+    this->holdGhosts(field, 1, forget); // a new partition: one layer
   }
 
   /// The sums over every rank's `items` (key, N values) added in the order of
@@ -461,7 +462,10 @@ private:
         in.push_back({ static_cast<int>(r), this->Received.data() + receiveAt[r], receiveAt[r + 1] - receiveAt[r] });
       }
     }
-    this->Comm->neighbourExchange(out, in);
+    if (!this->Comm->neighbourExchange(out, in))
+    {
+      this->fail("a neighbour sent fewer bytes of ghost tiles than this rank's plan expects");
+    }
     for (size_t r = 0; r < ranks; ++r)
     {
       size_t at = receiveAt[r];

@@ -153,14 +153,17 @@ std::array<Index, D> nearestNode(const GridSpec<D>& g, const std::array<double, 
   return i;
 }
 
-/// The memory of `tiles` more tiles, refused when it does not fit; distributed,
-/// every rank on this machine (ReconstructionOptions::RanksHere) is taken to
-/// hold as much as this one.
+/// The memory of `tiles` more tiles, refused when it does not fit: with a
+/// MemoryBudget, this machine's ranks (ReconstructionOptions::RanksHere) each
+/// holding as much as this one, tiles held and new, within the budget; without
+/// one, their new tiles within the memory available now (which the held tiles
+/// already left).
 template <int D>
 Status checkTileMemory(const TiledField<D>& field, Index tiles, const ReconstructionOptions& options, int run)
 {
   const int here = std::max(1, options.RanksHere);
-  const double need = here * (field.bytes() + static_cast<double>(tiles) * TiledField<D>::Nodes * 2.0 * sizeof(double));
+  const double added = static_cast<double>(tiles) * TiledField<D>::Nodes * 2.0 * sizeof(double);
+  const double need = here * (options.MemoryBudget ? field.bytes() + added : added);
   const double available = static_cast<double>(options.MemoryBudget ? options.MemoryBudget : availableMemoryBytes());
   if (available > 0.0 && need > available)
   {
@@ -168,7 +171,7 @@ Status checkTileMemory(const TiledField<D>& field, Index tiles, const Reconstruc
     m.precision(3);
     m << "run " << run << " of the tiled reconstruction needs " << need / 1048576.0 << " MB for "
       << field.tileCount() + tiles << " tiles"
-      << (here > 1 ? " a rank on each of the " + std::to_string(here) + " ranks of this machine" : "")
+      << (here > 1 ? ", a rank, on each of the " + std::to_string(here) + " ranks of this machine" : "")
       << ", more than the " << available / 1048576.0 << " MB available: use fewer runs, a larger C_dx"
       << (here > 1 ? " or the ranks on more machines" : "");
     return Status::outOfMemory(m.str());
@@ -747,11 +750,11 @@ Status tiledStep(TiledField<D>& field, const std::vector<std::int32_t>& band, co
         const double foot = guess > 0 ? blockFoot(field, band, blocks, block, guess, Ghost, par, s)
                                       : blockFoot(field, band, blocks, block, 1, 1, par, s);
         feet[static_cast<size_t>(block)] = foot;
-        const Index need = static_cast<Index>(std::ceil(foot / dx)) + StencilReach;
-        if (need > MaxHalo)
+        if (!(foot <= (MaxHalo - StencilReach) * dx))
         {
-          continue; // reported below
+          continue; // reported below (also an infinite or NaN foot)
         }
+        const Index need = static_cast<Index>(std::ceil(foot / dx)) + StencilReach;
         // The copy's origin enters the feet's coordinates: always the needed halo, so that the
         // result does not depend on the last step's (a wider copy changed the scans' iterations).
         const Index halo = std::max<Index>(HaloStep, (need + HaloStep - 1) / HaloStep * HaloStep);
@@ -781,7 +784,7 @@ Status tiledStep(TiledField<D>& field, const std::vector<std::int32_t>& band, co
     1);
   for (size_t block = 0; block < feet.size(); ++block)
   {
-    if (feet[block] > (MaxHalo - StencilReach) * dx)
+    if (!(feet[block] <= (MaxHalo - StencilReach) * dx))
     {
       std::ostringstream m;
       m << "a foot of the semi-Lagrangian step moved " << feet[block] / dx << " cells, beyond the "
@@ -1004,6 +1007,7 @@ Status iterateTiled(const ReconstructionPlan<D>& plan, int run, const Context& c
       // of band, ownBand and the reinitialisation's nodes stay.
       distribution.holdGhosts(field, layers, forget);
       distribution.exchange(field, true);
+      storage.PeakTiles = std::max(storage.PeakTiles, field.tileCount());
     }
     SLTK_RETURN_IF_ERROR(distribution.agree(tiledStep<Interp, D>(field, ownBand, step, ctx, stepHalos)));
     if (layers > 1)

@@ -89,8 +89,9 @@ public:
   /// in q's `in`, in the same order per pair. Only the ranks that exchange
   /// wait for each other: the cost grows with the neighbours, not with size()
   /// (the ghost exchanges of sltk/tiled, TileDistribution.h). Serial: rank 0
-  /// to itself, a copy.
-  virtual void neighbourExchange(const std::vector<Outgoing>& out, const std::vector<Incoming>& in) const = 0;
+  /// to itself, a copy. Returns false when a message came shorter than its
+  /// Incoming count (the pairs disagree: an internal error of the caller).
+  virtual bool neighbourExchange(const std::vector<Outgoing>& out, const std::vector<Incoming>& in) const = 0;
 
   /// Sends `sendBytes` bytes to rank `destination` and receives `receiveBytes`
   /// bytes from rank `source` at once (no deadlock when neighbours exchange in

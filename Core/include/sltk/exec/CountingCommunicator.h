@@ -70,13 +70,13 @@ public:
     }
     this->Inner->allToAllV(send, sendCounts, out, receiveCounts);
   }
-  void neighbourExchange(const std::vector<Outgoing>& out, const std::vector<Incoming>& in) const override
+  bool neighbourExchange(const std::vector<Outgoing>& out, const std::vector<Incoming>& in) const override
   {
     for (const Outgoing& message : out)
     {
       this->Sent += message.Rank == this->rank() ? 0 : static_cast<std::int64_t>(message.Count);
     }
-    this->Inner->neighbourExchange(out, in);
+    return this->Inner->neighbourExchange(out, in);
   }
   void sendReceive(const void* send, std::size_t sendBytes, int destination, void* receive, std::size_t receiveBytes,
     int source) const override

@@ -53,7 +53,7 @@ public:
   using Communicator::allGatherV;
   void allToAllV(const void* send, const std::vector<std::int64_t>& sendCounts, std::vector<unsigned char>& out,
     std::vector<std::int64_t>& receiveCounts) const override;
-  void neighbourExchange(const std::vector<Outgoing>& out, const std::vector<Incoming>& in) const override;
+  bool neighbourExchange(const std::vector<Outgoing>& out, const std::vector<Incoming>& in) const override;
   void sendReceive(const void* send, std::size_t sendBytes, int destination, void* receive, std::size_t receiveBytes,
     int source) const override;
   using Communicator::allReduce;
