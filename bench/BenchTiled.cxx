@@ -12,6 +12,7 @@
 #include "common/BenchCli.h"
 #include "common/ReadXyz.h"
 
+#include "sltk/core/MortonKey.h"
 #include "sltk/exec/Memory.h"
 #include "sltk/exec/ThreadPool.h"
 #include "sltk/recon/ReconstructionPlan.h"
@@ -95,23 +96,11 @@ void slabProfile(const sltk::TiledField<3>& field, int ranks)
 /// of ghosts) and receives them at every exchange.
 void mortonProfile(const sltk::TiledField<3>& field, int ranks)
 {
-  const auto morton = [](const std::array<sltk::Index, 3>& t)
-  {
-    std::uint64_t code = 0;
-    for (int bit = 0; bit < 21; ++bit)
-    {
-      for (int a = 0; a < 3; ++a)
-      {
-        code |= static_cast<std::uint64_t>((t[static_cast<size_t>(a)] >> bit) & 1) << (3 * bit + a);
-      }
-    }
-    return code;
-  };
   const sltk::Index tiles = field.tileCount();
   std::vector<std::pair<std::uint64_t, std::int32_t>> order;
   for (std::int32_t id = 0; id < static_cast<std::int32_t>(tiles); ++id)
   {
-    order.emplace_back(morton(field.tileOrigin(id)), id);
+    order.emplace_back(sltk::mortonKey<3>(field.tileOrigin(id)), id);
   }
   std::sort(order.begin(), order.end());
   std::vector<int> owner(static_cast<size_t>(tiles));

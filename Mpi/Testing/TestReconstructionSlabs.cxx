@@ -123,16 +123,6 @@ TEST(ReconstructionSlabs, FeetBeyondTheGhostRowsAreInterpolatedByTheirOwners)
   }
 }
 
-namespace
-{
-/// Stops the run at its `stopAt`-th progress check, on one rank only.
-struct StopOnOneRank : sltk::Interrupter
-{
-  int Calls = 0, StopAt = 0;
-  bool wasInterrupted(double) override { return StopAt > 0 && ++Calls >= StopAt; }
-};
-} // namespace
-
 TEST(ReconstructionSlabs, AnInterruptionOnOneRankStopsEveryRankWithoutAHang)
 {
   auto comm = world();

@@ -165,16 +165,6 @@ TEST(TiledReconstructionRanks, ARankWithoutTilesTakesPartInEveryCollective)
   }
 }
 
-namespace
-{
-/// Stops the run at its `stopAt`-th progress check, on one rank only.
-struct StopOnOneRank : sltk::Interrupter
-{
-  int Calls = 0, StopAt = 0;
-  bool wasInterrupted(double) override { return ++Calls >= StopAt && StopAt > 0; }
-};
-} // namespace
-
 TEST(TiledReconstructionRanks, AnInterruptionOnOneRankStopsEveryRankWithoutAHang)
 {
   auto comm = world();

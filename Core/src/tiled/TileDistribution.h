@@ -78,7 +78,7 @@ public:
   /// The owner of every slot when `weighted` (per slot) are the tiles to share out.
   std::vector<std::int32_t> balancedOwners(const TiledField<D>& field, const std::vector<std::uint8_t>& weighted) const
   {
-    return mortonOwners<D>(field.slotDims(), weighted, this->Comm->size(), TileBlockEdge);
+    return mortonOwners<D>(field, weighted, this->Comm->size(), TileBlockEdge);
   }
   /// The slots holding a tile on some rank (this rank's tiles, ghosts and Remote slots).
   static std::vector<std::uint8_t> tileSlots(const TiledField<D>& field)
@@ -299,9 +299,7 @@ public:
     {
       return;
     }
-    const int ranks = this->Comm->size();
-    const size_t tileBytes = sizeof(std::int64_t) + 2 * static_cast<size_t>(TiledField<D>::Nodes) * sizeof(double);
-    std::vector<std::vector<std::int32_t>> leaving(static_cast<size_t>(ranks));
+    std::vector<std::vector<std::int32_t>> leaving(static_cast<size_t>(this->Comm->size()));
     std::vector<std::uint8_t> remove(static_cast<size_t>(field.tileCount()), 0);
     field.forEachTileInSlotOrder(
       [&](std::int32_t id)
@@ -314,34 +312,50 @@ public:
           remove[static_cast<size_t>(id)] = TiledField<D>::RemoveToRemote;
         }
       });
-    std::vector<std::int64_t> counts(static_cast<size_t>(ranks), 0);
+    const std::vector<unsigned char> incoming = sendWholeTiles(field, leaving, *this->Comm);
+    field.removeTiles(remove);
+    forget(remove);
+    storeWholeTiles(field, incoming);
+    this->setOwners(field, std::move(owners));
+    this->holdGhosts(field, 1, forget); // a new partition: one layer
+  }
+
+  /// Sends the tiles `going[r]` whole (slot, phi and d) to rank r, in one
+  /// all-to-all (migrate, gatherTiles); returns the tiles sent to this rank,
+  /// for storeWholeTiles. Collective.
+  static std::vector<unsigned char> sendWholeTiles(
+    const TiledField<D>& field, const std::vector<std::vector<std::int32_t>>& going, const Communicator& comm)
+  {
+    std::vector<std::int64_t> counts(going.size(), 0);
     std::vector<unsigned char> send;
-    for (int r = 0; r < ranks; ++r)
+    for (size_t r = 0; r < going.size(); ++r)
     {
-      counts[static_cast<size_t>(r)] = static_cast<std::int64_t>(leaving[static_cast<size_t>(r)].size() * tileBytes);
+      counts[r] = static_cast<std::int64_t>(going[r].size() * WholeTileBytes);
       const size_t at = send.size();
-      send.resize(at + leaving[static_cast<size_t>(r)].size() * tileBytes);
+      send.resize(at + going[r].size() * WholeTileBytes);
       unsigned char* out = send.data() + at;
-      for (std::int32_t id : leaving[static_cast<size_t>(r)])
+      for (std::int32_t id : going[r])
       {
-        out = this->pack(field, id, true, out);
+        out = pack(field, id, true, out);
       }
     }
     std::vector<unsigned char> incoming;
     std::vector<std::int64_t> received;
-    this->Comm->allToAllV(send.data(), counts, incoming, received);
-    send = std::vector<unsigned char>{};
-    field.removeTiles(remove);
-    forget(remove);
-    for (size_t at = 0; at + tileBytes <= incoming.size(); at += tileBytes)
+    comm.allToAllV(send.data(), counts, incoming, received);
+    return incoming;
+  }
+
+  /// Stores the tiles of sendWholeTiles in their slots: over the copy held
+  /// there (a ghost), or in a new tile.
+  static void storeWholeTiles(TiledField<D>& field, const std::vector<unsigned char>& incoming)
+  {
+    for (size_t at = 0; at + WholeTileBytes <= incoming.size(); at += WholeTileBytes)
     {
       std::int64_t slot = 0;
       std::memcpy(&slot, incoming.data() + at, sizeof(slot));
       const std::int32_t id = field.slot(slot) >= 0 ? field.slot(slot) : field.addTile(slot);
-      this->unpack(field, id, true, incoming.data() + at);
+      copyTileValues(field, id, true, incoming.data() + at + sizeof(slot));
     }
-    this->setOwners(field, std::move(owners));
-    this->holdGhosts(field, 1, forget); // a new partition: one layer
   }
 
   /// The sums over every rank's `items` (key, N values) added in the order of
@@ -521,7 +535,12 @@ private:
     }
   }
 
-  unsigned char* pack(const TiledField<D>& field, std::int32_t id, bool withDistance, unsigned char* out) const
+  /// A tile's slot, phi and d (pack with withDistance).
+  static constexpr size_t WholeTileBytes =
+    sizeof(std::int64_t) + 2 * static_cast<size_t>(TiledField<D>::Nodes) * sizeof(double);
+
+  /// Writes tile `id`'s slot, phi and (withDistance) d at `out`; returns the end.
+  static unsigned char* pack(const TiledField<D>& field, std::int32_t id, bool withDistance, unsigned char* out)
   {
     const std::int64_t slot = field.tileSlot(id);
     std::memcpy(out, &slot, sizeof(slot));
@@ -547,6 +566,14 @@ private:
       this->fail("a ghost tile arrived for slot " + std::to_string(slot) + " where slot " +
         std::to_string(field.tileSlot(id)) + " was expected");
     }
+    return copyTileValues(field, id, withDistance, in);
+  }
+
+  /// Reads tile `id`'s phi and (withDistance) d from `in` (pack's values after
+  /// the slot); returns the end.
+  static const unsigned char* copyTileValues(
+    TiledField<D>& field, std::int32_t id, bool withDistance, const unsigned char* in)
+  {
     const size_t bytes = static_cast<size_t>(TiledField<D>::Nodes) * sizeof(double);
     std::memcpy(field.phi(id), in, bytes);
     in += bytes;

@@ -10,6 +10,8 @@
 /// and every block computes what it computes on one rank.
 
 #include "sltk/core/Index.h"
+#include "sltk/core/MortonKey.h"
+#include "sltk/tiled/TiledField.h"
 
 #include <algorithm>
 #include <array>
@@ -19,42 +21,13 @@
 namespace sltk
 {
 
-/// Morton key of tile coordinates: bit b of t[a] at bit D * b + a.
-template <int D>
-std::uint64_t mortonKey(const std::array<Index, D>& t)
-{
-  constexpr int Bits = 64 / D;
-  std::uint64_t key = 0;
-  for (int b = 0; b < Bits; ++b)
-  {
-    for (int a = 0; a < D; ++a)
-    {
-      key |= ((static_cast<std::uint64_t>(t[a]) >> b) & 1u) << (D * b + a);
-    }
-  }
-  return key;
-}
-
-/// Tile coordinates of slot s of a slot grid (x fastest).
-template <int D>
-std::array<Index, D> slotAt(const std::array<Index, D>& dims, Index s)
-{
-  std::array<Index, D> t{};
-  for (int a = 0; a < D; ++a)
-  {
-    t[a] = s % dims[a];
-    s /= dims[a];
-  }
-  return t;
-}
-
-/// The owner of every slot of a grid of `dims` slots: ranks take consecutive
-/// runs of the Morton order of blocks of `blockEdge`^D slots (a power of two),
-/// each run holding about the same number of `weighted` slots (per slot, 0 or
-/// 1). With no weighted slot, rank 0 owns everything.
+/// The owner of every slot of `field`: ranks take consecutive runs of the
+/// Morton order of blocks of `blockEdge`^D slots (a power of two), each run
+/// holding about the same number of `weighted` slots (per slot, 0 or 1). With
+/// no weighted slot, rank 0 owns everything.
 template <int D>
 std::vector<std::int32_t> mortonOwners(
-  const std::array<Index, D>& dims, const std::vector<std::uint8_t>& weighted, int ranks, Index blockEdge)
+  const TiledField<D>& field, const std::vector<std::uint8_t>& weighted, int ranks, Index blockEdge)
 {
   int blockBits = 0;
   while ((Index(1) << blockBits) < blockEdge)
@@ -63,7 +36,7 @@ std::vector<std::int32_t> mortonOwners(
   }
   const auto blockKey = [&](Index s)
   {
-    std::array<Index, D> t = slotAt<D>(dims, s);
+    std::array<Index, D> t = field.slotCoordinates(s);
     for (int a = 0; a < D; ++a)
     {
       t[a] >>= blockBits;

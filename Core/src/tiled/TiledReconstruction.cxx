@@ -17,7 +17,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <numeric>
 #include <sstream>
 
@@ -1211,42 +1210,24 @@ void gatherTiles(TiledReconstructionResult<D>& result, const Communicator& comm,
     return;
   }
   TiledField<D>& field = result.Field;
-  const size_t values = static_cast<size_t>(TiledField<D>::Nodes);
-  const size_t tileBytes = sizeof(std::int64_t) + 2 * values * sizeof(double);
-  std::vector<unsigned char> send;
-  field.forEachTileInSlotOrder(
-    [&](std::int32_t id)
-    {
-      const std::int64_t slot = field.tileSlot(id);
-      if (result.Owners[static_cast<size_t>(slot)] != comm.rank() || comm.rank() == root)
+  std::vector<std::vector<std::int32_t>> going(static_cast<size_t>(comm.size()));
+  if (comm.rank() != root)
+  {
+    field.forEachTileInSlotOrder(
+      [&](std::int32_t id)
       {
-        return;
-      }
-      const size_t at = send.size();
-      send.resize(at + tileBytes);
-      std::memcpy(send.data() + at, &slot, sizeof(slot));
-      std::memcpy(send.data() + at + sizeof(slot), field.phi(id), values * sizeof(double));
-      std::memcpy(
-        send.data() + at + sizeof(slot) + values * sizeof(double), field.distance(id), values * sizeof(double));
-    });
-  std::vector<std::int64_t> counts(static_cast<size_t>(comm.size()), 0);
-  counts[static_cast<size_t>(root)] = static_cast<std::int64_t>(send.size());
-  std::vector<unsigned char> incoming;
-  std::vector<std::int64_t> received;
-  comm.allToAllV(send.data(), counts, incoming, received);
+        if (result.Owners[static_cast<size_t>(field.tileSlot(id))] == comm.rank())
+        {
+          going[static_cast<size_t>(root)].push_back(id);
+        }
+      });
+  }
+  const std::vector<unsigned char> incoming = TileDistribution<D>::sendWholeTiles(field, going, comm);
   if (comm.rank() != root)
   {
     return;
   }
-  for (size_t at = 0; at + tileBytes <= incoming.size(); at += tileBytes)
-  {
-    std::int64_t slot = 0;
-    std::memcpy(&slot, incoming.data() + at, sizeof(slot));
-    const std::int32_t id = field.slot(slot) >= 0 ? field.slot(slot) : field.addTile(slot);
-    std::memcpy(field.phi(id), incoming.data() + at + sizeof(slot), values * sizeof(double));
-    std::memcpy(
-      field.distance(id), incoming.data() + at + sizeof(slot) + values * sizeof(double), values * sizeof(double));
-  }
+  TileDistribution<D>::storeWholeTiles(field, incoming);
   result.Owners.clear();
 }
 
