@@ -1,85 +1,65 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkOctreeSDF
- * @brief   The adaptive octree (p4est) of the reconstruction over an
- *          unorganised point cloud, output as a vtkHyperTreeGrid (thesis ch. 5).
+ * @brief   The octree version of the reconstruction (thesis ch. 5): a
+ *          watertight signed distance from an unorganised point cloud, stored
+ *          only near the surface and output as a vtkHyperTreeGrid.
  *
- * Input: any vtkPointSet (points only; under MPI every rank's points are
- * gathered, and a rank may have none). Output: a vtkHyperTreeGrid whose trees
- * are the p4est brick's, refined uniformly to MinimumLevel and to
- * MaximumLevel in the band of the cloud, 2:1 balanced, with the cell arrays
- * "DistanceToCloud" (distance from each leaf's centre to the cloud), "Level"
- * and "Rank" (owning rank). Under MPI each rank outputs its own leaves; the
- * leaves of other ranks met on the way are masked. Field data: GlobalLeaves,
- * UniformCells (the uniform grid of the finest level), CloudSpacing (h_P).
- * Documentation/Octree.md describes the forest.
+ * vtkSLLevelSetReconstruct with AdaptiveStorage always on, and every property
+ * of it with the same meaning (CellSizeFactor and NumberOfRuns give the
+ * finest cell, dx = CellSizeFactor * h_P / 2^(R-1)). Run 1 is computed on its
+ * uniform grid, the coarsest; runs 2..R, one level finer each, store only the
+ * tiles of 8^3 finest nodes around the front, the finest levels of the octree
+ * (Documentation/Octree.md, "The tiled band"), so memory follows the surface.
+ * 3D clouds only.
  *
- * @warning The level-set solver on the octree is not built yet: there is no
- * "SignedDistance" array and no zero level set. The output is the adaptive
- * grid and the distance to the cloud only.
+ * Outputs:
+ *  - port 0: vtkHyperTreeGrid, one tree per 8^3 finest nodes, refined to one
+ *    leaf per node where a tile is stored and a single leaf (+-gamma)
+ *    elsewhere; cell data SignedDistance (active scalars), DistanceToCloud,
+ *    Level and Rank (owning rank); field data the run summary
+ *    (vtkSLLevelSetReconstruct's, with RunStoredNodes and RunUniformNodes)
+ *    and GlobalLeaves (the leaves of every rank). VTK's hyper tree grid
+ *    filters (contour, threshold, dual grid) work on it.
+ *  - port 1: vtkPolyData, the zero level set, contoured from the finest
+ *    nodes: continuous and watertight (not drawn cell by cell as in the
+ *    thesis's 5.3.1).
+ *  - port 2: vtkTable, the convergence history with, per iteration,
+ *    StoredNodes, Leaves (the octree's, over every rank), LargestRankLeaves
+ *    (the most one rank owns) and UniformNodes (the uniform grid of the same
+ *    finest cell), the thesis's Fig. 5.7 and 5.14.
+ *
+ * Under MPI (pvbatch, pvserver, mpirun sltk; the Controller) the ranks share
+ * the tiles out in Morton order while they compute
+ * (Documentation/Octree.md, "Distributing the tiled band"): each rank outputs
+ * the trees it owns and its piece of the surface (the pieces join), rank 0
+ * also the history.
+ *
+ * Turning AdaptiveStorage off is refused when the filter runs:
+ * vtkSLLevelSetReconstruct computes the uniform grids.
  */
 #ifndef vtkOctreeSDF_h
 #define vtkOctreeSDF_h
 
 #include "SLTKFiltersModule.h" // for export macro
-#include "vtkAlgorithm.h"
+#include "vtkSLLevelSetReconstruct.h"
 
 class vtkHyperTreeGrid;
 
-class SLTKFILTERS_EXPORT vtkOctreeSDF : public vtkAlgorithm
+class SLTKFILTERS_EXPORT vtkOctreeSDF : public vtkSLLevelSetReconstruct
 {
 public:
   static vtkOctreeSDF* New();
-  vtkTypeMacro(vtkOctreeSDF, vtkAlgorithm);
-  void PrintSelf(ostream& os, vtkIndent indent) override;
+  vtkTypeMacro(vtkOctreeSDF, vtkSLLevelSetReconstruct);
 
-  ///@{
-  /// Coarsest refinement level of the octree (every tree refined uniformly to
-  /// it). Default 3, range 0-18, at most MaximumLevel. Values outside are
-  /// refused when the filter runs, not clamped.
-  vtkSetMacro(MinimumLevel, int);
-  vtkGetMacro(MinimumLevel, int);
-  ///@}
-
-  ///@{
-  /// Finest refinement level L, reached in the band of the cloud; the finest
-  /// cell is the tree's edge / 2^L (5.1). Default 7, range 0-18.
-  vtkSetMacro(MaximumLevel, int);
-  vtkGetMacro(MaximumLevel, int);
-  ///@}
-
-  ///@{
-  /// Threads per rank; 0 means all hardware threads. Default 0, range 0-1024.
-  vtkSetMacro(NumberOfThreads, int);
-  vtkGetMacro(NumberOfThreads, int);
-  ///@}
-
-  ///@{
-  /// Memory the forest may take on all ranks together, in MB; 0 means the
-  /// memory available. A MaximumLevel whose forest would not fit is refused
-  /// with the level that fits. Default 0, range 0-16777216.
-  vtkSetMacro(MemoryBudget, int);
-  vtkGetMacro(MemoryBudget, int);
-  ///@}
-
-  /// The output data object.
+  /// Port 0, the octree (null before the filter has run).
   vtkHyperTreeGrid* GetOutput();
-
-  vtkTypeBool ProcessRequest(
-    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
 protected:
   vtkOctreeSDF();
   ~vtkOctreeSDF() override = default;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
-  virtual int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
-
-  int MinimumLevel = 3;
-  int MaximumLevel = 7;
-  int NumberOfThreads = 0;
-  int MemoryBudget = 0;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:
   vtkOctreeSDF(const vtkOctreeSDF&) = delete;

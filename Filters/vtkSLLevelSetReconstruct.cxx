@@ -225,28 +225,39 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
       grid, result.Owners, comm.rank()); // Initialize()s the grid: its field data after it
   }
   sltk::vtkbridge::communicationSummary(comm.size(), bytesSent, collectives, grid);
+  if (!result.Storage.empty())
+  {
+    vtkNew<vtkDoubleArray> leaves; // the octree's leaves over every rank, as output (on every rank)
+    leaves->SetName("GlobalLeaves");
+    leaves->InsertNextValue(static_cast<double>(result.Storage.back().Leaves));
+    grid->GetFieldData()->AddArray(leaves);
+  }
   if (comm.rank() > 0)
   {
     return 1; // the history and the run summary once, on rank 0
   }
   sltk::vtkbridge::runSummary(result.Records, grid);
-  vtkNew<vtkDoubleArray> stored, uniform;
+  vtkNew<vtkDoubleArray> stored, uniform, leaves;
   stored->SetName("RunStoredNodes");
   uniform->SetName("RunUniformNodes");
+  leaves->SetName("RunLeaves");
   for (size_t r = 0; r < result.Records.Runs.size(); ++r)
   {
-    // Run 1 is uniform (its grid is the coarsest); runs >= 2 have a storage record.
+    // Run 1 is uniform (its grid is the coarsest: a leaf per node); runs >= 2 have a storage record.
     const double all = static_cast<double>(result.Records.Runs[r].Grid.nodeCount());
-    double held = all;
+    double held = all, leafCount = all;
     for (const sltk::TiledRunRecord& run : result.Storage)
     {
       held = run.Run == static_cast<int>(r + 1) ? static_cast<double>(run.StoredNodes) : held;
+      leafCount = run.Run == static_cast<int>(r + 1) ? static_cast<double>(run.Leaves) : leafCount;
     }
     stored->InsertNextValue(held);
     uniform->InsertNextValue(all);
+    leaves->InsertNextValue(leafCount);
   }
   grid->GetFieldData()->AddArray(stored);
   grid->GetFieldData()->AddArray(uniform);
+  grid->GetFieldData()->AddArray(leaves);
   sltk::vtkbridge::historyTable(result.Records.History, history);
   return 1;
 }
@@ -285,8 +296,8 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
   else if (self->GetAdaptiveStorage())
   {
     vtkErrorWithObjectMacro(self,
-      "AdaptiveStorage is for 3D clouds; this cloud is planar (a 2D reconstruction): "
-      "turn AdaptiveStorage off");
+      "AdaptiveStorage is for 3D clouds (vtkOctreeSDF's octree too); this cloud is planar (a 2D "
+      "reconstruction): reconstruct it on the uniform grids, vtkSLLevelSetReconstruct with AdaptiveStorage off");
     return 0;
   }
   auto* image = portZeroAs<vtkImageData>(self, output);

@@ -235,10 +235,12 @@ public:
   /// that follows the surface. Port 0 is then a vtkHyperTreeGrid instead of
   /// the image: one tree per 8^3 nodes, refined to one leaf per node where a
   /// tile is stored and a single leaf (+-gamma) elsewhere, with the cell data
-  /// SignedDistance, DistanceToCloud and Level, and the run summary in its
-  /// field data (with RunStoredNodes and RunUniformNodes); the surface (port
-  /// 1) is contoured tile by tile. The automatic restart with a finer C_dx for
-  /// thin parts is not done.
+  /// SignedDistance, DistanceToCloud, Level and Rank, and the run summary in
+  /// its field data (with RunStoredNodes, RunUniformNodes, RunLeaves and
+  /// GlobalLeaves); the surface (port 1) is contoured tile by tile; the history
+  /// (port 2) gains StoredNodes, Leaves, LargestRankLeaves and UniformNodes.
+  /// vtkOctreeSDF is this filter with AdaptiveStorage always on. The automatic
+  /// restart with a finer C_dx for thin parts is not done.
   vtkSetMacro(AdaptiveStorage, bool);
   vtkGetMacro(AdaptiveStorage, bool);
   vtkBooleanMacro(AdaptiveStorage, bool);

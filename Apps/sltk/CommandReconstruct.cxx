@@ -28,9 +28,11 @@
 #include <vtkLogger.h>
 #include <vtkMultiProcessController.h>
 #include <vtkNew.h>
+#include <vtkOctreeSDF.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSLLevelSetReconstruct.h>
+#include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
 #include <vtkTable.h>
 #include <vtkTrivialProducer.h>
@@ -239,7 +241,10 @@ int Reconstruct::run() const
   {
     vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_INFO);
   }
-  vtkNew<vtkSLLevelSetReconstruct> filter;
+  // --octree: the octree filter (vtkSLLevelSetReconstruct with AdaptiveStorage always on).
+  const vtkSmartPointer<vtkSLLevelSetReconstruct> filter = this->Octree
+    ? vtkSmartPointer<vtkSLLevelSetReconstruct>(vtkSmartPointer<vtkOctreeSDF>::New())
+    : vtkSmartPointer<vtkSLLevelSetReconstruct>::New();
   vtkNew<ErrorCollector> errors;
   filter->AddObserver(vtkCommand::ErrorEvent, errors);
   vtkNew<ProgressBar> bar;
@@ -269,7 +274,6 @@ int Reconstruct::run() const
   filter->SetOutlierDeviations(o.Cleaning.Outliers.Deviations);
   filter->SetThinningFactor(o.Cleaning.ThinningFactor);
   filter->SetDetectTunnels(o.DetectTunnels);
-  filter->SetAdaptiveStorage(this->Octree);
   filter->SetGenerateAdaptiveGrid(this->given("--output")); // the trees only for -o FILE.htg
   if (ranks > 1)
   {
@@ -349,6 +353,7 @@ int Reconstruct::run() const
   auto* farFeet = fd->GetArray("RunFarFeet");
   auto* storedNodes = fd->GetArray("RunStoredNodes"); // --octree only
   auto* uniformNodes = fd->GetArray("RunUniformNodes");
+  auto* runLeaves = fd->GetArray("RunLeaves");
   std::printf("cloud      %s (%lld points, h_P = %.6g)\n", path.c_str(),
     static_cast<long long>(cloud->GetNumberOfPoints()), fd->GetArray("CloudSpacing")->GetTuple1(0));
   const auto fieldValue = [fd](const char* name) { return fd->GetArray(name)->GetTuple1(0); };
@@ -386,12 +391,15 @@ int Reconstruct::run() const
       runRecords.back()["ghost_rows"] = static_cast<long long>(ghostRows->GetTuple1(r));
       runRecords.back()["far_feet"] = static_cast<long long>(farFeet->GetTuple1(r));
     }
-    if (storedNodes && uniformNodes)
+    if (storedNodes && uniformNodes && runLeaves)
     {
       const double stored = storedNodes->GetTuple1(r), all = uniformNodes->GetTuple1(r);
-      std::printf("      stored %.0f of %.0f nodes (%.1f%%)\n", stored, all, 100.0 * stored / all);
+      const double leaves = runLeaves->GetTuple1(r);
+      std::printf(
+        "      stored %.0f of %.0f nodes (%.1f%%), %.0f octree leaves\n", stored, all, 100.0 * stored / all, leaves);
       runRecords.back()["stored_nodes"] = static_cast<long long>(stored);
       runRecords.back()["uniform_nodes"] = static_cast<long long>(all);
+      runRecords.back()["leaves"] = static_cast<long long>(leaves);
     }
   }
   const double hP = fd->GetArray("CloudSpacing")->GetTuple1(0);

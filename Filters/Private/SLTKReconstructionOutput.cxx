@@ -317,7 +317,7 @@ void historyTable(const std::vector<IterationRecord>& history, vtkTable* table)
 {
   vtkNew<vtkIntArray> run, iteration;
   vtkNew<vtkDoubleArray> energy, change, cloudError, seconds;
-  vtkNew<vtkIdTypeArray> band, stored;
+  vtkNew<vtkIdTypeArray> band, stored, leaves, largestRank, uniform;
   run->SetName("Run");
   iteration->SetName("Iteration");
   energy->SetName("Energy");
@@ -325,6 +325,9 @@ void historyTable(const std::vector<IterationRecord>& history, vtkTable* table)
   cloudError->SetName("CloudError");
   band->SetName("BandSize");
   stored->SetName("StoredNodes");
+  leaves->SetName("Leaves");
+  largestRank->SetName("LargestRankLeaves");
+  uniform->SetName("UniformNodes");
   seconds->SetName("Seconds");
   // Tiled storage (AdaptiveStorage) records the nodes held after each iteration.
   const bool tiled =
@@ -338,6 +341,9 @@ void historyTable(const std::vector<IterationRecord>& history, vtkTable* table)
     cloudError->InsertNextValue(r.CloudError);
     band->InsertNextValue(static_cast<vtkIdType>(r.BandSize));
     stored->InsertNextValue(static_cast<vtkIdType>(r.StoredNodes));
+    leaves->InsertNextValue(static_cast<vtkIdType>(r.Leaves));
+    largestRank->InsertNextValue(static_cast<vtkIdType>(r.LargestRankLeaves));
+    uniform->InsertNextValue(static_cast<vtkIdType>(r.UniformNodes));
     seconds->InsertNextValue(r.Seconds);
   }
   table->AddColumn(run);
@@ -349,6 +355,9 @@ void historyTable(const std::vector<IterationRecord>& history, vtkTable* table)
   if (tiled)
   {
     table->AddColumn(stored);
+    table->AddColumn(leaves);
+    table->AddColumn(largestRank);
+    table->AddColumn(uniform);
   }
   table->AddColumn(seconds);
 }

@@ -68,7 +68,10 @@ void zeroLevelSet(vtkImageData* image, vtkPolyData* surface);
 void transferCloudAttributes(vtkPointSet* cloud, vtkPolyData* surface);
 
 /// The convergence history: Run, Iteration, Energy (E_2), Change (eps_1),
-/// CloudError (Err_P), BandSize, Seconds.
+/// CloudError (Err_P), BandSize, Seconds; a tiled history (the octree) also
+/// StoredNodes, Leaves (the octree's, over every rank), LargestRankLeaves (the
+/// most one rank owns) and UniformNodes (the uniform grid at the same cell).
+/// Run 1 is uniform: its leaves are its grid's nodes.
 void historyTable(const std::vector<IterationRecord>& history, vtkTable* table);
 
 extern template void toImage(ReconstructionResult<2>&, double, int, vtkImageData*);

@@ -509,11 +509,11 @@ refused(f, "a malformed formula")""", "the dynamics f_D component x", "column")
 python_case("hjb-courant-negative", """
 f = watched(sltk.vtkCWENOHJBSolver()); f.SetNumberOfNodes(31); f.SetCourantNumber(-1)
 refused(f, "CourantNumber -1")""", "CourantNumber")
-python_case("octree-levels-reversed", """
-f = watched(sltk.vtkOctreeSDF()); f.SetInputDataObject(0, sphere()); f.SetMinimumLevel(6); f.SetMaximumLevel(3)
+python_case("octree-adaptive-storage-off", """
+f = watched(sltk.vtkOctreeSDF()); f.SetInputDataObject(0, sphere()); f.AdaptiveStorageOff()
 f.Update()
-assert errors, "MinimumLevel above MaximumLevel"
-sys.exit(3)""", "Level")
+assert errors, "vtkOctreeSDF without its octree"
+sys.exit(3)""", "use vtkSLLevelSetReconstruct")
 
 
 # ---------------------------------------------------------------- the ParaView plugin (pvpython)

@@ -1,8 +1,8 @@
-"""mpirun -np 2 pvbatch: vtkOctreeSDF on a sphere source that the pipeline splits over
-the ranks (vtkSphereSource makes one piece per rank, so each rank holds part of the points). Each rank's hyper tree grid holds its
-own leaves (Rank = its rank) and masks the other's; the parallel writer writes one piece
-per rank; the ranks' leaves add up to the global leaf count, and every owned leaf's
-DistanceToCloud is the distance from its centre to the whole sphere's points."""
+"""mpirun -np 2 pvbatch: vtkOctreeSDF, the octree reconstruction, on a sphere source. Every rank
+reads the whole cloud and the ranks share the octree's tiles out while they compute. Each rank's
+hyper tree grid holds its own trees (Rank = its rank); the parallel writer writes one piece per
+rank; the pieces' leaves add up to GlobalLeaves; near the front the finest leaves hold the
+sphere's signed distance; the surface pieces join into one closed surface."""
 import glob
 import math
 import os
@@ -12,7 +12,7 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
 from vtkmodules.vtkCommonDataModel import vtkHyperTreeGridNonOrientedGeometryCursor
-from vtkmodules.vtkFiltersSources import vtkSphereSource
+from vtkmodules.vtkFiltersCore import vtkCleanPolyData, vtkFeatureEdges
 from vtkmodules.vtkIOXML import vtkXMLHyperTreeGridReader
 
 plugin, outdir = sys.argv[1], sys.argv[2]
@@ -20,11 +20,11 @@ LoadPlugin(plugin, ns=globals())
 ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
 assert ranks == 2, "run me under mpirun -np 2 pvbatch (got %d ranks)" % ranks
 
-sphere = Sphere(Radius=1.0, ThetaResolution=24, PhiResolution=24)
-octree = OctreeSignedDistancefromPoints(Input=sphere, MinimumLevel=1, MaximumLevel=4, NumberOfThreads=1)
+sphere = Sphere(Radius=1.0, ThetaResolution=48, PhiResolution=48)
+octree = OctreeSignedDistancefromPoints(Input=sphere, NumberOfRuns=2, NumberOfThreads=1)
 octree.UpdatePipeline()
 global_leaves = octree.FieldData["GlobalLeaves"].GetRange()[0]
-assert octree.CellData["Rank"].GetRange() == (-1.0, 1.0), octree.CellData["Rank"].GetRange()
+assert octree.CellData["Rank"].GetRange() == (0.0, 1.0), octree.CellData["Rank"].GetRange()
 
 target = os.path.join(outdir, "octree_ranks.phtg")
 shutil.rmtree(os.path.join(outdir, "octree_ranks"), ignore_errors=True)
@@ -33,18 +33,11 @@ SaveData(target, proxy=octree, DataMode="Binary")
 pieces = sorted(glob.glob(os.path.join(outdir, "octree_ranks", "*.htg")))
 assert len(pieces) == 2, "one piece per rank: %s" % pieces
 
-source = vtkSphereSource()
-source.SetRadius(1.0)
-source.SetThetaResolution(24)
-source.SetPhiResolution(24)
-source.Update()
-cloud = [source.GetOutput().GetPoint(i) for i in range(source.GetOutput().GetNumberOfPoints())]
-
 
 def leaves(htg):
-    """(owner, distance, centre) of every unmasked leaf, and the number of masked cells."""
-    found, masked = [], 0
-    rank, distance = htg.GetCellData().GetArray("Rank"), htg.GetCellData().GetArray("DistanceToCloud")
+    """(owner, level, signed distance, cell size, centre) of every unmasked leaf."""
+    found = []
+    rank, phi, level = (htg.GetCellData().GetArray(name) for name in ("Rank", "SignedDistance", "Level"))
     cursor = vtkHyperTreeGridNonOrientedGeometryCursor()
     for tree in range(htg.GetMaxNumberOfTrees()):
         if htg.GetTree(tree) is None:
@@ -57,28 +50,45 @@ def leaves(htg):
             for child in path:
                 cursor.ToChild(child)
             if cursor.IsMasked():
-                masked += 1
-            elif cursor.IsLeaf():
+                continue
+            if cursor.IsLeaf():
                 cell = cursor.GetGlobalNodeIndex()
                 b = [0.0] * 6
                 cursor.GetBounds(b)
-                found.append((rank.GetValue(cell), distance.GetValue(cell), [0.5 * (b[2 * a] + b[2 * a + 1]) for a in range(3)]))
+                found.append((rank.GetValue(cell), level.GetValue(cell), phi.GetValue(cell), b[1] - b[0],
+                              [0.5 * (b[2 * a] + b[2 * a + 1]) for a in range(3)]))
             else:
                 stack.extend(path + (child,) for child in range(8))
-    return found, masked
+    return found
 
 
-owned = 0
+owned, owners_seen = 0, set()
 for piece in pieces:
     reader = vtkXMLHyperTreeGridReader()
     reader.SetFileName(piece)
     reader.Update()
-    found, masked = leaves(reader.GetOutputDataObject(0))
-    owners = {owner for owner, _, _ in found}
-    assert len(owners) == 1 and -1 not in owners, "a piece's unmasked leaves belong to one rank: %s" % owners
-    assert masked > 0, "the other rank's leaves are masked in %s" % piece
-    worst = max(abs(d - min(math.dist(c, p) for p in cloud)) for _, d, c in found)
-    assert worst < 1e-9, "DistanceToCloud is the distance to the whole cloud (error %g)" % worst
+    found = leaves(reader.GetOutputDataObject(0))
+    owners = {owner for owner, _, _, _, _ in found}
+    assert len(owners) == 1, "a piece's leaves belong to one rank: %s" % owners
+    owners_seen |= owners
+    near = [(p, size, c) for _, lev, p, size, c in found if lev == 3 and abs(p) < 2 * size]
+    worst = max(abs(p - (math.hypot(*c) - 1.0)) / size for p, size, c in near)
+    assert near and worst < 0.5, "the sphere's signed distance near the front (%d leaves, %g cells)" % (len(near), worst)
     owned += len(found)
-assert owned == global_leaves, "the ranks' leaves add up to the forest: %d vs %d" % (owned, global_leaves)
-print("octree ranks ok: %d leaves over %d ranks" % (owned, ranks))
+assert owners_seen == {0, 1}, owners_seen
+assert owned == global_leaves, "the ranks' leaves add up to GlobalLeaves: %d vs %d" % (owned, global_leaves)
+
+# The surface pieces (port 1), gathered: one closed surface.
+surface = servermanager.Fetch(octree, idx=1)
+clean = vtkCleanPolyData()
+clean.SetInputData(surface)
+edges = vtkFeatureEdges()
+edges.SetInputConnection(clean.GetOutputPort())
+edges.BoundaryEdgesOn()
+edges.NonManifoldEdgesOn()
+edges.FeatureEdgesOff()
+edges.ManifoldEdgesOff()
+edges.Update()
+assert surface.GetNumberOfPolys() > 1000 and edges.GetOutput().GetNumberOfCells() == 0, \
+    (surface.GetNumberOfPolys(), edges.GetOutput().GetNumberOfCells())
+print("octree ranks ok: %d leaves over %d ranks, %d triangles, closed" % (owned, ranks, surface.GetNumberOfPolys()))

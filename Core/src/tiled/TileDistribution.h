@@ -122,6 +122,37 @@ public:
     return this->distributed() ? this->Comm->allReduce(count, ReduceOp::Sum) : count;
   }
 
+  /// The octree's leaves, as the hyper tree grid holds them (SLTKTiledGrid.h): a
+  /// node of a tile within the grid, or a slot without a tile; each counted by
+  /// the slot's owner. {over every rank, the most one rank owns}.
+  std::array<Index, 2> leafCounts(const TiledField<D>& field) const
+  {
+    const auto& n = field.grid().Dims;
+    std::int64_t mine = 0;
+    for (Index s = 0; s < field.slotCount(); ++s)
+    {
+      if (!this->ownsSlot(s))
+      {
+        continue;
+      }
+      Index leaves = 1;
+      if (field.slot(s) >= 0)
+      {
+        const std::array<Index, D> t = field.slotCoordinates(s);
+        for (int a = 0; a < D; ++a)
+        {
+          leaves *= std::min<Index>(TileEdge, n[a] - TileEdge * t[a]);
+        }
+      }
+      mine += leaves;
+    }
+    if (!this->distributed())
+    {
+      return { mine, mine };
+    }
+    return { this->Comm->allReduce(mine, ReduceOp::Sum), this->Comm->allReduce(mine, ReduceOp::Max) };
+  }
+
   /// The same status on every rank (the lowest failing rank's), with any
   /// internal error an exchange found.
   Status agree(const Status& local)

@@ -1024,6 +1024,10 @@ Status iterateTiled(const ReconstructionPlan<D>& plan, int run, const Context& c
     cloudErrors<Interp>(field, plan.Cloud, far, ctx, distribution, it.CloudError, fraction);
     it.BandSize = bandCount * TiledField<D>::Nodes;
     it.StoredNodes = distribution.globalTileCount(field) * TiledField<D>::Nodes;
+    const std::array<Index, 2> leaves = distribution.leafCounts(field);
+    it.Leaves = leaves[0];
+    it.LargestRankLeaves = leaves[1];
+    it.UniformNodes = field.grid().nodeCount();
     it.Seconds = secondsSince(start);
     result.History.push_back(it);
     record.Iterations = n + 1;
@@ -1074,6 +1078,7 @@ void recordStorage(const TiledField<D>& field, int run, const TiledRunRecord& it
   r.Run = run;
   r.Tiles = distribution.globalTileCount(field);
   r.StoredNodes = r.Tiles * TiledField<D>::Nodes;
+  r.Leaves = distribution.leafCounts(field)[0];
   r.UniformNodes = field.grid().nodeCount();
   r.Bytes = field.bytes();
   if (distribution.distributed())
@@ -1116,9 +1121,18 @@ Status runTiled(
   // Run 1 is uniform (the coarsest grid), split in slabs over the ranks
   // (reconstruct()'s), then gathered whole on every rank for the transfer.
   SLTK_RETURN_IF_ERROR(reconstructFirstRuns(plan, 1, ctx, records, comm)); // the same status on every rank
+  // Run 1 is uniform: every node is a leaf, and each rank owns its slab's rows.
+  const GridSpec<D>& firstGrid = records.Runs.front().Grid;
+  const Index firstNodes = firstGrid.nodeCount();
+  const Index largestSlab = distribution.distributed()
+    ? comm.allReduce(
+        static_cast<std::int64_t>((records.Slab.End - records.Slab.Begin) * (firstNodes / firstGrid.Dims[D - 1])),
+        ReduceOp::Max)
+    : firstNodes;
   for (IterationRecord& it : records.History)
   {
-    it.StoredNodes = records.Runs.front().Grid.nodeCount(); // run 1 is uniform
+    it.StoredNodes = it.Leaves = it.UniformNodes = firstNodes;
+    it.LargestRankLeaves = largestSlab;
   }
   GridField<D> first = distribution.distributed()
     ? gatherSlabRows(records.SignedDistance, records.Slab, records.WholeGrid, records.SignedDistance.ghost(), comm)

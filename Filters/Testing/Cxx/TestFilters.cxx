@@ -336,14 +336,16 @@ int main(int argc, char* argv[])
     check(badHjb->GetExecutive()->Update() == 0, "the HJB solver refuses an Interpolator outside the registry");
   }
 
-  // Octree: a real vtkHyperTreeGrid output type, never the input type.
+  // Octree: always the octree (TestOctreeSDF.cxx checks its outputs).
   {
     vtkNew<vtkOctreeSDF> octree;
     octree->SetInputDataObject(cloud(100, 2.0));
-    octree->SetMinimumLevel(8);
-    octree->SetMaximumLevel(4);
-    check(octree->GetExecutive()->Update() == 0, "octree refuses MinimumLevel > MaximumLevel");
-    check(octree->GetOutput() != nullptr, "octree output is a vtkHyperTreeGrid");
+    octree->AdaptiveStorageOff();
+    check(octree->GetExecutive()->Update() == 0, "vtkOctreeSDF refuses AdaptiveStorage off");
+    octree->SetNumberOfRuns(9);
+    octree->AdaptiveStorageOn();
+    check(octree->GetExecutive()->Update() == 0 && octree->GetOutput() != nullptr,
+      "vtkOctreeSDF refuses NumberOfRuns 9; its port 0 is a vtkHyperTreeGrid");
   }
 
   std::cout << (failures == 0 ? "all filter checks passed\n" : "filter checks FAILED\n");

@@ -96,28 +96,58 @@ recon.AdaptiveStorage = 0
 recon.UpdatePipeline()
 assert recon.GetDataInformation().GetDataClassName() == "vtkImageData"
 
-octree = OctreeSignedDistancefromPoints(Input=cloud, MinimumLevel=2, MaximumLevel=5)
+# The octree reconstruction: a hyper tree grid with the signed distance, the zero level set and
+# the leaves per iteration. VTK's own hyper tree grid filters take it (Contour is
+# vtkHyperTreeGridContour on it, the axis-aligned Slice vtkHyperTreeGridAxisCut), rendered to a PNG.
+import os, tempfile
+octree = OctreeSignedDistancefromPoints(Input=cloud, NumberOfRuns=2)
 octree.UpdatePipeline()
 assert octree.GetDataInformation().GetDataClassName() == "vtkHyperTreeGrid", \
     octree.GetDataInformation().GetDataClassName()
-arrays = octree.CellData.keys()
-assert {"DistanceToCloud", "Level", "Rank"} <= set(arrays) and "SignedDistance" not in arrays, arrays
-assert octree.CellData["Level"].GetRange() == (0.0, 5.0), octree.CellData["Level"].GetRange()
-# VTK's own HyperTreeGrid filters take the output: the dual grid, contoured at a distance
-# of 0.1 from the sphere's points, gives two shells (inside and outside) around radius 1.
-dual = HyperTreeGridToDualGrid(Input=octree)
-shell = Contour(Input=dual, ContourBy=["POINTS", "DistanceToCloud"], Isosurfaces=[0.1])
-shell.UpdatePipeline()
-bounds = shell.GetDataInformation().GetBounds()
-assert shell.GetDataInformation().GetNumberOfCells() > 100 and abs(bounds[1] - 1.1) < 0.05, bounds
-# Saved as .htg and read back. DataMode Binary: ParaView 5.11's default (appended) writes an
-# unreadable header for hyper tree grids with several cell arrays (Documentation/Toolchain.md).
-import os, tempfile
+assert {"SignedDistance", "DistanceToCloud", "Level", "Rank"} <= set(octree.CellData.keys()), octree.CellData.keys()
+assert octree.CellData["Level"].GetRange() == (0.0, 3.0), octree.CellData["Level"].GetRange()
+octree_history = servermanager.Fetch(octree, idx=2)
+leaves, uniform = (octree_history.GetColumnByName(name) for name in ("Leaves", "UniformNodes"))
+last = octree_history.GetNumberOfRows() - 1
+assert octree_history.GetColumnByName("LargestRankLeaves") is not None and \
+    0 < leaves.GetValue(last) < uniform.GetValue(last), "run 2 holds fewer leaves than its uniform grid"
+octree_surface = servermanager.Fetch(octree, idx=1)
+zero = Contour(Input=octree, ContourBy=["CELLS", "SignedDistance"], Isosurfaces=[0.0])
+zero.UpdatePipeline()
+bounds = zero.GetDataInformation().GetBounds()
+assert zero.GetDataInformation().GetNumberOfCells() == octree_surface.GetNumberOfPolys() > 1000 and \
+    abs(bounds[1] - 1.0) < 0.05, (zero.GetDataInformation().GetNumberOfCells(), octree_surface.GetNumberOfPolys())
+cut = Slice(Input=octree)
+cut.HyperTreeGridSlicer = "Axis Aligned Plane"
+cut.HyperTreeGridSlicer.Normal = [0, 0, 1]
+cut.UpdatePipeline()
+assert cut.GetDataInformation().GetDataClassName() == "vtkHyperTreeGrid", cut.GetDataInformation().GetDataClassName()
+view = CreateView("RenderView")
+view.ViewSize = [400, 300]
+cut_display = Show(cut, view)
+ColorBy(cut_display, ("CELLS", "SignedDistance"))
+cut_display.SetRepresentationType("Surface With Edges")
+Show(zero, view).Opacity = 0.4
+view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp = [0, 0, 5], [0, 0, 0], [0, 1, 0]
+view.ResetCamera()
 with tempfile.TemporaryDirectory() as folder:
+    picture = os.path.join(folder, "octree.png")
+    SaveScreenshot(picture, view, ImageResolution=[400, 300])
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    png = vtkPNGReader()
+    png.SetFileName(picture)
+    png.Update()
+    pixels = png.GetOutput().GetPointData().GetScalars()
+    colours = {tuple(int(pixels.GetComponent(i, k)) for k in range(3)) for i in range(0, pixels.GetNumberOfTuples(), 7)}
+    assert png.GetOutput().GetDimensions()[:2] == (400, 300) and len(colours) > 100, \
+        "the cut's colour map and the contour are drawn (%d colours)" % len(colours)
+    # Saved as .htg and read back. DataMode Binary: ParaView 5.11's default (appended) writes an
+    # unreadable header for hyper tree grids with several cell arrays (Documentation/Toolchain.md).
     saved = os.path.join(folder, "octree.htg")
     SaveData(saved, proxy=octree, DataMode="Binary")
     back = HyperTreeGridReader(FileNames=[saved])
     back.UpdatePipeline()
     assert back.GetDataInformation().GetNumberOfCells() == octree.GetDataInformation().GetNumberOfCells()
-    assert back.CellData["DistanceToCloud"].GetRange() == octree.CellData["DistanceToCloud"].GetRange()
+    assert back.CellData["SignedDistance"].GetRange() == octree.CellData["SignedDistance"].GetRange()
+    Delete(back)
 print("pvpython plugin pipeline ok")

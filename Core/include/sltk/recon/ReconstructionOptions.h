@@ -146,7 +146,13 @@ struct IterationRecord
   double CloudError = 0.0; ///< Err_P^n (4.35)
   Index BandSize = 0;      ///< |B^n|
   Index StoredNodes = 0;   ///< tiled storage: nodes held after the iteration (run 1: its grid); 0 otherwise
-  double Seconds = 0.0;    ///< wall time since the run started
+  /// Tiled storage: the octree's leaves after the iteration (a stored node within the grid, or a
+  /// slot without a tile: the hyper tree grid's leaves, Documentation/Octree.md), over every rank
+  /// and the most one rank owns; run 1 (uniform): its grid's nodes and the largest slab's. 0 otherwise.
+  Index Leaves = 0;
+  Index LargestRankLeaves = 0;
+  Index UniformNodes = 0; ///< tiled storage: the run's uniform grid (the same finest cell); 0 otherwise
+  double Seconds = 0.0;   ///< wall time since the run started
 };
 
 template <int D>

@@ -39,6 +39,7 @@ struct TiledRunRecord
   int Run = 0;
   Index Tiles = 0;          ///< tiles at the end of the run
   Index StoredNodes = 0;    ///< Tiles * 8^D
+  Index Leaves = 0;         ///< the octree's leaves at the end of the run (IterationRecord::Leaves)
   Index UniformNodes = 0;   ///< the uniform grid of the run
   Index AddedTiles = 0;     ///< tiles added during the run (the band moved)
   Index FreedTiles = 0;     ///< tiles freed during the run (the band left them: PruneTiles.h)
