@@ -16,6 +16,11 @@ vtkHyperTreeGrid* vtkOctreeSDF::GetOutput()
   return vtkHyperTreeGrid::SafeDownCast(this->GetOutputDataObject(0));
 }
 
+vtkDataObject* vtkOctreeSDF::GetOutput(int port)
+{
+  return this->GetOutputDataObject(port);
+}
+
 int vtkOctreeSDF::RequestData(vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
 {
   // A property: the same on every rank, so every rank stops here together.

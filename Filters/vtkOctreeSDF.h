@@ -52,8 +52,12 @@ public:
   static vtkOctreeSDF* New();
   vtkTypeMacro(vtkOctreeSDF, vtkSLLevelSetReconstruct);
 
-  /// Port 0, the octree (null before the filter has run).
+  ///@{
+  /// Port 0, the octree (null before the filter has run); GetOutput(port)
+  /// any port (1: the surface, 2: the history).
   vtkHyperTreeGrid* GetOutput();
+  vtkDataObject* GetOutput(int port);
+  ///@}
 
 protected:
   vtkOctreeSDF();

@@ -8,6 +8,7 @@
 #include "SLTKTiledGrid.h"
 #include "SLTKTiledSurface.h"
 
+#include "sltk/cloud/CloudPieces.h"
 #include "sltk/exec/CountingCommunicator.h"
 #include "sltk/exec/Memory.h"
 #include "sltk/recon/Reconstruction.h"
@@ -21,6 +22,7 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkLogger.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointSet.h"
@@ -223,41 +225,52 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
     sltk::vtkbridge::tiledToHyperTreeGrid(
       result.Field, result.Box, [&locator](const std::array<double, 3>& x) { return locator.nearest(x).Distance; },
       grid, result.Owners, comm.rank()); // Initialize()s the grid: its field data after it
+    if (!result.Storage.empty())
+    {
+      vtkNew<vtkDoubleArray> leaves; // the trees' leaves over every rank, on every rank
+      leaves->SetName("GlobalLeaves");
+      leaves->InsertNextValue(static_cast<double>(result.Storage.back().Leaves));
+      grid->GetFieldData()->AddArray(leaves);
+    }
   }
   sltk::vtkbridge::communicationSummary(comm.size(), bytesSent, collectives, grid);
-  if (!result.Storage.empty())
-  {
-    vtkNew<vtkDoubleArray> leaves; // the octree's leaves over every rank, as output (on every rank)
-    leaves->SetName("GlobalLeaves");
-    leaves->InsertNextValue(static_cast<double>(result.Storage.back().Leaves));
-    grid->GetFieldData()->AddArray(leaves);
-  }
   if (comm.rank() > 0)
   {
     return 1; // the history and the run summary once, on rank 0
   }
   sltk::vtkbridge::runSummary(result.Records, grid);
-  vtkNew<vtkDoubleArray> stored, uniform, leaves;
+  vtkNew<vtkDoubleArray> stored, uniform, leaves, largest;
   stored->SetName("RunStoredNodes");
   uniform->SetName("RunUniformNodes");
   leaves->SetName("RunLeaves");
+  largest->SetName("RunLargestRankLeaves");
   for (size_t r = 0; r < result.Records.Runs.size(); ++r)
   {
-    // Run 1 is uniform (its grid is the coarsest: a leaf per node); runs >= 2 have a storage record.
+    // Run 1 is uniform (its grid is the coarsest: a leaf per node; the largest rank's, its
+    // slab's, from the history), but for a single run, which is then stored in tiles: every
+    // tiled run has a storage record.
     const double all = static_cast<double>(result.Records.Runs[r].Grid.nodeCount());
-    double held = all, leafCount = all;
+    double held = all, leafCount = all, largestCount = all;
+    for (const sltk::IterationRecord& it : result.Records.History)
+    {
+      largestCount = it.Run == static_cast<int>(r + 1) ? static_cast<double>(it.LargestRankLeaves) : largestCount;
+    }
     for (const sltk::TiledRunRecord& run : result.Storage)
     {
-      held = run.Run == static_cast<int>(r + 1) ? static_cast<double>(run.StoredNodes) : held;
-      leafCount = run.Run == static_cast<int>(r + 1) ? static_cast<double>(run.Leaves) : leafCount;
+      const bool thisRun = run.Run == static_cast<int>(r + 1);
+      held = thisRun ? static_cast<double>(run.StoredNodes) : held;
+      leafCount = thisRun ? static_cast<double>(run.Leaves) : leafCount;
+      largestCount = thisRun ? static_cast<double>(run.LargestRankLeaves) : largestCount;
     }
     stored->InsertNextValue(held);
     uniform->InsertNextValue(all);
     leaves->InsertNextValue(leafCount);
+    largest->InsertNextValue(largestCount);
   }
   grid->GetFieldData()->AddArray(stored);
   grid->GetFieldData()->AddArray(uniform);
   grid->GetFieldData()->AddArray(leaves);
+  grid->GetFieldData()->AddArray(largest);
   sltk::vtkbridge::historyTable(result.Records.History, history);
   return 1;
 }
@@ -407,6 +420,18 @@ int vtkSLLevelSetReconstruct::RequestData(
     vtkErrorMacro("Input point set rejected: " << status.message());
     return 0;
   }
+  // Every rank needs the whole cloud. A caller that gave each rank its own piece (a
+  // distributed data set, or points on one rank only) gets the union of the pieces; the
+  // surface's DistanceToCloud is then taken to the union, and the cloud's point arrays,
+  // which stay on their ranks, are not transferred.
+  vtkSmartPointer<vtkPointSet> attributesFrom = input;
+  if (sltk::joinCloudPieces(cloud, *comm))
+  {
+    attributesFrom = sltk::vtkbridge::pointsOf(cloud);
+    vtkLog(INFO,
+      "the ranks held different pieces of the cloud: reconstructing their union, "
+        << cloud.size() << " points (the cloud's point arrays are not transferred to the surface)");
+  }
 
   const sltk::Status ranges = comm->agree(checkRanges(this)); // before the thread pool takes NumberOfThreads
   if (!ranges.isOk())
@@ -439,7 +464,7 @@ int vtkSLLevelSetReconstruct::RequestData(
   {
     sltk::vtkbridge::zeroLevelSet(vtkImageData::SafeDownCast(output), surface);
   }
-  sltk::vtkbridge::transferCloudAttributes(input, surface);
+  sltk::vtkbridge::transferCloudAttributes(attributesFrom, surface);
   markOutputsComplete(outputVector,
     comm->size() > 1 && !this->AdaptiveStorage ? std::min(ghostLevels, sltk::vtkbridge::ImageGhostLevelsAvailable)
                                                : EveryGhostLevel);

@@ -544,13 +544,15 @@ Command addReconstructCommand(CLI::App& sltk)
     ->option_text("FILE");
   app
     ->add_option("--csv", command->Csv,
-      "convergence history (run, iteration, energy, change, cloud error,\nband, with --octree the nodes stored, time)")
+      "convergence history (run, iteration, energy, change, cloud error,\nband, with --octree the nodes stored, the "
+      "octree's leaves, the most\non a rank and the uniform grid's nodes, time)")
     ->option_text("FILE");
   app
     ->add_option("--json", command->Json,
       "summary: points, points_reconstructed, outliers_removed, cdx, kp,\n"
       "automatic_choices, recoveries, seconds, peak_memory_mb, ranks,\nsurface_pieces, "
-      "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points]")
+      "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points; --octree: stored_nodes, "
+      "uniform_nodes, leaves]")
     ->option_text("FILE");
   addInterpolatorOption(app, o.Interpolator, "weno3", &o.LeastSquaresQ1);
   addPlanOptions(app, o);

@@ -7,8 +7,10 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkLogger.h"
+#include "vtkNew.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
+#include "vtkPolyData.h"
 
 namespace sltk
 {
@@ -32,6 +34,20 @@ Status toCloud(vtkPointSet* input, PointCloud<3>& cloud)
   return Status::ok();
 }
 
+vtkSmartPointer<vtkPolyData> pointsOf(const PointCloud<3>& cloud)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(cloud.size()));
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(cloud.size()); ++i)
+  {
+    points->SetPoint(i, cloud.Points[static_cast<size_t>(i)].data());
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  return poly;
+}
+
 Status toValidCloud(vtkPointSet* input, PointCloud<3>& cloud)
 {
   SLTK_RETURN_IF_ERROR(toCloud(input, cloud));
@@ -45,8 +61,8 @@ Status checkPropertyRanges(std::initializer_list<PropertyRange> ranges)
     if (!(r.Value >= r.Low && r.Value <= r.High) && !(r.ZeroIsAutomatic && r.Value == 0.0))
     {
       std::ostringstream m;
-      m << r.Name << " = " << r.Value << " is outside its range [" << r.Low << ", " << r.High
-        << "]: set a value in it" << (r.ZeroIsAutomatic ? ", or 0 for automatic" : "");
+      m << r.Name << " = " << r.Value << " is outside its range [" << r.Low << ", " << r.High << "]: set a value in it"
+        << (r.ZeroIsAutomatic ? ", or 0 for automatic" : "");
       return Status::invalidArgument(m.str());
     }
   }

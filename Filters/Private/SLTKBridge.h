@@ -10,10 +10,13 @@
 #include "sltk/exec/Logger.h"
 #include "sltk/interp/InterpolatorKind.h"
 
+#include "vtkSmartPointer.h"
+
 #include <initializer_list>
 
 class vtkAlgorithm;
 class vtkPointSet;
+class vtkPolyData;
 
 namespace sltk
 {
@@ -23,6 +26,8 @@ namespace vtkbridge
 /// Copies the points of a vtkPointSet (cells are ignored) into a 3D cloud.
 /// Fails with a message naming the input when it has no points array.
 Status toCloud(vtkPointSet* input, PointCloud<3>& cloud);
+/// The cloud's points as a vtkPolyData without cells or arrays.
+vtkSmartPointer<vtkPolyData> pointsOf(const PointCloud<3>& cloud);
 
 /// toCloud() followed by validateCloud(): the check every point-cloud filter
 /// runs before it allocates anything.

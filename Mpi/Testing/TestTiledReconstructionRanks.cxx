@@ -58,15 +58,19 @@ RankRun expectSameAsOneRank(const sltk::PointCloud<D>& cloud, const sltk::Recons
     const auto &a = mine.Records.History[k], &b = one.Records.History[k];
     EXPECT_TRUE(a.Run == b.Run && a.Iteration == b.Iteration && near(a.Energy, b.Energy, Tolerance, b.Energy) &&
       near(a.CloudError, b.CloudError, Tolerance, b.CloudError) && near(a.Change, b.Change, Tolerance, b.Change) &&
-      a.BandSize == b.BandSize && a.StoredNodes == b.StoredNodes)
+      a.BandSize == b.BandSize && a.StoredNodes == b.StoredNodes && a.Leaves == b.Leaves &&
+      b.LargestRankLeaves == b.Leaves && a.LargestRankLeaves <= a.Leaves &&
+      a.LargestRankLeaves * comm->size() >= a.Leaves)
       << "run " << b.Run << " iteration " << b.Iteration << ": E_2 " << a.Energy << " / " << b.Energy << ", Err_P "
       << a.CloudError << " / " << b.CloudError << ", eps_1 " << a.Change << " / " << b.Change << ", band " << a.BandSize
-      << " / " << b.BandSize << ", stored " << a.StoredNodes << " / " << b.StoredNodes;
+      << " / " << b.BandSize << ", stored " << a.StoredNodes << " / " << b.StoredNodes << ", leaves " << a.Leaves
+      << " / " << b.Leaves << ", the most on a rank " << a.LargestRankLeaves;
   }
   int layers = 0;
   for (size_t r = 0; r < one.Storage.size(); ++r)
   {
     EXPECT_EQ(mine.Storage[r].Tiles, one.Storage[r].Tiles) << "run " << one.Storage[r].Run;
+    EXPECT_EQ(mine.Storage[r].Leaves, one.Storage[r].Leaves) << "run " << one.Storage[r].Run;
     layers = std::max(layers, mine.Storage[r].GhostLayers);
   }
   // This rank's own tiles against the one-rank field, slot by slot.

@@ -1078,7 +1078,9 @@ void recordStorage(const TiledField<D>& field, int run, const TiledRunRecord& it
   r.Run = run;
   r.Tiles = distribution.globalTileCount(field);
   r.StoredNodes = r.Tiles * TiledField<D>::Nodes;
-  r.Leaves = distribution.leafCounts(field)[0];
+  const std::array<Index, 2> leaves = distribution.leafCounts(field);
+  r.Leaves = leaves[0];
+  r.LargestRankLeaves = leaves[1];
   r.UniformNodes = field.grid().nodeCount();
   r.Bytes = field.bytes();
   if (distribution.distributed())

@@ -8,7 +8,8 @@
 //   to the history's Leaves;
 // - on 2 ranks, every leaf's signed distance is the one-rank filter's at the
 //   same leaf (each rank also runs it alone, vtkDummyController) and the
-//   leaf count is the same;
+//   leaf count is the same; with the points on rank 0 only (the others have
+//   none) the union of the pieces gives the same leaves bit for bit;
 // - port 1, gathered, is one closed surface; port 2 holds the leaves per
 //   iteration;
 // - the .htg written and read back holds the same leaves;
@@ -31,6 +32,7 @@
 #include "vtkHyperTreeGridNonOrientedGeometryCursor.h"
 #include "vtkMPIController.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
@@ -185,10 +187,8 @@ int main(int argc, char* argv[])
   // distance is the sphere's within a fraction of a cell near the front and the distance to
   // the cloud is exact at the leaf's centre: the leaves sit at the nodes.
   double worstPhi = 0.0, worstDistance = 0.0, cell = 0.0;
-  bool ownLeaves = true;
   for (const Leaf& leaf : leaves)
   {
-    ownLeaves = ownLeaves && leaf.Rank == rank;
     if (leaf.Level != 3)
     {
       continue;
@@ -206,16 +206,19 @@ int main(int argc, char* argv[])
     }
     worstDistance = std::max(worstDistance, std::abs(leaf.Distance - exact));
   }
-  check(ownLeaves, "every unmasked leaf's Rank is this rank");
   check(cell > 0.0 && worstPhi < 0.5,
     "SignedDistance is the sphere's within " + std::to_string(worstPhi) + " cells near the front");
   check(worstDistance < 1e-12,
     "DistanceToCloud is exact at the finest leaves' centres (" + std::to_string(worstDistance * 1e12) + "e-12)");
 
   // The ranks' leaves add up to GlobalLeaves and to the history's last Leaves (rank 0's table).
-  long long total = 0, mine = static_cast<long long>(leaves.size()), largest = 0;
+  long long total = 0, mine = static_cast<long long>(leaves.size()), largest = 0, fewest = 0;
   controller->AllReduce(&mine, &total, 1, vtkCommunicator::SUM_OP);
   controller->AllReduce(&mine, &largest, 1, vtkCommunicator::MAX_OP);
+  controller->AllReduce(&mine, &fewest, 1, vtkCommunicator::MIN_OP);
+  check(fewest > 0 && htg->GetCellData()->GetArray("Rank")->GetRange()[0] == rank &&
+      htg->GetCellData()->GetArray("Rank")->GetRange()[1] == rank,
+    "every rank outputs leaves, all with its Rank");
   check(fieldValue(htg, "GlobalLeaves") == static_cast<double>(total),
     "GlobalLeaves (" + std::to_string(fieldValue(htg, "GlobalLeaves")) + ") is the ranks' leaves (" +
       std::to_string(total) + ")");
@@ -233,6 +236,11 @@ int main(int argc, char* argv[])
     check(lastColumnValue(table, "UniformNodes") == fieldValue(htg, "RunUniformNodes", 1) &&
         lastColumnValue(table, "StoredNodes") < lastColumnValue(table, "UniformNodes"),
       "the history's UniformNodes is run 2's grid, which stores fewer nodes");
+    check(fieldValue(htg, "RunLeaves", 1) == static_cast<double>(total) &&
+        fieldValue(htg, "RunLargestRankLeaves", 1) == static_cast<double>(largest) &&
+        fieldValue(htg, "RunLeaves", 0) == fieldValue(htg, "RunUniformNodes", 0),
+      "RunLeaves and RunLargestRankLeaves of run 2 are the leaves output and the most on a rank (" +
+        std::to_string(largest) + "); run 1's leaves are its uniform grid's nodes");
   }
 
   // The surface pieces join into one closed surface.
@@ -276,6 +284,25 @@ int main(int argc, char* argv[])
         " not found)");
     check(worst < 1e-10, "SignedDistance within 1e-10 cell of one rank's (" + std::to_string(worst * 1e15) + "e-15)");
     controller->AllReduce(&worst, &worstAgainstOneRank, 1, vtkCommunicator::MAX_OP);
+
+    // The cloud on rank 0 only (the others have no points): the union of the pieces is the
+    // whole cloud in its order, so every leaf is the whole-cloud run's, bit for bit.
+    vtkNew<vtkOctreeSDF> pieces;
+    pieces->SetInputDataObject(rank == 0 ? input : asPolyData({}));
+    pieces->SetNumberOfRuns(2);
+    pieces->SetNumberOfThreads(1);
+    check(pieces->GetExecutive()->Update() == 1, "the cloud on rank 0 only is reconstructed");
+    const std::vector<Leaf> fromPieces = leavesOf(pieces->GetOutput());
+    bool same = fromPieces.size() == leaves.size();
+    for (size_t i = 0; same && i < leaves.size(); ++i)
+    {
+      same = fromPieces[i].Phi == leaves[i].Phi && fromPieces[i].Centre == leaves[i].Centre;
+    }
+    check(same && fieldValue(pieces->GetOutput(), "GlobalLeaves") == static_cast<double>(total),
+      "the cloud on rank 0 only gives the whole-cloud leaves and values, bit for bit");
+    check(pieces->GetOutputDataObject(1) &&
+        vtkPolyData::SafeDownCast(pieces->GetOutputDataObject(1))->GetPointData()->GetArray("DistanceToCloud"),
+      "a rank without points still gives its surface piece DistanceToCloud");
   }
 
   // .htg written and read back (one file per rank; binary data: VTK 9.2's appended mode

@@ -63,5 +63,6 @@ assert not hjb_errors and solver.GetOutput().GetDimensions() == (31, 31, 1), "ba
 
 octree = sltk.vtkOctreeSDF()
 assert octree.GetAdaptiveStorage() and octree.IsA("vtkSLLevelSetReconstruct"), "the octree filter always stores the octree"
+assert octree.GetOutput().IsA("vtkHyperTreeGrid") and octree.GetOutput(2).IsA("vtkTable"), "GetOutput() is the octree, GetOutput(port) any port"
 print("python wrapping ok")
 sys.exit(0)

@@ -37,17 +37,18 @@ namespace sltk
 struct TiledRunRecord
 {
   int Run = 0;
-  Index Tiles = 0;          ///< tiles at the end of the run
-  Index StoredNodes = 0;    ///< Tiles * 8^D
-  Index Leaves = 0;         ///< the octree's leaves at the end of the run (IterationRecord::Leaves)
-  Index UniformNodes = 0;   ///< the uniform grid of the run
-  Index AddedTiles = 0;     ///< tiles added during the run (the band moved)
-  Index FreedTiles = 0;     ///< tiles freed during the run (the band left them: PruneTiles.h)
-  Index PeakTiles = 0;      ///< the most tiles held at once during the run's iterations (distributed: the
-                            ///< sum of each rank's most, ghosts included)
-  Index ExactDistances = 0; ///< nodes whose distance to the cloud was computed (TiledDistances)
-  double Bytes = 0.0;       ///< the field's memory at the end of the run (this rank's)
-  int GhostLayers = 0;      ///< distributed: the most layers of ghost tiles a step read (1 when the feet stay near)
+  Index Tiles = 0;             ///< tiles at the end of the run
+  Index StoredNodes = 0;       ///< Tiles * 8^D
+  Index Leaves = 0;            ///< the octree's leaves at the end of the run (IterationRecord::Leaves)
+  Index LargestRankLeaves = 0; ///< the most of them one rank owns
+  Index UniformNodes = 0;      ///< the uniform grid of the run
+  Index AddedTiles = 0;        ///< tiles added during the run (the band moved)
+  Index FreedTiles = 0;        ///< tiles freed during the run (the band left them: PruneTiles.h)
+  Index PeakTiles = 0;         ///< the most tiles held at once during the run's iterations (distributed: the
+                               ///< sum of each rank's most, ghosts included)
+  Index ExactDistances = 0;    ///< nodes whose distance to the cloud was computed (TiledDistances)
+  double Bytes = 0.0;          ///< the field's memory at the end of the run (this rank's)
+  int GhostLayers = 0;         ///< distributed: the most layers of ghost tiles a step read (1 when the feet stay near)
 };
 
 template <int D>

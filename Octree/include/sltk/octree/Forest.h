@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #pragma once
 /// \file Forest.h
-/// A p4est forest of octrees over a box (thesis ch. 5): the adaptive grid of
-/// vtkOctreeSDF. This first piece owns the forest and refines it uniformly;
-/// the adaptive level-set machinery builds on it.
+/// A p4est forest of octrees over a box (thesis ch. 5). This first piece owns
+/// the forest and refines it uniformly; CloudForest.h refines it over a cloud.
+/// No filter uses it (vtkOctreeSDF runs Core's tiled band,
+/// Documentation/Octree.md).
 ///
 /// The ranks are those of a communicator seam (sltk/exec/Communicator.h:
 /// SLTK::Mpi's, or the serial one), so this header needs neither mpi.h nor
