@@ -101,6 +101,8 @@ sltk::Status checkRanges(vtkSLLevelSetReconstruct* self)
     { "ThinningFactor", self->GetThinningFactor(), 0, 100 },
     { "NumberOfThreads", double(self->GetNumberOfThreads()), 0, 1024 },
     { "CellSizeFactor", self->GetCellSizeFactor(), sltk::CellSizeFactorRange[0], sltk::CellSizeFactorRange[1], true },
+    { "MaximumLevel", double(self->GetMaximumLevel()), double(sltk::MaximumLevelRange[0]),
+      double(sltk::MaximumLevelRange[1]), true },
     { "OutsideThresholdFactor", self->GetOutsideThresholdFactor(), sltk::OutsideThresholdFactorRange[0],
       sltk::OutsideThresholdFactorRange[1], true },
   });
@@ -112,6 +114,7 @@ sltk::Status optionsOf(vtkSLLevelSetReconstruct* self, sltk::ReconstructionOptio
   o = sltk::ReconstructionOptions{};
   o.Runs = self->GetNumberOfRuns();
   o.CellSizeFactor = self->GetCellSizeFactor();
+  o.MaximumLevel = self->GetMaximumLevel();
   o.OutsideThresholdFactor = self->GetOutsideThresholdFactor();
   o.Padding = self->GetPadding();
   o.MaxIterations = self->GetMaximumNumberOfIterations();
@@ -523,6 +526,7 @@ void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
      << (sltk::interpolatorFromCode(this->Interpolator, kind) ? sltk::interpolatorInfo(kind).Label : "?") << "\n";
   os << indent << "NumberOfRuns: " << this->NumberOfRuns << "\n";
   os << indent << "CellSizeFactor: " << this->CellSizeFactor << "\n";
+  os << indent << "MaximumLevel: " << this->MaximumLevel << "\n";
   os << indent << "OutsideThresholdFactor: " << this->OutsideThresholdFactor << "\n";
   os << indent << "MemoryBudget: " << this->MemoryBudget << " MB\n";
   os << indent << "AutomaticCleaning: " << this->AutomaticCleaning << "\n";

@@ -91,6 +91,16 @@ public:
   ///@}
 
   ///@{
+  /// The thesis's octree level instead of CellSizeFactor (default 0: off):
+  /// the finest cell is the cloud's largest extent / 2^MaximumLevel ((5.1)
+  /// with (5.10)-(5.11)), run 1 at level MaximumLevel - NumberOfRuns + 1.
+  /// Range 1-30 with CellSizeFactor 0; a level whose grid would not fit the
+  /// memory is refused with the level that fits.
+  vtkSetMacro(MaximumLevel, int);
+  vtkGetMacro(MaximumLevel, int);
+  ///@}
+
+  ///@{
   /// K_P: the outside-marking threshold K_P h_P of the initial data (4.4.4).
   /// Default 0: automatic (the K_P of 2-32, at least 2 CellSizeFactor, whose
   /// initial surface encloses the most; the thesis uses 2, and 10 for scans
@@ -287,6 +297,7 @@ protected:
   int Interpolator = WENO3;
   int NumberOfRuns = 3;
   double CellSizeFactor = 0.0;
+  int MaximumLevel = 0;
   double OutsideThresholdFactor = 0.0;
   int MemoryBudget = 0;
   bool LocalOffset = true;

@@ -212,6 +212,11 @@ void addPlanOptions(CLI::App* app, sltk::ReconstructionOptions& options)
     "C_dx of (4.36): first-run cell size in units of h_P (default:\nautomatic, 1 or the smallest that fits "
     "--memory-budget)")
     ->option_text("C");
+  addNumber(app, "--max-level", options.MaximumLevel,
+    "the thesis's octree level instead of --cdx: the finest cell is the\ncloud's largest extent / 2^L (5.1), run 1 at "
+    "level L - R + 1 (5.10)")
+    ->option_text("L")
+    ->excludes("--cdx");
   addNumber(app, "--kp", options.OutsideThresholdFactor,
     "K_P: initial surface at K h_P from the cloud (default: automatic,\nthe K of 2-32, at least 2 C_dx, that encloses "
     "the most; the "

@@ -256,6 +256,7 @@ int Reconstruct::run() const
   filter->SetInterpolator(static_cast<int>(o.Interpolator));
   filter->SetLeastSquaresQ1(o.LeastSquaresQ1);
   filter->SetCellSizeFactor(o.CellSizeFactor);
+  filter->SetMaximumLevel(o.MaximumLevel);
   filter->SetOutsideThresholdFactor(o.OutsideThresholdFactor);
   filter->SetNumberOfRuns(o.Runs);
   filter->SetMaximumNumberOfIterations(o.MaxIterations);
@@ -557,6 +558,7 @@ Command addReconstructCommand(CLI::App& sltk)
   addInterpolatorOption(app, o.Interpolator, "weno3", &o.LeastSquaresQ1);
   addPlanOptions(app, o);
   app->get_option("--cdx")->check(within(sltk::CellSizeFactorRange[0], sltk::CellSizeFactorRange[1]));
+  app->get_option("--max-level")->check(within(sltk::MaximumLevelRange[0], sltk::MaximumLevelRange[1]));
   app->get_option("--kp")->check(within(sltk::OutsideThresholdFactorRange[0], sltk::OutsideThresholdFactorRange[1]));
   app->get_option("--runs")->check(within(1, 6));
   app->get_option("--outlier-sigma")->check(within(0.5, 100))->needs("--remove-outliers");

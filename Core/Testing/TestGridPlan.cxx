@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 TEST(GridPlan, RunsHalveTheSpacing)
 {
   sltk::Box<2> box{ { -1.0, -1.0 }, { 1.0, 1.0 } };
@@ -15,7 +18,7 @@ TEST(GridPlan, RunsHalveTheSpacing)
   sltk::GridPlan<2> plan;
   ASSERT_TRUE(sltk::planGrids(box, 0.1, opt, plan).isOk());
   ASSERT_EQ(plan.Runs.size(), 3u);
-  EXPECT_DOUBLE_EQ(plan.Runs[0].Spacing[0], 0.1);  // (4.36), r = 1
+  EXPECT_DOUBLE_EQ(plan.Runs[0].Spacing[0], 0.1);   // (4.36), r = 1
   EXPECT_DOUBLE_EQ(plan.Runs[2].Spacing[1], 0.025); // r = 3
   EXPECT_EQ(plan.Runs[0].Dims[0], 20 + 1 + 20);
   EXPECT_EQ(plan.Runs[2].Dims[0], 80 + 1 + 20);
@@ -38,6 +41,39 @@ TEST(GridPlan, RefusesGridsBeyondTheMemoryBudgetWithASuggestion)
   EXPECT_TRUE(plan.Runs.empty());
   opt.CellSizeFactor = 30.0;
   EXPECT_TRUE(sltk::planGrids(box, 1e-3, opt, plan).isOk());
+}
+
+TEST(GridPlan, OctreeLevelsGiveTheFinestCell)
+{
+  // (5.1), (5.10)-(5.11): the finest cell is the cloud's extent / 2^L; run 1 is L - R + 1.
+  const double extent = 3.0, hP = 0.01;
+  for (int level = 4; level <= 12; ++level)
+  {
+    const double cdx = sltk::cellSizeFactorForLevel(level, 3, extent, hP);
+    EXPECT_DOUBLE_EQ(cdx * hP / 4.0, extent / std::ldexp(1.0, level)) << level;
+    EXPECT_EQ(sltk::levelForCellSizeFactor(cdx, 3, extent, hP), level) << "the level of its own C_dx";
+    EXPECT_EQ(sltk::levelForCellSizeFactor(cdx * 1.01, 3, extent, hP), level - 1) << "a coarser C_dx: one level less";
+  }
+  // A refusal names the level that fits when the plan came from a level, C_dx otherwise.
+  sltk::Box<3> box{ { 0.0, 0.0, 0.0 }, { 1.0, 0.5, 0.5 } };
+  sltk::GridPlanOptions opt;
+  opt.Runs = 3;
+  opt.MemoryBudget = 100000000; // 100 MB
+  opt.MaximumLevel = 11;
+  opt.CellSizeFactor = sltk::cellSizeFactorForLevel(11, 3, 1.0, 1e-3);
+  sltk::GridPlan<3> plan;
+  const sltk::Status s = sltk::planGrids(box, 1e-3, opt, plan);
+  ASSERT_EQ(s.code(), sltk::StatusCode::OutOfMemory);
+  const size_t at = s.message().find("use MaximumLevel <= ");
+  ASSERT_NE(at, std::string::npos) << s.message();
+  const int fits = std::stoi(s.message().substr(at + 20));
+  EXPECT_LT(fits, 11);
+  opt.MaximumLevel = fits;
+  opt.CellSizeFactor = sltk::cellSizeFactorForLevel(fits, 3, 1.0, 1e-3);
+  EXPECT_TRUE(sltk::planGrids(box, 1e-3, opt, plan).isOk()) << "the level named fits";
+  opt.MaximumLevel = fits + 1;
+  opt.CellSizeFactor = sltk::cellSizeFactorForLevel(fits + 1, 3, 1.0, 1e-3);
+  EXPECT_FALSE(sltk::planGrids(box, 1e-3, opt, plan).isOk()) << "and is the finest that does";
 }
 
 TEST(GridPlan, RejectsBadParameters)

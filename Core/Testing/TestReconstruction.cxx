@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 namespace
 {
@@ -135,4 +136,39 @@ TEST(Reconstruction, RefusesBadInputAndAbsurdGrids)
   options = {};
   options.GammaFactor = 1.0; // gamma < beta
   EXPECT_EQ(sltk::reconstruct(sltk::sphereCloud(500), options, ctx, result).code(), sltk::StatusCode::InvalidArgument);
+}
+
+TEST(Reconstruction, PlansFromTheThesissOctreeLevel)
+{
+  // MaximumLevel L: the finest cell is the cloud's largest extent / 2^L, (5.1) with (5.10)-(5.11).
+  const sltk::PointCloud<3> cloud = sltk::sphereCloud(2000, 1.0);
+  sltk::ReconstructionOptions options;
+  options.MaximumLevel = 7;
+  sltk::ReconstructionPlan<3> plan;
+  ASSERT_TRUE(sltk::planReconstruction(cloud, options, sltk::Context{}, plan).isOk());
+  const double edge = sltk::largestExtent(sltk::boundingBox(plan.Cloud));
+  EXPECT_NEAR(plan.Grids.Runs.back().Spacing[0] * 128.0, edge, 1e-12 * edge);
+  EXPECT_NEAR(plan.Grids.Runs.front().Spacing[0] * 32.0, edge, 1e-12 * edge) << "run 1 at level 7 - 3 + 1";
+  EXPECT_FALSE(plan.AutomaticCellSize) << "a level is the user's choice: no automatic restart changes it";
+  // With C_dx too, or a level whose C_dx leaves its range, or beyond 30: refused, with the fix.
+  options.CellSizeFactor = 1.0;
+  sltk::Status s = sltk::planReconstruction(cloud, options, sltk::Context{}, plan);
+  EXPECT_EQ(s.code(), sltk::StatusCode::InvalidArgument);
+  EXPECT_NE(s.message().find("not both"), std::string::npos) << s.message();
+  options.CellSizeFactor = 0.0;
+  options.MaximumLevel = 12; // the sphere is about 25 h_P across: C_dx = 25 * 4 / 2^12, below 0.05
+  s = sltk::planReconstruction(cloud, options, sltk::Context{}, plan);
+  EXPECT_EQ(s.code(), sltk::StatusCode::InvalidArgument);
+  EXPECT_NE(s.message().find("use MaximumLevel "), std::string::npos) << s.message();
+  options.MaximumLevel = 31;
+  EXPECT_EQ(sltk::planReconstruction(cloud, options, sltk::Context{}, plan).code(), sltk::StatusCode::InvalidArgument);
+  // Too fine for the memory: the level that fits is named, and it fits.
+  options.MaximumLevel = 10;
+  options.MemoryBudget = 200u << 20;
+  s = sltk::planReconstruction(cloud, options, sltk::Context{}, plan);
+  ASSERT_EQ(s.code(), sltk::StatusCode::OutOfMemory);
+  const size_t at = s.message().find("use MaximumLevel <= ");
+  ASSERT_NE(at, std::string::npos) << s.message();
+  options.MaximumLevel = std::stoi(s.message().substr(at + 20));
+  EXPECT_TRUE(sltk::planReconstruction(cloud, options, sltk::Context{}, plan).isOk()) << options.MaximumLevel;
 }

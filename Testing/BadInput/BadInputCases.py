@@ -374,6 +374,10 @@ option_case("sigma-without-removal", ("--outlier-sigma", "2"), 2, "--remove-outl
 option_case("thin-to-nothing", ("--thin", "100"), 1, "after cleaning")
 option_case("grid-beyond-memory", ("--cdx", "0.05", "--memory-budget", "16"), 1, "use C_dx >=")
 option_case("cdx-missing-value", ("--cdx",), 2, "--cdx", "needs a value")
+option_case("max-level-with-cdx", ("--max-level", "8", "--cdx", "1"), 2, "excludes")
+option_case("max-level-31", ("--max-level", "31"), 2, "--max-level", "[1, 30]")
+option_case("max-level-beyond-memory", ("--max-level", "9", "--memory-budget", "16"), 1,
+            "use MaximumLevel <=")
 
 
 @case("cli.option.large-cloud-beyond-memory")

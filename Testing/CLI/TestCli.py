@@ -136,6 +136,15 @@ tree_runs = json.load(open(octree_json))["runs"]
 expect([r["iterations"] for r in tree_runs] == [r["iterations"] for r in summary["runs"]] and
        0 < tree_runs[1]["stored_nodes"] < tree_runs[1]["uniform_nodes"],
        "--octree: the uniform run's iterations, fewer nodes stored in run 2")
+expect(tree_runs[1]["leaves"] > tree_runs[1]["stored_nodes"] and tree_runs[0]["leaves"] == tree_runs[0]["uniform_nodes"],
+       "--octree JSON: the octree's leaves per run (run 1: its uniform grid's nodes)")
+# --max-level L: the thesis's octree level (5.1) sets the finest cell, the cloud's extent / 2^L.
+level_json = os.path.join(tmp, "level.json")
+rc, out, err = run("info", sphere, "--runs", "2", "--max-level", "6", "--json", level_json)
+points = [[float(v) for v in line.split()] for line in open(sphere) if not line.startswith("#")]
+extent = max(max(p[a] for p in points) - min(p[a] for p in points) for a in range(3))
+expect(rc == 0 and abs(json.load(open(level_json))["runs"][1]["dx"] * 64 - extent) < 1e-9 * extent,
+       "--max-level 6: the finest cell is the cloud's extent / 64 (%s)" % err.strip())
 # --interpolator lsq-q1: the thesis's chapter 5 least squares (5.5) instead of Q1, on the same grids.
 lsq_json = os.path.join(tmp, "lsq.json")
 rc, out, err = run("reconstruct", sphere, "--runs", "2", "--interpolator", "lsq-q1", "--json", lsq_json, "--quiet")

@@ -128,6 +128,16 @@ Status validateReconstructionOptions(const ReconstructionOptions& options)
       << "]";
     return Status::invalidArgument(m.str());
   }
+  if (options.MaximumLevel != 0 &&
+    (options.MaximumLevel < MaximumLevelRange[0] || options.MaximumLevel > MaximumLevelRange[1] ||
+      options.CellSizeFactor > 0.0))
+  {
+    std::ostringstream m;
+    m << "MaximumLevel = " << options.MaximumLevel << ", C_dx = " << options.CellSizeFactor
+      << ": give the finest level (" << MaximumLevelRange[0] << "-" << MaximumLevelRange[1]
+      << ") or C_dx, not both (0 turns either off)";
+    return Status::invalidArgument(m.str());
+  }
   SLTK_RETURN_IF_ERROR(validateSchedule(options.Schedule));
   return options.Reinit.validate<D>();
 }
@@ -147,6 +157,31 @@ std::string number(double value)
   s.precision(3);
   s << value;
   return s.str();
+}
+
+/// C_dx from the finest level asked (GridPlan.h), refused when it leaves C_dx's range.
+template <int D>
+Status cellSizeFromLevel(ReconstructionPlan<D>& plan)
+{
+  const int level = plan.Options.MaximumLevel, runs = plan.Options.Runs;
+  const double edge = largestExtent(boundingBox(plan.Cloud));
+  const double cdx = cellSizeFactorForLevel(level, runs, edge, plan.CloudSpacing);
+  if (!(cdx >= CellSizeFactorRange[0] && cdx <= CellSizeFactorRange[1]))
+  {
+    std::ostringstream m;
+    m << "MaximumLevel = " << level << " with " << runs << " runs gives C_dx = " << cdx << " (the cloud is "
+      << number(edge / plan.CloudSpacing) << " h_P across), outside [" << CellSizeFactorRange[0] << ", "
+      << CellSizeFactorRange[1] << "]: use MaximumLevel "
+      << std::max(
+           MaximumLevelRange[0], levelForCellSizeFactor(CellSizeFactorRange[1], runs, edge, plan.CloudSpacing) + 1)
+      << "-" << levelForCellSizeFactor(CellSizeFactorRange[0], runs, edge, plan.CloudSpacing);
+    return Status::invalidArgument(m.str());
+  }
+  plan.Options.CellSizeFactor = cdx;
+  plan.Choices.push_back("C_dx = " + number(cdx) + " from MaximumLevel " + std::to_string(level) +
+    ": the finest cell is the cloud's extent / 2^" + std::to_string(level) + ", run 1 at level " +
+    std::to_string(level - runs + 1) + " (5.10)");
+  return Status::ok();
 }
 
 /// An automatic C_dx: 1, or the smallest that fits the budget (AutomaticParameters.h).
@@ -214,8 +249,13 @@ Status planReconstruction(
   }
   SLTK_RETURN_IF_ERROR(locate(std::move(cloud), plan, ctx));
 
-  const bool automaticCellSize = !(options.CellSizeFactor > 0.0);
+  const bool automaticCellSize = !(options.CellSizeFactor > 0.0) && options.MaximumLevel == 0;
+  if (options.MaximumLevel > 0)
+  {
+    SLTK_RETURN_IF_ERROR(cellSizeFromLevel(plan));
+  }
   GridPlanOptions po;
+  po.MaximumLevel = options.MaximumLevel;
   po.Runs = options.Runs;
   po.Padding = options.Padding;
   po.BytesPerNode = ReconstructionBytesPerNode;
@@ -326,7 +366,9 @@ Status checkSlabMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor,
     std::ostringstream m;
     m << "the largest grid (of " << grids.Runs.size() << " runs, " << whole << " nodes) split over " << ranks
       << " ranks leaves the " << here << " rank(s) on this machine windows of up to " << window << " nodes each, about "
-      << need / 1e9 << " GB together, more than the " << budget / 1e9 << " GB available: use C_dx >= " << fit
+      << need / 1e9 << " GB together, more than the " << budget / 1e9 << " GB available: use "
+      << coarserGridAdvice(fit, static_cast<int>(grids.Runs.size()), plan.Options.MaximumLevel,
+           largestExtent(boundingBox(plan.Cloud)), plan.CloudSpacing)
       << ", fewer runs, or the ranks on more machines";
     grids.Runs.clear();
     return Status::outOfMemory(m.str());
@@ -375,7 +417,10 @@ Status checkTiledMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor
     std::ostringstream m;
     m << "the tiled reconstruction (" << grids.Runs.size() << " runs, the finest grid " << grids.Runs.back().nodeCount()
       << " nodes) would need about " << need / 1e9 << " GB for run 1's grid and the finest run's tiles, more than the "
-      << budget / 1e9 << " GB available: use C_dx >= " << fit << " or fewer runs";
+      << budget / 1e9 << " GB available: use "
+      << coarserGridAdvice(fit, static_cast<int>(grids.Runs.size()), plan.Options.MaximumLevel,
+           largestExtent(boundingBox(plan.Cloud)), plan.CloudSpacing)
+      << " or fewer runs";
     grids.Runs.clear();
     return Status::outOfMemory(m.str());
   }
@@ -422,6 +467,7 @@ Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSize
   po.Padding = plan.Options.Padding;
   po.BytesPerNode = ReconstructionBytesPerNode;
   po.MemoryBudget = plan.Options.MemoryBudget;
+  po.MaximumLevel = plan.Options.MaximumLevel;
   // Room for run 1's initial surface, plus the band gamma and two cells.
   const double dx1 = cellSizeFactor * plan.CloudSpacing; // (4.36)
   po.FirstRunPadding = static_cast<int>(std::ceil(plan.FirstRunReach / dx1 + plan.Options.GammaFactor + 2.0));

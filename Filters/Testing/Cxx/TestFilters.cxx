@@ -342,8 +342,12 @@ int main(int argc, char* argv[])
     octree->SetInputDataObject(cloud(100, 2.0));
     octree->AdaptiveStorageOff();
     check(octree->GetExecutive()->Update() == 0, "vtkOctreeSDF refuses AdaptiveStorage off");
-    octree->SetNumberOfRuns(9);
     octree->AdaptiveStorageOn();
+    octree->SetMaximumLevel(40);
+    check(octree->GetExecutive()->Update() == 0 && octree->GetMaximumLevel() == 40,
+      "vtkOctreeSDF refuses MaximumLevel 40, not clamped");
+    octree->SetMaximumLevel(0);
+    octree->SetNumberOfRuns(9);
     check(octree->GetExecutive()->Update() == 0 && octree->GetOutput() != nullptr,
       "vtkOctreeSDF refuses NumberOfRuns 9; its port 0 is a vtkHyperTreeGrid");
   }

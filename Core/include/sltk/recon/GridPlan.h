@@ -7,9 +7,11 @@
 /// Also refuses plans whose finest grid would not fit in memory, naming the
 /// node count and a C_dx that would fit.
 
-#include "sltk/grid/GridSpec.h"
 #include "sltk/cloud/PointCloud.h"
+#include "sltk/grid/GridSpec.h"
 
+#include <algorithm>
+#include <string>
 #include <vector>
 
 namespace sltk
@@ -17,19 +19,45 @@ namespace sltk
 
 struct GridPlanOptions
 {
-  int Runs = 3;                 ///< number of runs r = 1..Runs
-  double CellSizeFactor = 1.0;  ///< C_dx of (4.36); the thesis's default is 1
-  int Padding = 10;             ///< empty cells around the bounding box, per side
-  int FirstRunPadding = 0;      ///< run 1's padding in its cells when larger (room for the initial surface)
-  double BytesPerNode = 48.0;   ///< memory a node costs in the solver (estimate)
+  int Runs = 3;                   ///< number of runs r = 1..Runs
+  double CellSizeFactor = 1.0;    ///< C_dx of (4.36); the thesis's default is 1
+  int Padding = 10;               ///< empty cells around the bounding box, per side
+  int FirstRunPadding = 0;        ///< run 1's padding in its cells when larger (room for the initial surface)
+  double BytesPerNode = 48.0;     ///< memory a node costs in the solver (estimate)
   std::uint64_t MemoryBudget = 0; ///< bytes allowed; 0: available memory
+  int MaximumLevel = 0; ///< > 0: C_dx came from this finest level (cellSizeFactorForLevel); refusals name a level
 };
+
+/// The C_dx whose finest cell (run `runs`) is the cloud's largest extent / 2^L:
+/// the thesis's octree levels, (5.1) with (5.10)-(5.11), run 1 at level
+/// L0 = L - runs + 1 of the minimal cube around the cloud.
+double cellSizeFactorForLevel(int level, int runs, double largestExtent, double cloudSpacing);
+
+/// The finest level L whose C_dx is at least `cellSizeFactor`: the finest
+/// level no finer than that C_dx's grid.
+int levelForCellSizeFactor(double cellSizeFactor, int runs, double largestExtent, double cloudSpacing);
+
+/// A memory refusal's fix: "C_dx >= fit", or, when the plan's C_dx came from
+/// a level, "MaximumLevel <= L" with the level that fits.
+std::string coarserGridAdvice(double fit, int runs, int maximumLevel, double largestExtent, double cloudSpacing);
+
+/// The largest extent of a box (the edge of the minimal cube around it, Delta P of (5.10)).
+template <int D>
+double largestExtent(const Box<D>& bounds)
+{
+  double edge = 0.0;
+  for (int a = 0; a < D; ++a)
+  {
+    edge = std::max(edge, bounds.extent(a));
+  }
+  return edge;
+}
 
 template <int D>
 struct GridPlan
 {
-  double CloudSpacing = 0.0;           ///< h_P
-  std::vector<GridSpec<D>> Runs;       ///< one grid per run, coarse to fine
+  double CloudSpacing = 0.0;     ///< h_P
+  std::vector<GridSpec<D>> Runs; ///< one grid per run, coarse to fine
 };
 
 /// Plans the run grids for a validated cloud of spacing h_P.

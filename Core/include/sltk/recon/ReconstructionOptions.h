@@ -46,6 +46,8 @@ inline RunParameters table41(int run)
 /// CLI, the filters' property checks and validateReconstructionOptions().
 constexpr double CellSizeFactorRange[2] = { 0.05, 100.0 };
 constexpr double OutsideThresholdFactorRange[2] = { 0.1, 100.0 };
+/// The finest octree levels a plan may ask for (0: C_dx decides).
+constexpr int MaximumLevelRange[2] = { 1, 30 };
 
 struct ReconstructionOptions
 {
@@ -53,6 +55,10 @@ struct ReconstructionOptions
   /// C_dx (4.36); 0: automatic, 1 (the thesis's default) unless the finest grid
   /// would not fit the memory budget (AutomaticParameters.h).
   double CellSizeFactor = 0.0;
+  /// The thesis's octree level instead of C_dx (0: off): the finest cell is the
+  /// cloud's largest extent / 2^MaximumLevel, (5.1) with (5.10)-(5.11), so run 1
+  /// is at level MaximumLevel - Runs + 1 (GridPlan.h cellSizeFactorForLevel).
+  int MaximumLevel = 0;
   /// K_P: gamma_P = K_P h_P (4.4.4; the thesis: 2, 10 for scans with holes);
   /// 0: automatic, the K_P whose initial surface encloses the most (AutomaticParameters.h).
   double OutsideThresholdFactor = 0.0;
