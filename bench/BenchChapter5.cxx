@@ -243,12 +243,12 @@ void runCase(const std::string& name, const sltk::PointCloud<D>& cloud, const Ex
     }
     if (args.PerIteration)
     {
-      std::printf("  %3s %5s %11s %11s %12s %12s\n", "run", "iter", "E_p", "Err_P", "stored", "uniform");
+      std::printf("  %3s %5s %11s %11s %12s %12s %12s\n", "run", "iter", "E_p", "Err_P", "stored", "leaves", "uniform");
       for (const sltk::IterationRecord& it : result.Records.History)
       {
-        const double uniform = static_cast<double>(runs[static_cast<size_t>(it.Run - 1)].Grid.nodeCount());
-        std::printf("  %3d %5d %11.4e %11.4e %12lld %12.0f\n", it.Run, it.Iteration, it.Energy, it.CloudError,
-          static_cast<long long>(it.StoredNodes), uniform);
+        std::printf("  %3d %5d %11.4e %11.4e %12lld %12lld %12lld\n", it.Run, it.Iteration, it.Energy, it.CloudError,
+          static_cast<long long>(it.StoredNodes), static_cast<long long>(it.Leaves),
+          static_cast<long long>(it.UniformNodes));
       }
     }
   }
@@ -268,7 +268,8 @@ int main(int argc, char** argv)
   app.add_option("--threads", args.Threads, "threads (0: all hardware threads)")->capture_default_str();
   app.add_option("--kp", args.OutsideFactor, "K_P: the initial sphere's margin beyond the farthest point, in h_P")
     ->capture_default_str();
-  app.add_flag("--per-iteration", args.PerIteration, "every iteration's E_p, Err_P and stored nodes (Fig. 5.7, 5.14)");
+  app.add_flag("--per-iteration", args.PerIteration,
+    "every iteration's E_p, Err_P, stored nodes and octree leaves (Fig. 5.7, 5.14)");
   app.add_option("--tables", args.Tables, "thesis_tables.json")->capture_default_str();
   if (const auto code = parseCommandLine(app, argc, argv))
   {

@@ -2,7 +2,9 @@
 reads the whole cloud and the ranks share the octree's tiles out while they compute. Each rank's
 hyper tree grid holds its own trees (Rank = its rank); the parallel writer writes one piece per
 rank; the pieces' leaves add up to GlobalLeaves; near the front the finest leaves hold the
-sphere's signed distance; the surface pieces join into one closed surface."""
+sphere's signed distance; the surface pieces join into one closed surface, and so does the
+contour of the trees (VTK's vtkHyperTreeGridContour) after HyperTreeGridGhostCellsGenerator:
+without the ghost cells it leaves a seam between the ranks' trees."""
 import glob
 import math
 import os
@@ -78,17 +80,32 @@ for piece in pieces:
 assert owners_seen == {0, 1}, owners_seen
 assert owned == global_leaves, "the ranks' leaves add up to GlobalLeaves: %d vs %d" % (owned, global_leaves)
 
+
+
+def open_edges(poly):
+    """Boundary and non-manifold edges of a gathered surface, its points merged."""
+    clean = vtkCleanPolyData()
+    clean.SetInputData(poly)
+    edges = vtkFeatureEdges()
+    edges.SetInputConnection(clean.GetOutputPort())
+    edges.BoundaryEdgesOn()
+    edges.NonManifoldEdgesOn()
+    edges.FeatureEdgesOff()
+    edges.ManifoldEdgesOff()
+    edges.Update()
+    return edges.GetOutput().GetNumberOfCells()
+
+
 # The surface pieces (port 1), gathered: one closed surface.
 surface = servermanager.Fetch(octree, idx=1)
-clean = vtkCleanPolyData()
-clean.SetInputData(surface)
-edges = vtkFeatureEdges()
-edges.SetInputConnection(clean.GetOutputPort())
-edges.BoundaryEdgesOn()
-edges.NonManifoldEdgesOn()
-edges.FeatureEdgesOff()
-edges.ManifoldEdgesOff()
-edges.Update()
-assert surface.GetNumberOfPolys() > 1000 and edges.GetOutput().GetNumberOfCells() == 0, \
-    (surface.GetNumberOfPolys(), edges.GetOutput().GetNumberOfCells())
-print("octree ranks ok: %d leaves over %d ranks, %d triangles, closed" % (owned, ranks, surface.GetNumberOfPolys()))
+assert surface.GetNumberOfPolys() > 1000 and open_edges(surface) == 0, (surface.GetNumberOfPolys(), open_edges(surface))
+# The trees' contour: the same triangles with the ghost cells; a seam without them.
+with_ghosts = Contour(Input=HyperTreeGridGhostCellsGenerator(Input=octree), ContourBy=["CELLS", "SignedDistance"],
+                      Isosurfaces=[0.0])
+contour = servermanager.Fetch(with_ghosts)
+assert contour.GetNumberOfPolys() == surface.GetNumberOfPolys() and open_edges(contour) == 0, \
+    (contour.GetNumberOfPolys(), surface.GetNumberOfPolys(), open_edges(contour))
+seam = servermanager.Fetch(Contour(Input=octree, ContourBy=["CELLS", "SignedDistance"], Isosurfaces=[0.0]))
+assert open_edges(seam) > 0, "without ghost cells the ranks' contours do not meet (if they do, update the docs)"
+print("octree ranks ok: %d leaves over %d ranks, %d triangles, closed; the trees' contour with ghost cells too"
+      % (owned, ranks, surface.GetNumberOfPolys()))

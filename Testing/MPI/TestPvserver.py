@@ -88,9 +88,17 @@ try:
     surface_regions = Connectivity(Input=OutputPort(recon, 1))
     surface_regions.UpdatePipeline()
     assert surface_regions.CellData["RegionId"].GetRange() == (0.0, 0.0), "the surface pieces join into one region"
+    # The octree on the same server: each rank its own trees; its surface pieces join too.
+    octree = OctreeSignedDistancefromPoints(Input=cloud, NumberOfRuns=2, NumberOfThreads=1)
+    octree.UpdatePipeline()
+    assert octree.GetDataInformation().GetDataClassName() == "vtkHyperTreeGrid"
+    assert octree.CellData["Rank"].GetRange() == (0.0, 1.0), "the trees of both server ranks"
+    octree_regions = Connectivity(Input=OutputPort(octree, 1))
+    octree_regions.UpdatePipeline()
+    assert octree_regions.CellData["RegionId"].GetRange() == (0.0, 0.0), "the octree's surface is one region"
     Disconnect()
     print("pvserver on 2 ranks: partitioned result, serial values and errors; a failure on one slab, no hang; "
-          "the reconstruction split into blocks whose surface is one region")
+          "the reconstruction split into blocks and the octree into trees, each surface one region")
 finally:
     server.terminate()
     try:
