@@ -223,7 +223,7 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
   sltk::vtkbridge::tiledZeroLevelSet(result.Field, result.Box, surface, result.Owners, comm.rank());
   if (self->GetGenerateAdaptiveGrid())
   {
-    sltk::completeTiledDistances(plan, ctx, result.Field);
+    sltk::completeTiledDistances(plan, ctx, result.Field, result.Owners, comm.rank()); // its own tiles
     const sltk::PointLocator<3>& locator = *plan.Locator;
     sltk::vtkbridge::tiledToHyperTreeGrid(
       result.Field, result.Box, [&locator](const std::array<double, 3>& x) { return locator.nearest(x).Distance; },

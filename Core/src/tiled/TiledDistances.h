@@ -64,7 +64,9 @@ public:
 
   /// Makes d exact at every stored node (for an output of the whole field).
   /// Returns how many nodes were computed.
-  static Index completeAll(TiledField<D>& field, const PointLocator<D>& locator, const Context& ctx)
+  /// Every stored node's distance of the tiles `mine(id)` accepts.
+  template <class Mine>
+  static Index completeAll(TiledField<D>& field, const PointLocator<D>& locator, const Context& ctx, Mine&& mine)
   {
     return static_cast<Index>(ctx.parallelSum(
       0, field.tileCount(),
@@ -74,6 +76,10 @@ public:
         for (Index id = b; id < e; ++id)
         {
           const auto tile = static_cast<std::int32_t>(id);
+          if (!mine(tile))
+          {
+            continue;
+          }
           double* d = field.distance(tile);
           for (Index k = 0; k < TiledField<D>::Nodes; ++k)
           {

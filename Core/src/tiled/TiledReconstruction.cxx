@@ -1213,9 +1213,11 @@ Status reconstructTiled(
 }
 
 template <int D>
-Index completeTiledDistances(const ReconstructionPlan<D>& plan, const Context& ctx, TiledField<D>& field)
+Index completeTiledDistances(const ReconstructionPlan<D>& plan, const Context& ctx, TiledField<D>& field,
+  const std::vector<std::int32_t>& owners, int rank)
 {
-  return TiledDistances<D>::completeAll(field, *plan.Locator, ctx);
+  return TiledDistances<D>::completeAll(field, *plan.Locator, ctx,
+    [&](std::int32_t id) { return owners.empty() || owners[static_cast<size_t>(field.tileSlot(id))] == rank; });
 }
 
 template <int D>
@@ -1251,8 +1253,10 @@ template Status reconstructTiled(
   const ReconstructionPlan<2>&, const Context&, TiledReconstructionResult<2>&, const Communicator&);
 template void gatherTiles(TiledReconstructionResult<2>&, const Communicator&, int);
 template void gatherTiles(TiledReconstructionResult<3>&, const Communicator&, int);
-template Index completeTiledDistances(const ReconstructionPlan<2>&, const Context&, TiledField<2>&);
-template Index completeTiledDistances(const ReconstructionPlan<3>&, const Context&, TiledField<3>&);
+template Index completeTiledDistances(
+  const ReconstructionPlan<2>&, const Context&, TiledField<2>&, const std::vector<std::int32_t>&, int);
+template Index completeTiledDistances(
+  const ReconstructionPlan<3>&, const Context&, TiledField<3>&, const std::vector<std::int32_t>&, int);
 template Status reconstructTiled(
   const ReconstructionPlan<3>&, const Context&, TiledReconstructionResult<3>&, const Communicator&);
 

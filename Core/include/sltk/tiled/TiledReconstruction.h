@@ -84,17 +84,22 @@ void gatherTiles(TiledReconstructionResult<D>& result, const Communicator& comm,
 
 /// The run computes the distance to the cloud only within one node of the
 /// band (TiledField's d is NaN elsewhere); this gives every stored node its
-/// exact distance (the plan's cloud), for an output of the whole field.
-/// Returns how many nodes were computed.
+/// exact distance (the plan's cloud), for an output of the whole field;
+/// with `owners` (a distributed result's) only the tiles `rank` owns, the
+/// ones its output holds (not its ghosts). Returns how many nodes were
+/// computed.
 template <int D>
-Index completeTiledDistances(const ReconstructionPlan<D>& plan, const Context& ctx, TiledField<D>& field);
+Index completeTiledDistances(const ReconstructionPlan<D>& plan, const Context& ctx, TiledField<D>& field,
+  const std::vector<std::int32_t>& owners = {}, int rank = 0);
 
 extern template Status reconstructTiled(
   const ReconstructionPlan<2>&, const Context&, TiledReconstructionResult<2>&, const Communicator&);
 extern template void gatherTiles(TiledReconstructionResult<2>&, const Communicator&, int);
 extern template void gatherTiles(TiledReconstructionResult<3>&, const Communicator&, int);
-extern template Index completeTiledDistances(const ReconstructionPlan<2>&, const Context&, TiledField<2>&);
-extern template Index completeTiledDistances(const ReconstructionPlan<3>&, const Context&, TiledField<3>&);
+extern template Index completeTiledDistances(
+  const ReconstructionPlan<2>&, const Context&, TiledField<2>&, const std::vector<std::int32_t>&, int);
+extern template Index completeTiledDistances(
+  const ReconstructionPlan<3>&, const Context&, TiledField<3>&, const std::vector<std::int32_t>&, int);
 extern template Status reconstructTiled(
   const ReconstructionPlan<3>&, const Context&, TiledReconstructionResult<3>&, const Communicator&);
 
