@@ -424,13 +424,12 @@ int vtkSLLevelSetReconstruct::RequestData(
     return 0;
   }
   // Every rank needs the whole cloud. A caller that gave each rank its own piece (a
-  // distributed data set, or points on one rank only) gets the union of the pieces; the
-  // surface's DistanceToCloud is then taken to the union, and the cloud's point arrays,
-  // which stay on their ranks, are not transferred.
-  vtkSmartPointer<vtkPointSet> attributesFrom = input;
-  if (sltk::joinCloudPieces(cloud, *comm))
+  // distributed data set, or points on one rank only) gets the union of the pieces
+  // (CloudPieces.h); the surface's DistanceToCloud is then taken to the union, and the
+  // cloud's point arrays, which stay on their ranks, are not transferred.
+  const bool joined = sltk::joinCloudPieces(cloud, *comm);
+  if (joined)
   {
-    attributesFrom = sltk::vtkbridge::pointsOf(cloud);
     vtkLog(INFO,
       "the ranks held different pieces of the cloud: reconstructing their union, "
         << cloud.size() << " points (the cloud's point arrays are not transferred to the surface)");
@@ -466,6 +465,14 @@ int vtkSLLevelSetReconstruct::RequestData(
   if (!this->AdaptiveStorage)
   {
     sltk::vtkbridge::zeroLevelSet(vtkImageData::SafeDownCast(output), surface);
+  }
+  vtkSmartPointer<vtkPointSet> attributesFrom = input;
+  if (joined) // the union again, now that the reconstruction's memory is free
+  {
+    sltk::PointCloud<3> all;
+    sltk::vtkbridge::toCloud(input, all);
+    sltk::unionOfPieces(all, *comm);
+    attributesFrom = sltk::vtkbridge::pointsOf(all);
   }
   sltk::vtkbridge::transferCloudAttributes(attributesFrom, surface);
   markOutputsComplete(outputVector,

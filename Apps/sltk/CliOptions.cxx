@@ -216,7 +216,8 @@ void addPlanOptions(CLI::App* app, sltk::ReconstructionOptions& options)
     "the thesis's octree level instead of --cdx: the finest cell is the\ncloud's largest extent / 2^L (5.1), run 1 at "
     "level L - R + 1 (5.10)")
     ->option_text("L")
-    ->excludes("--cdx");
+    ->excludes("--cdx")
+    ->check(within(sltk::MaximumLevelRange[0], sltk::MaximumLevelRange[1]));
   addNumber(app, "--kp", options.OutsideThresholdFactor,
     "K_P: initial surface at K h_P from the cloud (default: automatic,\nthe K of 2-32, at least 2 C_dx, that encloses "
     "the most; the "

@@ -558,7 +558,6 @@ Command addReconstructCommand(CLI::App& sltk)
   addInterpolatorOption(app, o.Interpolator, "weno3", &o.LeastSquaresQ1);
   addPlanOptions(app, o);
   app->get_option("--cdx")->check(within(sltk::CellSizeFactorRange[0], sltk::CellSizeFactorRange[1]));
-  app->get_option("--max-level")->check(within(sltk::MaximumLevelRange[0], sltk::MaximumLevelRange[1]));
   app->get_option("--kp")->check(within(sltk::OutsideThresholdFactorRange[0], sltk::OutsideThresholdFactorRange[1]));
   app->get_option("--runs")->check(within(1, 6));
   app->get_option("--outlier-sigma")->check(within(0.5, 100))->needs("--remove-outliers");

@@ -54,26 +54,6 @@ TEST(GridPlan, OctreeLevelsGiveTheFinestCell)
     EXPECT_EQ(sltk::levelForCellSizeFactor(cdx, 3, extent, hP), level) << "the level of its own C_dx";
     EXPECT_EQ(sltk::levelForCellSizeFactor(cdx * 1.01, 3, extent, hP), level - 1) << "a coarser C_dx: one level less";
   }
-  // A refusal names the level that fits when the plan came from a level, C_dx otherwise.
-  sltk::Box<3> box{ { 0.0, 0.0, 0.0 }, { 1.0, 0.5, 0.5 } };
-  sltk::GridPlanOptions opt;
-  opt.Runs = 3;
-  opt.MemoryBudget = 100000000; // 100 MB
-  opt.MaximumLevel = 11;
-  opt.CellSizeFactor = sltk::cellSizeFactorForLevel(11, 3, 1.0, 1e-3);
-  sltk::GridPlan<3> plan;
-  const sltk::Status s = sltk::planGrids(box, 1e-3, opt, plan);
-  ASSERT_EQ(s.code(), sltk::StatusCode::OutOfMemory);
-  const size_t at = s.message().find("use MaximumLevel <= ");
-  ASSERT_NE(at, std::string::npos) << s.message();
-  const int fits = std::stoi(s.message().substr(at + 20));
-  EXPECT_LT(fits, 11);
-  opt.MaximumLevel = fits;
-  opt.CellSizeFactor = sltk::cellSizeFactorForLevel(fits, 3, 1.0, 1e-3);
-  EXPECT_TRUE(sltk::planGrids(box, 1e-3, opt, plan).isOk()) << "the level named fits";
-  opt.MaximumLevel = fits + 1;
-  opt.CellSizeFactor = sltk::cellSizeFactorForLevel(fits + 1, 3, 1.0, 1e-3);
-  EXPECT_FALSE(sltk::planGrids(box, 1e-3, opt, plan).isOk()) << "and is the finest that does";
 }
 
 TEST(GridPlan, RejectsBadParameters)

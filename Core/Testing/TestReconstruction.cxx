@@ -159,7 +159,7 @@ TEST(Reconstruction, PlansFromTheThesissOctreeLevel)
   options.MaximumLevel = 12; // the sphere is about 25 h_P across: C_dx = 25 * 4 / 2^12, below 0.05
   s = sltk::planReconstruction(cloud, options, sltk::Context{}, plan);
   EXPECT_EQ(s.code(), sltk::StatusCode::InvalidArgument);
-  EXPECT_NE(s.message().find("use MaximumLevel "), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("outside [0.05, 100]: use MaximumLevel 2-"), std::string::npos) << s.message();
   options.MaximumLevel = 31;
   EXPECT_EQ(sltk::planReconstruction(cloud, options, sltk::Context{}, plan).code(), sltk::StatusCode::InvalidArgument);
   // Too fine for the memory: the level that fits is named, and it fits.
@@ -167,8 +167,18 @@ TEST(Reconstruction, PlansFromTheThesissOctreeLevel)
   options.MemoryBudget = 200u << 20;
   s = sltk::planReconstruction(cloud, options, sltk::Context{}, plan);
   ASSERT_EQ(s.code(), sltk::StatusCode::OutOfMemory);
-  const size_t at = s.message().find("use MaximumLevel <= ");
+  const size_t at = s.message().find("use MaximumLevel (--max-level) <= ");
   ASSERT_NE(at, std::string::npos) << s.message();
-  options.MaximumLevel = std::stoi(s.message().substr(at + 20));
-  EXPECT_TRUE(sltk::planReconstruction(cloud, options, sltk::Context{}, plan).isOk()) << options.MaximumLevel;
+  const int fits = std::stoi(s.message().substr(at + 34));
+  options.MaximumLevel = fits;
+  EXPECT_TRUE(sltk::planReconstruction(cloud, options, sltk::Context{}, plan).isOk()) << fits;
+  options.MaximumLevel = fits + 1;
+  if (fits + 1 < 10)
+  {
+    EXPECT_EQ(sltk::planReconstruction(cloud, options, sltk::Context{}, plan).code(), sltk::StatusCode::OutOfMemory)
+      << "the level named is the finest that fits";
+  }
+  options.MaximumLevel = 1; // with 3 runs, run 1 would be below level 0
+  s = sltk::planReconstruction(cloud, options, sltk::Context{}, plan);
+  EXPECT_NE(s.message().find("below level 0"), std::string::npos) << s.message();
 }

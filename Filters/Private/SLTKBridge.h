@@ -23,8 +23,9 @@ namespace sltk
 namespace vtkbridge
 {
 
-/// Copies the points of a vtkPointSet (cells are ignored) into a 3D cloud.
-/// Fails with a message naming the input when it has no points array.
+/// Copies the points of a vtkPointSet (cells are ignored) into a 3D cloud;
+/// no points (a rank's empty piece) give an empty cloud. Fails only without
+/// an input.
 Status toCloud(vtkPointSet* input, PointCloud<3>& cloud);
 /// The cloud's points as a vtkPolyData without cells or arrays.
 vtkSmartPointer<vtkPolyData> pointsOf(const PointCloud<3>& cloud);

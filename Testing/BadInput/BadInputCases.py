@@ -377,7 +377,7 @@ option_case("cdx-missing-value", ("--cdx",), 2, "--cdx", "needs a value")
 option_case("max-level-with-cdx", ("--max-level", "8", "--cdx", "1"), 2, "excludes")
 option_case("max-level-31", ("--max-level", "31"), 2, "--max-level", "[1, 30]")
 option_case("max-level-beyond-memory", ("--max-level", "9", "--memory-budget", "16"), 1,
-            "use MaximumLevel <=")
+            "use MaximumLevel (--max-level) <=", "the finest level that fits")
 
 
 @case("cli.option.large-cloud-beyond-memory")

@@ -1,66 +1,104 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/cloud/CloudPieces.h"
 
-#include <algorithm>
-#include <limits>
+#include <cmath>
+#include <cstring>
+#include <unordered_set>
 
 namespace sltk
 {
 
 namespace
 {
-/// size, then per axis: sum, sum of squares, min, max (an empty cloud: +-inf).
-template <int D>
-std::vector<double> fingerprint(const PointCloud<D>& cloud)
+/// splitmix64's finaliser: a well-mixed 64-bit hash of a 64-bit word.
+std::uint64_t mix(std::uint64_t x)
 {
-  std::vector<double> print(1 + 4 * D, 0.0);
-  print[0] = static_cast<double>(cloud.size());
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+/// A hash of a point's coordinate bits (+0 and -0 alike).
+template <int D>
+std::uint64_t pointHash(const std::array<double, D>& p)
+{
+  std::uint64_t h = 0;
   for (int a = 0; a < D; ++a)
   {
-    print[1 + 4 * a + 2] = std::numeric_limits<double>::infinity();
-    print[1 + 4 * a + 3] = -std::numeric_limits<double>::infinity();
+    const double v = p[a] == 0.0 ? 0.0 : p[a];
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    h = mix(h ^ mix(bits + static_cast<std::uint64_t>(a)));
   }
-  for (const auto& p : cloud.Points)
-  {
-    for (int a = 0; a < D; ++a)
-    {
-      double* axis = &print[static_cast<size_t>(1 + 4 * a)];
-      axis[0] += p[a];
-      axis[1] += p[a] * p[a];
-      axis[2] = std::min(axis[2], p[a]);
-      axis[3] = std::max(axis[3], p[a]);
-    }
-  }
-  return print;
+  return h;
 }
 } // namespace
 
 template <int D>
-bool joinCloudPieces(PointCloud<D>& cloud, const Communicator& comm)
+bool cloudsDiffer(const PointCloud<D>& cloud, const Communicator& comm)
 {
   if (comm.size() == 1)
   {
     return false;
   }
-  // NaN coordinates make every comparison false: such clouds count as different and are
-  // joined, so that the validation after sees every rank's NaN.
-  const std::vector<double> print = fingerprint(cloud);
-  std::vector<double> low = print, high = print;
-  comm.allReduce(low.data(), low.size(), ReduceOp::Min);
-  comm.allReduce(high.data(), high.size(), ReduceOp::Max);
-  bool same = true;
-  for (size_t i = 0; i < print.size(); ++i)
+  std::uint64_t sum = 0;
+  std::int64_t finite = 1;
+  for (const auto& p : cloud.Points)
   {
-    same = same && low[i] == high[i];
+    for (int a = 0; a < D; ++a)
+    {
+      finite = finite && std::isfinite(p[a]) ? 1 : 0;
+    }
+    sum += pointHash<D>(p); // mod 2^64: the order of the points does not matter
   }
-  if (same)
+  std::int64_t low[3] = { cloud.size(), static_cast<std::int64_t>(sum >> 1), static_cast<std::int64_t>(sum & 1) };
+  std::int64_t high[3] = { low[0], low[1], low[2] };
+  comm.allReduce(low, 3, ReduceOp::Min);
+  comm.allReduce(high, 3, ReduceOp::Max);
+  if (comm.allReduce(finite, ReduceOp::Min) == 0)
   {
     return false;
   }
-  cloud.Points = comm.allGatherV(cloud.Points);
+  return low[0] != high[0] || low[1] != high[1] || low[2] != high[2];
+}
+
+template <int D>
+Index unionOfPieces(PointCloud<D>& cloud, const Communicator& comm)
+{
+  std::vector<std::array<double, D>> all = comm.allGatherV(cloud.Points);
+  struct Hash
+  {
+    std::size_t operator()(const std::array<double, D>& p) const { return static_cast<std::size_t>(pointHash<D>(p)); }
+  };
+  std::unordered_set<std::array<double, D>, Hash> seen;
+  seen.reserve(all.size());
+  cloud.Points.clear();
+  for (const auto& p : all)
+  {
+    if (seen.insert(p).second)
+    {
+      cloud.Points.push_back(p);
+    }
+  }
+  return static_cast<Index>(all.size()) - cloud.size();
+}
+
+template <int D>
+bool joinCloudPieces(PointCloud<D>& cloud, const Communicator& comm)
+{
+  if (!cloudsDiffer(cloud, comm))
+  {
+    return false;
+  }
+  unionOfPieces(cloud, comm);
   return true;
 }
 
+template bool cloudsDiffer(const PointCloud<2>&, const Communicator&);
+template bool cloudsDiffer(const PointCloud<3>&, const Communicator&);
+template Index unionOfPieces(PointCloud<2>&, const Communicator&);
+template Index unionOfPieces(PointCloud<3>&, const Communicator&);
 template bool joinCloudPieces(PointCloud<2>&, const Communicator&);
 template bool joinCloudPieces(PointCloud<3>&, const Communicator&);
 

@@ -17,23 +17,9 @@ double cellSizeFactorForLevel(int level, int runs, double largestExtent, double 
 
 int levelForCellSizeFactor(double cellSizeFactor, int runs, double largestExtent, double cloudSpacing)
 {
-  return static_cast<int>(
-    std::floor(std::log2(largestExtent * std::ldexp(1.0, runs - 1) / (cloudSpacing * cellSizeFactor))));
-}
-
-std::string coarserGridAdvice(double fit, int runs, int maximumLevel, double largestExtent, double cloudSpacing)
-{
-  std::ostringstream m;
-  if (maximumLevel > 0)
-  {
-    const int level = levelForCellSizeFactor(fit, runs, largestExtent, cloudSpacing);
-    m << "MaximumLevel <= " << level << " (--max-level; C_dx >= " << fit << ")";
-  }
-  else
-  {
-    m << "C_dx >= " << fit;
-  }
-  return m.str();
+  // A level's own C_dx gives the level back despite the rounding of log2.
+  const double level = std::log2(largestExtent * std::ldexp(1.0, runs - 1) / (cloudSpacing * cellSizeFactor));
+  return static_cast<int>(std::floor(level + 1e-9));
 }
 
 namespace
@@ -107,9 +93,7 @@ Status planGrids(const Box<D>& bounds, double cloudSpacing, const GridPlanOption
     const double fit = options.CellSizeFactor * std::pow(need / (0.9 * budget), 1.0 / D);
     std::ostringstream m;
     m << "the largest grid (of " << options.Runs << " runs) would have " << nodes << " nodes, about " << need / 1e9
-      << " GB, more than the " << budget / 1e9 << " GB available: use "
-      << coarserGridAdvice(fit, options.Runs, options.MaximumLevel, largestExtent(bounds), cloudSpacing)
-      << " or fewer runs";
+      << " GB, more than the " << budget / 1e9 << " GB available: use C_dx >= " << fit << " or fewer runs";
     plan.Runs.clear();
     return Status::outOfMemory(m.str());
   }

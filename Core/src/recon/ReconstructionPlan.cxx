@@ -129,13 +129,26 @@ Status validateReconstructionOptions(const ReconstructionOptions& options)
     return Status::invalidArgument(m.str());
   }
   if (options.MaximumLevel != 0 &&
-    (options.MaximumLevel < MaximumLevelRange[0] || options.MaximumLevel > MaximumLevelRange[1] ||
-      options.CellSizeFactor > 0.0))
+    (options.MaximumLevel < MaximumLevelRange[0] || options.MaximumLevel > MaximumLevelRange[1]))
   {
     std::ostringstream m;
-    m << "MaximumLevel = " << options.MaximumLevel << ", C_dx = " << options.CellSizeFactor
-      << ": give the finest level (" << MaximumLevelRange[0] << "-" << MaximumLevelRange[1]
-      << ") or C_dx, not both (0 turns either off)";
+    m << "MaximumLevel (--max-level) = " << options.MaximumLevel << " is outside [" << MaximumLevelRange[0] << ", "
+      << MaximumLevelRange[1] << "]: give a level in it, or 0 for C_dx";
+    return Status::invalidArgument(m.str());
+  }
+  if (options.MaximumLevel != 0 && options.CellSizeFactor > 0.0)
+  {
+    std::ostringstream m;
+    m << "MaximumLevel (--max-level) = " << options.MaximumLevel << " and C_dx = " << options.CellSizeFactor
+      << ": give the finest level or C_dx, not both (0 turns either off)";
+    return Status::invalidArgument(m.str());
+  }
+  if (options.MaximumLevel != 0 && options.MaximumLevel < options.Runs - 1)
+  {
+    std::ostringstream m;
+    m << "MaximumLevel (--max-level) = " << options.MaximumLevel << " with " << options.Runs
+      << " runs puts run 1 below level 0 (5.10: L0 = L - R + 1): use MaximumLevel >= " << options.Runs - 1
+      << " or fewer runs";
     return Status::invalidArgument(m.str());
   }
   SLTK_RETURN_IF_ERROR(validateSchedule(options.Schedule));
@@ -169,19 +182,53 @@ Status cellSizeFromLevel(ReconstructionPlan<D>& plan)
   if (!(cdx >= CellSizeFactorRange[0] && cdx <= CellSizeFactorRange[1]))
   {
     std::ostringstream m;
-    m << "MaximumLevel = " << level << " with " << runs << " runs gives C_dx = " << cdx << " (the cloud is "
-      << number(edge / plan.CloudSpacing) << " h_P across), outside [" << CellSizeFactorRange[0] << ", "
-      << CellSizeFactorRange[1] << "]: use MaximumLevel "
-      << std::max(
-           MaximumLevelRange[0], levelForCellSizeFactor(CellSizeFactorRange[1], runs, edge, plan.CloudSpacing) + 1)
+    m << "MaximumLevel (--max-level) = " << level << " with " << runs << " runs gives C_dx = " << cdx
+      << " (the cloud is " << number(edge / plan.CloudSpacing) << " h_P across), outside [" << CellSizeFactorRange[0]
+      << ", " << CellSizeFactorRange[1] << "]: use MaximumLevel "
+      << std::max({ MaximumLevelRange[0], runs - 1,
+           levelForCellSizeFactor(CellSizeFactorRange[1], runs, edge, plan.CloudSpacing) + 1 })
       << "-" << levelForCellSizeFactor(CellSizeFactorRange[0], runs, edge, plan.CloudSpacing);
     return Status::invalidArgument(m.str());
   }
   plan.Options.CellSizeFactor = cdx;
-  plan.Choices.push_back("C_dx = " + number(cdx) + " from MaximumLevel " + std::to_string(level) +
+  plan.Choices.push_back("C_dx = " + number(cdx) + " from the given MaximumLevel " + std::to_string(level) +
     ": the finest cell is the cloud's extent / 2^" + std::to_string(level) + ", run 1 at level " +
     std::to_string(level - runs + 1) + " (5.10)");
   return Status::ok();
+}
+
+/// A plan from a level refused for memory (`refusal`): the refusal with its
+/// advice replaced by the finest level that fits, found by planning every
+/// coarser level in C_dx's range (a level's C_dx extrapolation misses the
+/// padding and the ghost rows, which do not shrink with the cell).
+template <int D>
+Status withFittingLevel(const ReconstructionPlan<D>& plan, const Status& refusal)
+{
+  const int runs = plan.Options.Runs;
+  const double edge = largestExtent(boundingBox(plan.Cloud));
+  const int coarsest = std::max({ MaximumLevelRange[0], runs - 1,
+    levelForCellSizeFactor(CellSizeFactorRange[1], runs, edge, plan.CloudSpacing) + 1 });
+  int fits = 0;
+  for (int level = plan.Options.MaximumLevel - 1; level >= coarsest && fits == 0; --level)
+  {
+    GridPlan<D> grids;
+    fits =
+      planRunGrids(plan, runs, cellSizeFactorForLevel(level, runs, edge, plan.CloudSpacing), grids).isOk() ? level : 0;
+  }
+  const std::string& message = refusal.message();
+  const size_t use = message.find(": use C_dx >= ");
+  std::ostringstream m;
+  m << message.substr(0, use) << ": ";
+  if (fits > 0)
+  {
+    m << "use MaximumLevel (--max-level) <= " << fits << ", the finest level that fits, or fewer runs";
+  }
+  else
+  {
+    m << "no MaximumLevel of " << coarsest << "-" << plan.Options.MaximumLevel
+      << " fits: use fewer runs or a larger memory budget";
+  }
+  return Status::outOfMemory(m.str());
 }
 
 /// An automatic C_dx: 1, or the smallest that fits the budget (AutomaticParameters.h).
@@ -255,7 +302,6 @@ Status planReconstruction(
     SLTK_RETURN_IF_ERROR(cellSizeFromLevel(plan));
   }
   GridPlanOptions po;
-  po.MaximumLevel = options.MaximumLevel;
   po.Runs = options.Runs;
   po.Padding = options.Padding;
   po.BytesPerNode = ReconstructionBytesPerNode;
@@ -329,7 +375,12 @@ Status planReconstruction(
   // Run 1 must hold the initial surface (at the K_P of a restart, when automatic).
   plan.FirstRunReach =
     initialReach(bounds, sparsest * std::max(farDistance, roomFactor * plan.CloudSpacing), plan.InitialEllipsoid);
-  SLTK_RETURN_IF_ERROR(planRunGrids(plan, options.Runs, plan.Options.CellSizeFactor, plan.Grids));
+  const Status planned = planRunGrids(plan, options.Runs, plan.Options.CellSizeFactor, plan.Grids);
+  if (planned.code() == StatusCode::OutOfMemory && options.MaximumLevel > 0)
+  {
+    return withFittingLevel(plan, planned);
+  }
+  SLTK_RETURN_IF_ERROR(planned);
   return refuseFlatCloud(plan, ctx);
 }
 
@@ -366,9 +417,7 @@ Status checkSlabMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor,
     std::ostringstream m;
     m << "the largest grid (of " << grids.Runs.size() << " runs, " << whole << " nodes) split over " << ranks
       << " ranks leaves the " << here << " rank(s) on this machine windows of up to " << window << " nodes each, about "
-      << need / 1e9 << " GB together, more than the " << budget / 1e9 << " GB available: use "
-      << coarserGridAdvice(fit, static_cast<int>(grids.Runs.size()), plan.Options.MaximumLevel,
-           largestExtent(boundingBox(plan.Cloud)), plan.CloudSpacing)
+      << need / 1e9 << " GB together, more than the " << budget / 1e9 << " GB available: use C_dx >= " << fit
       << ", fewer runs, or the ranks on more machines";
     grids.Runs.clear();
     return Status::outOfMemory(m.str());
@@ -417,10 +466,7 @@ Status checkTiledMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor
     std::ostringstream m;
     m << "the tiled reconstruction (" << grids.Runs.size() << " runs, the finest grid " << grids.Runs.back().nodeCount()
       << " nodes) would need about " << need / 1e9 << " GB for run 1's grid and the finest run's tiles, more than the "
-      << budget / 1e9 << " GB available: use "
-      << coarserGridAdvice(fit, static_cast<int>(grids.Runs.size()), plan.Options.MaximumLevel,
-           largestExtent(boundingBox(plan.Cloud)), plan.CloudSpacing)
-      << " or fewer runs";
+      << budget / 1e9 << " GB available: use C_dx >= " << fit << " or fewer runs";
     grids.Runs.clear();
     return Status::outOfMemory(m.str());
   }
@@ -467,7 +513,6 @@ Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSize
   po.Padding = plan.Options.Padding;
   po.BytesPerNode = ReconstructionBytesPerNode;
   po.MemoryBudget = plan.Options.MemoryBudget;
-  po.MaximumLevel = plan.Options.MaximumLevel;
   // Room for run 1's initial surface, plus the band gamma and two cells.
   const double dx1 = cellSizeFactor * plan.CloudSpacing; // (4.36)
   po.FirstRunPadding = static_cast<int>(std::ceil(plan.FirstRunReach / dx1 + plan.Options.GammaFactor + 2.0));

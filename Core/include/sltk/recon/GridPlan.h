@@ -11,7 +11,6 @@
 #include "sltk/grid/GridSpec.h"
 
 #include <algorithm>
-#include <string>
 #include <vector>
 
 namespace sltk
@@ -25,7 +24,6 @@ struct GridPlanOptions
   int FirstRunPadding = 0;        ///< run 1's padding in its cells when larger (room for the initial surface)
   double BytesPerNode = 48.0;     ///< memory a node costs in the solver (estimate)
   std::uint64_t MemoryBudget = 0; ///< bytes allowed; 0: available memory
-  int MaximumLevel = 0; ///< > 0: C_dx came from this finest level (cellSizeFactorForLevel); refusals name a level
 };
 
 /// The C_dx whose finest cell (run `runs`) is the cloud's largest extent / 2^L:
@@ -36,10 +34,6 @@ double cellSizeFactorForLevel(int level, int runs, double largestExtent, double 
 /// The finest level L whose C_dx is at least `cellSizeFactor`: the finest
 /// level no finer than that C_dx's grid.
 int levelForCellSizeFactor(double cellSizeFactor, int runs, double largestExtent, double cloudSpacing);
-
-/// A memory refusal's fix: "C_dx >= fit", or, when the plan's C_dx came from
-/// a level, "MaximumLevel <= L" with the level that fits.
-std::string coarserGridAdvice(double fit, int runs, int maximumLevel, double largestExtent, double cloudSpacing);
 
 /// The largest extent of a box (the edge of the minimal cube around it, Delta P of (5.10)).
 template <int D>
