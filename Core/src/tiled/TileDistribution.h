@@ -122,13 +122,19 @@ public:
     return this->distributed() ? this->Comm->allReduce(count, ReduceOp::Sum) : count;
   }
 
-  /// The octree's leaves, as the hyper tree grid holds them (SLTKTiledGrid.h): a
-  /// node of a tile within the grid, or a slot without a tile; each counted by
-  /// the slot's owner. {over every rank, the most one rank owns}.
-  std::array<Index, 2> leafCounts(const TiledField<D>& field) const
+  /// The tiles and the octree's leaves, as the hyper tree grid holds them
+  /// (SLTKTiledGrid.h: a node of a tile within the grid, or a slot without a
+  /// tile), each counted by the slot's owner, in one pass and two reductions.
+  struct StorageCounts
+  {
+    Index Tiles = 0;             ///< over every rank (globalTileCount)
+    Index Leaves = 0;            ///< over every rank
+    Index LargestRankLeaves = 0; ///< the most one rank owns
+  };
+  StorageCounts storageCounts(const TiledField<D>& field) const
   {
     const auto& n = field.grid().Dims;
-    std::int64_t mine = 0;
+    std::int64_t mine[2] = { 0, 0 }; // tiles, leaves
     for (Index s = 0; s < field.slotCount(); ++s)
     {
       if (!this->ownsSlot(s))
@@ -143,14 +149,17 @@ public:
         {
           leaves *= std::min<Index>(TileEdge, n[a] - TileEdge * t[a]);
         }
+        ++mine[0];
       }
-      mine += leaves;
+      mine[1] += leaves;
     }
-    if (!this->distributed())
+    std::int64_t largest = mine[1];
+    if (this->distributed())
     {
-      return { mine, mine };
+      largest = this->Comm->allReduce(largest, ReduceOp::Max);
+      this->Comm->allReduce(mine, 2, ReduceOp::Sum);
     }
-    return { this->Comm->allReduce(mine, ReduceOp::Sum), this->Comm->allReduce(mine, ReduceOp::Max) };
+    return { mine[0], mine[1], largest };
   }
 
   /// The same status on every rank (the lowest failing rank's), with any

@@ -1023,10 +1023,10 @@ Status iterateTiled(const ReconstructionPlan<D>& plan, int run, const Context& c
     double fraction = 0.0;
     cloudErrors<Interp>(field, plan.Cloud, far, ctx, distribution, it.CloudError, fraction);
     it.BandSize = bandCount * TiledField<D>::Nodes;
-    it.StoredNodes = distribution.globalTileCount(field) * TiledField<D>::Nodes;
-    const std::array<Index, 2> leaves = distribution.leafCounts(field);
-    it.Leaves = leaves[0];
-    it.LargestRankLeaves = leaves[1];
+    const auto counts = distribution.storageCounts(field);
+    it.StoredNodes = counts.Tiles * TiledField<D>::Nodes;
+    it.Leaves = counts.Leaves;
+    it.LargestRankLeaves = counts.LargestRankLeaves;
     it.UniformNodes = field.grid().nodeCount();
     it.Seconds = secondsSince(start);
     result.History.push_back(it);
@@ -1076,11 +1076,11 @@ void recordStorage(const TiledField<D>& field, int run, const TiledRunRecord& it
 {
   TiledRunRecord r = iterations;
   r.Run = run;
-  r.Tiles = distribution.globalTileCount(field);
+  const auto held = distribution.storageCounts(field);
+  r.Tiles = held.Tiles;
   r.StoredNodes = r.Tiles * TiledField<D>::Nodes;
-  const std::array<Index, 2> leaves = distribution.leafCounts(field);
-  r.Leaves = leaves[0];
-  r.LargestRankLeaves = leaves[1];
+  r.Leaves = held.Leaves;
+  r.LargestRankLeaves = held.LargestRankLeaves;
   r.UniformNodes = field.grid().nodeCount();
   r.Bytes = field.bytes();
   if (distribution.distributed())

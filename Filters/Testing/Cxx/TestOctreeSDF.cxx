@@ -16,6 +16,7 @@
 // - a planar cloud is refused.
 // Usage: sltkFiltersOctreeTests OUTPUT_DIR
 #include "FilterTestCheck.h"
+#include "SLTKBridge.h"
 
 #include "sltk/cloud/SyntheticClouds.h"
 #include "vtkOctreeSDF.h"
@@ -33,7 +34,6 @@
 #include "vtkMPIController.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkTable.h"
@@ -126,19 +126,6 @@ double lastColumnValue(vtkTable* table, const char* column)
   return a && a->GetNumberOfTuples() > 0 ? a->GetTuple1(a->GetNumberOfTuples() - 1) : std::nan("");
 }
 
-vtkSmartPointer<vtkPolyData> asPolyData(const sltk::PointCloud<3>& cloud)
-{
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (const auto& p : cloud.Points)
-  {
-    points->InsertNextPoint(p.data());
-  }
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->SetPoints(points);
-  return poly;
-}
-
 /// Boundary and non-manifold edges of the cleaned union of `pieces`.
 vtkIdType openEdges(const std::vector<vtkSmartPointer<vtkDataObject>>& pieces, vtkIdType& polys)
 {
@@ -172,7 +159,7 @@ int main(int argc, char* argv[])
   const std::array<double, 3> centre{ 2.0, 1.0, -1.0 };
   const double radius = 1.0;
   const sltk::PointCloud<3> cloud = sltk::sphereCloud(2000, radius, centre);
-  vtkSmartPointer<vtkPolyData> input = asPolyData(cloud);
+  vtkSmartPointer<vtkPolyData> input = sltk::vtkbridge::pointsOf(cloud);
 
   vtkNew<vtkOctreeSDF> filter;
   filter->SetInputDataObject(input);
@@ -288,7 +275,7 @@ int main(int argc, char* argv[])
     // The cloud on rank 0 only (the others have no points): the union of the pieces is the
     // whole cloud in its order, so every leaf is the whole-cloud run's, bit for bit.
     vtkNew<vtkOctreeSDF> pieces;
-    pieces->SetInputDataObject(rank == 0 ? input : asPolyData({}));
+    pieces->SetInputDataObject(rank == 0 ? input : sltk::vtkbridge::pointsOf({}));
     pieces->SetNumberOfRuns(2);
     pieces->SetNumberOfThreads(1);
     check(pieces->GetExecutive()->Update() == 1, "the cloud on rank 0 only is reconstructed");
@@ -330,7 +317,7 @@ int main(int argc, char* argv[])
   {
     p[2] = 0.0;
   }
-  filter->SetInputDataObject(asPolyData(flat));
+  filter->SetInputDataObject(sltk::vtkbridge::pointsOf(flat));
   check(filter->GetExecutive()->Update() == 0, "a planar cloud is refused");
 
   int anyFailed = 0;
