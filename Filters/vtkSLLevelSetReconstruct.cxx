@@ -199,7 +199,8 @@ T* portZeroAs(vtkSLLevelSetReconstruct* self, vtkDataObject* output)
 /// compute (Documentation/Octree.md, "Distributing the tiled band"); each rank
 /// outputs its pieces of the hyper tree grid and of the surface, rank 0 also
 /// the history and the run summary.
-int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionPlan<3>& plan,
+template <int D>
+int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionPlan<D>& plan, double z,
   const sltk::Context& ctx, const sltk::Communicator& comm, vtkDataObject* output, vtkPolyData* surface,
   vtkTable* history)
 {
@@ -208,7 +209,7 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
   {
     return 0;
   }
-  sltk::TiledReconstructionResult<3> result;
+  sltk::TiledReconstructionResult<D> result;
   const sltk::CountingCommunicator counted(comm);
   const sltk::Status status = sltk::reconstructTiled(plan, ctx, result, counted); // the same status on every rank
   if (!status.isOk())
@@ -220,14 +221,14 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
   grid->Initialize();
   // Each rank outputs its own trees and contours its own blocks of tiles (its ghosts hold the
   // nodes around them): the pieces join.
-  sltk::vtkbridge::tiledZeroLevelSet(result.Field, result.Box, surface, result.Owners, comm.rank());
+  sltk::vtkbridge::tiledZeroLevelSet(result.Field, result.Box, surface, result.Owners, comm.rank(), z);
   if (self->GetGenerateAdaptiveGrid())
   {
     sltk::completeTiledDistances(plan, ctx, result.Field, result.Owners, comm.rank()); // its own tiles
-    const sltk::PointLocator<3>& locator = *plan.Locator;
-    sltk::vtkbridge::tiledToHyperTreeGrid(
-      result.Field, result.Box, [&locator](const std::array<double, 3>& x) { return locator.nearest(x).Distance; },
-      grid, result.Owners, comm.rank()); // Initialize()s the grid: its field data after it
+    const sltk::PointLocator<D>& locator = *plan.Locator;
+    sltk::vtkbridge::tiledToHyperTreeGrid<D>(
+      result.Field, result.Box, [&locator](const std::array<double, D>& x) { return locator.nearest(x).Distance; },
+      grid, result.Owners, comm.rank(), z); // Initialize()s the grid: its field data after it
     if (!result.Storage.empty())
     {
       vtkNew<vtkDoubleArray> leaves; // the trees' leaves over every rank, on every rank
@@ -294,7 +295,7 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
   }
   options.Ranks = comm.size(); // the memory check sizes this machine's ranks' windows
   options.RanksHere = sltk::ranksSharingThisMachine(comm.size());
-  options.TiledStorage = self->GetAdaptiveStorage() && D == 3;
+  options.TiledStorage = self->GetAdaptiveStorage();
   sltk::ReconstructionPlan<D> plan;
   status = comm.agree(sltk::planReconstruction(std::move(cloud), options, ctx, plan));
   if (!status.isOk())
@@ -302,19 +303,9 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
     vtkErrorWithObjectMacro(self, "Input point set rejected: " << status.message());
     return 0;
   }
-  if constexpr (D == 3)
+  if (self->GetAdaptiveStorage()) // a planar cloud: quadtrees in the plane z
   {
-    if (self->GetAdaptiveStorage())
-    {
-      return reconstructTiledInto(self, plan, ctx, comm, output, surface, history);
-    }
-  }
-  else if (self->GetAdaptiveStorage())
-  {
-    vtkErrorWithObjectMacro(self,
-      "AdaptiveStorage is for 3D clouds (vtkOctreeSDF's octree too); this cloud is planar (a 2D "
-      "reconstruction): reconstruct it on the uniform grids, vtkSLLevelSetReconstruct with AdaptiveStorage off");
-    return 0;
+    return reconstructTiledInto<D>(self, plan, z, ctx, comm, output, surface, history);
   }
   auto* image = portZeroAs<vtkImageData>(self, output);
   if (!image)

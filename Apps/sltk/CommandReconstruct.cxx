@@ -227,10 +227,6 @@ int Reconstruct::run() const
   double bounds[6];
   cloud->GetBounds(bounds);
   const bool planar = cloud->GetNumberOfPoints() > 0 && bounds[4] == bounds[5]; // reconstructed in 2D
-  if (planar && this->Octree)
-  {
-    return fail(path + " has no z extent (a 2D reconstruction): --octree is for 3D clouds", 2);
-  }
   if (planar && this->given("--surface") && extensionOf(this->Surface) != "vtp")
   {
     return fail(path + " has no z extent, so its reconstruction is a curve, which " + extensionOf(this->Surface) +
@@ -585,7 +581,8 @@ Command addReconstructCommand(CLI::App& sltk)
       "Chamfer =\n(mean d(result->ref) + mean d(ref->result)) / 2")
     ->option_text("MESH");
   app->add_flag("--octree", command->Octree,
-    "memory that follows the surface: runs 2..R store only 8^3-node tiles\naround the front (the octree's finest "
+    "memory that follows the surface: runs 2..R store only 8^3-node tiles\n(8^2 in 2D) around the front (the octree's "
+    "finest "
     "levels; the same surface);\n-o FILE.htg: the grid as a hyper tree grid");
   app->add_flag("--quiet", command->Quiet, "no progress bar");
   app->add_flag(

@@ -22,21 +22,23 @@ namespace vtkbridge
 namespace
 {
 /// Whether the cell of a tile's tree starting at its node `first` lies wholly beyond the grid's last node.
-bool beyondGrid(const TiledField<3>& field, std::int32_t tile, const std::array<Index, 3>& first)
+template <int D>
+bool beyondGrid(const TiledField<D>& field, std::int32_t tile, const std::array<Index, D>& first)
 {
   bool beyond = false;
-  for (int a = 0; a < 3; ++a)
+  for (int a = 0; a < D; ++a)
   {
     beyond = beyond || field.tileOrigin(tile)[a] * TileEdge + first[a] >= field.grid().Dims[a];
   }
   return beyond;
 }
 
-/// The corner of child `child` (VTK's index x + 2y + 4z) of a cell at `first` of `half` nodes per axis.
-std::array<Index, 3> childCorner(const std::array<Index, 3>& first, Index half, unsigned char child)
+/// The corner of child `child` (VTK's index x + 2y (+ 4z)) of a cell at `first` of `half` nodes per axis.
+template <int D>
+std::array<Index, D> childCorner(const std::array<Index, D>& first, Index half, unsigned char child)
 {
-  std::array<Index, 3> corner = first;
-  for (int a = 0; a < 3; ++a)
+  std::array<Index, D> corner = first;
+  for (int a = 0; a < D; ++a)
   {
     corner[a] += ((child >> a) & 1) ? half : 0;
   }
@@ -44,16 +46,17 @@ std::array<Index, 3> childCorner(const std::array<Index, 3>& first, Index half, 
 }
 
 /// Cells of a tile's tree below (and with) the cell at `first` covering `size` nodes per axis.
-vtkIdType countCells(const TiledField<3>& field, std::int32_t tile, const std::array<Index, 3>& first, Index size)
+template <int D>
+vtkIdType countCells(const TiledField<D>& field, std::int32_t tile, const std::array<Index, D>& first, Index size)
 {
-  if (size == 1 || beyondGrid(field, tile, first))
+  if (size == 1 || beyondGrid<D>(field, tile, first))
   {
     return 1;
   }
   vtkIdType cells = 1;
-  for (unsigned char child = 0; child < 8; ++child)
+  for (unsigned char child = 0; child < (1 << D); ++child)
   {
-    cells += countCells(field, tile, childCorner(first, size / 2, child), size / 2);
+    cells += countCells<D>(field, tile, childCorner<D>(first, size / 2, child), size / 2);
   }
   return cells;
 }
@@ -80,18 +83,23 @@ struct CellValues
 /// Builds the cell at `cursor` of tile `tile` covering `size` nodes per axis
 /// from its node `first`: a leaf per node, refined above, masked beyond the
 /// grid. Returns whether it holds a value (not masked), with its values.
-bool build(const TiledField<3>& field, std::int32_t tile, double scale, vtkHyperTreeGridNonOrientedCursor* cursor,
-  const std::array<Index, 3>& first, Index size, int level, CellValues& out, double& phi, double& distance)
+template <int D>
+bool build(const TiledField<D>& field, std::int32_t tile, double scale, vtkHyperTreeGridNonOrientedCursor* cursor,
+  const std::array<Index, D>& first, Index size, int level, CellValues& out, double& phi, double& distance)
 {
   const vtkIdType id = cursor->GetGlobalNodeIndex();
-  if (beyondGrid(field, tile, first))
+  if (beyondGrid<D>(field, tile, first))
   {
     out.set(id, 0.0, 0.0, level, true);
     return false;
   }
   if (size == 1)
   {
-    const Index local = first[0] | (first[1] << TileBits) | (first[2] << (2 * TileBits));
+    Index local = 0;
+    for (int a = 0; a < D; ++a)
+    {
+      local |= first[a] << (TileBits * a);
+    }
     phi = scale * field.phi(tile)[local];
     distance = scale * field.distance(tile)[local];
     out.set(id, phi, distance, level, false);
@@ -100,11 +108,11 @@ bool build(const TiledField<3>& field, std::int32_t tile, double scale, vtkHyper
   cursor->SubdivideLeaf();
   double phiSum = 0.0, distanceSum = 0.0;
   int defined = 0;
-  for (unsigned char child = 0; child < 8; ++child)
+  for (unsigned char child = 0; child < (1 << D); ++child)
   {
     cursor->ToChild(child);
     double p = 0.0, d = 0.0;
-    if (build(field, tile, scale, cursor, childCorner(first, size / 2, child), size / 2, level + 1, out, p, d))
+    if (build<D>(field, tile, scale, cursor, childCorner<D>(first, size / 2, child), size / 2, level + 1, out, p, d))
     {
       phiSum += p;
       distanceSum += d;
@@ -119,19 +127,25 @@ bool build(const TiledField<3>& field, std::int32_t tile, double scale, vtkHyper
 }
 } // namespace
 
-void tiledToHyperTreeGrid(const TiledField<3>& field, const UnitBox<3>& box,
-  const std::function<double(const std::array<double, 3>&)>& distanceAt, vtkHyperTreeGrid* output,
-  const std::vector<std::int32_t>& owners, int rank)
+template <int D>
+void tiledToHyperTreeGrid(const TiledField<D>& field, const UnitBox<D>& box,
+  const std::function<double(const std::array<double, D>&)>& distanceAt, vtkHyperTreeGrid* output,
+  const std::vector<std::int32_t>& owners, int rank, double z)
 {
   const auto mine = [&](Index s) { return owners.empty() || owners[static_cast<size_t>(s)] == rank; };
   output->Initialize();
-  const std::array<Index, 3>& slots = field.slotDims();
+  std::array<Index, 3> slots{ 0, 0, 0 }; // a planar grid: one tree along z (a quadtree per slot)
+  for (int a = 0; a < D; ++a)
+  {
+    slots[a] = field.slotDims()[a];
+  }
   output->SetDimensions(static_cast<unsigned int>(slots[0] + 1), static_cast<unsigned int>(slots[1] + 1),
     static_cast<unsigned int>(slots[2] + 1));
   output->SetBranchFactor(2);
-  const GridSpec<3>& grid = field.grid();
+  const GridSpec<D>& grid = field.grid();
   vtkNew<vtkDoubleArray> coordinates[3];
-  for (int a = 0; a < 3; ++a)
+  coordinates[2]->InsertNextValue(z); // replaced in 3D
+  for (int a = 0; a < D; ++a)
   {
     // Dual cells: a tree's first leaf is centred on its slot's first node.
     coordinates[a]->SetNumberOfTuples(slots[a] + 1);
@@ -150,7 +164,7 @@ void tiledToHyperTreeGrid(const TiledField<3>& field, const UnitBox<3>& box,
   for (Index s = 0; s < field.slotCount(); ++s)
   {
     const std::int32_t entry = field.slot(s);
-    cells += !mine(s) ? 0 : (entry >= 0 ? countCells(field, entry, { 0, 0, 0 }, TileEdge) : 1);
+    cells += !mine(s) ? 0 : (entry >= 0 ? countCells<D>(field, entry, std::array<Index, D>{}, TileEdge) : 1);
   }
   vtkNew<vtkDoubleArray> phiArray, distanceArray;
   phiArray->SetName("SignedDistance");
@@ -173,26 +187,26 @@ void tiledToHyperTreeGrid(const TiledField<3>& field, const UnitBox<3>& box,
     {
       continue; // another rank's tree
     }
-    const std::array<Index, 3> t = field.slotCoordinates(s);
+    const std::array<Index, D> t = field.slotCoordinates(s);
     vtkIdType treeIndex = 0;
-    output->GetIndexFromLevelZeroCoordinates(
-      treeIndex, static_cast<unsigned int>(t[0]), static_cast<unsigned int>(t[1]), static_cast<unsigned int>(t[2]));
+    output->GetIndexFromLevelZeroCoordinates(treeIndex, static_cast<unsigned int>(t[0]),
+      static_cast<unsigned int>(t[1]), D == 3 ? static_cast<unsigned int>(t[D - 1]) : 0u);
     output->InitializeNonOrientedCursor(cursor, treeIndex, true);
     cursor->SetGlobalIndexStart(start);
     const std::int32_t entry = field.slot(s);
     if (entry >= 0)
     {
       double p = 0.0, d = 0.0;
-      build(field, entry, box.Scale, cursor, { 0, 0, 0 }, TileEdge, 0, out, p, d);
+      build<D>(field, entry, box.Scale, cursor, std::array<Index, D>{}, TileEdge, 0, out, p, d);
     }
     else
     {
-      std::array<double, 3> centre{};
-      for (int a = 0; a < 3; ++a)
+      std::array<double, D> centre{};
+      for (int a = 0; a < D; ++a)
       {
         centre[a] = grid.Origin[a] + (static_cast<double>(t[a] * TileEdge) + 0.5 * (TileEdge - 1)) * grid.Spacing[a];
       }
-      const double side = entry == TiledField<3>::Inside ? -field.gamma() : field.gamma();
+      const double side = entry == TiledField<D>::Inside ? -field.gamma() : field.gamma();
       out.set(cursor->GetGlobalNodeIndex(), box.Scale * side, box.Scale * distanceAt(centre), 0, false);
     }
     start += static_cast<vtkIdType>(cursor->GetTree()->GetNumberOfVertices());
@@ -216,6 +230,13 @@ void tiledToHyperTreeGrid(const TiledField<3>& field, const UnitBox<3>& box,
     output->SetMask(mask);
   }
 }
+
+template void tiledToHyperTreeGrid<2>(const TiledField<2>&, const UnitBox<2>&,
+  const std::function<double(const std::array<double, 2>&)>&, vtkHyperTreeGrid*, const std::vector<std::int32_t>&, int,
+  double);
+template void tiledToHyperTreeGrid<3>(const TiledField<3>&, const UnitBox<3>&,
+  const std::function<double(const std::array<double, 3>&)>&, vtkHyperTreeGrid*, const std::vector<std::int32_t>&, int,
+  double);
 
 } // namespace vtkbridge
 } // namespace sltk

@@ -3,14 +3,12 @@
 /// \file SLTKTiledGrid.h
 /// A tiled reconstruction (sltk/tiled/TiledField.h, Documentation/Octree.md
 /// "The tiled band") as a vtkHyperTreeGrid, without the full grid: one hyper
-/// tree per slot of 8^3 nodes, its cell centred on the slot's nodes (the
-/// tree's cells are the uniform grid's dual cells). A slot with a tile is
-/// refined three levels, one leaf per node holding that node's values; a slot
-/// without one is a single leaf (+-gamma, the distance at its centre). The
-/// leaves of a last slot's tile beyond the grid's nodes are masked. A refined
-/// cell holds the mean of its unmasked children. The dual grid of the leaves
-/// (vtkHyperTreeGridContour) therefore contours the nodes' values as the
-/// uniform grid does near the front.
+/// tree per slot of 8^3 nodes (8^2 in 2D: a quadtree per slot, in the plane z), its cell centred on the slot's nodes
+/// (the tree's cells are the uniform grid's dual cells). A slot with a tile is refined three levels, one leaf per node
+/// holding that node's values; a slot without one is a single leaf (+-gamma, the distance at its centre). The leaves of
+/// a last slot's tile beyond the grid's nodes are masked. A refined cell holds the mean of its unmasked children. The
+/// dual grid of the leaves (vtkHyperTreeGridContour) therefore contours the nodes' values as the uniform grid does near
+/// the front.
 
 #include "sltk/recon/UnitBox.h"
 #include "sltk/tiled/TiledField.h"
@@ -32,10 +30,12 @@ namespace vtkbridge
 /// Level and Rank; `distanceAt` gives the distance to the cloud at a unit-box
 /// point (a slot's centre). With `owners` (a distributed field's, per slot:
 /// TiledReconstructionResult) only the trees of the slots `rank` owns: this
-/// rank's piece; the pieces' union is the whole grid of trees.
-void tiledToHyperTreeGrid(const TiledField<3>& field, const UnitBox<3>& box,
-  const std::function<double(const std::array<double, 3>&)>& distanceAt, vtkHyperTreeGrid* output,
-  const std::vector<std::int32_t>& owners = {}, int rank = 0);
+/// rank's piece; the pieces' union is the whole grid of trees. A 2D field's
+/// grid lies in the plane `z`.
+template <int D>
+void tiledToHyperTreeGrid(const TiledField<D>& field, const UnitBox<D>& box,
+  const std::function<double(const std::array<double, D>&)>& distanceAt, vtkHyperTreeGrid* output,
+  const std::vector<std::int32_t>& owners = {}, int rank = 0, double z = 0.0);
 
 } // namespace vtkbridge
 } // namespace sltk

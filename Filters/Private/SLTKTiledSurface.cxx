@@ -3,12 +3,15 @@
 
 #include <vtkAppendPolyData.h>
 #include <vtkDoubleArray.h>
+#include <vtkFlyingEdges2D.h>
 #include <vtkFlyingEdges3D.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataAlgorithm.h>
 #include <vtkPolyDataNormals.h>
+#include <vtkSmartPointer.h>
 #include <vtkStaticCleanPolyData.h>
 
 #include <algorithm>
@@ -20,23 +23,54 @@ namespace sltk
 namespace vtkbridge
 {
 
-void tiledZeroLevelSet(const TiledField<3>& field, const UnitBox<3>& box, vtkPolyData* surface,
-  const std::vector<std::int32_t>& owners, int rank)
+namespace
 {
-  const GridSpec<3> grid = box.toUser(field.grid());
+/// The front of one block's image: vtkFlyingEdges3D's triangles, or in 2D vtkFlyingEdges2D's segments.
+vtkSmartPointer<vtkPolyData> contourOf(vtkImageData* image, bool planar)
+{
+  vtkSmartPointer<vtkPolyDataAlgorithm> contour;
+  if (planar)
+  {
+    auto edges = vtkSmartPointer<vtkFlyingEdges2D>::New();
+    edges->SetValue(0, 0.0);
+    edges->ComputeScalarsOff();
+    contour = edges;
+  }
+  else
+  {
+    auto edges = vtkSmartPointer<vtkFlyingEdges3D>::New();
+    edges->SetValue(0, 0.0);
+    edges->ComputeNormalsOff();
+    edges->ComputeGradientsOff();
+    edges->ComputeScalarsOff();
+    contour = edges;
+  }
+  contour->SetInputData(image);
+  contour->Update();
+  auto piece = vtkSmartPointer<vtkPolyData>::New();
+  piece->ShallowCopy(contour->GetOutput());
+  return piece;
+}
+} // namespace
+
+template <int D>
+void tiledZeroLevelSet(const TiledField<D>& field, const UnitBox<D>& box, vtkPolyData* surface,
+  const std::vector<std::int32_t>& owners, int rank, double z)
+{
+  const GridSpec<D> grid = box.toUser(field.grid());
   // The tiles' cells (lower corner in a tile) are contoured by blocks of
-  // BlockTiles^3 tile positions, one image each (a pipeline per tile cost more
+  // BlockTiles^D tile positions, one image each (a pipeline per tile cost more
   // than the contour). Each image's extent is its block's within the global grid,
   // so a node shared by two blocks has bitwise the same coordinates in both.
   constexpr Index BlockTiles = TileBlockEdge; // the blocks a distributed band gives one owner
-  std::vector<std::array<Index, 3>> blocks;
+  std::vector<std::array<Index, D>> blocks;
   for (std::int32_t id = 0; id < static_cast<std::int32_t>(field.tileCount()); ++id)
   {
     if (!owners.empty() && owners[static_cast<size_t>(field.tileSlot(id))] != rank)
     {
       continue; // a ghost: its owner contours it (a block has one owner, TiledReconstruction.h)
     }
-    std::array<Index, 3> first = field.tileOrigin(id);
+    std::array<Index, D> first = field.tileOrigin(id);
     for (Index& t : first)
     {
       t -= t % BlockTiles;
@@ -46,11 +80,11 @@ void tiledZeroLevelSet(const TiledField<3>& field, const UnitBox<3>& box, vtkPol
   std::sort(blocks.begin(), blocks.end());
   blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
   vtkNew<vtkAppendPolyData> append;
-  GridField<3> block; // the block and one node around it (TiledField::scratchBlock)
+  GridField<D> block; // the block and one node around it (TiledField::scratchBlock)
   for (const auto& first : blocks)
   {
-    int extent[6];
-    for (int a = 0; a < 3; ++a)
+    int extent[6] = { 0, 0, 0, 0, 0, 0 }; // a 2D block lies in the plane z
+    for (int a = 0; a < D; ++a)
     {
       const Index start = first[a] * TileEdge;
       extent[2 * a] = static_cast<int>(start);
@@ -69,7 +103,11 @@ void tiledZeroLevelSet(const TiledField<3>& field, const UnitBox<3>& box, vtkPol
       {
         for (int i = extent[0]; i <= extent[1]; ++i)
         {
-          const double v = block(std::array<Index, 3>{ i - extent[0] + 1, j - extent[2] + 1, k - extent[4] + 1 });
+          std::array<Index, D> node{};
+          node[0] = i - extent[0] + 1;
+          node[1] = j - extent[2] + 1;
+          node[D - 1] = D == 3 ? k - extent[4] + 1 : node[D - 1];
+          const double v = block(node);
           negative = negative || v < 0.0;
           positive = positive || v >= 0.0;
           values->SetValue(n++, v);
@@ -82,19 +120,10 @@ void tiledZeroLevelSet(const TiledField<3>& field, const UnitBox<3>& box, vtkPol
     }
     vtkNew<vtkImageData> image;
     image->SetExtent(extent);
-    image->SetOrigin(grid.Origin[0], grid.Origin[1], grid.Origin[2]);
-    image->SetSpacing(grid.Spacing[0], grid.Spacing[1], grid.Spacing[2]);
+    image->SetOrigin(grid.Origin[0], grid.Origin[1], D == 3 ? grid.Origin[D - 1] : z);
+    image->SetSpacing(grid.Spacing[0], grid.Spacing[1], D == 3 ? grid.Spacing[D - 1] : 1.0);
     image->GetPointData()->SetScalars(values);
-    vtkNew<vtkFlyingEdges3D> contour;
-    contour->SetInputData(image);
-    contour->SetValue(0, 0.0);
-    contour->ComputeNormalsOff();
-    contour->ComputeGradientsOff();
-    contour->ComputeScalarsOff();
-    contour->Update();
-    vtkNew<vtkPolyData> piece;
-    piece->ShallowCopy(contour->GetOutput());
-    append->AddInputData(piece);
+    append->AddInputData(contourOf(image, D == 2));
   }
   if (append->GetNumberOfInputConnections(0) == 0)
   {
@@ -108,6 +137,12 @@ void tiledZeroLevelSet(const TiledField<3>& field, const UnitBox<3>& box, vtkPol
   merge->ConvertLinesToPointsOff();
   merge->ConvertPolysToLinesOff();
   merge->ConvertStripsToPolysOff();
+  if (D == 2)
+  {
+    merge->Update();
+    surface->ShallowCopy(merge->GetOutput()); // a curve: no normals (as the uniform grid's, zeroLevelSet)
+    return;
+  }
   vtkNew<vtkPolyDataNormals> normals;
   normals->SetInputConnection(merge->GetOutputPort());
   normals->SplittingOff();
@@ -115,6 +150,11 @@ void tiledZeroLevelSet(const TiledField<3>& field, const UnitBox<3>& box, vtkPol
   normals->Update();
   surface->ShallowCopy(normals->GetOutput());
 }
+
+template void tiledZeroLevelSet(
+  const TiledField<2>&, const UnitBox<2>&, vtkPolyData*, const std::vector<std::int32_t>&, int, double);
+template void tiledZeroLevelSet(
+  const TiledField<3>&, const UnitBox<3>&, vtkPolyData*, const std::vector<std::int32_t>&, int, double);
 
 } // namespace vtkbridge
 } // namespace sltk

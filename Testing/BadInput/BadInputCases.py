@@ -396,12 +396,6 @@ def _(t):
     t.fails(2, "-o FILE.htg is --octree's output", "add --octree")
 
 
-@case("cli.option.octree-on-a-planar-cloud")
-def _(t):
-    t.sltk("reconstruct", t.file("ring.xyz", bad.rows([(math.cos(a), math.sin(a), 0.5) for a in
-                                                       [2 * math.pi * k / 100 for k in range(100)]])),
-           "--octree", "--surface", t.output("ring.vtp"))
-    t.fails(2, "--octree is for 3D clouds")
 option_case("unknown-command", ("frobnicate",), 2, "frobnicate", command="frobnicate")
 
 # ---------------------------------------------------------------- HJB problems
@@ -487,11 +481,6 @@ pts = [tuple(round(a * u[c] + b * v[c], 6) for c in range(3)) for a in [i / 10 -
        for b in [j / 10 - 1 for j in range(21)] if a * a + b * b <= 1]
 f = watched(sltk.vtkSLLevelSetReconstruct()); f.SetInputData(cloud(pts))
 refused(f, "a flat cloud")""", "the cloud is flat")
-python_case("recon-adaptive-storage-planar", """
-import math
-f = watched(sltk.vtkSLLevelSetReconstruct()); f.AdaptiveStorageOn()
-f.SetInputData(cloud([(math.cos(2 * math.pi * k / 64), math.sin(2 * math.pi * k / 64), 0) for k in range(64)]))
-refused(f, "AdaptiveStorage on a planar cloud")""", "AdaptiveStorage is for 3D clouds")
 python_case("recon-threads-100000", """
 f = watched(sltk.vtkSLLevelSetReconstruct()); f.SetInputData(sphere()); f.SetNumberOfThreads(100000)
 refused(f, "NumberOfThreads 100000")""", "NumberOfThreads")

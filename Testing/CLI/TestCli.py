@@ -4,6 +4,7 @@ Bad input (broken files, refused options and outputs) is in Testing/BadInput, on
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -75,6 +76,18 @@ rc, out, err = run("reconstruct", flower, "--json", os.path.join(tmp, "flower.js
 summary = json.load(open(os.path.join(tmp, "flower.json"))) if rc == 0 else {}
 expect(rc == 0 and "1 closed curve(s)" in out and summary.get("euler_characteristic", 0) is None,
        "a 2D result reports closed curves, no Euler characteristic")
+flat_runs = summary.get("runs", [])
+# --octree on a planar cloud: quadtrees in its plane (a 2D hyper tree grid) and the same curve.
+flower_htg = os.path.join(tmp, "flower.htg")
+rc, out, err = run("reconstruct", flower, "--octree", "-o", flower_htg, "--json", os.path.join(tmp, "flower-tree.json"),
+                   "--quiet")
+tree = json.load(open(os.path.join(tmp, "flower-tree.json"))) if rc == 0 else {}
+head = open(flower_htg, "rb").read(600) if os.path.exists(flower_htg) else b""
+expect(rc == 0 and "1 closed curve(s)" in out and re.search(rb'Dimensions="[0-9]+ [0-9]+ 1"', head)
+       and [r["iterations"] for r in tree.get("runs", [])] == [r["iterations"] for r in flat_runs]
+       and 0 < tree["runs"][-1]["leaves"] < tree["runs"][-1]["uniform_nodes"],
+       "--octree on a planar cloud: a 2D hyper tree grid, the uniform run's iterations, fewer leaves than nodes (%s)"
+       % err.strip())
 # A whole binary PLY with faces is read (Testing/BadInput has the damaged ones).
 import struct
 good = os.path.join(tmp, "good.ply")

@@ -13,9 +13,9 @@
 // - port 1, gathered, is one closed surface; port 2 holds the leaves per
 //   iteration;
 // - the .htg written and read back holds the same leaves;
-// - a planar cloud is refused.
 // Usage: sltkFiltersOctreeTests OUTPUT_DIR
 #include "FilterTestCheck.h"
+#include "OctreeLeaves.h"
 #include "SLTKBridge.h"
 
 #include "sltk/cloud/SyntheticClouds.h"
@@ -25,7 +25,6 @@
 #include "vtkCellData.h"
 #include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
-#include "vtkDummyController.h"
 #include "vtkExecutive.h"
 #include "vtkFeatureEdges.h"
 #include "vtkFieldData.h"
@@ -45,80 +44,15 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
-#include <map>
 #include <string>
 #include <vector>
 
 namespace
 {
 using sltktest::check;
-
-struct Leaf
-{
-  int Level = 0;
-  int Rank = 0;
-  double Phi = 0.0;
-  double Distance = 0.0;
-  double Size = 0.0;
-  std::array<double, 3> Centre{};
-};
-
-void collect(vtkHyperTreeGridNonOrientedGeometryCursor* cursor, vtkHyperTreeGrid* htg, std::vector<Leaf>& out)
-{
-  if (cursor->IsMasked())
-  {
-    return;
-  }
-  if (cursor->IsLeaf())
-  {
-    const vtkIdType id = cursor->GetGlobalNodeIndex();
-    Leaf leaf;
-    leaf.Level = static_cast<int>(htg->GetCellData()->GetArray("Level")->GetTuple1(id));
-    leaf.Rank = static_cast<int>(htg->GetCellData()->GetArray("Rank")->GetTuple1(id));
-    leaf.Phi = htg->GetCellData()->GetArray("SignedDistance")->GetTuple1(id);
-    leaf.Distance = htg->GetCellData()->GetArray("DistanceToCloud")->GetTuple1(id);
-    leaf.Size = cursor->GetSize()[0];
-    check(leaf.Level == static_cast<int>(cursor->GetLevel()), "the Level array is the cell's level");
-    for (int a = 0; a < 3; ++a)
-    {
-      leaf.Centre[a] = cursor->GetOrigin()[a] + 0.5 * cursor->GetSize()[a];
-    }
-    out.push_back(leaf);
-    return;
-  }
-  for (unsigned char c = 0; c < cursor->GetNumberOfChildren(); ++c)
-  {
-    cursor->ToChild(c);
-    collect(cursor, htg, out);
-    cursor->ToParent();
-  }
-}
-
-/// The unmasked leaves of `htg` (null or without the arrays: none).
-std::vector<Leaf> leavesOf(vtkHyperTreeGrid* htg)
-{
-  std::vector<Leaf> leaves;
-  if (!htg || !htg->GetCellData()->GetArray("SignedDistance") || !htg->GetCellData()->GetArray("Rank"))
-  {
-    return leaves;
-  }
-  vtkHyperTreeGrid::vtkHyperTreeGridIterator it;
-  htg->InitializeTreeIterator(it);
-  vtkIdType index = 0;
-  vtkNew<vtkHyperTreeGridNonOrientedGeometryCursor> cursor;
-  while (it.GetNextTree(index))
-  {
-    htg->InitializeNonOrientedGeometryCursor(cursor, index);
-    collect(cursor, htg, leaves);
-  }
-  return leaves;
-}
-
-double fieldValue(vtkDataObject* data, const char* name, vtkIdType tuple = 0)
-{
-  vtkDataArray* a = data ? data->GetFieldData()->GetArray(name) : nullptr;
-  return a && tuple < a->GetNumberOfTuples() ? a->GetTuple1(tuple) : std::nan("");
-}
+using sltktest::fieldValue;
+using sltktest::Leaf;
+using sltktest::leavesOf;
 
 double lastColumnValue(vtkTable* table, const char* column)
 {
@@ -245,27 +179,13 @@ int main(int argc, char* argv[])
   double worstAgainstOneRank = 0.0;
   if (size > 1)
   {
-    vtkNew<vtkDummyController> alone;
     vtkNew<vtkOctreeSDF> serial;
-    serial->SetController(alone);
-    serial->SetInputDataObject(input);
     serial->SetNumberOfRuns(2);
-    serial->SetNumberOfThreads(1);
-    check(serial->GetExecutive()->Update() == 1, "the one-rank reference");
+    check(sltktest::updateAlone(serial, input), "the one-rank reference");
     const std::vector<Leaf> reference = leavesOf(serial->GetOutput());
-    std::map<std::array<double, 4>, double> phiAt;
-    for (const Leaf& leaf : reference)
-    {
-      phiAt[{ leaf.Centre[0], leaf.Centre[1], leaf.Centre[2], leaf.Size }] = leaf.Phi;
-    }
-    double worst = 0.0;
-    long long missing = 0;
-    for (const Leaf& leaf : leaves)
-    {
-      auto at = phiAt.find({ leaf.Centre[0], leaf.Centre[1], leaf.Centre[2], leaf.Size });
-      missing += at == phiAt.end() ? 1 : 0;
-      worst = at == phiAt.end() ? worst : std::max(worst, std::abs(leaf.Phi - at->second) / cell);
-    }
+    const sltktest::LeafAgreement agreed = sltktest::agreement(leaves, reference, cell);
+    const long long missing = agreed.Missing;
+    const double worst = agreed.WorstInCells;
     check(static_cast<long long>(reference.size()) == total && missing == 0,
       "the ranks' leaves are the one-rank leaves (" + std::to_string(total) + ", " + std::to_string(missing) +
         " not found)");
@@ -310,15 +230,6 @@ int main(int argc, char* argv[])
     same = read[i].Level == leaves[i].Level && read[i].Phi == leaves[i].Phi && read[i].Rank == leaves[i].Rank;
   }
   check(same, "the .htg read back has the same leaves and values");
-
-  // A planar cloud has no octree here: refused on every rank.
-  sltk::PointCloud<3> flat = cloud;
-  for (auto& p : flat.Points)
-  {
-    p[2] = 0.0;
-  }
-  filter->SetInputDataObject(sltk::vtkbridge::pointsOf(flat));
-  check(filter->GetExecutive()->Update() == 0, "a planar cloud is refused");
 
   int anyFailed = 0;
   controller->AllReduce(&sltktest::failures(), &anyFailed, 1, vtkCommunicator::MAX_OP);
