@@ -2,6 +2,7 @@
 #include "vtkSLLevelSetReconstruct.h"
 
 #include "SLTKBridge.h"
+#include "SLTKCloudPieces.h"
 #include "SLTKCommunicator.h"
 #include "SLTKGuard.h"
 #include "SLTKReconstructionOutput.h"
@@ -416,14 +417,13 @@ int vtkSLLevelSetReconstruct::RequestData(
   }
   // Every rank needs the whole cloud. A caller that gave each rank its own piece (a
   // distributed data set, or points on one rank only) gets the union of the pieces
-  // (CloudPieces.h); the surface's DistanceToCloud is then taken to the union, and the
-  // cloud's point arrays, which stay on their ranks, are not transferred.
+  // (CloudPieces.h); the surface's DistanceToCloud and the cloud's point arrays are then
+  // taken from every piece (SLTKCloudPieces.h).
   const bool joined = sltk::joinCloudPieces(cloud, *comm);
   if (joined)
   {
-    vtkLog(INFO,
-      "the ranks held different pieces of the cloud: reconstructing their union, "
-        << cloud.size() << " points (the cloud's point arrays are not transferred to the surface)");
+    vtkLog(
+      INFO, "the ranks held different pieces of the cloud: reconstructing their union, " << cloud.size() << " points");
   }
 
   const sltk::Status ranges = comm->agree(checkRanges(this)); // before the thread pool takes NumberOfThreads
@@ -458,12 +458,9 @@ int vtkSLLevelSetReconstruct::RequestData(
     sltk::vtkbridge::zeroLevelSet(vtkImageData::SafeDownCast(output), surface);
   }
   vtkSmartPointer<vtkPointSet> attributesFrom = input;
-  if (joined) // the union again, now that the reconstruction's memory is free
+  if (joined) // every piece with its arrays, now that the reconstruction's memory is free
   {
-    sltk::PointCloud<3> all;
-    sltk::vtkbridge::toCloud(input, all);
-    sltk::unionOfPieces(all, *comm);
-    attributesFrom = sltk::vtkbridge::pointsOf(all);
+    attributesFrom = sltk::vtkbridge::piecesWithPointData(input, *comm);
   }
   sltk::vtkbridge::transferCloudAttributes(attributesFrom, surface);
   markOutputsComplete(outputVector,

@@ -9,7 +9,8 @@
 // - on 2 ranks, every leaf's signed distance is the one-rank filter's at the
 //   same leaf (each rank also runs it alone, vtkDummyController) and the
 //   leaf count is the same; with the points on rank 0 only (the others have
-//   none) the union of the pieces gives the same leaves bit for bit;
+//   none) the union of the pieces gives the same leaves bit for bit, and
+//   every rank's surface piece the cloud's point array (Height);
 // - port 1, gathered, is one closed surface; port 2 holds the leaves per
 //   iteration;
 // - the .htg written and read back holds the same leaves;
@@ -25,6 +26,7 @@
 #include "vtkCellData.h"
 #include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFeatureEdges.h"
 #include "vtkFieldData.h"
@@ -94,6 +96,14 @@ int main(int argc, char* argv[])
   const double radius = 1.0;
   const sltk::PointCloud<3> cloud = sltk::sphereCloud(2000, radius, centre);
   vtkSmartPointer<vtkPolyData> input = sltk::vtkbridge::pointsOf(cloud);
+  vtkNew<vtkDoubleArray> height; // a scan's attribute: the surface's vertices take their nearest point's
+  height->SetName("Height");
+  height->SetNumberOfTuples(static_cast<vtkIdType>(cloud.Points.size()));
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(cloud.Points.size()); ++i)
+  {
+    height->SetValue(i, cloud.Points[static_cast<size_t>(i)][2]);
+  }
+  input->GetPointData()->AddArray(height);
 
   vtkNew<vtkOctreeSDF> filter;
   filter->SetInputDataObject(input);
@@ -207,9 +217,17 @@ int main(int argc, char* argv[])
     }
     check(same && fieldValue(pieces->GetOutput(), "GlobalLeaves") == static_cast<double>(total),
       "the cloud on rank 0 only gives the whole-cloud leaves and values, bit for bit");
-    check(pieces->GetOutputDataObject(1) &&
-        vtkPolyData::SafeDownCast(pieces->GetOutputDataObject(1))->GetPointData()->GetArray("DistanceToCloud"),
-      "a rank without points still gives its surface piece DistanceToCloud");
+    // Its surface piece takes the point arrays of rank 0's piece: each vertex's Height is its
+    // nearest point's z, within DistanceToCloud of its own.
+    auto* piece = vtkPolyData::SafeDownCast(pieces->GetOutputDataObject(1));
+    vtkDataArray* distance = piece ? piece->GetPointData()->GetArray("DistanceToCloud") : nullptr;
+    vtkDataArray* heights = piece ? piece->GetPointData()->GetArray("Height") : nullptr;
+    bool near = distance && heights && piece->GetNumberOfPoints() > 0;
+    for (vtkIdType v = 0; near && v < piece->GetNumberOfPoints(); ++v)
+    {
+      near = std::abs(heights->GetTuple1(v) - piece->GetPoint(v)[2]) <= distance->GetTuple1(v) + 1e-12;
+    }
+    check(near, "a rank without points still gives its surface piece DistanceToCloud and the cloud's Height");
   }
 
   // .htg written and read back (one file per rank; binary data: VTK 9.2's appended mode
