@@ -114,6 +114,53 @@ TEST(TiledField, ScratchBlockCopiesSeveralTilesAtOnce)
   }
 }
 
+TEST(TiledField, ScratchBlockCopiesTheDistanceNearTheBlockOnlyWhenAsked)
+{
+  sltk::GridSpec<3> grid;
+  grid.Dims = { 40, 24, 20 };
+  grid.Spacing = { 0.5, 0.5, 0.5 };
+  sltk::TiledField<3> field;
+  field.reset(grid, 1e6);
+  for (sltk::Index x = 0; x < 3; ++x)
+  {
+    const std::int32_t id = field.addTile(field.slotIndex({ x, x % 2, 1 }));
+    for (sltk::Index k = 0; k < sltk::TiledField<3>::Nodes; ++k)
+    {
+      field.phi(id)[k] = linear(field.node(id, k));
+      field.distance(id)[k] = static_cast<double>(k + 100 * id);
+    }
+  }
+  const std::array<sltk::Index, 3> first{ 1, 0, 1 };
+  for (int halo : { 3, 9 })
+  {
+    sltk::GridField<3> phi, dist, fullPhi, fullDist;
+    field.scratchBlock(first, 2, halo, 1, fullPhi, &fullDist);
+    field.scratchBlock(first, 2, halo, 1, phi, &dist); // the same shape: its values then marked
+    for (sltk::Index k = 0; k < dist.spec().nodeCount(); ++k)
+    {
+      dist(dist.nodeIndex(k)) = -7.0;
+    }
+    field.scratchBlock(first, 2, halo, 1, phi, &dist, 1);
+    const sltk::Index edge = 2 * sltk::TileEdge + 2 * halo;
+    sltk::Index copied = 0;
+    for (sltk::Index k = 0; k < dist.spec().nodeCount(); ++k)
+    {
+      const auto b = dist.nodeIndex(k);
+      bool near = true; // within one node of the block's tiles
+      for (int a = 0; a < 3; ++a)
+      {
+        near = near && b[a] >= halo - 1 && b[a] < edge - halo + 1;
+      }
+      ASSERT_EQ(phi(b), fullPhi(b)) << "phi is copied whole";
+      const double full = fullDist(b);
+      ASSERT_TRUE(near ? (dist(b) == full || (std::isnan(dist(b)) && std::isnan(full))) : dist(b) == -7.0)
+        << "halo " << halo << " node " << b[0] << " " << b[1] << " " << b[2];
+      copied += near ? 1 : 0;
+    }
+    EXPECT_EQ(copied, (edge - 2 * halo + 2) * (edge - 2 * halo + 2) * (edge - 2 * halo + 2));
+  }
+}
+
 TEST(TiledField, RemovedTilesBecomeTheirSideAndTheOthersKeepTheirValues)
 {
   sltk::GridSpec<3> grid;

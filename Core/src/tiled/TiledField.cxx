@@ -137,11 +137,14 @@ inline void copyRow(const double* from, Index count, double* to)
 } // namespace
 
 template <int D>
-void TiledField<D>::scratchBlock(
-  const std::array<Index, D>& first, Index tiles, int halo, int ghost, GridField<D>& phi, GridField<D>* dist) const
+void TiledField<D>::scratchBlock(const std::array<Index, D>& first, Index tiles, int halo, int ghost, GridField<D>& phi,
+  GridField<D>* dist, int distHalo) const
 {
   const Index h = halo;
   const Index edge = tiles * TileEdge + 2 * h;
+  // d's nodes along every axis: [distFrom, distTo) of the block's copy.
+  const Index distFrom = distHalo >= 0 && distHalo < halo ? h - distHalo : 0;
+  const Index distTo = edge - distFrom;
   GridSpec<D> block = this->Grid;
   std::array<Index, D> start{}; // grid index of the block's first node
   for (int a = 0; a < D; ++a)
@@ -211,10 +214,12 @@ void TiledField<D>::scratchBlock(
     Index base = 0;  // slotIndex of the row's tiles with t[0] = 0
     Index stride = 1;
     Index rest = row;
+    bool distRow = dist != nullptr;
     for (int a = 1; a < D; ++a)
     {
       i[a] = rest % edge;
       rest /= edge;
+      distRow = distRow && i[a] >= distFrom && i[a] < distTo;
       const Index g = start[a] + i[a];
       const Index t = floorTile(g);
       local |= (g - t * TileEdge) << (TileBits * a);
@@ -237,32 +242,34 @@ void TiledField<D>::scratchBlock(
       lastBase = base;
     }
     double* rowPhi = &phi(i);
-    double* rowDist = dist ? &(*dist)(i) : nullptr;
+    double* rowDist = distRow ? &(*dist)(i) : nullptr;
     for (int k = 0; k < segmentCount; ++k)
     {
       const Segment& seg = segments[static_cast<size_t>(k)];
       const std::int32_t entry = entries[static_cast<size_t>(k)];
+      // The segment's part within d's nodes: [x0, x1) of the row.
+      const Index x0 = std::max(seg.X, distFrom), x1 = std::min(seg.X + seg.Count, distTo);
       if (entry >= 0)
       {
         copyRow(this->phi(entry) + local + seg.From, seg.Count, rowPhi + seg.X);
-        if (rowDist)
+        if (rowDist && x1 > x0)
         {
-          copyRow(this->distance(entry) + local + seg.From, seg.Count, rowDist + seg.X);
+          copyRow(this->distance(entry) + local + seg.From + (x0 - seg.X), x1 - x0, rowDist + x0);
         }
       }
       else
       {
         std::fill_n(
           rowPhi + seg.X, seg.Count, entry == Remote ? unknown : (entry == Inside ? -this->Gamma : this->Gamma));
-        if (rowDist)
+        if (rowDist && x1 > x0)
         {
-          std::fill_n(rowDist + seg.X, seg.Count, unknown);
+          std::fill_n(rowDist + x0, x1 - x0, unknown);
         }
       }
     }
   }
   phi.fillGhosts();
-  if (dist)
+  if (dist && distFrom == 0) // a d copied near the block only is read there only
   {
     dist->fillGhosts();
   }

@@ -25,10 +25,11 @@ namespace sltk
 
 namespace
 {
-constexpr int Ghost = 2;                    ///< ghost layers of the scratch fields (WENO3 / CWENO stencils)
-constexpr int StencilReach = 2;             ///< nodes beyond a foot's cell the interpolators read
-constexpr int HaloStep = 4;                 ///< the step's halo is a multiple of this (fewer scratch shapes)
-constexpr int MaxHalo = 32;                 ///< the farthest the step reads around a tile
+constexpr int Ghost = 2;        ///< ghost layers of the scratch fields (WENO3 / CWENO stencils)
+constexpr int StencilReach = 2; ///< nodes beyond a foot's cell the interpolators read
+constexpr int DistReach = 1;    ///< nodes around the band the step reads d at (the centred gradient of (4.22)/(4.24))
+constexpr int HaloStep = 4;     ///< the step's halo is a multiple of this (fewer scratch shapes)
+constexpr int MaxHalo = 32;     ///< the farthest the step reads around a tile
 constexpr Index BlockTiles = TileBlockEdge; ///< the step copies blocks of 4^D tile positions (32^D nodes) at once
 static_assert(MaxHalo <= MaxGhostLayers * TileEdge, "the ghost layers cover the step's farthest read");
 
@@ -654,7 +655,7 @@ double blockFoot(const TiledField<D>& field, const std::vector<std::int32_t>& ba
   Index block, Index halo, int ghost, const LevelSetStepParameters& par, TileScratch<D>& s)
 {
   field.scratchBlock(
-    blocks.First[static_cast<size_t>(block)], BlockTiles, static_cast<int>(halo), ghost, s.Phi, &s.Dist);
+    blocks.First[static_cast<size_t>(block)], BlockTiles, static_cast<int>(halo), ghost, s.Phi, &s.Dist, DistReach);
   blockBandNodes(field, band, blocks, block, halo, s.Nodes);
   return largestFoot(s.Phi, s.Dist, s.Nodes, par);
 }
@@ -760,7 +761,7 @@ Status tiledStep(TiledField<D>& field, const std::vector<std::int32_t>& band, co
         last = static_cast<std::uint8_t>(halo);
         if (halo != guess)
         {
-          field.scratchBlock(first, BlockTiles, static_cast<int>(halo), Ghost, s.Phi, &s.Dist);
+          field.scratchBlock(first, BlockTiles, static_cast<int>(halo), Ghost, s.Phi, &s.Dist, DistReach);
           bandNodes(halo);
         }
         failures[static_cast<size_t>(block)] = levelSetStep<Interp, D>(serial, s.Phi, s.Dist, s.Nodes, par, s.Values);

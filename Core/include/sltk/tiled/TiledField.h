@@ -147,10 +147,13 @@ public:
   /// The same for the block of `tiles`^D tile positions whose first tile
   /// coordinates are `first` (slots with or without a tile, or beyond them).
   /// Rows up to (MaxScratchSegments - 2) tiles wide, halo included, need no
-  /// allocation (the solver's blocks: at most 12).
+  /// allocation (the solver's blocks: at most 12). With `distHalo` in
+  /// [0, halo), d is copied only within `distHalo` nodes of the block (the SL
+  /// step reads it at its band nodes and their axis neighbours, (4.22)/(4.24));
+  /// its nodes beyond, and its ghost layers, hold whatever the field held before.
   static constexpr int MaxScratchSegments = 16;
-  void scratchBlock(
-    const std::array<Index, D>& first, Index tiles, int halo, int ghost, GridField<D>& phi, GridField<D>* dist) const;
+  void scratchBlock(const std::array<Index, D>& first, Index tiles, int halo, int ghost, GridField<D>& phi,
+    GridField<D>* dist, int distHalo = -1) const;
 
   /// Bytes held (tiles and slots).
   double bytes() const
