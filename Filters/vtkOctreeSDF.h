@@ -11,7 +11,8 @@
  * uniform grid, the coarsest; runs 2..R, one level finer each, store only the
  * tiles of 8^3 finest nodes around the front, the finest levels of the octree
  * (Documentation/Octree.md, "The tiled band"), so memory follows the surface.
- * 3D clouds only.
+ * A planar cloud (no z extent) is reconstructed in 2D: tiles of 8^2 nodes, a
+ * 2D hyper tree grid (a quadtree per 8^2 nodes) in its plane, and a curve.
  *
  * Outputs:
  *  - port 0: vtkHyperTreeGrid, one tree per 8^3 finest nodes, refined to one

@@ -238,8 +238,8 @@ public:
   ///@}
 
   ///@{
-  /// AdaptiveStorage (default off; 3D clouds): runs 2..R store only the tiles of
-  /// 8^3 nodes within one tile of the front, the finest levels of the octree
+  /// AdaptiveStorage (default off): runs 2..R store only the tiles of 8^3
+  /// nodes (8^2 for a planar cloud) within one tile of the front, the finest levels of the octree
   /// (sltk/tiled/TiledReconstruction.h, Documentation/Octree.md "The tiled
   /// band"): the same iterations and surface as the uniform grids, with memory
   /// that follows the surface. Port 0 is then a vtkHyperTreeGrid instead of

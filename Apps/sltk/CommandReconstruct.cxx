@@ -155,8 +155,8 @@ std::string Reconstruct::problemBeforeWork(bool pieces, vtkPolyData* reference, 
   const bool treeOutput = extension == "htg" || extension == "phtg";
   if (this->Octree && this->given("--output") && !treeOutput)
   {
-    return "--octree stores no full grid, so its -o is a hyper tree grid (one tree per 8^3 nodes, refined near the "
-           "front): write -o FILE.htg (FILE.phtg under mpirun)";
+    return "--octree stores no full grid, so its -o is a hyper tree grid (one tree per 8^3 nodes, 8^2 in 2D, refined "
+           "near the front): write -o FILE.htg (FILE.phtg under mpirun)";
   }
   if (!this->Octree && treeOutput)
   {

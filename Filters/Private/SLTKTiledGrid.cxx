@@ -68,7 +68,6 @@ struct CellValues
   double* Distance;
   unsigned char* Level;
   vtkBitArray* Mask;
-  bool AnyMasked = false;
 
   void set(vtkIdType id, double phi, double distance, int level, bool masked)
   {
@@ -76,7 +75,6 @@ struct CellValues
     this->Distance[id] = distance;
     this->Level[id] = static_cast<unsigned char>(level);
     this->Mask->SetValue(id, masked ? 1 : 0);
-    this->AnyMasked = this->AnyMasked || masked;
   }
 };
 
@@ -142,6 +140,11 @@ void tiledToHyperTreeGrid(const TiledField<D>& field, const UnitBox<D>& box,
   output->SetDimensions(static_cast<unsigned int>(slots[0] + 1), static_cast<unsigned int>(slots[1] + 1),
     static_cast<unsigned int>(slots[2] + 1));
   output->SetBranchFactor(2);
+  // A planar grid's trees in transposed order (y fastest): ParaView 5.11's
+  // vtkHyperTreeGridGhostCellsGenerator finds a 2D tree's neighbours in that
+  // order only (VTK fixed it later, 4ea563a3a2); without it the ghost exchange
+  // under MPI aborts (MPI_ERR_TRUNCATE) or closes the contour wrongly.
+  output->SetTransposedRootIndexing(D == 2);
   const GridSpec<D>& grid = field.grid();
   vtkNew<vtkDoubleArray> coordinates[3];
   coordinates[2]->InsertNextValue(z); // replaced in 3D
@@ -225,10 +228,9 @@ void tiledToHyperTreeGrid(const TiledField<D>& field, const UnitBox<D>& box,
   output->GetCellData()->AddArray(levelArray);
   output->GetCellData()->AddArray(rankArray);
   output->GetCellData()->SetActiveScalars("SignedDistance");
-  if (out.AnyMasked)
-  {
-    output->SetMask(mask);
-  }
+  // Always a mask, even with nothing masked: the ghost cells generator sizes
+  // its messages by whether the receiving rank has one (ParaView 5.11).
+  output->SetMask(mask);
 }
 
 template void tiledToHyperTreeGrid<2>(const TiledField<2>&, const UnitBox<2>&,
