@@ -33,6 +33,8 @@ and prints its size, bounding box, resolution h_P (mean nearest-neighbour
 distance of a 10% sample, thesis 4.5.2) and the grid of each reconstruction run,
 dx = C_dx h_P / 2^(r-1) (4.36), with its memory estimate: the plan that
 `sltk reconstruct` with the same options runs (clouds with no z extent in 2D).
+With --octree, the plan of `sltk reconstruct --octree`: runs 2..R store only the
+tiles near the surface, whose nodes are estimated from the cloud.
 Also prints the density spacing (r_16 sqrt(pi/16)): well below it, h_P suggests
 merged, overlapping scans (see --thin).
 )";
@@ -82,7 +84,9 @@ int printPlan(const std::string& path, long long read, sltk::PointCloud<D> cloud
     std::printf("automatic    %s\n", choice.c_str());
   }
   std::printf("density      %.6g   (spacing from the 16-neighbour radius)\n", density);
-  std::printf("\n run        dx                 grid            nodes    memory (est.)\n");
+  const bool tiled = plan.Options.TiledStorage;
+  std::printf(tiled ? "\n run        dx                 grid            nodes    stored (est.)    memory (est.)\n"
+                    : "\n run        dx                 grid            nodes    memory (est.)\n");
   nlohmann::ordered_json runs = nlohmann::ordered_json::array();
   for (int r = 1; r <= plan.Options.Runs; ++r)
   {
@@ -92,9 +96,21 @@ int printPlan(const std::string& path, long long read, sltk::PointCloud<D> cloud
     {
       dims[static_cast<size_t>(a)] = static_cast<long long>(g.Dims[a]);
     }
-    std::printf("%4d  %10.4g  %5lld x %5lld x %5lld  %10.3g  %8.1f MB\n", r, g.Spacing[0], dims[0], dims[1], dims[2],
-      static_cast<double>(g.nodeCount()), plan.memoryEstimate(r) / 1e6);
-    runs.push_back({ { "run", r }, { "dx", g.Spacing[0] }, { "grid", dims } });
+    const double stored = sltk::storedNodesEstimate(plan, r), bytes = sltk::storageMemoryEstimate(plan, r);
+    std::printf("%4d  %10.4g  %5lld x %5lld x %5lld  %10.3g", r, g.Spacing[0], dims[0], dims[1], dims[2],
+      static_cast<double>(g.nodeCount()));
+    if (tiled)
+    {
+      std::printf("  %10.3g (%4.1f%%)", stored, 100.0 * stored / static_cast<double>(g.nodeCount()));
+    }
+    std::printf("  %8.1f MB\n", bytes / 1e6);
+    nlohmann::ordered_json run = { { "run", r }, { "dx", g.Spacing[0] }, { "grid", dims },
+      { "nodes", static_cast<double>(g.nodeCount()) }, { "memory_mb", bytes / 1e6 } };
+    if (tiled)
+    {
+      run["stored_nodes_estimate"] = stored;
+    }
+    runs.push_back(run);
   }
   std::printf("\n%.3f s, peak memory %.1f MB\n", seconds, static_cast<double>(sltk::peakResidentBytes()) / 1e6);
 
@@ -120,6 +136,7 @@ struct Info
   sltk::ReconstructionOptions Options;
   int Threads = 0;
   std::string Json;
+  bool Octree = false; ///< plan the tiled storage (sltk reconstruct --octree)
   int run() const;
 };
 
@@ -132,6 +149,8 @@ int Info::run() const
     return fail(paths, 2);
   }
   const auto start = std::chrono::steady_clock::now();
+  sltk::ReconstructionOptions options = this->Options;
+  options.TiledStorage = this->Octree;
   vtkSmartPointer<vtkPointSet> input;
   sltk::Status status = readPointCloud(path, input); // (its messages name the file)
   if (!status.isOk())
@@ -152,9 +171,8 @@ int Info::run() const
   sltk::PointCloud<2> flat;
   double z = 0.0;
   const std::string* json = this->Parser->count("--json") ? &this->Json : nullptr;
-  return sltk::flattenIfPlanar(cloud, flat, z)
-    ? printPlan<2>(path, read, std::move(flat), this->Options, ctx, json, start)
-    : printPlan<3>(path, read, std::move(cloud), this->Options, ctx, json, start);
+  return sltk::flattenIfPlanar(cloud, flat, z) ? printPlan<2>(path, read, std::move(flat), options, ctx, json, start)
+                                               : printPlan<3>(path, read, std::move(cloud), options, ctx, json, start);
 }
 } // namespace
 
@@ -168,6 +186,9 @@ Command addInfoCommand(CLI::App& sltk)
     ->option_text("P");
   addThreadsOption(app, info->Threads);
   app->add_option("--json", info->Json, "also write the summary as JSON")->option_text("FILE");
+  app->add_flag("--octree", info->Octree,
+    "the plan of sltk reconstruct --octree: runs 2..R store only the tiles\nnear the surface (their nodes estimated "
+    "from the cloud), the memory checked\nagainst them");
   return { app, [info] { return info->run(); } };
 }
 

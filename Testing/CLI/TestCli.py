@@ -151,6 +151,22 @@ expect([r["iterations"] for r in tree_runs] == [r["iterations"] for r in summary
        "--octree: the uniform run's iterations, fewer nodes stored in run 2")
 expect(tree_runs[1]["leaves"] > tree_runs[1]["stored_nodes"] and tree_runs[0]["leaves"] == tree_runs[0]["uniform_nodes"],
        "--octree JSON: the octree's leaves per run (run 1: its uniform grid's nodes)")
+# info --octree: the octree's plan, its stored nodes estimated from the cloud (an upper estimate).
+plan_json, uniform_plan_json = os.path.join(tmp, "octree-plan.json"), os.path.join(tmp, "uniform-plan.json")
+rc1, _, err1 = run("info", sphere, "--runs", "2", "--octree", "--json", plan_json)
+rc2, _, _ = run("info", sphere, "--runs", "2", "--json", uniform_plan_json)
+planned = json.load(open(plan_json))["runs"] if rc1 == 0 else []
+uniform_planned = json.load(open(uniform_plan_json))["runs"] if rc2 == 0 else []
+expect(len(planned) == 2 and len(uniform_planned) == 2 and
+       tree_runs[1]["stored_nodes"] <= planned[1]["stored_nodes_estimate"] < planned[1]["nodes"] and
+       planned[1]["memory_mb"] < uniform_planned[1]["memory_mb"] and planned[0]["grid"] == uniform_planned[0]["grid"],
+       "info --octree: run 2's stored nodes estimated above the run's and below its grid's, less memory (%s)"
+       % err1.strip())
+# A grid the uniform storage refuses for memory: the refusal names --octree, whose plan fits.
+rc1, _, err1 = run("info", sphere, "--cdx", "0.25", "--memory-budget", "1200")
+rc2, out2, err2 = run("info", sphere, "--cdx", "0.25", "--memory-budget", "1200", "--octree")
+expect(rc1 != 0 and "--octree" in err1 and rc2 == 0 and "stored (est.)" in out2,
+       "info --octree plans what the uniform grids cannot hold (%s / %s)" % (err1.strip(), err2.strip()))
 # --max-level L: the thesis's octree level (5.1) sets the finest cell, the cloud's extent / 2^L.
 level_json = os.path.join(tmp, "level.json")
 rc, out, err = run("info", sphere, "--runs", "2", "--max-level", "6", "--json", level_json)

@@ -432,11 +432,17 @@ namespace
 /// the finest run's tiles (their slots, then the nodes estimated from the
 /// cloud, TiledMemory.h), against `budget` (0: none).
 template <int D>
+double slotCount(const GridSpec<D>& grid)
+{
+  return static_cast<double>(grid.nodeCount()) / static_cast<double>(tileNodes<D>());
+}
+
+template <int D>
 double tiledNeedBytes(const ReconstructionPlan<D>& plan, const GridPlan<D>& grids, double budget)
 {
   const GridSpec<D>& finest = grids.Runs.back();
   const double first = static_cast<double>(grids.Runs.front().nodeCount()) * ReconstructionBytesPerNode;
-  const double slots = static_cast<double>(finest.nodeCount()) / static_cast<double>(tileNodes<D>());
+  const double slots = slotCount(finest);
   if (budget > 0.0 && 5.0 * slots > budget) // the count itself would not fit
   {
     return first + 5.0 * slots; // a slot: its int32 entry, and a byte while the tiles are counted
@@ -505,6 +511,25 @@ Status withTiledAlternative(const ReconstructionPlan<D>& plan, GridPlanOptions p
 } // namespace
 
 template <int D>
+double storedNodesEstimate(const ReconstructionPlan<D>& plan, int run)
+{
+  const GridSpec<D>& grid = plan.Grids.Runs[static_cast<size_t>(run - 1)];
+  return plan.Options.TiledStorage && run > 1 ? estimatedTiledNodes(plan.Cloud, grid)
+                                              : static_cast<double>(grid.nodeCount());
+}
+
+template <int D>
+double storageMemoryEstimate(const ReconstructionPlan<D>& plan, int run)
+{
+  if (!plan.Options.TiledStorage || run == 1)
+  {
+    return plan.memoryEstimate(run);
+  }
+  return 4.0 * slotCount(plan.Grids.Runs[static_cast<size_t>(run - 1)]) +
+    storedNodesEstimate(plan, run) * TiledBytesPerStoredNode;
+}
+
+template <int D>
 Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor, GridPlan<D>& grids)
 {
   GridPlanOptions po;
@@ -532,6 +557,10 @@ Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSize
   return checkSlabMemory(plan, cellSizeFactor, grids);
 }
 
+template double storedNodesEstimate(const ReconstructionPlan<2>&, int);
+template double storedNodesEstimate(const ReconstructionPlan<3>&, int);
+template double storageMemoryEstimate(const ReconstructionPlan<2>&, int);
+template double storageMemoryEstimate(const ReconstructionPlan<3>&, int);
 template Status validateReconstructionOptions<2>(const ReconstructionOptions&);
 template Status validateReconstructionOptions<3>(const ReconstructionOptions&);
 template Status planRunGrids(const ReconstructionPlan<2>&, int, double, GridPlan<2>&);

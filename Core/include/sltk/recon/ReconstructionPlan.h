@@ -91,8 +91,24 @@ Status planReconstruction(
 template <int D>
 Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor, GridPlan<D>& grids);
 
+/// Nodes run r (1-based) will store: its grid's, or with TiledStorage, for
+/// runs 2..R, the tiles' estimated from the cloud (estimatedTiledNodes,
+/// TiledMemory.h).
+template <int D>
+double storedNodesEstimate(const ReconstructionPlan<D>& plan, int run);
+
+/// Solver memory of run r (bytes): memoryEstimate(), or with TiledStorage,
+/// for runs 2..R, its stored nodes at TiledBytesPerStoredNode and its slots
+/// (what checkTiledMemory weighs for the finest run).
+template <int D>
+double storageMemoryEstimate(const ReconstructionPlan<D>& plan, int run);
+
 extern template Status planRunGrids(const ReconstructionPlan<2>&, int, double, GridPlan<2>&);
 extern template Status planRunGrids(const ReconstructionPlan<3>&, int, double, GridPlan<3>&);
+extern template double storedNodesEstimate(const ReconstructionPlan<2>&, int);
+extern template double storedNodesEstimate(const ReconstructionPlan<3>&, int);
+extern template double storageMemoryEstimate(const ReconstructionPlan<2>&, int);
+extern template double storageMemoryEstimate(const ReconstructionPlan<3>&, int);
 extern template Status validateReconstructionOptions<2>(const ReconstructionOptions&);
 extern template Status validateReconstructionOptions<3>(const ReconstructionOptions&);
 extern template Status planReconstruction(

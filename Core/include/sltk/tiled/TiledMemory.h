@@ -24,8 +24,11 @@ constexpr double TiledBytesPerStoredNode = 48.0;
 /// cloud: the tiles of 8^D nodes that hold a point or lie next to one that
 /// does (the band is a few nodes thick around the front, which lies within a
 /// few spacings of the points). Above what the run stores on the sphere, the
-/// bunny and the dragon (7.47M for 7.46M, 53.8M for 52.7M); 3% below on the
+/// bunny and the dragon (7.47M for 7.46M, 53.8M for 52.7M, measured before
+/// the runs freed the tiles the band left; the bunny at --cdx 2 --kp 10 now
+/// stores 4.73M at its end for 7.48M estimated, 2026-11-26); 3% below on the
 /// 64-point circle, whose front passes farther than a tile from its points.
+/// `sltk info --octree` prints it per run.
 template <int D>
 double estimatedTiledNodes(const PointCloud<D>& cloud, const GridSpec<D>& finest);
 
