@@ -124,6 +124,10 @@ cut.UpdatePipeline()
 assert cut.GetDataInformation().GetDataClassName() == "vtkHyperTreeGrid", cut.GetDataInformation().GetDataClassName()
 view = CreateView("RenderView")
 view.ViewSize = [400, 300]
+# Shown as a user applies it: the trees as their outline (the proxy's hint), the surface inside it.
+assert Show(octree, view).Representation == "Outline" and Show(OutputPort(octree, 1), view).Representation == "Surface"
+Hide(octree, view)
+Hide(OutputPort(octree, 1), view)
 cut_display = Show(cut, view)
 ColorBy(cut_display, ("CELLS", "SignedDistance"))
 cut_display.SetRepresentationType("Surface With Edges")
