@@ -480,7 +480,7 @@ Status tiledEnergy(const TiledField<D>& field, const std::vector<std::int32_t>& 
       for (Index j = b; j < e; ++j)
       {
         const std::int32_t id = band[static_cast<size_t>(j)];
-        field.scratch(id, 1, 1, s.Phi, &s.Dist);
+        field.scratch(id, 1, 0, s.Phi, &s.Dist); // no ghost layers: the energy reads none (EnergyFunctional.h)
         s.Nodes.clear();
         const double* p = field.phi(id);
         for (Index k = 0; k < TiledField<D>::Nodes; ++k)

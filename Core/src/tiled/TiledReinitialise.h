@@ -376,7 +376,7 @@ private:
         for (Index r = b; r < e; ++r)
         {
           const std::int32_t tile = this->Nodes[starts[static_cast<size_t>(r)]].Tile;
-          field.scratch(tile, Halo, 1, block, nullptr);
+          field.scratch(tile, Halo, 0, block, nullptr); // ReinitStencil reads no ghost layers
           const ReinitStencil<D> stencil(block);
           for (size_t n = starts[static_cast<size_t>(r)]; n < starts[static_cast<size_t>(r) + 1]; ++n)
           {
