@@ -16,8 +16,8 @@
  *
  * Outputs:
  *  - port 0: vtkHyperTreeGrid, one tree per 8^3 finest nodes, refined to one
- *    leaf per node where a tile is stored and a single leaf (+-gamma)
- *    elsewhere; cell data SignedDistance (active scalars), DistanceToCloud,
+ *    leaf per node where a tile is stored but for its flat cells (one leaf at
+ *    +-gamma each), and a single leaf (+-gamma) elsewhere; cell data SignedDistance (active scalars), DistanceToCloud,
  *    Level and Rank (owning rank); field data the run summary
  *    (vtkSLLevelSetReconstruct's, with RunStoredNodes and RunUniformNodes)
  *    and GlobalLeaves (the leaves of every rank). VTK's hyper tree grid

@@ -244,7 +244,8 @@ public:
   /// band"): the same iterations and surface as the uniform grids, with memory
   /// that follows the surface. Port 0 is then a vtkHyperTreeGrid instead of
   /// the image: one tree per 8^3 nodes, refined to one leaf per node where a
-  /// tile is stored and a single leaf (+-gamma) elsewhere, with the cell data
+  /// tile is stored but for its flat cells (one leaf at +-gamma each), and a
+  /// single leaf (+-gamma) elsewhere, with the cell data
   /// SignedDistance, DistanceToCloud, Level and Rank, and the run summary in
   /// its field data (with RunStoredNodes, RunUniformNodes, RunLeaves and
   /// GlobalLeaves); the surface (port 1) is contoured tile by tile; the history

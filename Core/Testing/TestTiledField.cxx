@@ -161,6 +161,40 @@ TEST(TiledField, ScratchBlockCopiesTheDistanceNearTheBlockOnlyWhenAsked)
   }
 }
 
+TEST(TiledField, FlatCellsAreLeavesOfTheTilesOctree)
+{
+  sltk::GridSpec<3> grid;
+  grid.Dims = { 16, 16, 13 }; // the tiles of the second slot layer stop at node 12
+  grid.Spacing = { 1.0, 1.0, 1.0 };
+  const double gamma = 3.0;
+  sltk::TiledField<3> field;
+  field.reset(grid, gamma);
+  const std::int32_t inside = field.addTile(field.slotIndex({ 0, 0, 0 }));
+  const std::int32_t last = field.addTile(field.slotIndex({ 1, 1, 1 }));
+  for (const std::int32_t id : { inside, last })
+  {
+    std::fill_n(field.phi(id), sltk::TiledField<3>::Nodes, gamma);
+  }
+  EXPECT_TRUE(field.flatCell(inside, { 0, 0, 0 }, sltk::TileEdge));
+  EXPECT_EQ(field.leafCount(inside), 1) << "a tile at +gamma throughout is one leaf";
+  field.phi(inside)[0] = 0.5; // node (0, 0, 0) near the front
+  EXPECT_FALSE(field.flatCell(inside, { 0, 0, 0 }, sltk::TileEdge));
+  EXPECT_TRUE(field.flatCell(inside, { 4, 0, 0 }, 4));
+  // The root's 7 flat children, the first child's 7, and its first child's 8 nodes.
+  EXPECT_EQ(field.leafCount(inside), 7 + 7 + 8);
+  field.phi(inside)[0] = -gamma; // both sides in one cell: not flat
+  EXPECT_FALSE(field.flatCell(inside, { 0, 0, 0 }, 2));
+  EXPECT_EQ(field.leafCount(inside), 7 + 7 + 8);
+  // Nodes 13..15 along z lie beyond the grid: the cells holding them are refined, and the
+  // cells wholly beyond are no leaves (masked in the output). Along z: nodes 8..12 in the grid.
+  EXPECT_FALSE(field.flatCell(last, { 0, 0, 0 }, sltk::TileEdge));
+  EXPECT_TRUE(field.flatCell(last, { 0, 0, 0 }, 4));  // nodes 8..11 along z
+  EXPECT_FALSE(field.flatCell(last, { 0, 0, 4 }, 4)); // nodes 12..15
+  // The 4 lower children (flat), and of each upper child its 4 lower children of 2^3 nodes
+  // (12..13 along z: not flat, 13 beyond), whose 4 lower nodes (z = 12) are leaves.
+  EXPECT_EQ(field.leafCount(last), 4 + 4 * 4 * 4);
+}
+
 TEST(TiledField, RemovedTilesBecomeTheirSideAndTheOthersKeepTheirValues)
 {
   sltk::GridSpec<3> grid;

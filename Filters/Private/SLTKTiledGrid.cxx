@@ -49,7 +49,7 @@ std::array<Index, D> childCorner(const std::array<Index, D>& first, Index half, 
 template <int D>
 vtkIdType countCells(const TiledField<D>& field, std::int32_t tile, const std::array<Index, D>& first, Index size)
 {
-  if (size == 1 || beyondGrid<D>(field, tile, first))
+  if (size == 1 || beyondGrid<D>(field, tile, first) || field.flatCell(tile, first, size))
   {
     return 1;
   }
@@ -78,12 +78,45 @@ struct CellValues
   }
 };
 
-/// Builds the cell at `cursor` of tile `tile` covering `size` nodes per axis
-/// from its node `first`: a leaf per node, refined above, masked beyond the
-/// grid. Returns whether it holds a value (not masked), with its values.
+/// The unit-box centre of the cell covering `size` nodes per axis from node
+/// `first` of the slot at tile coordinates `t`: the mean of its nodes.
 template <int D>
-bool build(const TiledField<D>& field, std::int32_t tile, double scale, vtkHyperTreeGridNonOrientedCursor* cursor,
-  const std::array<Index, D>& first, Index size, int level, CellValues& out, double& phi, double& distance)
+std::array<double, D> cellCentre(
+  const TiledField<D>& field, const std::array<Index, D>& t, const std::array<Index, D>& first, Index size)
+{
+  std::array<double, D> centre{};
+  for (int a = 0; a < D; ++a)
+  {
+    centre[a] = field.grid().Origin[a] +
+      (static_cast<double>(t[a] * TileEdge + first[a]) + 0.5 * static_cast<double>(size - 1)) * field.grid().Spacing[a];
+  }
+  return centre;
+}
+
+template <int D>
+using DistanceAt = std::function<double(const std::array<double, D>&)>;
+
+/// The tile-local index of the node `first` (x fastest).
+template <int D>
+Index localIndex(const std::array<Index, D>& first)
+{
+  Index local = 0;
+  for (int a = 0; a < D; ++a)
+  {
+    local |= first[a] << (TileBits * a);
+  }
+  return local;
+}
+
+/// Builds the cell at `cursor` of tile `tile` covering `size` nodes per axis
+/// from its node `first`: a leaf per node, or one for a flat cell
+/// (TiledField::flatCell: its +-gamma, the distance at its centre), refined
+/// above, masked beyond the grid. Returns whether it holds a value (not
+/// masked), with its values.
+template <int D>
+bool build(const TiledField<D>& field, std::int32_t tile, double scale, const DistanceAt<D>& distanceAt,
+  vtkHyperTreeGridNonOrientedCursor* cursor, const std::array<Index, D>& first, Index size, int level, CellValues& out,
+  double& phi, double& distance)
 {
   const vtkIdType id = cursor->GetGlobalNodeIndex();
   if (beyondGrid<D>(field, tile, first))
@@ -91,13 +124,16 @@ bool build(const TiledField<D>& field, std::int32_t tile, double scale, vtkHyper
     out.set(id, 0.0, 0.0, level, true);
     return false;
   }
+  if (size > 1 && field.flatCell(tile, first, size))
+  {
+    phi = scale * field.phi(tile)[localIndex<D>(first)];
+    distance = scale * distanceAt(cellCentre<D>(field, field.tileOrigin(tile), first, size));
+    out.set(id, phi, distance, level, false);
+    return true;
+  }
   if (size == 1)
   {
-    Index local = 0;
-    for (int a = 0; a < D; ++a)
-    {
-      local |= first[a] << (TileBits * a);
-    }
+    const Index local = localIndex<D>(first);
     phi = scale * field.phi(tile)[local];
     distance = scale * field.distance(tile)[local];
     out.set(id, phi, distance, level, false);
@@ -110,7 +146,8 @@ bool build(const TiledField<D>& field, std::int32_t tile, double scale, vtkHyper
   {
     cursor->ToChild(child);
     double p = 0.0, d = 0.0;
-    if (build<D>(field, tile, scale, cursor, childCorner<D>(first, size / 2, child), size / 2, level + 1, out, p, d))
+    if (build<D>(field, tile, scale, distanceAt, cursor, childCorner<D>(first, size / 2, child), size / 2, level + 1,
+          out, p, d))
     {
       phiSum += p;
       distanceSum += d;
@@ -200,15 +237,11 @@ void tiledToHyperTreeGrid(const TiledField<D>& field, const UnitBox<D>& box,
     if (entry >= 0)
     {
       double p = 0.0, d = 0.0;
-      build<D>(field, entry, box.Scale, cursor, std::array<Index, D>{}, TileEdge, 0, out, p, d);
+      build<D>(field, entry, box.Scale, distanceAt, cursor, std::array<Index, D>{}, TileEdge, 0, out, p, d);
     }
     else
     {
-      std::array<double, D> centre{};
-      for (int a = 0; a < D; ++a)
-      {
-        centre[a] = grid.Origin[a] + (static_cast<double>(t[a] * TileEdge) + 0.5 * (TileEdge - 1)) * grid.Spacing[a];
-      }
+      const std::array<double, D> centre = cellCentre<D>(field, t, std::array<Index, D>{}, TileEdge);
       const double side = entry == TiledField<D>::Inside ? -field.gamma() : field.gamma();
       out.set(cursor->GetGlobalNodeIndex(), box.Scale * side, box.Scale * distanceAt(centre), 0, false);
     }

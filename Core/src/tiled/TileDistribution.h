@@ -133,7 +133,6 @@ public:
   };
   StorageCounts storageCounts(const TiledField<D>& field) const
   {
-    const auto& n = field.grid().Dims;
     std::int64_t mine[2] = { 0, 0 }; // tiles, leaves
     for (Index s = 0; s < field.slotCount(); ++s)
     {
@@ -141,17 +140,9 @@ public:
       {
         continue;
       }
-      Index leaves = 1;
-      if (field.slot(s) >= 0)
-      {
-        const std::array<Index, D> t = field.slotCoordinates(s);
-        for (int a = 0; a < D; ++a)
-        {
-          leaves *= std::min<Index>(TileEdge, n[a] - TileEdge * t[a]);
-        }
-        ++mine[0];
-      }
-      mine[1] += leaves;
+      const std::int32_t entry = field.slot(s);
+      mine[0] += entry >= 0 ? 1 : 0;
+      mine[1] += entry >= 0 ? field.leafCount(entry) : 1; // a slot without a tile: one leaf
     }
     std::int64_t largest = mine[1];
     if (this->distributed())

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <vector>
@@ -273,6 +274,78 @@ void TiledField<D>::scratchBlock(const std::array<Index, D>& first, Index tiles,
   {
     dist->fillGhosts();
   }
+}
+
+template <int D>
+bool TiledField<D>::flatCell(std::int32_t id, const std::array<Index, D>& first, Index size) const
+{
+  const std::array<Index, D>& origin = this->tileOrigin(id);
+  Index count = 1;
+  for (int a = 0; a < D; ++a)
+  {
+    if (origin[a] * TileEdge + first[a] + size > this->Grid.Dims[a])
+    {
+      return false; // a node beyond the grid
+    }
+    count *= size;
+  }
+  const double* p = this->phi(id);
+  double side = 0.0;
+  for (Index k = 0; k < count; ++k)
+  {
+    Index local = 0, rest = k;
+    for (int a = 0; a < D; ++a)
+    {
+      local |= (first[a] + rest % size) << (TileBits * a);
+      rest /= size;
+    }
+    const double v = p[local];
+    if (std::fabs(v) != this->Gamma || (k > 0 && v != side))
+    {
+      return false;
+    }
+    side = v;
+  }
+  return true;
+}
+
+namespace
+{
+/// Leaves below (and with) the cell of tile `id` at `first` covering `size` nodes per axis.
+template <int D>
+Index cellLeaves(const TiledField<D>& field, std::int32_t id, const std::array<Index, D>& first, Index size)
+{
+  bool inGrid = true;
+  for (int a = 0; a < D; ++a)
+  {
+    inGrid = inGrid && field.tileOrigin(id)[a] * TileEdge + first[a] < field.grid().Dims[a];
+  }
+  if (!inGrid)
+  {
+    return 0; // masked in the output
+  }
+  if (size == 1 || field.flatCell(id, first, size))
+  {
+    return 1;
+  }
+  Index leaves = 0;
+  for (int child = 0; child < (1 << D); ++child)
+  {
+    std::array<Index, D> corner = first;
+    for (int a = 0; a < D; ++a)
+    {
+      corner[a] += ((child >> a) & 1) ? size / 2 : 0;
+    }
+    leaves += cellLeaves<D>(field, id, corner, size / 2);
+  }
+  return leaves;
+}
+} // namespace
+
+template <int D>
+Index TiledField<D>::leafCount(std::int32_t id) const
+{
+  return cellLeaves<D>(*this, id, std::array<Index, D>{}, TileEdge);
 }
 
 template class TiledField<2>;

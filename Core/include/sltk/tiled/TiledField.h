@@ -113,6 +113,17 @@ public:
   double* distance(std::int32_t id) { return this->values(id) + ChunkTiles * Nodes; }
   const double* distance(std::int32_t id) const { return this->values(id) + ChunkTiles * Nodes; }
 
+  /// The octree of a tile (its output as a hyper tree, Documentation/Octree.md):
+  /// the tile refined from one cell of TileEdge^D nodes down to one leaf per
+  /// node, but for flat cells, which stay leaves. A cell of tile `id` covering
+  /// `size` nodes per axis from its node `first` (tile-local) is flat when
+  /// every node of it lies in the grid and holds the same cut-off value,
+  /// +gamma or -gamma (1.49): one leaf holds it exactly (the thesis coarsens
+  /// where phi is flattened to +-gamma, 5.2.3).
+  bool flatCell(std::int32_t id, const std::array<Index, D>& first, Index size) const;
+  /// Leaves of tile `id`'s octree (flatCell), its nodes beyond the grid left out.
+  Index leafCount(std::int32_t id) const;
+
   /// Grid index of node `local` (x fastest, in [0, Nodes)) of tile `id`.
   std::array<Index, D> node(std::int32_t id, Index local) const
   {
