@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <set>
 #include <sstream>
 
 vtkStandardNewMacro(vtkSLLevelSetReconstruct);
@@ -460,7 +461,14 @@ int vtkSLLevelSetReconstruct::RequestData(
   vtkSmartPointer<vtkPointSet> attributesFrom = input;
   if (joined) // every piece with its arrays, now that the reconstruction's memory is free
   {
-    attributesFrom = sltk::vtkbridge::piecesWithPointData(input, *comm);
+    std::set<std::string> dropped;
+    attributesFrom = sltk::vtkbridge::piecesWithPointData(input, *comm, &dropped);
+    for (const std::string& name : dropped)
+    {
+      vtkWarningMacro("the cloud's point array '"
+        << name << "' is not on the surface: some ranks' pieces lack it or hold another type or number of "
+        << "components; give every piece the same arrays");
+    }
   }
   sltk::vtkbridge::transferCloudAttributes(attributesFrom, surface);
   markOutputsComplete(outputVector,

@@ -15,6 +15,7 @@
 #include "sltk/recon/ReconstructionPlan.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -105,10 +106,10 @@ int printPlan(const std::string& path, long long read, sltk::PointCloud<D> cloud
     }
     std::printf("  %8.1f MB\n", bytes / 1e6);
     nlohmann::ordered_json run = { { "run", r }, { "dx", g.Spacing[0] }, { "grid", dims },
-      { "nodes", static_cast<double>(g.nodeCount()) }, { "memory_mb", bytes / 1e6 } };
+      { "nodes", static_cast<long long>(g.nodeCount()) }, { "memory_mb", bytes / 1e6 } };
     if (tiled)
     {
-      run["stored_nodes_estimate"] = stored;
+      run["stored_nodes_estimate"] = static_cast<long long>(std::llround(stored));
     }
     runs.push_back(run);
   }

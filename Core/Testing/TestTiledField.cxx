@@ -159,6 +159,16 @@ TEST(TiledField, ScratchBlockCopiesTheDistanceNearTheBlockOnlyWhenAsked)
     }
     EXPECT_EQ(copied, (edge - 2 * halo + 2) * (edge - 2 * halo + 2) * (edge - 2 * halo + 2));
   }
+  // A halo no wider than distHalo: d copied whole, its ghost layers filled, as without it.
+  sltk::GridField<3> phi, dist, fullPhi, fullDist;
+  field.scratchBlock(first, 2, 1, 1, fullPhi, &fullDist);
+  field.scratchBlock(first, 2, 1, 1, phi, &dist, 1);
+  ASSERT_EQ(dist.storage().size(), fullDist.storage().size());
+  for (size_t k = 0; k < dist.storage().size(); ++k)
+  {
+    const double a = dist.storage()[k], b = fullDist.storage()[k];
+    ASSERT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << "storage index " << k;
+  }
 }
 
 TEST(TiledField, FlatCellsAreLeavesOfTheTilesOctree)

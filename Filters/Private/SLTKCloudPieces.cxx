@@ -17,7 +17,8 @@ namespace sltk
 namespace vtkbridge
 {
 
-vtkSmartPointer<vtkPolyData> piecesWithPointData(vtkPointSet* piece, const Communicator& comm)
+vtkSmartPointer<vtkPolyData> piecesWithPointData(
+  vtkPointSet* piece, const Communicator& comm, std::set<std::string>* dropped)
 {
   vtkNew<vtkPolyData> mine; // the points and their arrays, no cells
   if (piece && piece->GetNumberOfPoints() > 0)
@@ -42,6 +43,11 @@ vtkSmartPointer<vtkPolyData> piecesWithPointData(vtkPointSet* piece, const Commu
     if (other->GetNumberOfPoints() > 0)
     {
       append->AddInputData(other);
+      for (int a = 0; dropped && a < other->GetPointData()->GetNumberOfArrays(); ++a)
+      {
+        const char* name = other->GetPointData()->GetArrayName(a);
+        dropped->insert(name ? name : "");
+      }
     }
   }
   auto result = vtkSmartPointer<vtkPolyData>::New();
@@ -49,6 +55,11 @@ vtkSmartPointer<vtkPolyData> piecesWithPointData(vtkPointSet* piece, const Commu
   {
     append->Update();
     result->ShallowCopy(append->GetOutput());
+  }
+  for (int a = 0; dropped && a < result->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    const char* name = result->GetPointData()->GetArrayName(a);
+    dropped->erase(name ? name : ""); // kept: what is left was dropped
   }
   return result;
 }

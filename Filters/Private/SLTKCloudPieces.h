@@ -11,6 +11,9 @@
 
 #include "vtkSmartPointer.h"
 
+#include <set>
+#include <string>
+
 class vtkPointSet;
 class vtkPolyData;
 
@@ -21,8 +24,11 @@ namespace vtkbridge
 
 /// Collective. Every rank's points with their point data, in rank order (a
 /// vtkPolyData without cells). Pieces without points add nothing; the arrays
-/// kept are those that every piece with points has (vtkAppendPolyData's rule).
-vtkSmartPointer<vtkPolyData> piecesWithPointData(vtkPointSet* piece, const Communicator& comm);
+/// kept are those that every piece with points has with the same name, type and
+/// components (vtkAppendPolyData's rule: others are dropped, and named in
+/// `dropped` when given).
+vtkSmartPointer<vtkPolyData> piecesWithPointData(
+  vtkPointSet* piece, const Communicator& comm, std::set<std::string>* dropped = nullptr);
 
 } // namespace vtkbridge
 } // namespace sltk

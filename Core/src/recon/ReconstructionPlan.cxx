@@ -457,9 +457,28 @@ double memoryBudgetBytes(const ReconstructionPlan<D>& plan)
                                    : static_cast<double>(availableMemoryBytes());
 }
 
+/// The grid options of `runs` runs from C_dx = cellSizeFactor (4.36): run 1
+/// padded for the plan's FirstRunReach, plus the band gamma and two cells.
+template <int D>
+GridPlanOptions runGridOptions(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor)
+{
+  GridPlanOptions po;
+  po.Runs = runs;
+  po.CellSizeFactor = cellSizeFactor;
+  po.Padding = plan.Options.Padding;
+  po.BytesPerNode = ReconstructionBytesPerNode;
+  po.MemoryBudget = plan.Options.MemoryBudget;
+  const double dx1 = cellSizeFactor * plan.CloudSpacing; // (4.36)
+  po.FirstRunPadding = static_cast<int>(std::ceil(plan.FirstRunReach / dx1 + plan.Options.GammaFactor + 2.0));
+  return po;
+}
+
 } // namespace
 
-/// With TiledStorage: tiledNeedBytes must fit.
+/// With TiledStorage: tiledNeedBytes must fit. A refusal names the smallest
+/// C_dx, in steps of 5% up to the range's end, whose plan fits with 10%
+/// headroom: the need is run 1's grid and the slots (C_dx^-D) plus the tiles
+/// (C_dx^-(D-1)), so no single power predicts it.
 template <int D>
 Status checkTiledMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor, GridPlan<D>& grids)
 {
@@ -467,12 +486,30 @@ Status checkTiledMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor
   const double need = tiledNeedBytes(plan, grids, budget);
   if (budget > 0.0 && need > budget)
   {
-    // The stored nodes follow the surface: about C_dx^-(D-1); the factor that fits with 10% headroom.
-    const double fit = cellSizeFactor * std::pow(need / (0.9 * budget), 1.0 / (D - 1));
+    const int runs = static_cast<int>(grids.Runs.size());
+    double fit = 0.0;
+    for (double c = cellSizeFactor * 1.05; fit == 0.0 && c <= CellSizeFactorRange[1]; c *= 1.05)
+    {
+      GridPlanOptions po = runGridOptions(plan, runs, c);
+      po.MemoryBudget = std::numeric_limits<std::uint64_t>::max();
+      GridPlan<D> coarser;
+      fit = planGrids(boundingBox(plan.Cloud), plan.CloudSpacing, po, coarser).isOk() &&
+          tiledNeedBytes(plan, coarser, budget) <= 0.9 * budget
+        ? c
+        : 0.0;
+    }
     std::ostringstream m;
-    m << "the tiled reconstruction (" << grids.Runs.size() << " runs, the finest grid " << grids.Runs.back().nodeCount()
+    m << "the tiled reconstruction (" << runs << " runs, the finest grid " << grids.Runs.back().nodeCount()
       << " nodes) would need about " << need / 1e9 << " GB for run 1's grid and the finest run's tiles, more than the "
-      << budget / 1e9 << " GB available: use C_dx >= " << fit << " or fewer runs";
+      << budget / 1e9 << " GB available: ";
+    if (fit > 0.0)
+    {
+      m << "use C_dx >= " << fit << " or fewer runs";
+    }
+    else
+    {
+      m << "no C_dx up to " << CellSizeFactorRange[1] << " fits with " << runs << " runs: use fewer runs";
+    }
     grids.Runs.clear();
     return Status::outOfMemory(m.str());
   }
@@ -481,12 +518,12 @@ Status checkTiledMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor
 
 namespace
 {
-/// A uniform plan refused for memory (`refusal`): in 3D, where the tiled
-/// storage would fit, the refusal says so, with its estimate.
+/// A uniform plan refused for memory (`refusal`): where the tiled storage
+/// would fit (2D or 3D), the refusal says so, with its estimate.
 template <int D>
 Status withTiledAlternative(const ReconstructionPlan<D>& plan, GridPlanOptions po, const Status& refusal)
 {
-  if (D != 3 || refusal.code() != StatusCode::OutOfMemory)
+  if (refusal.code() != StatusCode::OutOfMemory)
   {
     return refusal;
   }
@@ -514,8 +551,8 @@ template <int D>
 double storedNodesEstimate(const ReconstructionPlan<D>& plan, int run)
 {
   const GridSpec<D>& grid = plan.Grids.Runs[static_cast<size_t>(run - 1)];
-  return plan.Options.TiledStorage && run > 1 ? estimatedTiledNodes(plan.Cloud, grid)
-                                              : static_cast<double>(grid.nodeCount());
+  const double nodes = static_cast<double>(grid.nodeCount());
+  return plan.Options.TiledStorage && run > 1 ? std::min(estimatedTiledNodes(plan.Cloud, grid), nodes) : nodes;
 }
 
 template <int D>
@@ -532,15 +569,7 @@ double storageMemoryEstimate(const ReconstructionPlan<D>& plan, int run)
 template <int D>
 Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor, GridPlan<D>& grids)
 {
-  GridPlanOptions po;
-  po.Runs = runs;
-  po.CellSizeFactor = cellSizeFactor;
-  po.Padding = plan.Options.Padding;
-  po.BytesPerNode = ReconstructionBytesPerNode;
-  po.MemoryBudget = plan.Options.MemoryBudget;
-  // Room for run 1's initial surface, plus the band gamma and two cells.
-  const double dx1 = cellSizeFactor * plan.CloudSpacing; // (4.36)
-  po.FirstRunPadding = static_cast<int>(std::ceil(plan.FirstRunReach / dx1 + plan.Options.GammaFactor + 2.0));
+  GridPlanOptions po = runGridOptions(plan, runs, cellSizeFactor); // room for run 1's initial surface
   if (plan.Options.TiledStorage)
   {
     po.MemoryBudget = std::numeric_limits<std::uint64_t>::max(); // not the uniform grids: their tiles

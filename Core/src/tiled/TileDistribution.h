@@ -123,8 +123,9 @@ public:
   }
 
   /// The tiles and the octree's leaves, as the hyper tree grid holds them
-  /// (SLTKTiledGrid.h: a node of a tile within the grid, or a slot without a
-  /// tile), each counted by the slot's owner, in one pass and two reductions.
+  /// (SLTKTiledGrid.h: TiledField::leafCount for a tile, one leaf for a slot
+  /// without one), each counted by the slot's owner, in one pass and two
+  /// reductions.
   struct StorageCounts
   {
     Index Tiles = 0;             ///< over every rank (globalTileCount)

@@ -197,8 +197,8 @@ int main(int argc, char* argv[])
     }
     if (tree)
     {
-      // One leaf per stored node in the grid (level 3), one per slot without a tile (level 0);
-      // its dual grid contours to the tile-by-tile surface, watertight.
+      // One leaf per stored node in the grid (level 3) but for the flat cells (one leaf each), one
+      // per slot without a tile (level 0); its dual grid contours to the tile-by-tile surface.
       auto* level = tree->GetCellData()->GetArray("Level");
       auto* phi = tree->GetCellData()->GetArray("SignedDistance");
       auto* dist = tree->GetCellData()->GetArray("DistanceToCloud");

@@ -10,7 +10,8 @@
 //   same leaf (each rank also runs it alone, vtkDummyController) and the
 //   leaf count is the same; with the points on rank 0 only (the others have
 //   none) the union of the pieces gives the same leaves bit for bit, and
-//   every rank's surface piece the cloud's point array (Height);
+//   every rank's surface piece the cloud's point array (Height); pieces that
+//   disagree on an array lose it with a warning;
 // - port 1, gathered, is one closed surface; port 2 holds the leaves per
 //   iteration;
 // - the .htg written and read back holds the same leaves;
@@ -25,6 +26,7 @@
 #include "vtkAppendPolyData.h"
 #include "vtkCellData.h"
 #include "vtkCleanPolyData.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
@@ -35,6 +37,7 @@
 #include "vtkMPIController.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkTable.h"
@@ -61,6 +64,15 @@ double lastColumnValue(vtkTable* table, const char* column)
   auto* a = table ? vtkDataArray::SafeDownCast(table->GetColumnByName(column)) : nullptr;
   return a && a->GetNumberOfTuples() > 0 ? a->GetTuple1(a->GetNumberOfTuples() - 1) : std::nan("");
 }
+
+/// Counts the warnings of the object it observes.
+class WarningCounter : public vtkCommand
+{
+public:
+  static WarningCounter* New() { return new WarningCounter; }
+  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
+  int Count = 0;
+};
 
 /// Boundary and non-manifold edges of the cleaned union of `pieces`.
 vtkIdType openEdges(const std::vector<vtkSmartPointer<vtkDataObject>>& pieces, vtkIdType& polys)
@@ -115,32 +127,39 @@ int main(int argc, char* argv[])
   check(!leaves.empty(), "port 0 is a hyper tree grid with SignedDistance, DistanceToCloud, Level and Rank");
 
   // Every unmasked leaf is this rank's; at the finest level (a stored node) the signed
-  // distance is the sphere's within a fraction of a cell near the front and the distance to
-  // the cloud is exact at the leaf's centre: the leaves sit at the nodes.
-  double worstPhi = 0.0, worstDistance = 0.0, cell = 0.0;
+  // distance is the sphere's within a fraction of a cell near the front.
+  // Every leaf, coarse (a flat cell, a slot without a tile) or not, holds the exact distance
+  // at its centre; a coarse one holds +-gamma, beyond the finest leaves' values.
+  double worstPhi = 0.0, worstDistance = 0.0, cell = 0.0, gamma = 0.0, largestFine = 0.0;
+  bool coarseAtGamma = true;
   for (const Leaf& leaf : leaves)
   {
-    if (leaf.Level != 3)
-    {
-      continue;
-    }
-    cell = leaf.Size;
-    const double r = std::hypot(leaf.Centre[0] - centre[0], leaf.Centre[1] - centre[1], leaf.Centre[2] - centre[2]);
-    if (std::abs(leaf.Phi) < 2.0 * leaf.Size)
-    {
-      worstPhi = std::max(worstPhi, std::abs(leaf.Phi - (r - radius)) / leaf.Size);
-    }
     double exact = std::numeric_limits<double>::infinity();
     for (const auto& p : cloud.Points)
     {
       exact = std::min(exact, std::hypot(p[0] - leaf.Centre[0], p[1] - leaf.Centre[1], p[2] - leaf.Centre[2]));
     }
     worstDistance = std::max(worstDistance, std::abs(leaf.Distance - exact));
+    if (leaf.Level != 3)
+    {
+      coarseAtGamma = coarseAtGamma && (gamma == 0.0 || std::abs(leaf.Phi) == gamma);
+      gamma = std::abs(leaf.Phi);
+      continue;
+    }
+    cell = leaf.Size;
+    largestFine = std::max(largestFine, std::abs(leaf.Phi));
+    const double r = std::hypot(leaf.Centre[0] - centre[0], leaf.Centre[1] - centre[1], leaf.Centre[2] - centre[2]);
+    if (std::abs(leaf.Phi) < 2.0 * leaf.Size)
+    {
+      worstPhi = std::max(worstPhi, std::abs(leaf.Phi - (r - radius)) / leaf.Size);
+    }
   }
   check(cell > 0.0 && worstPhi < 0.5,
     "SignedDistance is the sphere's within " + std::to_string(worstPhi) + " cells near the front");
   check(worstDistance < 1e-12,
-    "DistanceToCloud is exact at the finest leaves' centres (" + std::to_string(worstDistance * 1e12) + "e-12)");
+    "DistanceToCloud is exact at every leaf's centre (" + std::to_string(worstDistance * 1e12) + "e-12)");
+  check(coarseAtGamma && gamma > 2.0 * cell && largestFine <= gamma,
+    "the coarse leaves hold +-gamma (" + std::to_string(gamma / cell) + " cells), the finest at most that");
 
   // The ranks' leaves add up to GlobalLeaves and to the history's last Leaves (rank 0's table).
   long long total = 0, mine = static_cast<long long>(leaves.size()), largest = 0, fewest = 0;
@@ -234,6 +253,33 @@ int main(int argc, char* argv[])
     check(near && ranksWithVertices >= 2,
       "a rank without points still gives its surface piece DistanceToCloud and the cloud's Height (" +
         std::to_string(ranksWithVertices) + " ranks with vertices)");
+
+    // Pieces that disagree on an array (Height on rank 0's only): it cannot be transferred, and
+    // the filter says so with a warning on every rank rather than dropping it silently.
+    vtkNew<vtkPolyData> half;
+    vtkNew<vtkPoints> halfPoints;
+    vtkNew<vtkDoubleArray> halfHeight;
+    halfHeight->SetName("Height");
+    for (vtkIdType i = rank; i < input->GetNumberOfPoints(); i += size)
+    {
+      halfPoints->InsertNextPoint(input->GetPoint(i));
+      halfHeight->InsertNextValue(input->GetPoint(i)[2]);
+    }
+    half->SetPoints(halfPoints);
+    if (rank == 0)
+    {
+      half->GetPointData()->AddArray(halfHeight);
+    }
+    vtkNew<vtkOctreeSDF> disagreeing;
+    vtkNew<WarningCounter> warnings;
+    disagreeing->AddObserver(vtkCommand::WarningEvent, warnings);
+    disagreeing->SetInputDataObject(half);
+    disagreeing->SetNumberOfRuns(1);
+    disagreeing->SetNumberOfThreads(1);
+    check(disagreeing->GetExecutive()->Update() == 1, "pieces with different arrays are reconstructed");
+    auto* withoutHeight = vtkPolyData::SafeDownCast(disagreeing->GetOutputDataObject(1));
+    check(warnings->Count == 1 && withoutHeight && !withoutHeight->GetPointData()->GetArray("Height"),
+      "an array some pieces lack is not transferred, with a warning (" + std::to_string(warnings->Count) + ")");
   }
 
   // .htg written and read back (one file per rank; binary data: VTK 9.2's appended mode

@@ -124,10 +124,15 @@ cut.UpdatePipeline()
 assert cut.GetDataInformation().GetDataClassName() == "vtkHyperTreeGrid", cut.GetDataInformation().GetDataClassName()
 view = CreateView("RenderView")
 view.ViewSize = [400, 300]
-# Shown as a user applies it: the trees as their outline (the proxy's hint), the surface inside it.
+# Shown as a user applies it: the trees as their outline (the proxy's hint), the surface inside it;
+# the uniform filter's 2D image of a planar cloud as ParaView's coloured slice (no hint there).
 assert Show(octree, view).Representation == "Outline" and Show(OutputPort(octree, 1), view).Representation == "Surface"
 Hide(octree, view)
 Hide(OutputPort(octree, 1), view)
+ring = Ellipse(Center=[0.0, 0.0, 0.5], MajorRadiusVector=[1.0, 0.0, 0.0], Ratio=1.0, Resolution=64, Close=1)
+flat_image = SemiLagrangianLevelSetReconstruction(Input=ring, NumberOfRuns=1)
+assert Show(flat_image, view).Representation == "Slice", Show(flat_image, view).Representation
+Hide(flat_image, view)
 cut_display = Show(cut, view)
 ColorBy(cut_display, ("CELLS", "SignedDistance"))
 cut_display.SetRepresentationType("Surface With Edges")

@@ -152,8 +152,9 @@ struct IterationRecord
   double CloudError = 0.0; ///< Err_P^n (4.35)
   Index BandSize = 0;      ///< |B^n|
   Index StoredNodes = 0;   ///< tiled storage: nodes held after the iteration (run 1: its grid); 0 otherwise
-  /// Tiled storage: the octree's leaves after the iteration (a stored node within the grid, or a
-  /// slot without a tile: the hyper tree grid's leaves, Documentation/Octree.md), over every rank
+  /// Tiled storage: the octree's leaves after the iteration (a stored node within the grid, a flat
+  /// cell of a tile, or a slot without a tile: the hyper tree grid's leaves, TiledField::leafCount,
+  /// Documentation/Octree.md), over every rank
   /// and the most one rank owns; run 1 (uniform): its grid's nodes and the largest slab's. 0 otherwise.
   Index Leaves = 0;
   Index LargestRankLeaves = 0;
