@@ -289,22 +289,37 @@ bool TiledField<D>::flatCell(std::int32_t id, const std::array<Index, D>& first,
     }
     count *= size;
   }
-  const double* p = this->phi(id);
-  double side = 0.0;
-  for (Index k = 0; k < count; ++k)
+  // Row by row along x (contiguous in the tile), the rows' offsets counted like an odometer.
+  Index base = 0;
+  for (int a = 0; a < D; ++a)
   {
-    Index local = 0, rest = k;
-    for (int a = 0; a < D; ++a)
+    base |= first[a] << (TileBits * a);
+  }
+  const double* p = this->phi(id);
+  const double side = p[base];
+  if (std::fabs(side) != this->Gamma)
+  {
+    return false;
+  }
+  std::array<Index, D> at{}; // the row's position along y (and z) within the cell
+  for (Index row = 0; row < count / size; ++row)
+  {
+    Index offset = base;
+    for (int a = 1; a < D; ++a)
     {
-      local |= (first[a] + rest % size) << (TileBits * a);
-      rest /= size;
+      offset += at[a] << (TileBits * a);
     }
-    const double v = p[local];
-    if (std::fabs(v) != this->Gamma || (k > 0 && v != side))
+    for (Index x = 0; x < size; ++x)
     {
-      return false;
+      if (p[offset + x] != side)
+      {
+        return false;
+      }
     }
-    side = v;
+    for (int a = 1; a < D && ++at[a] == size; ++a)
+    {
+      at[a] = 0;
+    }
   }
   return true;
 }
