@@ -146,7 +146,7 @@ TEST(Reconstruction, PlansFromTheThesissOctreeLevel)
   options.MaximumLevel = 7;
   sltk::ReconstructionPlan<3> plan;
   ASSERT_TRUE(sltk::planReconstruction(cloud, options, sltk::Context{}, plan).isOk());
-  const double edge = sltk::largestExtent(sltk::boundingBox(plan.Cloud));
+  const double edge = sltk::boundingBox(plan.Cloud).largestExtent();
   EXPECT_NEAR(plan.Grids.Runs.back().Spacing[0] * 128.0, edge, 1e-12 * edge);
   EXPECT_NEAR(plan.Grids.Runs.front().Spacing[0] * 32.0, edge, 1e-12 * edge) << "run 1 at level 7 - 3 + 1";
   EXPECT_FALSE(plan.AutomaticCellSize) << "a level is the user's choice: no automatic restart changes it";

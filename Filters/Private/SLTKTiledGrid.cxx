@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SLTKTiledGrid.h"
 
+#include "sltk/tiled/TiledReconstruction.h"
+
 #include "vtkBitArray.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
@@ -21,18 +23,6 @@ namespace vtkbridge
 
 namespace
 {
-/// Whether the cell of a tile's tree starting at its node `first` lies wholly beyond the grid's last node.
-template <int D>
-bool beyondGrid(const TiledField<D>& field, std::int32_t tile, const std::array<Index, D>& first)
-{
-  bool beyond = false;
-  for (int a = 0; a < D; ++a)
-  {
-    beyond = beyond || field.tileOrigin(tile)[a] * TileEdge + first[a] >= field.grid().Dims[a];
-  }
-  return beyond;
-}
-
 /// The corner of child `child` (VTK's index x + 2y (+ 4z)) of a cell at `first` of `half` nodes per axis.
 template <int D>
 std::array<Index, D> childCorner(const std::array<Index, D>& first, Index half, unsigned char child)
@@ -49,7 +39,7 @@ std::array<Index, D> childCorner(const std::array<Index, D>& first, Index half, 
 template <int D>
 vtkIdType countCells(const TiledField<D>& field, std::int32_t tile, const std::array<Index, D>& first, Index size)
 {
-  if (size == 1 || beyondGrid<D>(field, tile, first) || field.flatCell(tile, first, size))
+  if (size == 1 || !field.nodeInGrid(tile, first) || field.flatCell(tile, first, size))
   {
     return 1;
   }
@@ -119,7 +109,7 @@ bool build(const TiledField<D>& field, std::int32_t tile, double scale, const Di
   double& phi, double& distance)
 {
   const vtkIdType id = cursor->GetGlobalNodeIndex();
-  if (beyondGrid<D>(field, tile, first))
+  if (!field.nodeInGrid(tile, first))
   {
     out.set(id, 0.0, 0.0, level, true);
     return false;
@@ -167,7 +157,7 @@ void tiledToHyperTreeGrid(const TiledField<D>& field, const UnitBox<D>& box,
   const std::function<double(const std::array<double, D>&)>& distanceAt, vtkHyperTreeGrid* output,
   const std::vector<std::int32_t>& owners, int rank, double z)
 {
-  const auto mine = [&](Index s) { return owners.empty() || owners[static_cast<size_t>(s)] == rank; };
+  const auto mine = [&](Index s) { return ownedBy(owners, s, rank); };
   output->Initialize();
   std::array<Index, 3> slots{ 0, 0, 0 }; // a planar grid: one tree along z (a quadtree per slot)
   for (int a = 0; a < D; ++a)

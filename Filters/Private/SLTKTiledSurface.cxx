@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SLTKTiledSurface.h"
 
+#include "sltk/tiled/TiledReconstruction.h"
+
 #include <vtkAppendPolyData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFlyingEdges2D.h>
@@ -66,7 +68,7 @@ void tiledZeroLevelSet(const TiledField<D>& field, const UnitBox<D>& box, vtkPol
   std::vector<std::array<Index, D>> blocks;
   for (std::int32_t id = 0; id < static_cast<std::int32_t>(field.tileCount()); ++id)
   {
-    if (!owners.empty() && owners[static_cast<size_t>(field.tileSlot(id))] != rank)
+    if (!ownedBy(owners, field.tileSlot(id), rank))
     {
       continue; // a ghost: its owner contours it (a block has one owner, TiledReconstruction.h)
     }

@@ -33,8 +33,8 @@ std::uint64_t pointHash(const std::array<double, D>& p)
   }
   return h;
 }
-} // namespace
 
+/// Whether the ranks hold different clouds (joinCloudPieces' rule). Collective.
 template <int D>
 bool cloudsDiffer(const PointCloud<D>& cloud, const Communicator& comm)
 {
@@ -63,8 +63,9 @@ bool cloudsDiffer(const PointCloud<D>& cloud, const Communicator& comm)
   return low[0] != high[0] || low[1] != high[1] || low[2] != high[2];
 }
 
+/// Every rank's points in rank order, exact duplicates of an earlier point dropped. Collective.
 template <int D>
-Index unionOfPieces(PointCloud<D>& cloud, const Communicator& comm)
+void unionOfPieces(PointCloud<D>& cloud, const Communicator& comm)
 {
   std::vector<std::array<double, D>> all = comm.allGatherV(cloud.Points);
   struct Hash
@@ -81,8 +82,8 @@ Index unionOfPieces(PointCloud<D>& cloud, const Communicator& comm)
       cloud.Points.push_back(p);
     }
   }
-  return static_cast<Index>(all.size()) - cloud.size();
 }
+} // namespace
 
 template <int D>
 bool joinCloudPieces(PointCloud<D>& cloud, const Communicator& comm)
@@ -95,10 +96,6 @@ bool joinCloudPieces(PointCloud<D>& cloud, const Communicator& comm)
   return true;
 }
 
-template bool cloudsDiffer(const PointCloud<2>&, const Communicator&);
-template bool cloudsDiffer(const PointCloud<3>&, const Communicator&);
-template Index unionOfPieces(PointCloud<2>&, const Communicator&);
-template Index unionOfPieces(PointCloud<3>&, const Communicator&);
 template bool joinCloudPieces(PointCloud<2>&, const Communicator&);
 template bool joinCloudPieces(PointCloud<3>&, const Communicator&);
 

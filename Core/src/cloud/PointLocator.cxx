@@ -15,11 +15,7 @@ PointLocator<D>::PointLocator(const PointCloud<D>& cloud, double pointsPerBucket
   , Bounds(boundingBox(cloud))
 {
   const double n = std::max<double>(1.0, static_cast<double>(cloud.size()));
-  double diameter = 0.0;
-  for (int a = 0; a < D; ++a)
-  {
-    diameter = std::max(diameter, this->Bounds.extent(a));
-  }
+  double diameter = this->Bounds.largestExtent();
   if (diameter == 0.0)
   {
     diameter = 1.0;

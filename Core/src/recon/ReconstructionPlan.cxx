@@ -177,7 +177,7 @@ template <int D>
 Status cellSizeFromLevel(ReconstructionPlan<D>& plan)
 {
   const int level = plan.Options.MaximumLevel, runs = plan.Options.Runs;
-  const double edge = largestExtent(boundingBox(plan.Cloud));
+  const double edge = boundingBox(plan.Cloud).largestExtent();
   const double cdx = cellSizeFactorForLevel(level, runs, edge, plan.CloudSpacing);
   if (!(cdx >= CellSizeFactorRange[0] && cdx <= CellSizeFactorRange[1]))
   {
@@ -205,7 +205,7 @@ template <int D>
 Status withFittingLevel(const ReconstructionPlan<D>& plan, const Status& refusal)
 {
   const int runs = plan.Options.Runs;
-  const double edge = largestExtent(boundingBox(plan.Cloud));
+  const double edge = boundingBox(plan.Cloud).largestExtent();
   const int coarsest = std::max({ MaximumLevelRange[0], runs - 1,
     levelForCellSizeFactor(CellSizeFactorRange[1], runs, edge, plan.CloudSpacing) + 1 });
   int fits = 0;
@@ -428,15 +428,16 @@ Status checkSlabMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor,
 
 namespace
 {
-/// The tiled reconstruction's memory (TiledStorage): run 1's uniform grid and
-/// the finest run's tiles (their slots, then the nodes estimated from the
-/// cloud, TiledMemory.h), against `budget` (0: none).
+/// The slots of tiles over `grid` (one per TileEdge^D nodes).
 template <int D>
 double slotCount(const GridSpec<D>& grid)
 {
   return static_cast<double>(grid.nodeCount()) / static_cast<double>(tileNodes<D>());
 }
 
+/// The tiled reconstruction's memory (TiledStorage): run 1's uniform grid and
+/// the finest run's tiles (their slots, then the nodes estimated from the
+/// cloud, TiledMemory.h), against `budget` (0: none).
 template <int D>
 double tiledNeedBytes(const ReconstructionPlan<D>& plan, const GridPlan<D>& grids, double budget)
 {

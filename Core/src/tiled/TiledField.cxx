@@ -330,12 +330,7 @@ namespace
 template <int D>
 Index cellLeaves(const TiledField<D>& field, std::int32_t id, const std::array<Index, D>& first, Index size)
 {
-  bool inGrid = true;
-  for (int a = 0; a < D; ++a)
-  {
-    inGrid = inGrid && field.tileOrigin(id)[a] * TileEdge + first[a] < field.grid().Dims[a];
-  }
-  if (!inGrid)
+  if (!field.nodeInGrid(id, first))
   {
     return 0; // masked in the output
   }

@@ -1217,8 +1217,8 @@ template <int D>
 Index completeTiledDistances(const ReconstructionPlan<D>& plan, const Context& ctx, TiledField<D>& field,
   const std::vector<std::int32_t>& owners, int rank)
 {
-  return TiledDistances<D>::completeAll(field, *plan.Locator, ctx,
-    [&](std::int32_t id) { return owners.empty() || owners[static_cast<size_t>(field.tileSlot(id))] == rank; });
+  return TiledDistances<D>::completeAll(
+    field, *plan.Locator, ctx, [&](std::int32_t id) { return ownedBy(owners, field.tileSlot(id), rank); });
 }
 
 template <int D>

@@ -9,36 +9,23 @@
 /// different ones, and then the whole cloud is their union.
 
 #include "sltk/cloud/PointCloud.h"
-#include "sltk/core/Index.h"
 #include "sltk/exec/Communicator.h"
 
 namespace sltk
 {
 
-/// Collective. Whether the ranks hold different clouds: their point counts or
-/// the sums (mod 2^64) of a hash of each point's coordinate bits, which do not
-/// depend on the points' order. False on one rank, and when any rank holds a
-/// non-finite coordinate (the validation then refuses the cloud on every rank,
-/// with no gather first).
-template <int D>
-bool cloudsDiffer(const PointCloud<D>& cloud, const Communicator& comm);
-
-/// Collective. Every rank's points in rank order, the exact duplicates of an
-/// earlier point dropped (pieces that overlap, such as ghost points); returns
-/// how many were dropped.
-template <int D>
-Index unionOfPieces(PointCloud<D>& cloud, const Communicator& comm);
-
-/// Collective. When the ranks' clouds differ (cloudsDiffer), replaces every
-/// rank's cloud by their union (unionOfPieces) and returns true; otherwise
-/// leaves it and returns false.
+/// Collective. When the ranks hold different clouds, replaces every rank's
+/// cloud by their union and returns true; otherwise leaves it and returns
+/// false (always on one rank).
+/// - The clouds differ when their point counts, or the sums (mod 2^64) of a
+///   hash of each point's coordinate bits, which do not depend on the points'
+///   order, differ. A non-finite coordinate on any rank stops the join (the
+///   validation then refuses the cloud on every rank, with no gather first).
+/// - The union is every rank's points in rank order, the exact duplicates of
+///   an earlier point dropped (pieces that overlap, such as ghost points).
 template <int D>
 bool joinCloudPieces(PointCloud<D>& cloud, const Communicator& comm);
 
-extern template bool cloudsDiffer(const PointCloud<2>&, const Communicator&);
-extern template bool cloudsDiffer(const PointCloud<3>&, const Communicator&);
-extern template Index unionOfPieces(PointCloud<2>&, const Communicator&);
-extern template Index unionOfPieces(PointCloud<3>&, const Communicator&);
 extern template bool joinCloudPieces(PointCloud<2>&, const Communicator&);
 extern template bool joinCloudPieces(PointCloud<3>&, const Communicator&);
 

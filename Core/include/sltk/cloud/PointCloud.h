@@ -30,6 +30,16 @@ struct Box
   std::array<double, D> Min{};
   std::array<double, D> Max{};
   double extent(int axis) const { return this->Max[axis] - this->Min[axis]; }
+  /// The largest extent: the edge of the minimal cube around the box (Delta P of (5.10)).
+  double largestExtent() const
+  {
+    double edge = 0.0;
+    for (int a = 0; a < D; ++a)
+    {
+      edge = edge < this->extent(a) ? this->extent(a) : edge;
+    }
+    return edge;
+  }
 };
 
 /// Bounding box of a non-empty cloud.

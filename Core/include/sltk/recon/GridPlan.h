@@ -10,7 +10,6 @@
 #include "sltk/cloud/PointCloud.h"
 #include "sltk/grid/GridSpec.h"
 
-#include <algorithm>
 #include <vector>
 
 namespace sltk
@@ -34,18 +33,6 @@ double cellSizeFactorForLevel(int level, int runs, double largestExtent, double 
 /// The finest level L whose C_dx is at least `cellSizeFactor`: the finest
 /// level no finer than that C_dx's grid.
 int levelForCellSizeFactor(double cellSizeFactor, int runs, double largestExtent, double cloudSpacing);
-
-/// The largest extent of a box (the edge of the minimal cube around it, Delta P of (5.10)).
-template <int D>
-double largestExtent(const Box<D>& bounds)
-{
-  double edge = 0.0;
-  for (int a = 0; a < D; ++a)
-  {
-    edge = std::max(edge, bounds.extent(a));
-  }
-  return edge;
-}
 
 template <int D>
 struct GridPlan

@@ -121,6 +121,17 @@ public:
   /// +gamma or -gamma (1.49): one leaf holds it exactly (the thesis coarsens
   /// where phi is flattened to +-gamma, 5.2.3).
   bool flatCell(std::int32_t id, const std::array<Index, D>& first, Index size) const;
+  /// Whether the node `first` (tile-local) of tile `id` lies in the grid: a
+  /// cell starting beyond it holds no node (masked in the output, no leaf).
+  bool nodeInGrid(std::int32_t id, const std::array<Index, D>& first) const
+  {
+    bool inside = true;
+    for (int a = 0; a < D; ++a)
+    {
+      inside = inside && this->Origins[static_cast<size_t>(id)][a] * TileEdge + first[a] < this->Grid.Dims[a];
+    }
+    return inside;
+  }
   /// Leaves of tile `id`'s octree (flatCell), its nodes beyond the grid left out.
   Index leafCount(std::int32_t id) const;
 

@@ -67,6 +67,13 @@ struct TiledReconstructionResult
   std::vector<std::int32_t> Owners;
 };
 
+/// Whether slot `slot` is `rank`'s under a distributed result's `owners`
+/// (TiledReconstructionResult::Owners; empty: every slot is).
+inline bool ownedBy(const std::vector<std::int32_t>& owners, Index slot, int rank)
+{
+  return owners.empty() || owners[static_cast<size_t>(slot)] == rank;
+}
+
 /// Runs Algorithm 1 on the plan (planReconstruction()) with runs >= 2 tiled.
 /// A plan with one run is run 1 alone, stored in tiles. With a communicator
 /// of several ranks (each holding the same plan) the tiles are shared out in
