@@ -30,6 +30,7 @@
 ///                          [--threads N] [--per-iteration] [--tables thesis_tables.json]
 
 #include "common/BenchCli.h"
+#include "common/Chapter5.h"
 #include "common/SdfErrors.h"
 #include "common/ThesisTables.h"
 
@@ -62,42 +63,6 @@ struct Arguments
   bool PerIteration = false;
   std::string Tables = DefaultThesisTablesPath;
 };
-
-/// (5.10)-(5.11): the level of run 1 and the C_dx (4.36) that gives its cell,
-/// Delta_P / 2^L0, on a cloud of spacing `spacing` and box edge `edge`.
-struct Chapter5Grid
-{
-  int Level = 0;
-  double CellSizeFactor = 0.0;
-};
-
-Chapter5Grid chapter5Grid(double edge, double spacing)
-{
-  constexpr double Cdx = 0.5; // (5.11): "C_dx usually equal to 0.5"
-  Chapter5Grid g;
-  g.Level = static_cast<int>(std::ceil(std::log2(edge / (Cdx * spacing))));
-  g.CellSizeFactor = edge / (std::ldexp(1.0, g.Level) * spacing);
-  return g;
-}
-
-/// "within +-50%" when value / reference lies in [0.5, 1.5], "OUTSIDE +-50%"
-/// when not, "" without a reference (issue 14's tolerance on iterations).
-std::string verdictWithinHalf(double value, double reference)
-{
-  if (std::isnan(reference))
-  {
-    return "";
-  }
-  const double ratio = value / reference;
-  return ratio >= 0.5 && ratio <= 1.5 ? "within +-50%" : "OUTSIDE +-50%";
-}
-
-/// An error against the thesis's: "0.42 of it" (lower) or "2.10 times it" (higher).
-std::string errorRatio(double value, double reference)
-{
-  const double ratio = value / reference;
-  return formatValue(ratio, "%.2f") + (ratio <= 1.0 ? " of it" : " times it");
-}
 
 template <int D>
 using ExactDistance = std::function<double(const std::array<double, D>&)>;

@@ -50,6 +50,7 @@
 /// tables are printed by reconstruction/Synthetic.cxx and reconstruction/Scans.cxx.
 
 #include "common/BenchCli.h"
+#include "common/PrintLogger.h"
 #include "common/ThesisTables.h"
 #include "reconstruction/Options.h"
 #include "reconstruction/Report.h"
@@ -92,19 +93,6 @@ std::vector<sltk::RunParameters> scheduleWithFinalEta(double finalEta)
 {
   return { sltk::table41(1), sltk::table41(2), { 2.0, finalEta } };
 }
-
-/// --log: the library's per-run phase times (distance, initial data, energy, SL step, reinit, metrics).
-class PrintLogger : public sltk::Logger
-{
-public:
-  void log(sltk::LogLevel level, const std::string& message) override
-  {
-    if (level <= sltk::LogLevel::Info)
-    {
-      std::printf("  [sltk] %s\n", message.c_str());
-    }
-  }
-};
 
 } // namespace
 
@@ -160,7 +148,7 @@ int main(int argc, char** argv)
   sltk::ThreadPool pool(args.Threads);
   sltk::Context ctx;
   ctx.Executor = args.Threads > 1 ? &pool : nullptr;
-  PrintLogger logger;
+  PrintLogger logger; // --log: the per-run phase times (distance, initial data, energy, SL step, reinit, metrics)
   if (args.Log)
   {
     ctx.Log = &logger;

@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#pragma once
+/// \file CellCentredReconstruction.h
+/// The thesis's own adaptive reconstruction (chapter 5), on one process: a
+/// p4est quadtree (2D) or p8est octree (3D) whose leaves carry phi and d at their centres (5.1.2),
+/// adapted every iteration (refine where |phi| < beta, coarsen where flat,
+/// 2:1 balance; new values from the parent's polynomial, 5.2.2, (5.6)), the
+/// SL step (5.4) with feet located by p4est_search_local and interpolated by
+/// the least-squares Q1 polynomial of the leaf they fall in (5.5),
+/// derivatives from the leaf's polynomial, d by the propagation (5.8)-(5.9),
+/// and Saye's closest-point reinitialisation followed by the propagation of
+/// the reinitialised values (5.2.4). One more level per run (5.10)-(5.12).
+///
+/// It exists to compare like for like with the thesis's chapter 5 tables
+/// (bench/BenchOctreeCellCentred.cxx, Documentation/Octree.md); the library's
+/// octree output (vtkOctreeSDF, `--octree`) is the tiled band, which keeps a
+/// continuous zero level set. Serial: the distributed version (feet of other
+/// ranks answered through p4est_search_partition) is not built.
+
+#include "sltk/exec/Context.h"
+#include "sltk/octree/CellPolynomial.h"
+#include "sltk/recon/ReconstructionPlan.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace sltk
+{
+namespace octree
+{
+
+/// Memory of one leaf while an iteration runs: p4est's quadrant with phi and
+/// its polynomial, the neighbour lists, the polynomials of phi and d, the
+/// propagation's state (measured: MEASURED_BYTES).
+constexpr double CellCentredBytesPerLeaf = 1000.0;
+
+struct CellCentredOptions
+{
+  /// Delta x_min of run 1 (unit-box units): Delta_P / 2^L0 with L0 of (5.10).
+  double FirstCellSize = 0.0;
+  int MinimumLevel = 2; ///< the coarsest leaves of the tree
+  /// Bytes the tree may take (CellCentredBytesPerLeaf a leaf); 0: the memory available.
+  std::uint64_t MemoryBudget = 0;
+};
+
+/// One leaf of the final tree.
+template <int D>
+struct CellCentredLeaf
+{
+  std::array<double, D> Centre{};
+  double Size = 0.0;
+  int Level = 0;
+  double Phi = 0.0;
+  double Distance = 0.0;
+  CellPolynomial<D> Polynomial; ///< least-squares Q1 of phi (5.5)
+};
+
+/// Energies and errors are in the user's units, as the other reconstructions
+/// report them (Reconstruction.h recordsToUser).
+struct CellCentredIteration
+{
+  int Run = 0;
+  int Iteration = 0;
+  double Energy = 0.0;     ///< E_2 (4.33) of phi^n
+  double CloudError = 0.0; ///< Err_P (4.35) of phi^{n+1}
+  Index Leaves = 0;        ///< leaves of T^{n+1}
+  Index FinestLeaves = 0;  ///< of them, at the run's level
+  Index UniformCells = 0;  ///< the uniform grid of the run's level over the tree's cube
+};
+
+struct CellCentredRun
+{
+  int Run = 0;
+  int Level = 0;
+  double CellSize = 0.0; ///< Delta x_min (5.1), unit-box units
+  int Iterations = 0;
+  double Energy = 0.0;
+  double CloudError = 0.0;
+};
+
+/// The leaves and the tree's cube are in unit-box units (4.5): `Box` maps them.
+template <int D>
+struct CellCentredResult
+{
+  UnitBox<D> Box;
+  std::array<double, D> DomainOrigin{}; ///< the tree's cube
+  double DomainEdge = 0.0;
+  std::vector<CellCentredRun> Runs;
+  std::vector<CellCentredIteration> History;
+  std::vector<CellCentredLeaf<D>> Leaves;
+};
+
+/// Runs plan.Options.Runs runs on the plan's cloud (unit box), from its
+/// initial ellipsoid (InitialGuess::BoundingSphere or BoundingEllipsoid),
+/// with its schedule, beta and gamma factors and stopping rule. Refused
+/// (outOfMemory) when the tree outgrows the memory available.
+template <int D>
+Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentredOptions& options, const Context& ctx,
+  CellCentredResult<D>& result);
+
+extern template Status reconstructCellCentred(
+  const ReconstructionPlan<2>&, const CellCentredOptions&, const Context&, CellCentredResult<2>&);
+extern template Status reconstructCellCentred(
+  const ReconstructionPlan<3>&, const CellCentredOptions&, const Context&, CellCentredResult<3>&);
+
+} // namespace octree
+} // namespace sltk

@@ -1,0 +1,429 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "sltk/octree/CellCentredReconstruction.h"
+
+#include "CellEnergy.h"
+#include "CellTree.h"
+#include "ClosestPointReinit.h"
+#include "LeastSquaresQ1.h"
+#include "Propagation.h"
+
+#include "sltk/exec/Logger.h"
+#include "sltk/exec/Memory.h"
+#include "sltk/levelset/CutOff.h"
+#include "sltk/levelset/Ellipsoid.h"
+#include "sltk/recon/LevelSetStep.h"
+#include "sltk/recon/StoppingRule.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace sltk
+{
+namespace octree
+{
+
+namespace
+{
+
+/// The tree's cube (5.1): centred on the unit box, 2^m times its edge
+/// (Delta_P = 2, 4.5), the smallest that holds the initial ellipsoid with
+/// room for gamma and two cells around it; and the level of run 1, whose
+/// cell is the first at most FirstCellSize.
+struct TreeCube
+{
+  double Edge = 2.0;
+  int FirstLevel = 0;
+};
+
+template <int D>
+TreeCube treeCube(const Ellipsoid<D>& initial, double firstCell, double gammaFactor)
+{
+  double reach = 1.0;
+  for (int a = 0; a < D; ++a)
+  {
+    reach = std::max(reach, std::fabs(initial.Centre[a]) + initial.SemiAxes[a]);
+  }
+  reach += (gammaFactor + 2.0) * firstCell;
+  TreeCube cube;
+  while (0.5 * cube.Edge < reach)
+  {
+    cube.Edge *= 2.0;
+  }
+  cube.FirstLevel = static_cast<int>(std::ceil(std::log2(cube.Edge / firstCell) - 1e-12));
+  return cube;
+}
+
+/// The state of one iteration on the adapted tree T^{n+1}.
+template <int D>
+struct TreeState
+{
+  LeafGraph<D> Graph;
+  std::vector<CellData<D>*> Data;
+  std::vector<double> Phi;
+  std::vector<CellPolynomial<D>> PhiPolynomials;
+  std::vector<double> Distance;
+  std::vector<CellPolynomial<D>> DistancePolynomials;
+  std::vector<int> LeafOfPoint;
+};
+
+/// d at every leaf centre (5.2.3): the leaves holding points start from their
+/// nearest point, then the propagation (5.8)-(5.9) over the whole tree.
+template <int D>
+void distanceToCloud(const std::vector<std::array<double, D>>& points, TreeState<D>& s)
+{
+  Propagation<D> state;
+  resetPropagation(s.Graph.size(), state);
+  std::vector<int> front;
+  for (size_t k = 0; k < points.size(); ++k)
+  {
+    const size_t i = static_cast<size_t>(s.LeafOfPoint[k]);
+    const double q = pointDistance<D>(s.Graph.Centres[i], points[k]);
+    if (std::isinf(state.Distance[i]))
+    {
+      front.push_back(static_cast<int>(i));
+    }
+    if (q < state.Distance[i])
+    {
+      state.Distance[i] = q;
+      state.Reference[i] = points[k];
+    }
+  }
+  propagate(s.Graph, front, state);
+  s.Distance = std::move(state.Distance);
+}
+
+/// Builds the leaves, their polynomials of phi (5.5), d and its polynomials.
+template <int D>
+void describeTree(
+  const CellTree<D>& tree, const std::vector<std::array<double, D>>& points, const Context& ctx, TreeState<D>& s)
+{
+  tree.leaves(s.Graph, s.Data);
+  s.Phi.resize(s.Data.size());
+  for (size_t i = 0; i < s.Data.size(); ++i)
+  {
+    s.Phi[i] = s.Data[i]->Phi;
+  }
+  fitLeastSquaresQ1(s.Graph, s.Phi, ctx, s.PhiPolynomials);
+  tree.locate(points, s.LeafOfPoint);
+  distanceToCloud<D>(points, s);
+  fitLeastSquaresQ1(s.Graph, s.Distance, ctx, s.DistancePolynomials);
+}
+
+struct StepModel
+{
+  double P = 1.0, Eta = 0.05, Energy = 1.0, TimeStep = 0.0, Beta = 0.0, Gamma = 0.0;
+  double Singular = 0.0; ///< |grad phi| below which (4.26)'s mean of the neighbours replaces the step
+};
+
+/// The SL step (5.4) on the leaves with |phi| < gamma (the cut-off is zero
+/// beyond): gradients from the leaf's polynomials, the 2^(D-1) feet of
+/// (4.22)/(4.24) located in one batch by p4est_search_local and
+/// interpolated by the polynomial of the leaf they fall in.
+template <int D>
+std::vector<double> semiLagrangianStep(const CellTree<D>& tree, const TreeState<D>& s, const StepModel& m)
+{
+  constexpr int Feet = 1 << (D - 1);
+  const int n = s.Graph.size();
+  std::vector<double> next = s.Phi;
+  std::vector<int> stepped;
+  std::vector<std::array<double, D>> feet;
+  for (int i = 0; i < n; ++i)
+  {
+    const size_t k = static_cast<size_t>(i);
+    const double phi = s.Phi[k];
+    if (!(std::fabs(phi) < m.Gamma))
+    {
+      continue;
+    }
+    const auto g = s.PhiPolynomials[k].slope();
+    double norm = 0.0;
+    for (int a = 0; a < D; ++a)
+    {
+      norm += g[a] * g[a];
+    }
+    norm = std::sqrt(norm);
+    if (norm < m.Singular)
+    {
+      // (4.26): the mean of the neighbours.
+      double sum = 0.0;
+      for (int j = s.Graph.Offsets[k]; j < s.Graph.Offsets[k + 1]; ++j)
+      {
+        sum += s.Phi[static_cast<size_t>(s.Graph.Neighbours[static_cast<size_t>(j)])];
+      }
+      next[k] = sum / (s.Graph.Offsets[k + 1] - s.Graph.Offsets[k]);
+      continue;
+    }
+    const double d = s.Distance[k];
+    const double scale = cutOff(phi, m.Beta, m.Gamma) * (m.P == 1.0 ? 1.0 : std::pow(d / m.Energy, m.P - 1.0));
+    const auto gd = s.DistancePolynomials[k].slope();
+    const double spread = std::sqrt(2.0 * scale * m.Eta * d * m.TimeStep / m.P);
+    std::array<std::array<double, D>, D - 1> sigma;
+    sltk::detail::tangentFrame(g, norm, sigma); // (4.23)/(4.25)
+    const auto& x = s.Graph.Centres[k];
+    for (int j = 0; j < Feet; ++j)
+    {
+      std::array<double, D> foot;
+      for (int a = 0; a < D; ++a)
+      {
+        foot[a] = x[a] + scale * m.TimeStep * gd[a];
+        for (int t = 0; t < D - 1; ++t)
+        {
+          foot[a] += spread * sigma[static_cast<size_t>(t)][a] * ((j >> t) & 1 ? 1.0 : -1.0); // xi_j in {+-1}^(D-1)
+        }
+      }
+      feet.push_back(foot);
+    }
+    stepped.push_back(i);
+  }
+  std::vector<int> footLeaf;
+  tree.locate(feet, footLeaf);
+  for (size_t f = 0; f < stepped.size(); ++f)
+  {
+    double sum = 0.0;
+    for (size_t j = Feet * f; j < Feet * (f + 1); ++j)
+    {
+      sum += s.PhiPolynomials[static_cast<size_t>(footLeaf[j])].eval(feet[j]);
+    }
+    next[static_cast<size_t>(stepped[f])] = sum / Feet;
+  }
+  return next;
+}
+
+/// (5.6), first arrow: refine where |phi| < beta up to the run's level,
+/// coarsen families flat at +-gamma (5.2.2: |grad phi| = 0), 2:1 balance.
+/// False when the refinement outgrew `mostLeaves`.
+template <int D>
+bool adaptTree(CellTree<D>& tree, int level, int minimumLevel, double beta, double gamma, long mostLeaves)
+{
+  if (tree.refine(
+        level, [beta](const CellData<D>& q, const std::array<double, D>&, double) { return std::fabs(q.Phi) < beta; },
+        mostLeaves) < 0)
+  {
+    return false;
+  }
+  tree.coarsen(minimumLevel,
+    [gamma](const CellData<D>* const family[CellTree<D>::Children])
+    {
+      for (int k = 0; k < CellTree<D>::Children; ++k)
+      {
+        const CellData<D>& q = *family[k];
+        bool flat = std::fabs(q.Phi) >= gamma * (1.0 - 1e-12) && (q.Phi < 0.0) == (family[0]->Phi < 0.0);
+        for (int a = 0; a < D; ++a)
+        {
+          flat = flat && q.Polynomial.C[static_cast<size_t>(1 << a)] == 0.0;
+        }
+        if (!flat)
+        {
+          return false;
+        }
+      }
+      return true;
+    });
+  tree.balance();
+  return true;
+}
+
+/// The refusal when the tree outgrows the memory.
+Status treeTooLarge(int run, int level, long mostLeaves)
+{
+  std::ostringstream m;
+  m.precision(3);
+  m << "the cell-centred tree of run " << run << " (level " << level << ") grew beyond " << mostLeaves
+    << " leaves, what the memory budget (or available) holds at " << CellCentredBytesPerLeaf
+    << " bytes a leaf: use fewer runs or a larger first cell (FirstCellSize)";
+  return Status::outOfMemory(m.str());
+}
+
+template <int D>
+void storePhi(TreeState<D>& s, const std::vector<double>& phi, const std::vector<CellPolynomial<D>>& polynomials)
+{
+  for (size_t i = 0; i < s.Data.size(); ++i)
+  {
+    s.Data[i]->Phi = phi[i];
+    s.Data[i]->Polynomial = polynomials[i];
+  }
+  s.Phi = phi;
+  s.PhiPolynomials = polynomials;
+}
+
+template <int D>
+Index leavesAtLevel(const LeafGraph<D>& g, int level)
+{
+  Index count = 0;
+  for (const int l : g.Levels)
+  {
+    count += l == level ? 1 : 0;
+  }
+  return count;
+}
+
+} // namespace
+
+template <int D>
+Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentredOptions& options, const Context& ctx,
+  CellCentredResult<D>& result)
+{
+  const ReconstructionOptions& o = plan.Options;
+  if (!(options.FirstCellSize > 0.0) || options.MinimumLevel < 0)
+  {
+    return Status::invalidArgument("reconstructCellCentred: need FirstCellSize > 0 and MinimumLevel >= 0");
+  }
+  if (!plan.InitialEllipsoid)
+  {
+    return Status::invalidArgument(
+      "reconstructCellCentred: the thesis's octree starts from a circle or sphere around the cloud (5.3): use "
+      "InitialGuess::BoundingSphere or BoundingEllipsoid");
+  }
+  const Ellipsoid<D>& initial = *plan.InitialEllipsoid;
+  const TreeCube cube = treeCube(initial, options.FirstCellSize, o.GammaFactor);
+  const int lastLevel = cube.FirstLevel + o.Runs - 1;
+  const int DeepestLevel = CellTree<D>::deepestLevel();
+  if (lastLevel > DeepestLevel || cube.FirstLevel < options.MinimumLevel)
+  {
+    std::ostringstream m;
+    m << "reconstructCellCentred: levels " << cube.FirstLevel << ".." << lastLevel << " of the tree: need "
+      << options.MinimumLevel << " <= level <= " << DeepestLevel;
+    return Status::invalidArgument(m.str());
+  }
+  result = CellCentredResult<D>{};
+  result.Box = plan.Box;
+  result.DomainEdge = cube.Edge;
+  result.DomainOrigin.fill(-0.5 * cube.Edge);
+  std::unique_ptr<CellTree<D>> tree;
+  SLTK_RETURN_IF_ERROR(CellTree<D>::create(result.DomainOrigin, cube.Edge, options.MinimumLevel, tree));
+
+  // Initial data (5.3): the signed distance to the circle or sphere, refined
+  // around it as in (5.2) (|phi_0(x_i)| <= sqrt(D) Delta x_i) to run 1's level.
+  const auto phi0 = [&initial](const std::array<double, D>& x) { return signedDistance(initial, x.data()); };
+  const std::uint64_t memory = options.MemoryBudget ? options.MemoryBudget : availableMemoryBytes();
+  const long mostLeaves = memory > 0 ? static_cast<long>(memory / CellCentredBytesPerLeaf) : -1;
+  if (tree->refine(
+        cube.FirstLevel,
+        [&phi0](const CellData<D>&, const std::array<double, D>& c, double h)
+        { return std::fabs(phi0(c)) <= std::sqrt(double(D)) * h; },
+        mostLeaves) < 0)
+  {
+    return treeTooLarge(1, cube.FirstLevel, mostLeaves);
+  }
+  tree->balance();
+  TreeState<D> s;
+  tree->leaves(s.Graph, s.Data);
+  {
+    const double gamma = o.GammaFactor * cube.Edge / std::ldexp(1.0, cube.FirstLevel);
+    std::vector<double> phi(s.Data.size());
+    for (size_t i = 0; i < phi.size(); ++i)
+    {
+      phi[i] = cutLevel(phi0(s.Graph.Centres[i]), gamma);
+    }
+    std::vector<CellPolynomial<D>> polynomials;
+    fitLeastSquaresQ1(s.Graph, phi, ctx, polynomials);
+    storePhi(s, phi, polynomials);
+  }
+
+  const std::vector<std::array<double, D>>& points = plan.Cloud.Points;
+  std::vector<double> energies;
+  const double energyScale = std::pow(plan.Box.Scale, (2.0 + D - 1.0) / 2.0); // the user's units (recordsToUser)
+  for (int run = 1; run <= o.Runs; ++run)
+  {
+    const int level = cube.FirstLevel + run - 1;
+    const double dx = cube.Edge / std::ldexp(1.0, level); // (5.1)
+    const RunParameters model = o.parameters(run);
+    StepModel m;
+    m.P = model.P;
+    m.Eta = model.Eta;
+    m.TimeStep = dx; // (5.12)
+    m.Beta = o.BetaFactor * dx;
+    m.Gamma = o.GammaFactor * dx;
+    m.Singular = 1e-3 * m.TimeStep; // (4.26) with D = 1e-3, alpha = 1, as the uniform step
+    for (CellData<D>* q : s.Data)   // the previous run's gamma was twice as wide
+    {
+      q->Phi = cutLevel(q->Phi, m.Gamma);
+    }
+    CellCentredRun record;
+    record.Run = run;
+    record.Level = level;
+    record.CellSize = dx;
+    energies.clear();
+    long described = -1; // the tree's revision that s describes: phi was cut above
+    int n = 0;
+    for (; n < o.MaxIterations; ++n)
+    {
+      if (!adaptTree(*tree, level, options.MinimumLevel, m.Beta, m.Gamma, mostLeaves))
+      {
+        return treeTooLarge(run, level, mostLeaves);
+      }
+      if (tree->revision() != described) // else s holds this tree's leaves, d and phi^n already
+      {
+        describeTree<D>(*tree, points, ctx, s);
+        described = tree->revision();
+      }
+      // E_p of phi^n for the scale factor (4.32), E_2 for the stopping rule (4.33).
+      const CellEnergy energy = cellEnergy(s.Graph, s.PhiPolynomials, s.DistancePolynomials, dx, m.P, 2.0, ctx);
+      if (energy.FrontLeaves == 0)
+      {
+        return Status::numericalFailure("run " + std::to_string(run) + ": the zero level set vanished");
+      }
+      m.Energy = std::pow(energy.Integral, 1.0 / m.P);
+      energies.push_back(std::sqrt(energy.SecondIntegral));
+      if (n >= o.MinIterations && energyStalled(energies, o.EnergyWindow, o.Tolerance))
+      {
+        break;
+      }
+      if (ctx.interrupter().wasInterrupted((run - 1 + double(n + 1) / o.MaxIterations) / o.Runs))
+      {
+        return Status::aborted();
+      }
+      std::vector<double> phi = semiLagrangianStep(*tree, s, m);
+      std::vector<CellPolynomial<D>> polynomials;
+      fitLeastSquaresQ1(s.Graph, phi, ctx, polynomials);
+      reinitialiseByClosestPoints(s.Graph, polynomials, m.Gamma, ctx, phi);
+      fitLeastSquaresQ1(s.Graph, phi, ctx, polynomials);
+      storePhi(s, phi, polynomials);
+
+      CellCentredIteration it;
+      it.Run = run;
+      it.Iteration = n + 1;
+      it.Energy = energies.back() * energyScale;
+      it.CloudError = cellCloudError<D>(points, s.LeafOfPoint, s.PhiPolynomials) * plan.Box.Scale;
+      it.Leaves = s.Graph.size();
+      it.FinestLeaves = leavesAtLevel(s.Graph, level);
+      it.UniformCells = Index(1) << (D * level);
+      result.History.push_back(it);
+      record.Energy = it.Energy;
+      record.CloudError = it.CloudError;
+      std::ostringstream line;
+      line.precision(4);
+      line << "cell-centred run " << run << " iteration " << n + 1 << ": E_2 " << it.Energy << ", Err_P "
+           << it.CloudError << ", " << it.Leaves << " leaves";
+      ctx.logger().log(LogLevel::Debug, line.str());
+    }
+    record.Iterations = n;
+    result.Runs.push_back(record);
+    std::ostringstream line;
+    line.precision(4);
+    line << "cell-centred run " << run << " (level " << level << "): " << n << " iterations, E_2 " << record.Energy
+         << ", Err_P " << record.CloudError;
+    ctx.logger().log(LogLevel::Info, line.str());
+  }
+  describeTree<D>(*tree, points, ctx, s);
+  result.Leaves.resize(s.Data.size());
+  for (size_t i = 0; i < s.Data.size(); ++i)
+  {
+    CellCentredLeaf<D>& leaf = result.Leaves[i];
+    leaf.Centre = s.Graph.Centres[i];
+    leaf.Size = s.Graph.Sizes[i];
+    leaf.Level = s.Graph.Levels[i];
+    leaf.Phi = s.Phi[i];
+    leaf.Distance = s.Distance[i];
+    leaf.Polynomial = s.PhiPolynomials[i];
+  }
+  return Status::ok();
+}
+
+template Status reconstructCellCentred(
+  const ReconstructionPlan<2>&, const CellCentredOptions&, const Context&, CellCentredResult<2>&);
+template Status reconstructCellCentred(
+  const ReconstructionPlan<3>&, const CellCentredOptions&, const Context&, CellCentredResult<3>&);
+
+} // namespace octree
+} // namespace sltk

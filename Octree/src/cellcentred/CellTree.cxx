@@ -1,0 +1,424 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// CellTree<2> on p4est; CellTree3.cxx includes this file after
+// p4est_to_p8est.h for CellTree<3> on p8est.
+#include "CellTree.h"
+
+#include "../P4estSupport.h"
+
+#include "LeafTable.h"
+
+#ifndef P4_TO_P8
+#include <p4est.h>
+#include <p4est_extended.h>
+#else
+#include <p8est.h>
+#include <p8est_extended.h>
+#endif
+
+#include <algorithm>
+#include <cstdint>
+
+namespace sltk
+{
+namespace octree
+{
+
+// The helpers' namespace is named by the dimension: this file is compiled
+// twice (CellTree3.cxx), and Impl's members use its types.
+#ifndef P4_TO_P8
+namespace celltree2
+#else
+namespace celltree3
+#endif
+{
+constexpr int Dim = P4EST_DIM;
+constexpr int Children = P4EST_CHILDREN;
+constexpr double RootLength = static_cast<double>(P4EST_ROOT_LEN);
+using Point = std::array<double, Dim>;
+using Data = CellData<Dim>;
+using Tree = CellTree<Dim>;
+
+/// A quadrant's integer coordinates.
+std::array<p4est_qcoord_t, Dim> coordinates(const p4est_quadrant_t* q)
+{
+#ifndef P4_TO_P8
+  return { q->x, q->y };
+#else
+  return { q->x, q->y, q->z };
+#endif
+}
+
+/// What the p4est callbacks read and count (the forest's user_pointer).
+struct Callbacks
+{
+  Point Origin{};
+  double Edge = 1.0;
+  int Level = 0; ///< the level refinement stops at, or coarsening stops above
+  const typename Tree::RefineTest* Refine = nullptr;
+  const typename Tree::CoarsenTest* Coarsen = nullptr;
+  long Families = 0;
+
+  Point centre(const p4est_quadrant_t* q) const
+  {
+    const double half = 0.5 * static_cast<double>(P4EST_QUADRANT_LEN(q->level));
+    const auto at = coordinates(q);
+    Point c;
+    for (int a = 0; a < Dim; ++a)
+    {
+      c[a] = this->Origin[a] + this->Edge * (at[a] + half) / RootLength;
+    }
+    return c;
+  }
+  double size(const p4est_quadrant_t* q) const { return this->Edge * P4EST_QUADRANT_LEN(q->level) / RootLength; }
+};
+
+Callbacks& callbacksOf(p4est_t* p4est)
+{
+  return *static_cast<Callbacks*>(p4est->user_pointer);
+}
+
+Data& dataOf(const p4est_quadrant_t* q)
+{
+  return *static_cast<Data*>(q->p.user_data);
+}
+
+int refineWanted(p4est_t* p4est, p4est_topidx_t, p4est_quadrant_t* q)
+{
+  const Callbacks& c = callbacksOf(p4est);
+  return q->level < c.Level && (*c.Refine)(dataOf(q), c.centre(q), c.size(q)) ? 1 : 0;
+}
+
+int coarsenWanted(p4est_t* p4est, p4est_topidx_t, p4est_quadrant_t* family[])
+{
+  const Callbacks& c = callbacksOf(p4est);
+  if (family[0]->level <= c.Level)
+  {
+    return 0;
+  }
+  const Data* data[Children];
+  for (int k = 0; k < Children; ++k)
+  {
+    data[k] = &dataOf(family[k]);
+  }
+  return (*c.Coarsen)(data) ? 1 : 0;
+}
+
+/// New leaves' data (5.2.2): children from the parent's polynomial, a parent
+/// from its children's means.
+void replaceLeaves(p4est_t* p4est, p4est_topidx_t, int outgoingCount, p4est_quadrant_t* outgoing[], int incomingCount,
+  p4est_quadrant_t* incoming[])
+{
+  Callbacks& c = callbacksOf(p4est);
+  ++c.Families;
+  if (outgoingCount == 1)
+  {
+    const Data parent = dataOf(outgoing[0]);
+    for (int k = 0; k < incomingCount; ++k)
+    {
+      Data& child = dataOf(incoming[k]);
+      child.Polynomial = parent.Polynomial;
+      child.Phi = parent.Polynomial.eval(c.centre(incoming[k]));
+    }
+    return;
+  }
+  Data mean;
+  mean.Polynomial.Centre = c.centre(incoming[0]);
+  for (int k = 0; k < outgoingCount; ++k)
+  {
+    const Data& child = dataOf(outgoing[k]);
+    mean.Phi += child.Phi / outgoingCount;
+    for (int s = 1; s < CellPolynomial<Dim>::Terms; ++s)
+    {
+      mean.Polynomial.C[static_cast<size_t>(s)] += child.Polynomial.C[static_cast<size_t>(s)] / outgoingCount;
+    }
+  }
+  mean.Polynomial.C[0] = mean.Phi;
+  dataOf(incoming[0]) = mean;
+}
+
+p4est_tree_t* onlyTree(p4est_t* p4est)
+{
+  return p4est_tree_array_index(p4est->trees, 0);
+}
+
+/// A quadrant's integer index at its level (LeafTable.h).
+LeafTable<Dim>::Index indexAtLevel(const p4est_quadrant_t* q)
+{
+  const auto at = coordinates(q);
+  LeafTable<Dim>::Index index;
+  for (int a = 0; a < Dim; ++a)
+  {
+    index[a] = static_cast<std::uint32_t>(at[a] >> (P4EST_MAXLEVEL - q->level));
+  }
+  return index;
+}
+
+/// The neighbours of the leaf of `level` at `at` (face, edge and corner,
+/// Fig. 5.3), appended to `out`: in each direction o of {-1, 0, 1}^D \ {0},
+/// the leaf of the same level there, or the coarser leaf holding it, or
+/// (2:1 balance) the finer leaves of that cell that touch this one.
+void appendNeighbours(const LeafTable<Dim>& table, int level, const LeafTable<Dim>::Index& at, std::vector<int>& out)
+{
+  const std::int64_t cells = std::int64_t(1) << level;
+  int directions = 1;
+  for (int a = 0; a < Dim; ++a)
+  {
+    directions *= 3;
+  }
+  for (int d = 0; d < directions; ++d)
+  {
+    int o[Dim], rest = d, along = 0;
+    LeafTable<Dim>::Index next;
+    bool inside = true;
+    for (int a = 0; a < Dim; ++a)
+    {
+      o[a] = rest % 3 - 1;
+      rest /= 3;
+      along += o[a] == 0 ? 1 : 0;
+      const std::int64_t n = static_cast<std::int64_t>(at[a]) + o[a];
+      inside = inside && n >= 0 && n < cells;
+      next[a] = static_cast<std::uint32_t>(n);
+    }
+    if (along == Dim || !inside)
+    {
+      continue;
+    }
+    int leaf = table.find(level, next);
+    if (leaf < 0 && level > 0)
+    {
+      LeafTable<Dim>::Index parent;
+      for (int a = 0; a < Dim; ++a)
+      {
+        parent[a] = next[a] >> 1;
+      }
+      leaf = table.find(level - 1, parent);
+    }
+    if (leaf >= 0)
+    {
+      out.push_back(leaf);
+      continue;
+    }
+    for (int k = 0; k < (1 << along); ++k) // the children of `next` on the side of this leaf
+    {
+      LeafTable<Dim>::Index child;
+      int bit = 0;
+      for (int a = 0; a < Dim; ++a)
+      {
+        const std::uint32_t t = o[a] < 0 ? 1u : o[a] > 0 ? 0u : static_cast<std::uint32_t>((k >> bit++) & 1);
+        child[a] = 2 * next[a] + t;
+      }
+      leaf = table.find(level + 1, child);
+      if (leaf >= 0)
+      {
+        out.push_back(leaf);
+      }
+    }
+  }
+}
+
+} // namespace celltree2 or celltree3
+
+#ifndef P4_TO_P8
+using namespace celltree2;
+#else
+using namespace celltree3;
+#endif
+
+template <>
+struct CellTree<Dim>::Impl
+{
+  p4est_connectivity_t* Connectivity = nullptr;
+  p4est_t* Forest = nullptr;
+  mutable Callbacks Calls;
+  mutable LeafTable<Dim> Table;
+  mutable long TableRevision = -1;
+
+  ~Impl()
+  {
+    if (this->Forest)
+    {
+      p4est_destroy(this->Forest);
+    }
+    if (this->Connectivity)
+    {
+      p4est_connectivity_destroy(this->Connectivity);
+    }
+  }
+
+  /// The leaves of the current tree in Table.
+  void ensureTable() const
+  {
+    if (this->TableRevision == this->Forest->revision)
+    {
+      return;
+    }
+    p4est_tree_t* root = onlyTree(this->Forest);
+    this->Table.reset(root->quadrants.elem_count);
+    for (size_t i = 0; i < root->quadrants.elem_count; ++i)
+    {
+      const p4est_quadrant_t* q = p4est_quadrant_array_index(&root->quadrants, i);
+      this->Table.insert(q->level, indexAtLevel(q), static_cast<int>(i));
+    }
+    this->TableRevision = this->Forest->revision;
+  }
+};
+
+template <>
+CellTree<Dim>::CellTree(std::unique_ptr<Impl> impl)
+  : P(std::move(impl))
+{
+}
+
+template <>
+CellTree<Dim>::~CellTree() = default;
+
+template <>
+Status CellTree<Dim>::create(const Point& origin, double edge, int minimumLevel, std::unique_ptr<CellTree>& tree)
+{
+  if (!(edge > 0.0) || minimumLevel < 0 || minimumLevel > LeafTable<Dim>::DeepestLevel)
+  {
+    return Status::invalidArgument(
+      "CellTree: need a positive edge and 0 <= minimumLevel <= " + std::to_string(LeafTable<Dim>::DeepestLevel));
+  }
+  MPI_Comm self = MPI_COMM_SELF;
+  SLTK_RETURN_IF_ERROR(p4estCommunicator(serialCommunicator(), self));
+  auto impl = std::make_unique<Impl>();
+  impl->Calls.Origin = origin;
+  impl->Calls.Edge = edge;
+#ifndef P4_TO_P8
+  impl->Connectivity = p4est_connectivity_new_unitsquare();
+#else
+  impl->Connectivity = p8est_connectivity_new_unitcube();
+#endif
+  impl->Forest = p4est_new_ext(self, impl->Connectivity, 0, minimumLevel, 1, sizeof(Data), nullptr, &impl->Calls);
+  p4est_tree_t* root = onlyTree(impl->Forest);
+  for (size_t i = 0; i < root->quadrants.elem_count; ++i)
+  {
+    p4est_quadrant_t* q = p4est_quadrant_array_index(&root->quadrants, i);
+    dataOf(q) = Data{};
+    dataOf(q).Polynomial.Centre = impl->Calls.centre(q);
+  }
+  tree.reset(new CellTree(std::move(impl)));
+  return Status::ok();
+}
+
+template <>
+long CellTree<Dim>::leafCount() const
+{
+  return static_cast<long>(this->P->Forest->local_num_quadrants);
+}
+
+template <>
+long CellTree<Dim>::refine(int maximumLevel, const RefineTest& wants, long mostLeaves)
+{
+  Callbacks& c = this->P->Calls;
+  c.Level = std::min(maximumLevel, LeafTable<Dim>::DeepestLevel);
+  c.Refine = &wants;
+  long total = 0;
+  do // one level at a time, so that the children's values are set before they are tested
+  {
+    c.Families = 0;
+    p4est_refine_ext(this->P->Forest, 0, -1, refineWanted, nullptr, replaceLeaves);
+    total += c.Families;
+    if (mostLeaves >= 0 && this->leafCount() > mostLeaves)
+    {
+      return -1;
+    }
+  } while (c.Families > 0);
+  return total;
+}
+
+template <>
+long CellTree<Dim>::coarsen(int minimumLevel, const CoarsenTest& wants)
+{
+  Callbacks& c = this->P->Calls;
+  c.Level = minimumLevel;
+  c.Coarsen = &wants;
+  long total = 0;
+  do
+  {
+    c.Families = 0;
+    p4est_coarsen_ext(this->P->Forest, 0, 0, coarsenWanted, nullptr, replaceLeaves);
+    total += c.Families;
+  } while (c.Families > 0);
+  return total;
+}
+
+template <>
+void CellTree<Dim>::balance()
+{
+  p4est_balance_ext(this->P->Forest, P4EST_CONNECT_FULL, nullptr, replaceLeaves);
+}
+
+template <>
+void CellTree<Dim>::leaves(LeafGraph<Dim>& graph, std::vector<Data*>& data) const
+{
+  const Callbacks& c = this->P->Calls;
+  this->P->ensureTable();
+  p4est_tree_t* root = onlyTree(this->P->Forest);
+  const size_t n = root->quadrants.elem_count;
+  graph.Centres.resize(n);
+  graph.Sizes.resize(n);
+  graph.Levels.resize(n);
+  data.resize(n);
+  graph.Offsets.assign(1, 0);
+  graph.Neighbours.clear();
+  for (size_t i = 0; i < n; ++i)
+  {
+    const p4est_quadrant_t* q = p4est_quadrant_array_index(&root->quadrants, i);
+    graph.Centres[i] = c.centre(q);
+    graph.Sizes[i] = c.size(q);
+    graph.Levels[i] = q->level;
+    data[i] = &dataOf(q);
+    const auto begin = static_cast<std::ptrdiff_t>(graph.Neighbours.size());
+    appendNeighbours(this->P->Table, q->level, indexAtLevel(q), graph.Neighbours);
+    std::sort(graph.Neighbours.begin() + begin, graph.Neighbours.end());
+    graph.Neighbours.erase(
+      std::unique(graph.Neighbours.begin() + begin, graph.Neighbours.end()), graph.Neighbours.end());
+    graph.Offsets.push_back(static_cast<int>(graph.Neighbours.size()));
+  }
+}
+
+template <>
+void CellTree<Dim>::locate(const std::vector<Point>& points, std::vector<int>& leaf) const
+{
+  const Callbacks& c = this->P->Calls;
+  this->P->ensureTable();
+  leaf.resize(points.size());
+  for (size_t k = 0; k < points.size(); ++k)
+  {
+    Point t;
+    for (int a = 0; a < Dim; ++a)
+    {
+      t[a] = (points[k][a] - c.Origin[a]) / c.Edge;
+    }
+    leaf[k] = this->P->Table.locate(t);
+  }
+}
+
+template <>
+int CellTree<Dim>::deepestLevel()
+{
+  return LeafTable<Dim>::DeepestLevel;
+}
+
+template <>
+long CellTree<Dim>::revision() const
+{
+  return this->P->Forest->revision;
+}
+
+template <>
+const CellTree<Dim>::Point& CellTree<Dim>::origin() const
+{
+  return this->P->Calls.Origin;
+}
+
+template <>
+double CellTree<Dim>::edge() const
+{
+  return this->P->Calls.Edge;
+}
+
+} // namespace octree
+} // namespace sltk

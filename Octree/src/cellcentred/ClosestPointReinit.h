@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#pragma once
+/// \file ClosestPointReinit.h
+/// The reinitialisation of the cell-centred scheme (thesis 5.2.4), after
+/// Saye's high-order closest points:
+///  1. T_0: the leaves with a neighbour of the other sign (phi_i phi_j <= 0);
+///  2. seeds: the centres of the 2^D subcells of every leaf of T_0 projected
+///     onto the zero level set of the leaf's polynomial (Newton);
+///  3. every leaf of T_0 takes its nearest seed as the first guess of
+///     Newton's method for its closest point on the zero level set of the
+///     seed's leaf's polynomial (the Lagrangian system of Saye's method),
+///     and phi_i = sign(phi~_i) |x_i - x*|, fixed;
+///  4. the other leaves by the propagation (5.8)-(5.9) from T_0 with their
+///     sign kept, up to gamma; phi is cut to [-gamma, gamma] (1.49).
+
+#include "CellTree.h"
+
+#include "sltk/exec/Context.h"
+
+#include <vector>
+
+namespace sltk
+{
+namespace octree
+{
+
+struct ClosestPointReport
+{
+  int FrontLeaves = 0;   ///< |T_0|
+  int Seeds = 0;         ///< projected subcell centres
+  int SeedFallbacks = 0; ///< leaves of T_0 whose Newton iteration failed: the seed itself
+};
+
+/// phi~ in `phi` (one per leaf, with its least-squares polynomials) becomes
+/// the reinitialised phi.
+template <int D>
+ClosestPointReport reinitialiseByClosestPoints(const LeafGraph<D>& graph,
+  const std::vector<CellPolynomial<D>>& polynomials, double gamma, const Context& ctx, std::vector<double>& phi);
+
+} // namespace octree
+} // namespace sltk
