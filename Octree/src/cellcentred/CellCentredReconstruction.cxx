@@ -117,14 +117,15 @@ struct StepModel
 
 /// The SL step (5.4) on the leaves with |phi| < gamma (the cut-off is zero
 /// beyond): gradients from the leaf's polynomials, the 2^(D-1) feet of
-/// (4.22)/(4.24) located in one batch by p4est_search_local and
+/// (4.22)/(4.24) located in one batch (CellTree::locate) and
 /// interpolated by the polynomial of the leaf they fall in.
+/// Fails (numericalFailure) on a foot that is not finite (an infinite d, a zero energy).
 template <int D>
-std::vector<double> semiLagrangianStep(const CellTree<D>& tree, const TreeState<D>& s, const StepModel& m)
+Status semiLagrangianStep(const CellTree<D>& tree, const TreeState<D>& s, const StepModel& m, std::vector<double>& next)
 {
   constexpr int Feet = 1 << (D - 1);
   const int n = s.Graph.size();
-  std::vector<double> next = s.Phi;
+  next = s.Phi;
   std::vector<int> stepped;
   std::vector<std::array<double, D>> feet;
   for (int i = 0; i < n; ++i)
@@ -170,6 +171,11 @@ std::vector<double> semiLagrangianStep(const CellTree<D>& tree, const TreeState<
         {
           foot[a] += spread * sigma[static_cast<size_t>(t)][a] * ((j >> t) & 1 ? 1.0 : -1.0); // xi_j in {+-1}^(D-1)
         }
+        if (!std::isfinite(foot[a]))
+        {
+          return Status::numericalFailure("the cell-centred SL step met a foot that is not finite (d = " +
+            std::to_string(d) + ", E_p = " + std::to_string(m.Energy) + "): check the cloud and the initial circle");
+        }
       }
       feet.push_back(foot);
     }
@@ -186,7 +192,7 @@ std::vector<double> semiLagrangianStep(const CellTree<D>& tree, const TreeState<
     }
     next[static_cast<size_t>(stepped[f])] = sum / Feet;
   }
-  return next;
+  return Status::ok();
 }
 
 /// (5.6), first arrow: refine where |phi| < beta up to the run's level,
@@ -220,15 +226,16 @@ bool adaptTree(CellTree<D>& tree, int level, int minimumLevel, double beta, doub
       return true;
     });
   tree.balance();
-  return true;
+  return mostLeaves < 0 || tree.leafCount() <= mostLeaves;
 }
 
-/// The refusal when the tree outgrows the memory.
+/// The refusal when the tree outgrows the memory (run 0: the uniform tree of MinimumLevel).
 Status treeTooLarge(int run, int level, long mostLeaves)
 {
   std::ostringstream m;
   m.precision(3);
-  m << "the cell-centred tree of run " << run << " (level " << level << ") grew beyond " << mostLeaves
+  m << "the cell-centred tree of " << (run > 0 ? "run " + std::to_string(run) : std::string("MinimumLevel"))
+    << " (level " << level << ") grew beyond " << mostLeaves
     << " leaves, what the memory budget (or available) holds at " << CellCentredBytesPerLeaf
     << " bytes a leaf: use fewer runs or a larger first cell (FirstCellSize)";
   return Status::outOfMemory(m.str());
@@ -289,14 +296,20 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
   result.Box = plan.Box;
   result.DomainEdge = cube.Edge;
   result.DomainOrigin.fill(-0.5 * cube.Edge);
+  const std::uint64_t memory = options.MemoryBudget ? options.MemoryBudget : availableMemoryBytes();
+  // The neighbour lists' int offsets hold up to 2^31 entries, 56 a leaf at most (3D).
+  const long mostLeaves = static_cast<long>(
+    std::min<double>(memory > 0 ? static_cast<double>(memory) / CellCentredBytesPerLeaf : 1e300, 2147483647.0 / 56.0));
+  if (std::ldexp(1.0, D * options.MinimumLevel) > static_cast<double>(mostLeaves))
+  {
+    return treeTooLarge(0, options.MinimumLevel, mostLeaves);
+  }
   std::unique_ptr<CellTree<D>> tree;
   SLTK_RETURN_IF_ERROR(CellTree<D>::create(result.DomainOrigin, cube.Edge, options.MinimumLevel, tree));
 
   // Initial data (5.3): the signed distance to the circle or sphere, refined
   // around it as in (5.2) (|phi_0(x_i)| <= sqrt(D) Delta x_i) to run 1's level.
   const auto phi0 = [&initial](const std::array<double, D>& x) { return signedDistance(initial, x.data()); };
-  const std::uint64_t memory = options.MemoryBudget ? options.MemoryBudget : availableMemoryBytes();
-  const long mostLeaves = memory > 0 ? static_cast<long>(memory / CellCentredBytesPerLeaf) : -1;
   if (tree->refine(
         cube.FirstLevel,
         [&phi0](const CellData<D>&, const std::array<double, D>& c, double h)
@@ -306,6 +319,10 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
     return treeTooLarge(1, cube.FirstLevel, mostLeaves);
   }
   tree->balance();
+  if (tree->leafCount() > mostLeaves)
+  {
+    return treeTooLarge(1, cube.FirstLevel, mostLeaves);
+  }
   TreeState<D> s;
   tree->leaves(s.Graph, s.Data);
   {
@@ -356,6 +373,7 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
       {
         describeTree<D>(*tree, points, ctx, s);
         described = tree->revision();
+        ++record.TreeChanges;
       }
       // E_p of phi^n for the scale factor (4.32), E_2 for the stopping rule (4.33).
       const CellEnergy energy = cellEnergy(s.Graph, s.PhiPolynomials, s.DistancePolynomials, dx, m.P, 2.0, ctx);
@@ -373,7 +391,8 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
       {
         return Status::aborted();
       }
-      std::vector<double> phi = semiLagrangianStep(*tree, s, m);
+      std::vector<double> phi;
+      SLTK_RETURN_IF_ERROR(semiLagrangianStep(*tree, s, m, phi));
       std::vector<CellPolynomial<D>> polynomials;
       fitLeastSquaresQ1(s.Graph, phi, ctx, polynomials);
       reinitialiseByClosestPoints(s.Graph, polynomials, m.Gamma, ctx, phi);
@@ -401,8 +420,8 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
     result.Runs.push_back(record);
     std::ostringstream line;
     line.precision(4);
-    line << "cell-centred run " << run << " (level " << level << "): " << n << " iterations, E_2 " << record.Energy
-         << ", Err_P " << record.CloudError;
+    line << "cell-centred run " << run << " (level " << level << "): " << n << " iterations (" << record.TreeChanges
+         << " changed the tree), E_2 " << record.Energy << ", Err_P " << record.CloudError;
     ctx.logger().log(LogLevel::Info, line.str());
   }
   describeTree<D>(*tree, points, ctx, s);

@@ -2,6 +2,7 @@
 #include "CellEnergy.h"
 
 #include <cmath>
+#include <cstdint>
 
 namespace sltk
 {
@@ -92,7 +93,7 @@ bool leafIntegrals(const CellPolynomial<3>& phi, const CellPolynomial<3>& d, con
   double p, double q, double& first, double& second)
 {
   constexpr int R = 5;
-  const int n = R * std::max(1, static_cast<int>(std::lround(h / finest)));
+  const std::int64_t n = R * std::max<std::int64_t>(1, std::llround(h / finest));
   const double sub = h / n, near = 0.5 * std::sqrt(3.0) * sub, weight = sub * sub / std::sqrt(3.0);
   // Q1 takes its extremes on the cube at the corners: skip leaves whose corners all lie beyond `near` on one side.
   int above = 0, below = 0;
@@ -108,7 +109,7 @@ bool leafIntegrals(const CellPolynomial<3>& phi, const CellPolynomial<3>& d, con
     return false;
   }
   bool front = false;
-  for (int k = 0; k < n * n * n; ++k)
+  for (std::int64_t k = 0; k < n * n * n; ++k)
   {
     const Point3 x{ c[0] - 0.5 * h + (k % n + 0.5) * sub, c[1] - 0.5 * h + (k / n % n + 0.5) * sub,
       c[2] - 0.5 * h + (k / (n * n) + 0.5) * sub };

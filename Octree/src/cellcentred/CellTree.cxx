@@ -56,6 +56,7 @@ struct Callbacks
   int Level = 0; ///< the level refinement stops at, or coarsening stops above
   const typename Tree::RefineTest* Refine = nullptr;
   const typename Tree::CoarsenTest* Coarsen = nullptr;
+  const LeafTable<Dim>* Leaves = nullptr; ///< the tree before a coarsening pass
   long Families = 0;
 
   Point centre(const p4est_quadrant_t* q) const
@@ -88,12 +89,23 @@ int refineWanted(p4est_t* p4est, p4est_topidx_t, p4est_quadrant_t* q)
   return q->level < c.Level && (*c.Refine)(dataOf(q), c.centre(q), c.size(q)) ? 1 : 0;
 }
 
+bool hasFinerNeighbour(const LeafTable<Dim>& table, const p4est_quadrant_t* q);
+
 int coarsenWanted(p4est_t* p4est, p4est_topidx_t, p4est_quadrant_t* family[])
 {
   const Callbacks& c = callbacksOf(p4est);
   if (family[0]->level <= c.Level)
   {
     return 0;
+  }
+  // A parent next to leaves two levels finer would break the 2:1 balance,
+  // which would refine it again at once: such families stay.
+  for (int k = 0; k < Children; ++k)
+  {
+    if (hasFinerNeighbour(*c.Leaves, family[k]))
+    {
+      return 0;
+    }
   }
   const Data* data[Children];
   for (int k = 0; k < Children; ++k)
@@ -141,6 +153,10 @@ p4est_tree_t* onlyTree(p4est_t* p4est)
   return p4est_tree_array_index(p4est->trees, 0);
 }
 
+/// The leaves one level finer that touch the leaf (appendNeighbours' last case).
+void appendFinerNeighbours(
+  const LeafTable<Dim>& table, int level, const LeafTable<Dim>::Index& at, std::vector<int>& out);
+
 /// A quadrant's integer index at its level (LeafTable.h).
 LeafTable<Dim>::Index indexAtLevel(const p4est_quadrant_t* q)
 {
@@ -157,7 +173,8 @@ LeafTable<Dim>::Index indexAtLevel(const p4est_quadrant_t* q)
 /// Fig. 5.3), appended to `out`: in each direction o of {-1, 0, 1}^D \ {0},
 /// the leaf of the same level there, or the coarser leaf holding it, or
 /// (2:1 balance) the finer leaves of that cell that touch this one.
-void appendNeighbours(const LeafTable<Dim>& table, int level, const LeafTable<Dim>::Index& at, std::vector<int>& out)
+void appendNeighbours(const LeafTable<Dim>& table, int level, const LeafTable<Dim>::Index& at, std::vector<int>& out,
+  bool finerOnly = false)
 {
   const std::int64_t cells = std::int64_t(1) << level;
   int directions = 1;
@@ -183,8 +200,8 @@ void appendNeighbours(const LeafTable<Dim>& table, int level, const LeafTable<Di
     {
       continue;
     }
-    int leaf = table.find(level, next);
-    if (leaf < 0 && level > 0)
+    int leaf = finerOnly ? -1 : table.find(level, next);
+    if (leaf < 0 && level > 0 && !finerOnly)
     {
       LeafTable<Dim>::Index parent;
       for (int a = 0; a < Dim; ++a)
@@ -214,6 +231,21 @@ void appendNeighbours(const LeafTable<Dim>& table, int level, const LeafTable<Di
       }
     }
   }
+}
+
+void appendFinerNeighbours(
+  const LeafTable<Dim>& table, int level, const LeafTable<Dim>::Index& at, std::vector<int>& out)
+{
+  appendNeighbours(table, level, at, out, true);
+}
+
+/// Whether a leaf touches a leaf one level finer (by a face, an edge or a corner).
+bool hasFinerNeighbour(const LeafTable<Dim>& table, const p4est_quadrant_t* q)
+{
+  thread_local std::vector<int> found;
+  found.clear();
+  appendFinerNeighbours(table, q->level, indexAtLevel(q), found);
+  return !found.empty();
 }
 
 } // namespace celltree2 or celltree3
@@ -334,10 +366,12 @@ long CellTree<Dim>::coarsen(int minimumLevel, const CoarsenTest& wants)
   Callbacks& c = this->P->Calls;
   c.Level = minimumLevel;
   c.Coarsen = &wants;
+  c.Leaves = &this->P->Table;
   long total = 0;
   do
   {
     c.Families = 0;
+    this->P->ensureTable(); // the tree as this pass starts
     p4est_coarsen_ext(this->P->Forest, 0, 0, coarsenWanted, nullptr, replaceLeaves);
     total += c.Families;
   } while (c.Families > 0);

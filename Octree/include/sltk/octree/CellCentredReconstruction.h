@@ -5,7 +5,8 @@
 /// p4est quadtree (2D) or p8est octree (3D) whose leaves carry phi and d at their centres (5.1.2),
 /// adapted every iteration (refine where |phi| < beta, coarsen where flat,
 /// 2:1 balance; new values from the parent's polynomial, 5.2.2, (5.6)), the
-/// SL step (5.4) with feet located by p4est_search_local and interpolated by
+/// SL step (5.4) with feet located in the tree (a hash table of its leaves
+/// where the thesis uses p4est_search_local, CellTree.h) and interpolated by
 /// the least-squares Q1 polynomial of the leaf they fall in (5.5),
 /// derivatives from the leaf's polynomial, d by the propagation (5.8)-(5.9),
 /// and Saye's closest-point reinitialisation followed by the propagation of
@@ -31,8 +32,9 @@ namespace octree
 
 /// Memory of one leaf while an iteration runs: p4est's quadrant with phi and
 /// its polynomial, the neighbour lists, the polynomials of phi and d, the
-/// propagation's state (measured: MEASURED_BYTES).
-constexpr double CellCentredBytesPerLeaf = 1000.0;
+/// propagation's state (measured: 1,205 bytes, 4.06 GB at the peak of
+/// Cube&Spheres' run 3 with 3.37M leaves).
+constexpr double CellCentredBytesPerLeaf = 1300.0;
 
 struct CellCentredOptions
 {
@@ -74,6 +76,7 @@ struct CellCentredRun
   int Level = 0;
   double CellSize = 0.0; ///< Delta x_min (5.1), unit-box units
   int Iterations = 0;
+  int TreeChanges = 0; ///< iterations whose adaptation changed the leaves (the others reuse d and the fits)
   double Energy = 0.0;
   double CloudError = 0.0;
 };

@@ -4,10 +4,11 @@
 /// The polynomial of one leaf in the thesis's cell-centred scheme (5.2.1):
 /// Q1, the tensor product of degree one in each variable,
 ///   p(x) = sum over the subsets S of the axes of C_S prod_{a in S} (x_a - c_a),
-/// (in 2D the basis {1, x_1, x_2, x_1 x_2} of (5.5)), with c the leaf's centre
-/// and C_{} = p(c) its value (the centre constraint of (5.5)). Kept in
-/// physical units, so that a child inherits its parent's polynomial as it is
-/// (5.2.2, "inherited by the children") and a coarsened family averages its
+/// (in 2D the basis {1, x_1, x_2, x_1 x_2} of (5.5)), with c the centre of the
+/// leaf it was fitted on and C_{} = p(c) (the centre constraint of (5.5)).
+/// Kept in physical units, so that a child inherits its parent's polynomial
+/// as it is (5.2.2, "inherited by the children"; c stays the parent's, and
+/// slope() is the gradient there) and a coarsened family averages its
 /// children's coefficients.
 
 #include <array>
@@ -26,7 +27,7 @@ struct CellPolynomial
   std::array<double, Terms> C{};
 
   double value() const { return this->C[0]; }
-  /// The gradient at the centre.
+  /// The gradient at the centre c.
   std::array<double, D> slope() const
   {
     std::array<double, D> g;
