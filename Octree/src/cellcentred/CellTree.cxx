@@ -98,6 +98,15 @@ int coarsenWanted(p4est_t* p4est, p4est_topidx_t, p4est_quadrant_t* family[])
   {
     return 0;
   }
+  const Data* data[Children];
+  for (int k = 0; k < Children; ++k)
+  {
+    data[k] = &dataOf(family[k]);
+  }
+  if (!(*c.Coarsen)(data))
+  {
+    return 0;
+  }
   // A parent next to leaves two levels finer would break the 2:1 balance,
   // which would refine it again at once: such families stay.
   for (int k = 0; k < Children; ++k)
@@ -107,12 +116,7 @@ int coarsenWanted(p4est_t* p4est, p4est_topidx_t, p4est_quadrant_t* family[])
       return 0;
     }
   }
-  const Data* data[Children];
-  for (int k = 0; k < Children; ++k)
-  {
-    data[k] = &dataOf(family[k]);
-  }
-  return (*c.Coarsen)(data) ? 1 : 0;
+  return 1;
 }
 
 /// New leaves' data (5.2.2): children from the parent's polynomial, a parent
