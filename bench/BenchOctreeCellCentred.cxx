@@ -21,10 +21,12 @@
 ///
 /// Usage: sltkBenchOctreeCellCentred [--case circle,square,heart,cubespheres] [--threads N] [--kp K_P] [--log]
 ///                                   [--per-iteration] [--tables thesis_tables.json]
+///        sltkBenchOctreeCellCentred --cloud bunny.xyz --cdx 2 --kp 10 [--runs R] (a scanned cloud: Err_P, seams)
 
 #include "common/BenchCli.h"
 #include "common/Chapter5.h"
 #include "common/PrintLogger.h"
+#include "common/ReadXyz.h"
 #include "common/ThesisTables.h"
 
 #include "sltk/cloud/SyntheticClouds.h"
@@ -52,7 +54,10 @@ struct Arguments
 {
   std::vector<std::string> Cases{ "circle", "square", "heart", "cubespheres" };
   int Threads = 0;
-  double OutsideFactor = 2.0; ///< K_P: the initial circle's margin beyond the farthest point, in h_P
+  double OutsideFactor = 2.0;  ///< K_P: the initial circle's margin beyond the farthest point, in h_P
+  std::string Cloud;           ///< --cloud: an .xyz cloud instead of the thesis's cases
+  double CellSizeFactor = 0.0; ///< --cdx: run 1's cell C_dx h_P (4.36) instead of (5.10)-(5.11)
+  int Runs = 3;
   bool PerIteration = false;
   bool Log = false;
   std::string Tables = DefaultThesisTablesPath;
@@ -174,7 +179,7 @@ void runCase(const std::string& name, const sltk::PointCloud<D>& cloud, const Ex
   const std::vector<double>& thesis, const Arguments& args, const sltk::Context& ctx)
 {
   sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
-  options.Runs = 3;
+  options.Runs = args.Runs;
   options.Guess = sltk::InitialGuess::BoundingSphere;
   options.OutsideThresholdFactor = args.OutsideFactor;
   options.TiledStorage = true;
@@ -185,6 +190,11 @@ void runCase(const std::string& name, const sltk::PointCloud<D>& cloud, const Ex
   if (status.isOk())
   {
     level = chapter5Grid(2.0, plan.CloudSpacing); // Delta_P = 2 in the unit box (4.5)
+    if (args.CellSizeFactor > 0.0)
+    {
+      level.CellSizeFactor = args.CellSizeFactor;
+      level.Level = static_cast<int>(std::ceil(std::log2(2.0 / (args.CellSizeFactor * plan.CloudSpacing))));
+    }
     options.CellSizeFactor = level.CellSizeFactor;
     status = sltk::planReconstruction(cloud, options, ctx, plan);
   }
@@ -194,8 +204,8 @@ void runCase(const std::string& name, const sltk::PointCloud<D>& cloud, const Ex
     return;
   }
   const double firstCell = level.CellSizeFactor * plan.CloudSpacing;
-  std::printf("\n%s (%zu points): L0 = %d (Delta x_min of run 1 = Delta_P / 2^L0 = %.5f)\n", name.c_str(),
-    cloud.Points.size(), level.Level, firstCell);
+  std::printf("\n%s (%zu points): L0 = %d (Delta x_min of run 1 = %.5f = %.3g h_P)\n", name.c_str(),
+    cloud.Points.size(), level.Level, firstCell, level.CellSizeFactor);
 
   sltk::octree::CellCentredOptions cc;
   cc.FirstCellSize = firstCell;
@@ -254,6 +264,9 @@ int main(int argc, char** argv)
   app.add_option("--case", cases, "circle,square,heart,cubespheres (default all)");
   app.add_option("--threads", args.Threads, "threads (0: all hardware threads)")->capture_default_str();
   app.add_flag("--per-iteration", args.PerIteration, "every iteration's E_2, Err_P and leaves (Fig. 5.7)");
+  app.add_option("--cloud", args.Cloud, "an .xyz cloud (3D) instead of the thesis's cases, e.g. the bunny");
+  app.add_option("--cdx", args.CellSizeFactor, "run 1's cell as C_dx h_P (4.36) instead of (5.10)-(5.11)");
+  app.add_option("--runs", args.Runs, "runs (the thesis's tests: 3)")->capture_default_str();
   app.add_option("--kp", args.OutsideFactor, "K_P: the initial circle's margin beyond the farthest point, in h_P")
     ->capture_default_str();
   app.add_flag("--log", args.Log, "the cell-centred scheme's progress, iteration by iteration");
@@ -275,6 +288,17 @@ int main(int argc, char** argv)
   if (args.Log)
   {
     ctx.Log = &logger;
+  }
+  if (!args.Cloud.empty())
+  {
+    sltk::PointCloud<3> cloud;
+    if (!readXyz(args.Cloud, cloud))
+    {
+      std::fprintf(stderr, "cannot read a cloud from %s (x y z per line)\n", args.Cloud.c_str());
+      return 2;
+    }
+    runCase<3>(args.Cloud, cloud, nullptr, {}, args, ctx);
+    return 0;
   }
   for (const std::string& name : args.Cases)
   {
