@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace sltk
 {
@@ -226,7 +227,7 @@ bool adaptTree(CellTree<D>& tree, int level, int minimumLevel, double beta, doub
       return true;
     });
   tree.balance();
-  return mostLeaves < 0 || tree.leafCount() <= mostLeaves;
+  return tree.leafCount() <= mostLeaves;
 }
 
 /// The refusal when the tree outgrows the memory (run 0: the uniform tree of MinimumLevel).
@@ -241,16 +242,18 @@ Status treeTooLarge(int run, int level, long mostLeaves)
   return Status::outOfMemory(m.str());
 }
 
+/// phi and its polynomials into the leaves (what the next adaptation hands
+/// on) and into s.
 template <int D>
-void storePhi(TreeState<D>& s, const std::vector<double>& phi, const std::vector<CellPolynomial<D>>& polynomials)
+void storePhi(TreeState<D>& s, std::vector<double>&& phi, std::vector<CellPolynomial<D>>&& polynomials)
 {
   for (size_t i = 0; i < s.Data.size(); ++i)
   {
     s.Data[i]->Phi = phi[i];
     s.Data[i]->Polynomial = polynomials[i];
   }
-  s.Phi = phi;
-  s.PhiPolynomials = polynomials;
+  s.Phi = std::move(phi);
+  s.PhiPolynomials = std::move(polynomials);
 }
 
 template <int D>
@@ -334,7 +337,7 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
     }
     std::vector<CellPolynomial<D>> polynomials;
     fitLeastSquaresQ1(s.Graph, phi, ctx, polynomials);
-    storePhi(s, phi, polynomials);
+    storePhi(s, std::move(phi), std::move(polynomials));
   }
 
   const std::vector<std::array<double, D>>& points = plan.Cloud.Points;
@@ -397,7 +400,7 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
       fitLeastSquaresQ1(s.Graph, phi, ctx, polynomials);
       reinitialiseByClosestPoints(s.Graph, polynomials, m.Gamma, ctx, phi);
       fitLeastSquaresQ1(s.Graph, phi, ctx, polynomials);
-      storePhi(s, phi, polynomials);
+      storePhi(s, std::move(phi), std::move(polynomials));
 
       CellCentredIteration it;
       it.Run = run;
@@ -424,7 +427,7 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
          << " changed the tree), E_2 " << record.Energy << ", Err_P " << record.CloudError;
     ctx.logger().log(LogLevel::Info, line.str());
   }
-  describeTree<D>(*tree, points, ctx, s);
+  // s describes the final tree: no adaptation follows the last iteration's described tree.
   result.Leaves.resize(s.Data.size());
   for (size_t i = 0; i < s.Data.size(); ++i)
   {

@@ -157,10 +157,6 @@ p4est_tree_t* onlyTree(p4est_t* p4est)
   return p4est_tree_array_index(p4est->trees, 0);
 }
 
-/// The leaves one level finer that touch the leaf (appendNeighbours' last case).
-void appendFinerNeighbours(
-  const LeafTable<Dim>& table, int level, const LeafTable<Dim>::Index& at, std::vector<int>& out);
-
 /// A quadrant's integer index at its level (LeafTable.h).
 LeafTable<Dim>::Index indexAtLevel(const p4est_quadrant_t* q)
 {
@@ -176,7 +172,8 @@ LeafTable<Dim>::Index indexAtLevel(const p4est_quadrant_t* q)
 /// The neighbours of the leaf of `level` at `at` (face, edge and corner,
 /// Fig. 5.3), appended to `out`: in each direction o of {-1, 0, 1}^D \ {0},
 /// the leaf of the same level there, or the coarser leaf holding it, or
-/// (2:1 balance) the finer leaves of that cell that touch this one.
+/// (2:1 balance) the finer leaves of that cell that touch this one; with
+/// `finerOnly`, only those finer leaves.
 void appendNeighbours(const LeafTable<Dim>& table, int level, const LeafTable<Dim>::Index& at, std::vector<int>& out,
   bool finerOnly = false)
 {
@@ -237,18 +234,12 @@ void appendNeighbours(const LeafTable<Dim>& table, int level, const LeafTable<Di
   }
 }
 
-void appendFinerNeighbours(
-  const LeafTable<Dim>& table, int level, const LeafTable<Dim>::Index& at, std::vector<int>& out)
-{
-  appendNeighbours(table, level, at, out, true);
-}
-
 /// Whether a leaf touches a leaf one level finer (by a face, an edge or a corner).
 bool hasFinerNeighbour(const LeafTable<Dim>& table, const p4est_quadrant_t* q)
 {
   thread_local std::vector<int> found;
   found.clear();
-  appendFinerNeighbours(table, q->level, indexAtLevel(q), found);
+  appendNeighbours(table, q->level, indexAtLevel(q), found, true); // the finer ones only
   return !found.empty();
 }
 
