@@ -19,8 +19,11 @@
 /// is known, and for the cell-centred scheme the jumps of its zero level set
 /// between neighbouring leaves (5.3.1, "noticeably disconnected").
 ///
+/// Under `mpiexec -n N` both schemes run on N ranks (the cell-centred
+/// scheme's leaves are gathered for the L1 and the seams); rank 0 prints.
+///
 /// Usage: sltkBenchOctreeCellCentred [--case circle,square,heart,cubespheres] [--threads N] [--kp K_P] [--log]
-///                                   [--per-iteration] [--tables thesis_tables.json]
+///                                   [--per-iteration] [--tables thesis_tables.json] [--no-tiled]
 ///        sltkBenchOctreeCellCentred --cloud bunny.xyz --cdx 2 --kp 10 [--runs R] (a scanned cloud: Err_P, seams)
 
 #include "common/BenchCli.h"
@@ -32,6 +35,7 @@
 #include "sltk/cloud/SyntheticClouds.h"
 #include "sltk/exec/Context.h"
 #include "sltk/exec/ThreadPool.h"
+#include "sltk/mpi/MpiCommunicator.h"
 #include "sltk/octree/CellCentredReconstruction.h"
 #include "sltk/recon/ReconstructionPlan.h"
 #include "sltk/tiled/TiledReconstruction.h"
@@ -60,6 +64,7 @@ struct Arguments
   int Runs = 3;
   bool PerIteration = false;
   bool Log = false;
+  bool NoTiled = false; ///< --no-tiled: the cell-centred scheme alone
   std::string Tables = DefaultThesisTablesPath;
 };
 
@@ -176,7 +181,7 @@ void printCellCentred(const sltk::octree::CellCentredResult<D>& r, const std::ve
 
 template <int D>
 void runCase(const std::string& name, const sltk::PointCloud<D>& cloud, const Exact<D>& exact,
-  const std::vector<double>& thesis, const Arguments& args, const sltk::Context& ctx)
+  const std::vector<double>& thesis, const Arguments& args, const sltk::Context& ctx, const sltk::Communicator& comm)
 {
   sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
   options.Runs = args.Runs;
@@ -211,10 +216,11 @@ void runCase(const std::string& name, const sltk::PointCloud<D>& cloud, const Ex
   cc.FirstCellSize = firstCell;
   sltk::octree::CellCentredResult<D> cell;
   auto start = std::chrono::steady_clock::now();
-  status = sltk::octree::reconstructCellCentred(plan, cc, ctx, cell);
+  status = sltk::octree::reconstructCellCentred(plan, cc, ctx, cell, comm);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf(" the thesis's cell-centred scheme on a p4est %s (edge %.0f), %.2f s\n", D == 2 ? "quadtree" : "octree",
-    cell.DomainEdge, seconds);
+  std::printf(" the thesis's cell-centred scheme on a p4est %s (edge %.0f), %d rank%s, %.2f s\n",
+    D == 2 ? "quadtree" : "octree", cell.DomainEdge, comm.size(), comm.size() > 1 ? "s" : "", seconds);
+  cell.Leaves = comm.allGatherV(cell.Leaves); // every rank's, in Morton order
   if (!status.isOk())
   {
     std::printf("  failed: %s\n", status.toString().c_str());
@@ -234,9 +240,13 @@ void runCase(const std::string& name, const sltk::PointCloud<D>& cloud, const Ex
       seams.first, seams.second);
   }
 
+  if (args.NoTiled)
+  {
+    return;
+  }
   sltk::TiledReconstructionResult<D> tiled;
   start = std::chrono::steady_clock::now();
-  status = sltk::reconstructTiled(plan, ctx, tiled);
+  status = sltk::reconstructTiled(plan, ctx, tiled, comm);
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf(" the tiled band (node values, LSQ Q1 interpolation), %.2f s\n", seconds);
   if (!status.isOk())
@@ -271,6 +281,7 @@ int main(int argc, char** argv)
     ->capture_default_str();
   app.add_flag("--log", args.Log, "the cell-centred scheme's progress, iteration by iteration");
   app.add_option("--tables", args.Tables, "thesis_tables.json")->capture_default_str();
+  app.add_flag("--no-tiled", args.NoTiled, "the cell-centred scheme alone (no tiled band beside it)");
   if (const auto code = parseCommandLine(app, argc, argv))
   {
     return *code;
@@ -278,6 +289,21 @@ int main(int argc, char** argv)
   if (!cases.empty())
   {
     args.Cases = splitList(cases);
+  }
+  std::unique_ptr<sltk::mpi::MpiCommunicator> comm;
+  sltk::Status mpi = sltk::mpi::ensureMpiInitialised();
+  if (mpi.isOk())
+  {
+    mpi = sltk::mpi::MpiCommunicator::world(comm);
+  }
+  if (!mpi.isOk())
+  {
+    std::fprintf(stderr, "%s\n", mpi.toString().c_str());
+    return 1;
+  }
+  if (comm->rank() != 0 && !std::freopen("/dev/null", "w", stdout)) // rank 0 prints
+  {
+    return 1;
   }
   const ThesisTables tables(args.Tables);
   const auto iterations = [&](const char* key) { return tables.numbers({ "ch5_amr", key }); };
@@ -297,7 +323,7 @@ int main(int argc, char** argv)
       std::fprintf(stderr, "cannot read a cloud from %s (x y z per line)\n", args.Cloud.c_str());
       return 2;
     }
-    runCase<3>(args.Cloud, cloud, nullptr, {}, args, ctx);
+    runCase<3>(args.Cloud, cloud, nullptr, {}, args, ctx, *comm);
     return 0;
   }
   for (const std::string& name : args.Cases)
@@ -306,22 +332,23 @@ int main(int argc, char** argv)
     {
       runCase<2>(
         name, sltk::circleCloud(64), [](const std::array<double, 2>& x) { return sltk::circleSdf(x); },
-        iterations("circle_iterations"), args, ctx);
+        iterations("circle_iterations"), args, ctx, *comm);
     }
     else if (name == "square")
     {
-      runCase<2>(name, sltk::rotatedSquareCloud(6), sltk::rotatedSquareSdf, iterations("square_iterations"), args, ctx);
+      runCase<2>(
+        name, sltk::rotatedSquareCloud(6), sltk::rotatedSquareSdf, iterations("square_iterations"), args, ctx, *comm);
     }
     else if (name == "heart")
     {
-      runCase<2>(name, sltk::heartCloud(24), nullptr, iterations("heart_iterations"), args, ctx);
+      runCase<2>(name, sltk::heartCloud(24), nullptr, iterations("heart_iterations"), args, ctx, *comm);
     }
     else if (name == "cubespheres")
     {
       sltk::CubeSpheres shape;
       runCase<3>(
         name, shape.cloud(2346), [shape](const std::array<double, 3>& x) { return shape.sdf(x); },
-        iterations("cube_spheres_iterations"), args, ctx);
+        iterations("cube_spheres_iterations"), args, ctx, *comm);
     }
     else
     {

@@ -4,6 +4,8 @@
 // (5.5), the propagation (5.8)-(5.9), the closest-point reinitialisation
 // (5.2.4), and the chapter 5 circle end to end. Serial (each rank of the
 // 2-rank run computes the same alone).
+#include "CellCentredCases.h"
+
 #include "cellcentred/CellEnergy.h"
 #include "cellcentred/CellTree.h"
 #include "cellcentred/ClosestPointReinit.h"
@@ -32,7 +34,7 @@ std::unique_ptr<CellTree<D>> sphereTree(int level, LeafGraph<D>& graph, std::vec
   std::unique_ptr<CellTree<D>> forest;
   std::array<double, D> origin;
   origin.fill(-1.0);
-  EXPECT_TRUE(CellTree<D>::create(origin, 2.0, 2, forest).isOk());
+  EXPECT_TRUE(CellTree<D>::create(sltk::serialCommunicator(), origin, 2.0, 2, forest).isOk());
   forest->refine(level,
     [](const CellData<D>&, const std::array<double, D>& c, double h)
     {
@@ -173,7 +175,7 @@ CellEnergy frontIntegrals(int level, double p, double q)
   std::vector<CellPolynomial<D>> phiFit, dFit;
   fitLeastSquaresQ1(g, phi, sltk::Context{}, phiFit);
   fitLeastSquaresQ1(g, d, sltk::Context{}, dFit);
-  return cellEnergy<D>(g, phiFit, dFit, dx, p, q, sltk::Context{});
+  return cellEnergy<D>(g, phiFit, dFit, dx, p, q, sltk::Context{}, sltk::serialCommunicator());
 }
 
 /// A linear field and its exact polynomial on every leaf of `data`.
@@ -214,7 +216,7 @@ void checkDeepestLevel()
   std::unique_ptr<CellTree<D>> tree;
   std::array<double, D> origin;
   origin.fill(-1.0);
-  ASSERT_TRUE(CellTree<D>::create(origin, 2.0, 1, tree).isOk());
+  ASSERT_TRUE(CellTree<D>::create(sltk::serialCommunicator(), origin, 2.0, 1, tree).isOk());
   LeafGraph<D> g;
   std::vector<CellData<D>*> data;
   tree->leaves(g, data);
@@ -252,15 +254,6 @@ void checkDeepestLevel()
     }
     EXPECT_EQ(touching, g.Offsets[size_t(i) + 1] - g.Offsets[size_t(i)]) << "leaf " << i;
   }
-}
-
-/// The chapter 5 circle (64 points) with the thesis's options and a circle around it (5.3).
-sltk::Status planThesisCircle(sltk::ReconstructionPlan<2>& plan)
-{
-  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
-  options.Runs = 3;
-  options.Guess = sltk::InitialGuess::BoundingSphere;
-  return sltk::planReconstruction(sltk::circleCloud(64), options, sltk::Context{}, plan);
 }
 
 } // namespace
@@ -514,11 +507,9 @@ TEST(CellCentred, ReconstructsASphereInThreeDimensions)
 {
   // The 642-point icosphere, two runs on an octree (levels 5 and 6 of a cube
   // of edge 4): the 3D step (four feet), reinitialisation and energy in the loop.
-  sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
-  options.Runs = 2;
-  options.Guess = sltk::InitialGuess::BoundingSphere;
   sltk::ReconstructionPlan<3> plan;
-  ASSERT_TRUE(sltk::planReconstruction(sltk::icosphereCloud(3), options, sltk::Context{}, plan).isOk());
+  ASSERT_TRUE(planIcosphere(plan).isOk());
+  const sltk::ReconstructionOptions& options = plan.Options;
   CellCentredOptions cc;
   cc.FirstCellSize = 1.0 / 8.0;
   CellCentredResult<3> result;

@@ -5,8 +5,9 @@
 // of the points (a rank may hold none); distances against brute force;
 // refinement in the band, 2:1 balance, a tiling of the brick; one failing
 // rank fails every rank with its error.
+#include "MpiWorld.h"
+
 #include "sltk/cloud/SyntheticClouds.h"
-#include "sltk/mpi/MpiCommunicator.h"
 #include "sltk/octree/CloudForest.h"
 
 #include <gtest/gtest.h>
@@ -20,13 +21,6 @@ using sltk::octree::ForestLeaf;
 
 namespace
 {
-std::unique_ptr<sltk::mpi::MpiCommunicator> world()
-{
-  std::unique_ptr<sltk::mpi::MpiCommunicator> comm;
-  EXPECT_TRUE(sltk::mpi::MpiCommunicator::world(comm).isOk());
-  return comm;
-}
-
 /// An ellipsoid (semi-axes 2, 1, 1) sampled by n Fibonacci points, off the origin:
 /// its padded box is not a cube (a brick of two trees).
 sltk::PointCloud<3> ellipsoidCloud(int n)
@@ -138,7 +132,7 @@ TEST(CloudForest, BrickOfCubicTreesOverABox)
   EXPECT_EQ(brick.Trees, (std::array<int, 3>{ 8, 2, 1 }));
   EXPECT_DOUBLE_EQ(brick.Origin[0], 0.0);
   const auto padded = sltk::octree::brickOver(box, 0.25); // 1 on every side: 6 x 3 x 2.5
-  EXPECT_DOUBLE_EQ(padded.TreeEdge, 3.0);                  // 2 x 1 x 1 trees: 54, the least volume
+  EXPECT_DOUBLE_EQ(padded.TreeEdge, 3.0);                 // 2 x 1 x 1 trees: 54, the least volume
   EXPECT_EQ(padded.Trees, (std::array<int, 3>{ 2, 1, 1 }));
   EXPECT_DOUBLE_EQ(padded.uniformCells(2), 2 * 64.0);
   EXPECT_DOUBLE_EQ(padded.Origin[0], -1.0);

@@ -5,6 +5,7 @@
 #include "CellTree.h"
 #include "ClosestPointReinit.h"
 #include "LeastSquaresQ1.h"
+#include "PointValues.h"
 #include "Propagation.h"
 
 #include "sltk/exec/Logger.h"
@@ -68,16 +69,22 @@ struct TreeState
 };
 
 /// d at every leaf centre (5.2.3): the leaves holding points start from their
-/// nearest point, then the propagation (5.8)-(5.9) over the whole tree.
+/// nearest point, then the propagation (5.8)-(5.9) over the whole tree
+/// (every rank, collective), d at the ghosts too.
 template <int D>
-void distanceToCloud(const std::vector<std::array<double, D>>& points, TreeState<D>& s)
+void distanceToCloud(const CellTree<D>& tree, const std::vector<std::array<double, D>>& points, TreeState<D>& s)
 {
   Propagation<D> state;
   resetPropagation(s.Graph.size(), state);
   std::vector<int> front;
   for (size_t k = 0; k < points.size(); ++k)
   {
-    const size_t i = static_cast<size_t>(s.LeafOfPoint[k]);
+    const int leaf = s.LeafOfPoint[k];
+    if (leaf < 0 || leaf >= s.Graph.Owned) // another rank's
+    {
+      continue;
+    }
+    const size_t i = static_cast<size_t>(leaf);
     const double q = pointDistance<D>(s.Graph.Centres[i], points[k]);
     if (std::isinf(state.Distance[i]))
     {
@@ -89,24 +96,27 @@ void distanceToCloud(const std::vector<std::array<double, D>>& points, TreeState
       state.Reference[i] = points[k];
     }
   }
-  propagate(s.Graph, front, state);
+  propagate(s.Graph, front, state, std::numeric_limits<double>::infinity(), &tree);
   s.Distance = std::move(state.Distance);
+  tree.syncGhosts(s.Distance);
 }
 
-/// Builds the leaves, their polynomials of phi (5.5), d and its polynomials.
+/// Builds the leaves, their polynomials of phi (5.5), d and its polynomials
+/// (phi and d at the ghosts too). Collective.
 template <int D>
 void describeTree(
   const CellTree<D>& tree, const std::vector<std::array<double, D>>& points, const Context& ctx, TreeState<D>& s)
 {
   tree.leaves(s.Graph, s.Data);
-  s.Phi.resize(s.Data.size());
+  s.Phi.assign(static_cast<size_t>(s.Graph.size()), 0.0);
   for (size_t i = 0; i < s.Data.size(); ++i)
   {
     s.Phi[i] = s.Data[i]->Phi;
   }
+  tree.syncGhosts(s.Phi);
   fitLeastSquaresQ1(s.Graph, s.Phi, ctx, s.PhiPolynomials);
   tree.locate(points, s.LeafOfPoint);
-  distanceToCloud<D>(points, s);
+  distanceToCloud<D>(tree, points, s);
   fitLeastSquaresQ1(s.Graph, s.Distance, ctx, s.DistancePolynomials);
 }
 
@@ -116,20 +126,21 @@ struct StepModel
   double Singular = 0.0; ///< |grad phi| below which (4.26)'s mean of the neighbours replaces the step
 };
 
-/// The SL step (5.4) on the leaves with |phi| < gamma (the cut-off is zero
-/// beyond): gradients from the leaf's polynomials, the 2^(D-1) feet of
-/// (4.22)/(4.24) located in one batch (CellTree::locate) and
-/// interpolated by the polynomial of the leaf they fall in.
-/// Fails (numericalFailure) on a foot that is not finite (an infinite d, a zero energy).
+/// The SL step (5.4) on this rank's leaves with |phi| < gamma (the cut-off
+/// is zero beyond): gradients from the leaf's polynomials, the 2^(D-1) feet
+/// of (4.22)/(4.24) interpolated by the polynomial of the leaf they fall in,
+/// in one batch (PointValues.h: the other ranks' feet in one exchange).
+/// Fails (numericalFailure) on every rank when a foot is not finite on one
+/// (an infinite d, a zero energy). Collective.
 template <int D>
 Status semiLagrangianStep(const CellTree<D>& tree, const TreeState<D>& s, const StepModel& m, std::vector<double>& next)
 {
   constexpr int Feet = 1 << (D - 1);
-  const int n = s.Graph.size();
   next = s.Phi;
   std::vector<int> stepped;
   std::vector<std::array<double, D>> feet;
-  for (int i = 0; i < n; ++i)
+  Status failure;
+  for (int i = 0; i < s.Graph.Owned && failure.isOk(); ++i)
   {
     const size_t k = static_cast<size_t>(i);
     const double phi = s.Phi[k];
@@ -174,7 +185,7 @@ Status semiLagrangianStep(const CellTree<D>& tree, const TreeState<D>& s, const 
         }
         if (!std::isfinite(foot[a]))
         {
-          return Status::numericalFailure("the cell-centred SL step met a foot that is not finite (d = " +
+          failure = Status::numericalFailure("the cell-centred SL step met a foot that is not finite (d = " +
             std::to_string(d) + ", E_p = " + std::to_string(m.Energy) + "): check the cloud and the initial circle");
         }
       }
@@ -182,23 +193,32 @@ Status semiLagrangianStep(const CellTree<D>& tree, const TreeState<D>& s, const 
     }
     stepped.push_back(i);
   }
-  std::vector<int> footLeaf;
-  tree.locate(feet, footLeaf);
+  SLTK_RETURN_IF_ERROR(tree.communicator().agree(failure));
+  std::vector<double> values;
+  SLTK_RETURN_IF_ERROR(valuesAtPoints<D>(tree, s.Graph, s.PhiPolynomials, feet, values));
   for (size_t f = 0; f < stepped.size(); ++f)
   {
     double sum = 0.0;
     for (size_t j = Feet * f; j < Feet * (f + 1); ++j)
     {
-      sum += s.PhiPolynomials[static_cast<size_t>(footLeaf[j])].eval(feet[j]);
+      sum += values[j];
     }
     next[static_cast<size_t>(stepped[f])] = sum / Feet;
   }
   return Status::ok();
 }
 
+/// Whether a rank holds more than `mostLeaves` leaves (collective).
+template <int D>
+bool tooManyLeaves(const CellTree<D>& tree, long mostLeaves)
+{
+  return tree.communicator().allReduce(std::int64_t(tree.leafCount() > mostLeaves ? 1 : 0), ReduceOp::Max) > 0;
+}
+
 /// (5.6), first arrow: refine where |phi| < beta up to the run's level,
-/// coarsen families flat at +-gamma (5.2.2: |grad phi| = 0), 2:1 balance.
-/// False when the refinement outgrew `mostLeaves`.
+/// coarsen families flat at +-gamma (5.2.2: |grad phi| = 0), 2:1 balance,
+/// and p4est's partition. False on every rank when the refinement outgrew
+/// `mostLeaves` leaves on one. Collective.
 template <int D>
 bool adaptTree(CellTree<D>& tree, int level, int minimumLevel, double beta, double gamma, long mostLeaves)
 {
@@ -227,7 +247,8 @@ bool adaptTree(CellTree<D>& tree, int level, int minimumLevel, double beta, doub
       return true;
     });
   tree.balance();
-  return tree.leafCount() <= mostLeaves;
+  tree.partition();
+  return !tooManyLeaves(tree, mostLeaves);
 }
 
 /// The refusal when the tree outgrows the memory (run 0: the uniform tree of MinimumLevel).
@@ -256,22 +277,23 @@ void storePhi(TreeState<D>& s, std::vector<double>&& phi, std::vector<CellPolyno
   s.PhiPolynomials = std::move(polynomials);
 }
 
+/// The leaves of every rank at `level` (collective).
 template <int D>
-Index leavesAtLevel(const LeafGraph<D>& g, int level)
+Index leavesAtLevel(const CellTree<D>& tree, const LeafGraph<D>& g, int level)
 {
-  Index count = 0;
-  for (const int l : g.Levels)
+  std::int64_t count = 0;
+  for (int i = 0; i < g.Owned; ++i)
   {
-    count += l == level ? 1 : 0;
+    count += g.Levels[static_cast<size_t>(i)] == level ? 1 : 0;
   }
-  return count;
+  return static_cast<Index>(tree.communicator().allReduce(count, ReduceOp::Sum));
 }
 
 } // namespace
 
 template <int D>
 Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentredOptions& options, const Context& ctx,
-  CellCentredResult<D>& result)
+  CellCentredResult<D>& result, const Communicator& comm)
 {
   const ReconstructionOptions& o = plan.Options;
   if (!(options.FirstCellSize > 0.0) || options.MinimumLevel < 0)
@@ -303,12 +325,13 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
   // The neighbour lists' int offsets hold up to 2^31 entries, 56 a leaf at most (3D).
   const long mostLeaves = static_cast<long>(
     std::min<double>(memory > 0 ? static_cast<double>(memory) / CellCentredBytesPerLeaf : 1e300, 2147483647.0 / 56.0));
-  if (std::ldexp(1.0, D * options.MinimumLevel) > static_cast<double>(mostLeaves))
-  {
-    return treeTooLarge(0, options.MinimumLevel, mostLeaves);
-  }
+  // Each rank's budget is its own: the refusal of one is every rank's.
+  SLTK_RETURN_IF_ERROR(
+    comm.agree(std::ldexp(1.0, D * options.MinimumLevel) / comm.size() > static_cast<double>(mostLeaves)
+        ? treeTooLarge(0, options.MinimumLevel, mostLeaves)
+        : Status::ok()));
   std::unique_ptr<CellTree<D>> tree;
-  SLTK_RETURN_IF_ERROR(CellTree<D>::create(result.DomainOrigin, cube.Edge, options.MinimumLevel, tree));
+  SLTK_RETURN_IF_ERROR(CellTree<D>::create(comm, result.DomainOrigin, cube.Edge, options.MinimumLevel, tree));
 
   // Initial data (5.3): the signed distance to the circle or sphere, refined
   // around it as in (5.2) (|phi_0(x_i)| <= sqrt(D) Delta x_i) to run 1's level.
@@ -322,7 +345,8 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
     return treeTooLarge(1, cube.FirstLevel, mostLeaves);
   }
   tree->balance();
-  if (tree->leafCount() > mostLeaves)
+  tree->partition();
+  if (tooManyLeaves(*tree, mostLeaves))
   {
     return treeTooLarge(1, cube.FirstLevel, mostLeaves);
   }
@@ -330,7 +354,7 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
   tree->leaves(s.Graph, s.Data);
   {
     const double gamma = o.GammaFactor * cube.Edge / std::ldexp(1.0, cube.FirstLevel);
-    std::vector<double> phi(s.Data.size());
+    std::vector<double> phi(static_cast<size_t>(s.Graph.size())); // the ghosts' too: no exchange needed
     for (size_t i = 0; i < phi.size(); ++i)
     {
       phi[i] = cutLevel(phi0(s.Graph.Centres[i]), gamma);
@@ -372,14 +396,15 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
       {
         return treeTooLarge(run, level, mostLeaves);
       }
-      if (tree->revision() != described) // else s holds this tree's leaves, d and phi^n already
+      // Unless a rank's leaves changed, s holds this tree's leaves, d and phi^n already.
+      if (comm.allReduce(std::int64_t(tree->revision() != described ? 1 : 0), ReduceOp::Max) > 0)
       {
         describeTree<D>(*tree, points, ctx, s);
         described = tree->revision();
         ++record.TreeChanges;
       }
       // E_p of phi^n for the scale factor (4.32), E_2 for the stopping rule (4.33).
-      const CellEnergy energy = cellEnergy(s.Graph, s.PhiPolynomials, s.DistancePolynomials, dx, m.P, 2.0, ctx);
+      const CellEnergy energy = cellEnergy(s.Graph, s.PhiPolynomials, s.DistancePolynomials, dx, m.P, 2.0, ctx, comm);
       if (energy.FrontLeaves == 0)
       {
         return Status::numericalFailure("run " + std::to_string(run) + ": the zero level set vanished");
@@ -390,15 +415,16 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
       {
         break;
       }
-      if (ctx.interrupter().wasInterrupted((run - 1 + double(n + 1) / o.MaxIterations) / o.Runs))
-      {
-        return Status::aborted();
-      }
+      const bool interrupted = ctx.interrupter().wasInterrupted((run - 1 + double(n + 1) / o.MaxIterations) / o.Runs);
+      SLTK_RETURN_IF_ERROR(comm.agree(interrupted ? Status::aborted() : Status::ok()));
       std::vector<double> phi;
       SLTK_RETURN_IF_ERROR(semiLagrangianStep(*tree, s, m, phi));
+      tree->syncGhosts(phi);
       std::vector<CellPolynomial<D>> polynomials;
       fitLeastSquaresQ1(s.Graph, phi, ctx, polynomials);
-      reinitialiseByClosestPoints(s.Graph, polynomials, m.Gamma, ctx, phi);
+      tree->syncGhosts(polynomials); // the ghosts' seeds
+      reinitialiseByClosestPoints(s.Graph, polynomials, m.Gamma, ctx, phi, tree.get());
+      tree->syncGhosts(phi);
       fitLeastSquaresQ1(s.Graph, phi, ctx, polynomials);
       storePhi(s, std::move(phi), std::move(polynomials));
 
@@ -406,9 +432,9 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
       it.Run = run;
       it.Iteration = n + 1;
       it.Energy = energies.back() * energyScale;
-      it.CloudError = cellCloudError<D>(points, s.LeafOfPoint, s.PhiPolynomials) * plan.Box.Scale;
-      it.Leaves = s.Graph.size();
-      it.FinestLeaves = leavesAtLevel(s.Graph, level);
+      it.CloudError = cellCloudError<D>(points, s.LeafOfPoint, s.PhiPolynomials, s.Graph.Owned, comm) * plan.Box.Scale;
+      it.Leaves = static_cast<Index>(tree->globalLeafCount());
+      it.FinestLeaves = leavesAtLevel(*tree, s.Graph, level);
       it.UniformCells = Index(1) << (D * level);
       result.History.push_back(it);
       record.Energy = it.Energy;
@@ -417,7 +443,10 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
       line.precision(4);
       line << "cell-centred run " << run << " iteration " << n + 1 << ": E_2 " << it.Energy << ", Err_P "
            << it.CloudError << ", " << it.Leaves << " leaves";
-      ctx.logger().log(LogLevel::Debug, line.str());
+      if (comm.rank() == 0)
+      {
+        ctx.logger().log(LogLevel::Debug, line.str());
+      }
     }
     record.Iterations = n;
     result.Runs.push_back(record);
@@ -425,9 +454,13 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
     line.precision(4);
     line << "cell-centred run " << run << " (level " << level << "): " << n << " iterations (" << record.TreeChanges
          << " changed the tree), E_2 " << record.Energy << ", Err_P " << record.CloudError;
-    ctx.logger().log(LogLevel::Info, line.str());
+    if (comm.rank() == 0)
+    {
+      ctx.logger().log(LogLevel::Info, line.str());
+    }
   }
-  // s describes the final tree: no adaptation follows the last iteration's described tree.
+  // s describes the final tree: no adaptation follows the last iteration's
+  // described tree. Each rank returns its own leaves.
   result.Leaves.resize(s.Data.size());
   for (size_t i = 0; i < s.Data.size(); ++i)
   {
@@ -443,9 +476,9 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
 }
 
 template Status reconstructCellCentred(
-  const ReconstructionPlan<2>&, const CellCentredOptions&, const Context&, CellCentredResult<2>&);
+  const ReconstructionPlan<2>&, const CellCentredOptions&, const Context&, CellCentredResult<2>&, const Communicator&);
 template Status reconstructCellCentred(
-  const ReconstructionPlan<3>&, const CellCentredOptions&, const Context&, CellCentredResult<3>&);
+  const ReconstructionPlan<3>&, const CellCentredOptions&, const Context&, CellCentredResult<3>&, const Communicator&);
 
 } // namespace octree
 } // namespace sltk

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "CellEnergy.h"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -128,51 +129,83 @@ bool leafIntegrals(const CellPolynomial<3>& phi, const CellPolynomial<3>& d, con
 
 template <int D>
 CellEnergy cellEnergy(const LeafGraph<D>& graph, const std::vector<CellPolynomial<D>>& phi,
-  const std::vector<CellPolynomial<D>>& distance, double finest, double p, double q, const Context& ctx)
+  const std::vector<CellPolynomial<D>>& distance, double finest, double p, double q, const Context& ctx,
+  const Communicator& comm)
 {
-  const size_t n = static_cast<size_t>(graph.size());
-  std::vector<double> first(n, 0.0), second(n, 0.0);
+  const size_t n = static_cast<size_t>(graph.Owned);
+  std::vector<std::array<double, 2>> integrals(n, { 0.0, 0.0 });
   std::vector<char> front(n, 0);
-  ctx.parallelFor(0, graph.size(),
+  ctx.parallelFor(0, graph.Owned,
     [&](Index b, Index e)
     {
       for (Index i = b; i < e; ++i)
       {
         const size_t k = static_cast<size_t>(i);
-        front[k] =
-          leafIntegrals(phi[k], distance[k], graph.Centres[k], graph.Sizes[k], finest, p, q, first[k], second[k]);
+        front[k] = leafIntegrals(
+          phi[k], distance[k], graph.Centres[k], graph.Sizes[k], finest, p, q, integrals[k][0], integrals[k][1]);
       }
     });
-  CellEnergy energy;
-  for (size_t k = 0; k < n; ++k) // in leaf order: the same sums on any thread count
+  // The front leaves' integrals of every rank in the global Morton order
+  // (rank order): the sums of one rank, on any number of ranks and threads.
+  std::vector<std::array<double, 2>> local;
+  for (size_t k = 0; k < n; ++k)
   {
-    energy.Integral += first[k];
-    energy.SecondIntegral += second[k];
-    energy.FrontLeaves += front[k];
+    if (front[k])
+    {
+      local.push_back(integrals[k]);
+    }
   }
+  const std::vector<std::array<double, 2>> all = comm.size() > 1 ? comm.allGatherV(local) : std::move(local);
+  CellEnergy energy;
+  for (const auto& leaf : all)
+  {
+    energy.Integral += leaf[0];
+    energy.SecondIntegral += leaf[1];
+  }
+  energy.FrontLeaves = static_cast<Index>(all.size());
   return energy;
 }
 
 template <int D>
 double cellCloudError(const std::vector<std::array<double, D>>& points, const std::vector<int>& leafOfPoint,
-  const std::vector<CellPolynomial<D>>& phi)
+  const std::vector<CellPolynomial<D>>& phi, int owned, const Communicator& comm)
 {
-  double sum = 0.0;
+  // |p_k(Q)| at the points in this rank's leaves, added in the points' order over all ranks.
+  struct PointError
+  {
+    std::int64_t Point;
+    double Error;
+  };
+  std::vector<PointError> local;
   for (size_t k = 0; k < points.size(); ++k)
   {
-    sum += std::fabs(phi[static_cast<size_t>(leafOfPoint[k])].eval(points[k]));
+    const int leaf = leafOfPoint[k];
+    if (leaf >= 0 && leaf < owned)
+    {
+      local.push_back({ static_cast<std::int64_t>(k), std::fabs(phi[static_cast<size_t>(leaf)].eval(points[k])) });
+    }
+  }
+  std::vector<double> error(points.size(), 0.0);
+  for (const auto& at : comm.size() > 1 ? comm.allGatherV(local) : local)
+  {
+    error[static_cast<size_t>(at.Point)] = at.Error;
+  }
+  double sum = 0.0;
+  for (const double e : error)
+  {
+    sum += e;
   }
   return points.empty() ? 0.0 : sum / static_cast<double>(points.size());
 }
 
 template CellEnergy cellEnergy(const LeafGraph<2>&, const std::vector<CellPolynomial<2>>&,
-  const std::vector<CellPolynomial<2>>&, double, double, double, const Context&);
+  const std::vector<CellPolynomial<2>>&, double, double, double, const Context&, const Communicator&);
 template CellEnergy cellEnergy(const LeafGraph<3>&, const std::vector<CellPolynomial<3>>&,
-  const std::vector<CellPolynomial<3>>&, double, double, double, const Context&);
-template double cellCloudError<2>(
-  const std::vector<std::array<double, 2>>&, const std::vector<int>&, const std::vector<CellPolynomial<2>>&);
-template double cellCloudError<3>(
-  const std::vector<std::array<double, 3>>&, const std::vector<int>&, const std::vector<CellPolynomial<3>>&);
+  const std::vector<CellPolynomial<3>>&, double, double, double, const Context&, const Communicator&);
+template double cellCloudError<2>(const std::vector<std::array<double, 2>>&, const std::vector<int>&,
+  const std::vector<CellPolynomial<2>>&, int, const Communicator&);
+template double cellCloudError<3>(const std::vector<std::array<double, 3>>&, const std::vector<int>&,
+  const std::vector<CellPolynomial<3>>&, int, const Communicator&);
 
 } // namespace octree
 } // namespace sltk

@@ -21,6 +21,7 @@
 #include "CellTree.h"
 
 #include "sltk/core/Index.h"
+#include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 
 #include <vector>
@@ -37,16 +38,20 @@ struct CellEnergy
   Index FrontLeaves = 0;       ///< leaves holding a piece of the front
 };
 
-/// The integrals of |d|^p and |d|^q over every leaf's piece of the front;
+/// The integrals of |d|^p and |d|^q over every leaf's piece of the front,
+/// over all ranks of `comm` (collective), added in the global Morton order;
 /// `finest` is Delta x_min.
 template <int D>
 CellEnergy cellEnergy(const LeafGraph<D>& graph, const std::vector<CellPolynomial<D>>& phi,
-  const std::vector<CellPolynomial<D>>& distance, double finest, double p, double q, const Context& ctx);
+  const std::vector<CellPolynomial<D>>& distance, double finest, double p, double q, const Context& ctx,
+  const Communicator& comm);
 
-/// Err_P (4.35): the mean of |p_k(Q)| over the points Q, k the leaf holding Q.
+/// Err_P (4.35): the mean of |p_k(Q)| over the points Q, k the leaf holding Q
+/// (CellTree::locate; the leaves below `owned` are this rank's), over all
+/// ranks of `comm` (collective), added in the points' order.
 template <int D>
 double cellCloudError(const std::vector<std::array<double, D>>& points, const std::vector<int>& leafOfPoint,
-  const std::vector<CellPolynomial<D>>& phi);
+  const std::vector<CellPolynomial<D>>& phi, int owned, const Communicator& comm);
 
 } // namespace octree
 } // namespace sltk

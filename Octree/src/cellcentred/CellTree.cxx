@@ -9,14 +9,20 @@
 
 #ifndef P4_TO_P8
 #include <p4est.h>
+#include <p4est_communication.h>
 #include <p4est_extended.h>
+#include <p4est_ghost.h>
 #else
 #include <p8est.h>
+#include <p8est_communication.h>
 #include <p8est_extended.h>
+#include <p8est_ghost.h>
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <cstring>
 
 namespace sltk
 {
@@ -254,14 +260,20 @@ using namespace celltree3;
 template <>
 struct CellTree<Dim>::Impl
 {
+  const Communicator* Comm = nullptr;
   p4est_connectivity_t* Connectivity = nullptr;
   p4est_t* Forest = nullptr;
+  mutable p4est_ghost_t* Ghost = nullptr; ///< on several ranks: the ghost layer of the last refresh()
   mutable Callbacks Calls;
   mutable LeafTable<Dim> Table;
   mutable long TableRevision = -1;
 
   ~Impl()
   {
+    if (this->Ghost)
+    {
+      p4est_ghost_destroy(this->Ghost);
+    }
     if (this->Forest)
     {
       p4est_destroy(this->Forest);
@@ -272,21 +284,48 @@ struct CellTree<Dim>::Impl
     }
   }
 
-  /// The leaves of the current tree in Table.
-  void ensureTable() const
+  bool distributed() const { return this->Comm->size() > 1; }
+
+  /// The leaves of the current tree, and on several ranks a new ghost layer,
+  /// in Table: collective on several ranks (the other ranks' changes reach
+  /// the ghosts only so), by the revision counter on one.
+  void refresh() const
   {
-    if (this->TableRevision == this->Forest->revision)
+    if (!this->distributed() && this->TableRevision == this->Forest->revision)
     {
       return;
     }
     p4est_tree_t* root = onlyTree(this->Forest);
-    this->Table.reset(root->quadrants.elem_count);
-    for (size_t i = 0; i < root->quadrants.elem_count; ++i)
+    const size_t owned = root->quadrants.elem_count;
+    size_t ghosts = 0;
+    if (this->distributed())
+    {
+      if (this->Ghost)
+      {
+        p4est_ghost_destroy(this->Ghost);
+      }
+      this->Ghost = p4est_ghost_new(this->Forest, P4EST_CONNECT_FULL);
+      p4est_ghost_expand(this->Forest, this->Ghost); // two layers: ClosestPointReinit.h's seeds
+      ghosts = this->Ghost->ghosts.elem_count;
+    }
+    this->Table.reset(owned + ghosts);
+    for (size_t i = 0; i < owned; ++i)
     {
       const p4est_quadrant_t* q = p4est_quadrant_array_index(&root->quadrants, i);
       this->Table.insert(q->level, indexAtLevel(q), static_cast<int>(i));
     }
+    for (size_t g = 0; g < ghosts; ++g)
+    {
+      const p4est_quadrant_t* q = p4est_quadrant_array_index(&this->Ghost->ghosts, g);
+      this->Table.insert(q->level, indexAtLevel(q), static_cast<int>(owned + g));
+    }
     this->TableRevision = this->Forest->revision;
+  }
+
+  /// Whether any rank's `local` is true (collective on several ranks).
+  bool anyRank(bool local) const
+  {
+    return !this->distributed() ? local : this->Comm->allReduce(std::int64_t(local ? 1 : 0), ReduceOp::Max) > 0;
   }
 };
 
@@ -300,16 +339,18 @@ template <>
 CellTree<Dim>::~CellTree() = default;
 
 template <>
-Status CellTree<Dim>::create(const Point& origin, double edge, int minimumLevel, std::unique_ptr<CellTree>& tree)
+Status CellTree<Dim>::create(
+  const Communicator& comm, const Point& origin, double edge, int minimumLevel, std::unique_ptr<CellTree>& tree)
 {
   if (!(edge > 0.0) || minimumLevel < 0 || minimumLevel > LeafTable<Dim>::DeepestLevel)
   {
     return Status::invalidArgument(
       "CellTree: need a positive edge and 0 <= minimumLevel <= " + std::to_string(LeafTable<Dim>::DeepestLevel));
   }
-  MPI_Comm self = MPI_COMM_SELF;
-  SLTK_RETURN_IF_ERROR(p4estCommunicator(serialCommunicator(), self));
+  MPI_Comm mpiComm = MPI_COMM_SELF;
+  SLTK_RETURN_IF_ERROR(p4estCommunicator(comm, mpiComm));
   auto impl = std::make_unique<Impl>();
+  impl->Comm = &comm;
   impl->Calls.Origin = origin;
   impl->Calls.Edge = edge;
 #ifndef P4_TO_P8
@@ -317,7 +358,7 @@ Status CellTree<Dim>::create(const Point& origin, double edge, int minimumLevel,
 #else
   impl->Connectivity = p8est_connectivity_new_unitcube();
 #endif
-  impl->Forest = p4est_new_ext(self, impl->Connectivity, 0, minimumLevel, 1, sizeof(Data), nullptr, &impl->Calls);
+  impl->Forest = p4est_new_ext(mpiComm, impl->Connectivity, 0, minimumLevel, 1, sizeof(Data), nullptr, &impl->Calls);
   p4est_tree_t* root = onlyTree(impl->Forest);
   for (size_t i = 0; i < root->quadrants.elem_count; ++i)
   {
@@ -347,11 +388,11 @@ long CellTree<Dim>::refine(int maximumLevel, const RefineTest& wants, long mostL
     c.Families = 0;
     p4est_refine_ext(this->P->Forest, 0, -1, refineWanted, nullptr, replaceLeaves);
     total += c.Families;
-    if (mostLeaves >= 0 && this->leafCount() > mostLeaves)
+    if (this->P->anyRank(mostLeaves >= 0 && this->leafCount() > mostLeaves))
     {
       return -1;
     }
-  } while (c.Families > 0);
+  } while (this->P->anyRank(c.Families > 0));
   return total;
 }
 
@@ -366,10 +407,10 @@ long CellTree<Dim>::coarsen(int minimumLevel, const CoarsenTest& wants)
   do
   {
     c.Families = 0;
-    this->P->ensureTable(); // the tree as this pass starts
+    this->P->refresh(); // the tree as this pass starts, with the ghosts' levels
     p4est_coarsen_ext(this->P->Forest, 0, 0, coarsenWanted, nullptr, replaceLeaves);
     total += c.Families;
-  } while (c.Families > 0);
+  } while (this->P->anyRank(c.Families > 0));
   return total;
 }
 
@@ -380,28 +421,70 @@ void CellTree<Dim>::balance()
 }
 
 template <>
+void CellTree<Dim>::partition()
+{
+  if (this->P->distributed())
+  {
+    p4est_partition_ext(this->P->Forest, 1, nullptr); // 1: a family stays on one rank
+  }
+}
+
+template <>
+std::int64_t CellTree<Dim>::globalLeafCount() const
+{
+  return static_cast<std::int64_t>(this->P->Forest->global_num_quadrants);
+}
+
+template <>
 void CellTree<Dim>::leaves(LeafGraph<Dim>& graph, std::vector<Data*>& data) const
 {
   const Callbacks& c = this->P->Calls;
-  this->P->ensureTable();
+  this->P->refresh();
+  const p4est_t* forest = this->P->Forest;
   p4est_tree_t* root = onlyTree(this->P->Forest);
-  const size_t n = root->quadrants.elem_count;
+  const size_t owned = root->quadrants.elem_count;
+  p4est_ghost_t* ghost = this->P->Ghost;
+  const size_t n = owned + (ghost ? ghost->ghosts.elem_count : 0);
+  graph.Owned = static_cast<int>(owned);
   graph.Centres.resize(n);
   graph.Sizes.resize(n);
   graph.Levels.resize(n);
-  data.resize(n);
-  graph.Offsets.assign(1, 0);
-  graph.Neighbours.clear();
-  for (size_t i = 0; i < n; ++i)
+  graph.GlobalIds.resize(n);
+  data.resize(owned);
+  const auto describe = [&](size_t i, const p4est_quadrant_t* q, std::int64_t globalId)
   {
-    const p4est_quadrant_t* q = p4est_quadrant_array_index(&root->quadrants, i);
     graph.Centres[i] = c.centre(q);
     graph.Sizes[i] = c.size(q);
     graph.Levels[i] = q->level;
+    graph.GlobalIds[i] = globalId;
+  };
+  const std::int64_t first = static_cast<std::int64_t>(forest->global_first_quadrant[forest->mpirank]);
+  for (size_t i = 0; i < owned; ++i)
+  {
+    const p4est_quadrant_t* q = p4est_quadrant_array_index(&root->quadrants, i);
+    describe(i, q, first + static_cast<std::int64_t>(i));
     data[i] = &dataOf(q);
+  }
+  for (int rank = 0; ghost && rank < forest->mpisize; ++rank)
+  {
+    for (p4est_locidx_t g = ghost->proc_offsets[rank]; g < ghost->proc_offsets[rank + 1]; ++g)
+    {
+      const p4est_quadrant_t* q = p4est_quadrant_array_index(&ghost->ghosts, static_cast<size_t>(g));
+      describe(owned + static_cast<size_t>(g), q,
+        static_cast<std::int64_t>(forest->global_first_quadrant[rank]) + q->p.piggy3.local_num);
+    }
+  }
+  graph.Offsets.assign(1, 0);
+  graph.Neighbours.clear();
+  const auto inGlobalOrder = [&graph](int a, int b)
+  { return graph.GlobalIds[static_cast<size_t>(a)] < graph.GlobalIds[static_cast<size_t>(b)]; };
+  for (size_t i = 0; i < n; ++i)
+  {
+    const p4est_quadrant_t* q = i < owned ? p4est_quadrant_array_index(&root->quadrants, i)
+                                          : p4est_quadrant_array_index(&ghost->ghosts, i - owned);
     const auto begin = static_cast<std::ptrdiff_t>(graph.Neighbours.size());
     appendNeighbours(this->P->Table, q->level, indexAtLevel(q), graph.Neighbours);
-    std::sort(graph.Neighbours.begin() + begin, graph.Neighbours.end());
+    std::sort(graph.Neighbours.begin() + begin, graph.Neighbours.end(), inGlobalOrder);
     graph.Neighbours.erase(
       std::unique(graph.Neighbours.begin() + begin, graph.Neighbours.end()), graph.Neighbours.end());
     graph.Offsets.push_back(static_cast<int>(graph.Neighbours.size()));
@@ -412,7 +495,10 @@ template <>
 void CellTree<Dim>::locate(const std::vector<Point>& points, std::vector<int>& leaf) const
 {
   const Callbacks& c = this->P->Calls;
-  this->P->ensureTable();
+  if (!this->P->distributed())
+  {
+    this->P->refresh(); // on several ranks leaves() did, collectively
+  }
   leaf.resize(points.size());
   for (size_t k = 0; k < points.size(); ++k)
   {
@@ -423,6 +509,60 @@ void CellTree<Dim>::locate(const std::vector<Point>& points, std::vector<int>& l
     }
     leaf[k] = this->P->Table.locate(t);
   }
+}
+
+template <>
+void CellTree<Dim>::owners(const std::vector<Point>& points, std::vector<int>& rank) const
+{
+  const Callbacks& c = this->P->Calls;
+  p4est_t* forest = this->P->Forest;
+  rank.resize(points.size());
+  const double cells = static_cast<double>(std::int64_t(1) << P4EST_QMAXLEVEL);
+  for (size_t k = 0; k < points.size(); ++k)
+  {
+    // The point's cell at p4est's deepest level, clamped as LeafTable::locate clamps.
+    p4est_quadrant_t q;
+    std::memset(&q, 0, sizeof(q));
+    q.level = P4EST_QMAXLEVEL;
+    p4est_qcoord_t at[Dim];
+    for (int a = 0; a < Dim; ++a)
+    {
+      const double t = (points[k][a] - c.Origin[a]) / c.Edge * cells;
+      const double cell = t <= 0.0 ? 0.0 : t >= cells ? cells - 1.0 : std::floor(t);
+      at[a] = static_cast<p4est_qcoord_t>(cell) << (P4EST_MAXLEVEL - P4EST_QMAXLEVEL);
+    }
+    q.x = at[0];
+    q.y = at[1];
+#ifdef P4_TO_P8
+    q.z = at[2];
+#endif
+    rank[k] = p4est_comm_find_owner(forest, 0, &q, forest->mpirank);
+  }
+}
+
+template <>
+void CellTree<Dim>::syncGhostBytes(void* perLeaf, std::size_t bytes) const
+{
+  p4est_ghost_t* ghost = this->P->Ghost;
+  if (!ghost)
+  {
+    return;
+  }
+  auto* base = static_cast<unsigned char*>(perLeaf);
+  std::vector<void*> mirrors(ghost->mirrors.elem_count);
+  for (size_t m = 0; m < mirrors.size(); ++m)
+  {
+    const p4est_quadrant_t* q = p4est_quadrant_array_index(&ghost->mirrors, m);
+    mirrors[m] = base + static_cast<size_t>(q->p.piggy3.local_num) * bytes;
+  }
+  p4est_ghost_exchange_custom(this->P->Forest, this->P->Ghost, bytes, mirrors.data(),
+    base + static_cast<size_t>(this->P->Forest->local_num_quadrants) * bytes);
+}
+
+template <>
+const Communicator& CellTree<Dim>::communicator() const
+{
+  return *this->P->Comm;
 }
 
 template <>

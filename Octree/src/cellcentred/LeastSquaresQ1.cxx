@@ -69,8 +69,8 @@ template <int D>
 void fitLeastSquaresQ1(const LeafGraph<D>& graph, const std::vector<double>& values, const Context& ctx,
   std::vector<CellPolynomial<D>>& polynomials)
 {
-  polynomials.resize(static_cast<size_t>(graph.size()));
-  ctx.parallelFor(0, graph.size(),
+  polynomials.resize(static_cast<size_t>(graph.size())); // a ghost's is its owner's: CellTree::syncGhosts
+  ctx.parallelFor(0, graph.Owned,
     [&](Index b, Index e)
     {
       for (Index i = b; i < e; ++i)

@@ -24,7 +24,7 @@ namespace octree
 template <int D>
 CellPolynomial<D> fitLeastSquaresQ1(const LeafGraph<D>& graph, const std::vector<double>& values, int i);
 
-/// (5.5) for every leaf.
+/// (5.5) for every leaf of this rank (`values` given at its ghosts too).
 template <int D>
 void fitLeastSquaresQ1(const LeafGraph<D>& graph, const std::vector<double>& values, const Context& ctx,
   std::vector<CellPolynomial<D>>& polynomials);

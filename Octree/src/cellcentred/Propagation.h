@@ -6,7 +6,12 @@
 /// step every neighbour x_j of D^m takes min over the neighbours x_k in D^m
 /// of |x_j - xhat_k| when that is below its q_j, and the leaves so lowered
 /// form D^{m+1}, until D is empty. Each step reads D^m's references as they
-/// were at its start (a Jacobi sweep), as (5.8) is written.
+/// were at its start (a Jacobi sweep), as (5.8) is written, and D^m is taken
+/// in the global Morton order (ties go to the first leaf of that order).
+/// On several ranks each rank lowers its own leaves; after each step the
+/// ghosts' distances and references come from their owners, those lowered
+/// join D^{m+1}, and the propagation ends when D is empty on every rank: the
+/// same distances and references as on one rank.
 
 #include "CellTree.h"
 
@@ -44,12 +49,14 @@ struct Propagation
 template <int D>
 void resetPropagation(int leaves, Propagation<D>& state);
 
-/// Runs (5.8)-(5.9) from `front` (D^0). Distances at or beyond `limit` are
+/// Runs (5.8)-(5.9) from `front` (D^0: this rank's leaves; the ghosts of
+/// D^0 are found from their owners). Distances at or beyond `limit` are
 /// not propagated (the leaf keeps +infinity): the reinitialisation needs
-/// them only below gamma. Returns the number of steps.
+/// them only below gamma. `tree` (the tree of `graph`) is needed on several
+/// ranks, and then the call is collective. Returns the number of steps.
 template <int D>
 int propagate(const LeafGraph<D>& graph, std::vector<int> front, Propagation<D>& state,
-  double limit = std::numeric_limits<double>::infinity());
+  double limit = std::numeric_limits<double>::infinity(), const CellTree<D>* tree = nullptr);
 
 } // namespace octree
 } // namespace sltk

@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #pragma once
 /// \file CellCentredReconstruction.h
-/// The thesis's own adaptive reconstruction (chapter 5), on one process: a
-/// p4est quadtree (2D) or p8est octree (3D) whose leaves carry phi and d at their centres (5.1.2),
+/// The thesis's own adaptive reconstruction (chapter 5), distributed over
+/// MPI ranks by p4est's partition: a p4est quadtree (2D) or p8est octree (3D)
+/// whose leaves carry phi and d at their centres (5.1.2),
 /// adapted every iteration (refine where |phi| < beta, coarsen where flat,
 /// 2:1 balance; new values from the parent's polynomial, 5.2.2, (5.6)), the
-/// SL step (5.4) with feet located in the tree (a hash table of its leaves
-/// where the thesis uses p4est_search_local, CellTree.h) and interpolated by
+/// SL step (5.4) with feet located in the tree (a hash table of a rank's
+/// leaves and ghosts where the thesis uses p4est_search_local, CellTree.h;
+/// the feet in other ranks' leaves answered by their owners in one batched
+/// exchange per step, PointValues.h) and interpolated by
 /// the least-squares Q1 polynomial of the leaf they fall in (5.5),
 /// derivatives from the leaf's polynomial, d by the propagation (5.8)-(5.9),
 /// and Saye's closest-point reinitialisation followed by the propagation of
@@ -15,9 +18,11 @@
 /// It exists to compare like for like with the thesis's chapter 5 tables
 /// (bench/BenchOctreeCellCentred.cxx, Documentation/Octree.md); the library's
 /// octree output (vtkOctreeSDF, `--octree`) is the tiled band, which keeps a
-/// continuous zero level set. Serial: the distributed version (feet of other
-/// ranks answered through p4est_search_partition) is not built.
+/// continuous zero level set. On any number of ranks it gives what it gives
+/// on one: the same leaves, iterations and values (sums are added in the
+/// one-rank order; Documentation/Octree.md).
 
+#include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 #include "sltk/octree/CellPolynomial.h"
 #include "sltk/recon/ReconstructionPlan.h"
@@ -41,7 +46,7 @@ struct CellCentredOptions
   /// Delta x_min of run 1 (unit-box units): Delta_P / 2^L0 with L0 of (5.10).
   double FirstCellSize = 0.0;
   int MinimumLevel = 2; ///< the coarsest leaves of the tree
-  /// Bytes the tree may take (CellCentredBytesPerLeaf a leaf); 0: the memory available.
+  /// Bytes a rank's part of the tree may take (CellCentredBytesPerLeaf a leaf); 0: the memory available.
   std::uint64_t MemoryBudget = 0;
 };
 
@@ -93,18 +98,22 @@ struct CellCentredResult
   std::vector<CellCentredLeaf<D>> Leaves;
 };
 
-/// Runs plan.Options.Runs runs on the plan's cloud (unit box), from its
-/// initial ellipsoid (InitialGuess::BoundingSphere or BoundingEllipsoid),
-/// with its schedule, beta and gamma factors and stopping rule. Refused
-/// (outOfMemory) when the tree outgrows the memory available.
+/// Runs plan.Options.Runs runs on the plan's cloud (unit box, the whole
+/// cloud on every rank), from its initial ellipsoid
+/// (InitialGuess::BoundingSphere or BoundingEllipsoid), with its schedule,
+/// beta and gamma factors and stopping rule, over the ranks of `comm`
+/// (collective: every rank passes the same plan). result.Leaves holds this
+/// rank's leaves; the runs and the history are every rank's. Refused
+/// (outOfMemory) when a rank's part of the tree outgrows its memory; a
+/// failure on one rank is returned on every rank.
 template <int D>
 Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentredOptions& options, const Context& ctx,
-  CellCentredResult<D>& result);
+  CellCentredResult<D>& result, const Communicator& comm = serialCommunicator());
 
 extern template Status reconstructCellCentred(
-  const ReconstructionPlan<2>&, const CellCentredOptions&, const Context&, CellCentredResult<2>&);
+  const ReconstructionPlan<2>&, const CellCentredOptions&, const Context&, CellCentredResult<2>&, const Communicator&);
 extern template Status reconstructCellCentred(
-  const ReconstructionPlan<3>&, const CellCentredOptions&, const Context&, CellCentredResult<3>&);
+  const ReconstructionPlan<3>&, const CellCentredOptions&, const Context&, CellCentredResult<3>&, const Communicator&);
 
 } // namespace octree
 } // namespace sltk
