@@ -397,36 +397,41 @@ long CellTree<Dim>::refine(int maximumLevel, const RefineTest& wants, long mostL
 }
 
 template <>
-long CellTree<Dim>::coarsen(int minimumLevel, const CoarsenTest& wants)
-{
-  Callbacks& c = this->P->Calls;
-  c.Level = minimumLevel;
-  c.Coarsen = &wants;
-  c.Leaves = &this->P->Table;
-  long total = 0;
-  do
-  {
-    c.Families = 0;
-    this->P->refresh(); // the tree as this pass starts, with the ghosts' levels
-    p4est_coarsen_ext(this->P->Forest, 0, 0, coarsenWanted, nullptr, replaceLeaves);
-    total += c.Families;
-  } while (this->P->anyRank(c.Families > 0));
-  return total;
-}
-
-template <>
-void CellTree<Dim>::balance()
-{
-  p4est_balance_ext(this->P->Forest, P4EST_CONNECT_FULL, nullptr, replaceLeaves);
-}
-
-template <>
 void CellTree<Dim>::partition()
 {
   if (this->P->distributed())
   {
     p4est_partition_ext(this->P->Forest, 1, nullptr); // 1: a family stays on one rank
   }
+}
+
+template <>
+long CellTree<Dim>::coarsen(int minimumLevel, const CoarsenTest& wants)
+{
+  Callbacks& c = this->P->Calls;
+  c.Level = minimumLevel;
+  c.Coarsen = &wants;
+  c.Leaves = &this->P->Table;
+  for (long total = 0;;)
+  {
+    c.Families = 0;
+    this->P->refresh(); // the tree as this pass starts, with the ghosts' levels
+    p4est_coarsen_ext(this->P->Forest, 0, 0, coarsenWanted, nullptr, replaceLeaves);
+    total += c.Families;
+    if (!this->P->anyRank(c.Families > 0))
+    {
+      return total;
+    }
+    // The new parents' families may straddle two ranks: bring each onto one,
+    // so that the next pass merges what one rank would.
+    this->partition();
+  }
+}
+
+template <>
+void CellTree<Dim>::balance()
+{
+  p4est_balance_ext(this->P->Forest, P4EST_CONNECT_FULL, nullptr, replaceLeaves);
 }
 
 template <>

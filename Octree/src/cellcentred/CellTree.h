@@ -94,9 +94,10 @@ public:
   long leafCount() const;
   /// The number of leaves of all ranks.
   std::int64_t globalLeafCount() const;
-  /// Coarsens the families above `minimumLevel` that `wants` (a family lies
-  /// on one rank: partition() keeps it there), recursively, until no rank
-  /// coarsens any. Collective.
+  /// Coarsens the families above `minimumLevel` that `wants`, one level a
+  /// pass, until no rank coarsens any, with partition() before every pass
+  /// but the first (the caller's), so that every family lies on one rank and
+  /// the passes merge what they merge on one rank. Collective.
   long coarsen(int minimumLevel, const CoarsenTest& wants);
   /// 2:1 balance across faces, edges and corners. Collective.
   void balance();

@@ -20,33 +20,22 @@ void resetPropagation(int leaves, Propagation<D>& state)
 namespace
 {
 
-/// A leaf's state as the ghost exchange carries it.
-template <int D>
-struct Reached
-{
-  double Distance;
-  std::array<double, D> Reference;
-};
-
 /// On several ranks: the ghosts' states from their owners; the ghosts whose
 /// distance fell (lowered on their owner in the last step, or D^0 there)
 /// are appended to `front`. Returns whether any rank's front is not empty.
+/// Its cost is the ghosts' and the mirrors', not the leaves'.
 template <int D>
-bool exchangeGhosts(const LeafGraph<D>& graph, const CellTree<D>& tree, Propagation<D>& state, std::vector<int>& front)
+bool exchangeGhosts(const LeafGraph<D>& graph, const CellTree<D>& tree, Propagation<D>& state, std::vector<int>& front,
+  std::vector<double>& before)
 {
-  const size_t n = static_cast<size_t>(graph.size());
-  std::vector<Reached<D>> reached(n);
-  for (size_t i = 0; i < n; ++i)
+  const size_t owned = static_cast<size_t>(graph.Owned), n = static_cast<size_t>(graph.size());
+  before.assign(state.Distance.begin() + static_cast<std::ptrdiff_t>(owned), state.Distance.end());
+  tree.syncGhosts(state.Distance);
+  tree.syncGhosts(state.Reference);
+  for (size_t i = owned; i < n; ++i)
   {
-    reached[i] = { state.Distance[i], state.Reference[i] };
-  }
-  tree.syncGhosts(reached);
-  for (size_t i = static_cast<size_t>(graph.Owned); i < n; ++i)
-  {
-    if (reached[i].Distance < state.Distance[i])
+    if (state.Distance[i] < before[i - owned])
     {
-      state.Distance[i] = reached[i].Distance;
-      state.Reference[i] = reached[i].Reference;
       front.push_back(static_cast<int>(i));
     }
   }
@@ -70,8 +59,9 @@ int propagate(
   { return graph.GlobalIds[static_cast<size_t>(a)] < graph.GlobalIds[static_cast<size_t>(b)]; };
   std::vector<Candidate> candidates;
   std::vector<int> next;
+  std::vector<double> before;
   int steps = 0;
-  bool going = distributed ? exchangeGhosts(graph, *tree, state, front) : !front.empty();
+  bool going = distributed ? exchangeGhosts(graph, *tree, state, front, before) : !front.empty();
   while (going)
   {
     ++steps;
@@ -108,7 +98,7 @@ int propagate(
     std::sort(next.begin(), next.end());
     next.erase(std::unique(next.begin(), next.end()), next.end());
     front.swap(next);
-    going = distributed ? exchangeGhosts(graph, *tree, state, front) : !front.empty();
+    going = distributed ? exchangeGhosts(graph, *tree, state, front, before) : !front.empty();
   }
   return steps;
 }
