@@ -318,7 +318,9 @@ int main(int argc, char** argv)
   if (!args.Cloud.empty())
   {
     sltk::PointCloud<3> cloud;
-    if (!readXyz(args.Cloud, cloud))
+    const bool read = readXyz(args.Cloud, cloud); // every rank reads it
+    if (!comm->agree(read ? sltk::Status::ok() : sltk::Status::ioError("cannot read a cloud from " + args.Cloud))
+           .isOk())
     {
       std::fprintf(stderr, "cannot read a cloud from %s (x y z per line)\n", args.Cloud.c_str());
       return 2;

@@ -96,9 +96,8 @@ void distanceToCloud(const CellTree<D>& tree, const std::vector<std::array<doubl
       state.Reference[i] = points[k];
     }
   }
-  propagate(s.Graph, front, state, std::numeric_limits<double>::infinity(), &tree);
+  propagate(s.Graph, front, state, std::numeric_limits<double>::infinity(), &tree); // and d at the ghosts
   s.Distance = std::move(state.Distance);
-  tree.syncGhosts(s.Distance);
 }
 
 /// Builds the leaves, their polynomials of phi (5.5), d and its polynomials
@@ -396,8 +395,7 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
       {
         return treeTooLarge(run, level, mostLeaves);
       }
-      // Unless a rank's leaves changed, s holds this tree's leaves, d and phi^n already.
-      if (comm.allReduce(std::int64_t(tree->revision() != described ? 1 : 0), ReduceOp::Max) > 0)
+      if (tree->revision() != described) // else s holds this tree's leaves, d and phi^n already
       {
         describeTree<D>(*tree, points, ctx, s);
         described = tree->revision();

@@ -175,13 +175,10 @@ LeafTable<Dim>::Index indexAtLevel(const p4est_quadrant_t* q)
   return index;
 }
 
-/// The neighbours of the leaf of `level` at `at` (face, edge and corner,
-/// Fig. 5.3), appended to `out`: in each direction o of {-1, 0, 1}^D \ {0},
-/// the leaf of the same level there, or the coarser leaf holding it, or
-/// (2:1 balance) the finer leaves of that cell that touch this one; with
-/// `finerOnly`, only those finer leaves.
-void appendNeighbours(const LeafTable<Dim>& table, int level, const LeafTable<Dim>::Index& at, std::vector<int>& out,
-  bool finerOnly = false)
+/// Calls visit(o, next) for every direction o of {-1, 0, 1}^D \ {0} whose
+/// cell `next`, of the leaf's level next to it, lies in the tree.
+template <class Visit>
+void forEachNeighbourCell(int level, const LeafTable<Dim>::Index& at, Visit&& visit)
 {
   const std::int64_t cells = std::int64_t(1) << level;
   int directions = 1;
@@ -191,62 +188,95 @@ void appendNeighbours(const LeafTable<Dim>& table, int level, const LeafTable<Di
   }
   for (int d = 0; d < directions; ++d)
   {
-    int o[Dim], rest = d, along = 0;
+    std::array<int, Dim> o;
     LeafTable<Dim>::Index next;
-    bool inside = true;
-    for (int a = 0; a < Dim; ++a)
+    bool inside = true, centre = true;
+    for (int a = 0, rest = d; a < Dim; ++a, rest /= 3)
     {
       o[a] = rest % 3 - 1;
-      rest /= 3;
-      along += o[a] == 0 ? 1 : 0;
       const std::int64_t n = static_cast<std::int64_t>(at[a]) + o[a];
       inside = inside && n >= 0 && n < cells;
+      centre = centre && o[a] == 0;
       next[a] = static_cast<std::uint32_t>(n);
     }
-    if (along == Dim || !inside)
+    if (inside && !centre)
     {
-      continue;
-    }
-    int leaf = finerOnly ? -1 : table.find(level, next);
-    if (leaf < 0 && level > 0 && !finerOnly)
-    {
-      LeafTable<Dim>::Index parent;
-      for (int a = 0; a < Dim; ++a)
-      {
-        parent[a] = next[a] >> 1;
-      }
-      leaf = table.find(level - 1, parent);
-    }
-    if (leaf >= 0)
-    {
-      out.push_back(leaf);
-      continue;
-    }
-    for (int k = 0; k < (1 << along); ++k) // the children of `next` on the side of this leaf
-    {
-      LeafTable<Dim>::Index child;
-      int bit = 0;
-      for (int a = 0; a < Dim; ++a)
-      {
-        const std::uint32_t t = o[a] < 0 ? 1u : o[a] > 0 ? 0u : static_cast<std::uint32_t>((k >> bit++) & 1);
-        child[a] = 2 * next[a] + t;
-      }
-      leaf = table.find(level + 1, child);
-      if (leaf >= 0)
-      {
-        out.push_back(leaf);
-      }
+      visit(o, next);
     }
   }
 }
 
-/// Whether a leaf touches a leaf one level finer (by a face, an edge or a corner).
+/// The neighbours of the leaf of `level` at `at` (face, edge and corner,
+/// Fig. 5.3), appended to `out`: in each direction, the leaf of the same
+/// level there, or the coarser leaf holding it, or (2:1 balance) the finer
+/// leaves of that cell that touch this one.
+void appendNeighbours(const LeafTable<Dim>& table, int level, const LeafTable<Dim>::Index& at, std::vector<int>& out)
+{
+  forEachNeighbourCell(level, at,
+    [&](const std::array<int, Dim>& o, const LeafTable<Dim>::Index& next)
+    {
+      int leaf = table.find(level, next);
+      if (leaf < 0 && level > 0)
+      {
+        LeafTable<Dim>::Index parent;
+        for (int a = 0; a < Dim; ++a)
+        {
+          parent[a] = next[a] >> 1;
+        }
+        leaf = table.find(level - 1, parent);
+      }
+      if (leaf >= 0)
+      {
+        out.push_back(leaf);
+        return;
+      }
+      int along = 0;
+      for (int a = 0; a < Dim; ++a)
+      {
+        along += o[a] == 0 ? 1 : 0;
+      }
+      for (int k = 0; k < (1 << along); ++k) // the children of `next` on the side of this leaf
+      {
+        LeafTable<Dim>::Index child;
+        int bit = 0;
+        for (int a = 0; a < Dim; ++a)
+        {
+          const std::uint32_t t = o[a] < 0 ? 1u : o[a] > 0 ? 0u : static_cast<std::uint32_t>((k >> bit++) & 1);
+          child[a] = 2 * next[a] + t;
+        }
+        leaf = table.find(level + 1, child);
+        if (leaf >= 0)
+        {
+          out.push_back(leaf);
+        }
+      }
+    });
+}
+
+/// Whether a leaf touches finer leaves (by a face, an edge or a corner): a
+/// neighbouring cell of its size that is neither a leaf nor inside a coarser
+/// leaf is divided. Before the balance a neighbour may be several levels
+/// finer or coarser.
 bool hasFinerNeighbour(const LeafTable<Dim>& table, const p4est_quadrant_t* q)
 {
-  thread_local std::vector<int> found;
-  found.clear();
-  appendNeighbours(table, q->level, indexAtLevel(q), found, true); // the finer ones only
-  return !found.empty();
+  const int level = q->level;
+  bool finer = false;
+  forEachNeighbourCell(level, indexAtLevel(q),
+    [&](const std::array<int, Dim>&, const LeafTable<Dim>::Index& next)
+    {
+      bool whole = false; // a leaf of this level or a coarser one holds the cell
+      for (int l = level; l >= 0 && !whole && !finer; --l)
+      {
+        LeafTable<Dim>::Index ancestor;
+        for (int a = 0; a < Dim; ++a)
+        {
+          ancestor[a] = next[a] >> (level - l);
+        }
+        whole = table.find(l, ancestor) >= 0;
+      }
+      finer = finer || !whole;
+    });
+  return finer;
 }
 
 } // namespace celltree2 or celltree3
@@ -286,12 +316,19 @@ struct CellTree<Dim>::Impl
 
   bool distributed() const { return this->Comm->size() > 1; }
 
+  /// The ghosts of the last refresh(): proc_offsets' count, not the array's,
+  /// which p4est 2.2's expansion can leave longer (fixed upstream after 2.2).
+  size_t ghostCount() const
+  {
+    return this->Ghost ? static_cast<size_t>(this->Ghost->proc_offsets[this->Forest->mpisize]) : 0;
+  }
+
   /// The leaves of the current tree, and on several ranks a new ghost layer,
-  /// in Table: collective on several ranks (the other ranks' changes reach
-  /// the ghosts only so), by the revision counter on one.
+  /// in Table, when the tree changed (p4est's revision counter, the same on
+  /// every rank: it moves on a global change). Collective on several ranks.
   void refresh() const
   {
-    if (!this->distributed() && this->TableRevision == this->Forest->revision)
+    if (this->TableRevision == this->Forest->revision)
     {
       return;
     }
@@ -306,7 +343,7 @@ struct CellTree<Dim>::Impl
       }
       this->Ghost = p4est_ghost_new(this->Forest, P4EST_CONNECT_FULL);
       p4est_ghost_expand(this->Forest, this->Ghost); // two layers: ClosestPointReinit.h's seeds
-      ghosts = this->Ghost->ghosts.elem_count;
+      ghosts = this->ghostCount();
     }
     this->Table.reset(owned + ghosts);
     for (size_t i = 0; i < owned; ++i)
@@ -377,13 +414,21 @@ long CellTree<Dim>::leafCount() const
 }
 
 template <>
+void CellTree<Dim>::partition()
+{
+  if (this->P->distributed())
+  {
+    p4est_partition_ext(this->P->Forest, 1, nullptr); // 1: a family stays on one rank
+  }
+}
+
+template <>
 long CellTree<Dim>::refine(int maximumLevel, const RefineTest& wants, long mostLeaves)
 {
   Callbacks& c = this->P->Calls;
   c.Level = std::min(maximumLevel, LeafTable<Dim>::DeepestLevel);
   c.Refine = &wants;
-  long total = 0;
-  do // one level at a time, so that the children's values are set before they are tested
+  for (long total = 0;;) // one level at a time, so that the children's values are set before they are tested
   {
     c.Families = 0;
     p4est_refine_ext(this->P->Forest, 0, -1, refineWanted, nullptr, replaceLeaves);
@@ -392,16 +437,11 @@ long CellTree<Dim>::refine(int maximumLevel, const RefineTest& wants, long mostL
     {
       return -1;
     }
-  } while (this->P->anyRank(c.Families > 0));
-  return total;
-}
-
-template <>
-void CellTree<Dim>::partition()
-{
-  if (this->P->distributed())
-  {
-    p4est_partition_ext(this->P->Forest, 1, nullptr); // 1: a family stays on one rank
+    if (!this->P->anyRank(c.Families > 0))
+    {
+      return total;
+    }
+    this->partition(); // the next level's leaves shared out again: the budget is each rank's
   }
 }
 
@@ -449,7 +489,7 @@ void CellTree<Dim>::leaves(LeafGraph<Dim>& graph, std::vector<Data*>& data) cons
   p4est_tree_t* root = onlyTree(this->P->Forest);
   const size_t owned = root->quadrants.elem_count;
   p4est_ghost_t* ghost = this->P->Ghost;
-  const size_t n = owned + (ghost ? ghost->ghosts.elem_count : 0);
+  const size_t n = owned + this->P->ghostCount();
   graph.Owned = static_cast<int>(owned);
   graph.Centres.resize(n);
   graph.Sizes.resize(n);

@@ -123,7 +123,8 @@ public:
     this->syncGhostBytes(perLeaf.data(), sizeof(T));
   }
   const Communicator& communicator() const;
-  /// p4est's revision counter of this rank's part: unchanged while its leaves are.
+  /// p4est's revision counter: unchanged while the tree is (p4est moves it
+  /// on every rank when any rank's leaves change).
   long revision() const;
   /// The deepest level a tree may reach.
   static int deepestLevel();

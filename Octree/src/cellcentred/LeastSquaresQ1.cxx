@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "LeastSquaresQ1.h"
 
+#include <limits>
+
 #include <Eigen/Dense>
 
 namespace sltk
@@ -69,7 +71,12 @@ template <int D>
 void fitLeastSquaresQ1(const LeafGraph<D>& graph, const std::vector<double>& values, const Context& ctx,
   std::vector<CellPolynomial<D>>& polynomials)
 {
-  polynomials.resize(static_cast<size_t>(graph.size())); // a ghost's is its owner's: CellTree::syncGhosts
+  // A ghost's is its owner's (CellTree::syncGhosts): NaN until then, so that
+  // a read before the exchange cannot pass for a value.
+  CellPolynomial<D> unknown;
+  unknown.C.fill(std::numeric_limits<double>::quiet_NaN());
+  polynomials.resize(static_cast<size_t>(graph.Owned));
+  polynomials.resize(static_cast<size_t>(graph.size()), unknown);
   ctx.parallelFor(0, graph.Owned,
     [&](Index b, Index e)
     {

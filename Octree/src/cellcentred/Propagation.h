@@ -11,7 +11,7 @@
 /// On several ranks each rank lowers its own leaves; after each step the
 /// ghosts' distances and references come from their owners, those lowered
 /// join D^{m+1}, and the propagation ends when D is empty on every rank: the
-/// same distances and references as on one rank.
+/// same distances and references as on one rank, the ghosts' included.
 
 #include "CellTree.h"
 
