@@ -39,7 +39,7 @@ Status fastSweepSlabs(GridField<D, double>& window, const std::vector<std::uint8
     total.Converged = total.Converged && swept.Converged;
     bool changed = false;
     exchangeGhostRows(window, slab, comm, &changed);
-    if (comm.allReduce(static_cast<std::int64_t>(changed ? 1 : 0), ReduceOp::Max) == 0)
+    if (!comm.anyRank(changed))
     {
       break;
     }

@@ -50,7 +50,7 @@ Status markExternalSlabs(const GridField<D, double>& distance, double threshold,
           mark = static_cast<std::uint8_t>(mark | from[k]);
         }
       });
-    if (comm.allReduce(static_cast<std::int64_t>(received ? 1 : 0), ReduceOp::Max) == 0)
+    if (!comm.anyRank(received))
     {
       break;
     }

@@ -211,7 +211,7 @@ Status semiLagrangianStep(const CellTree<D>& tree, const TreeState<D>& s, const 
 template <int D>
 bool tooManyLeaves(const CellTree<D>& tree, long mostLeaves)
 {
-  return tree.communicator().allReduce(std::int64_t(tree.leafCount() > mostLeaves ? 1 : 0), ReduceOp::Max) > 0;
+  return tree.communicator().anyRank(tree.leafCount() > mostLeaves);
 }
 
 /// (5.6), first arrow: refine where |phi| < beta up to the run's level,

@@ -186,7 +186,7 @@ double cellCloudError(const std::vector<std::array<double, D>>& points, const st
     }
   }
   std::vector<double> error(points.size(), 0.0);
-  for (const auto& at : comm.size() > 1 ? comm.allGatherV(local) : local)
+  for (const auto& at : comm.size() > 1 ? comm.allGatherV(local) : std::move(local))
   {
     error[static_cast<size_t>(at.Point)] = at.Error;
   }

@@ -332,8 +332,7 @@ struct CellTree<Dim>::Impl
     {
       return;
     }
-    p4est_tree_t* root = onlyTree(this->Forest);
-    const size_t owned = root->quadrants.elem_count;
+    const size_t owned = static_cast<size_t>(this->Forest->local_num_quadrants);
     size_t ghosts = 0;
     if (this->distributed())
     {
@@ -346,23 +345,20 @@ struct CellTree<Dim>::Impl
       ghosts = this->ghostCount();
     }
     this->Table.reset(owned + ghosts);
-    for (size_t i = 0; i < owned; ++i)
+    for (size_t i = 0; i < owned + ghosts; ++i)
     {
-      const p4est_quadrant_t* q = p4est_quadrant_array_index(&root->quadrants, i);
+      const p4est_quadrant_t* q = this->quadrant(i);
       this->Table.insert(q->level, indexAtLevel(q), static_cast<int>(i));
-    }
-    for (size_t g = 0; g < ghosts; ++g)
-    {
-      const p4est_quadrant_t* q = p4est_quadrant_array_index(&this->Ghost->ghosts, g);
-      this->Table.insert(q->level, indexAtLevel(q), static_cast<int>(owned + g));
     }
     this->TableRevision = this->Forest->revision;
   }
 
-  /// Whether any rank's `local` is true (collective on several ranks).
-  bool anyRank(bool local) const
+  /// Leaf i of the last refresh(): this rank's below its leaf count, then the ghosts.
+  const p4est_quadrant_t* quadrant(size_t i) const
   {
-    return !this->distributed() ? local : this->Comm->allReduce(std::int64_t(local ? 1 : 0), ReduceOp::Max) > 0;
+    const size_t owned = static_cast<size_t>(this->Forest->local_num_quadrants);
+    return i < owned ? p4est_quadrant_array_index(&onlyTree(this->Forest)->quadrants, i)
+                     : p4est_quadrant_array_index(&this->Ghost->ghosts, i - owned);
   }
 };
 
@@ -433,11 +429,11 @@ long CellTree<Dim>::refine(int maximumLevel, const RefineTest& wants, long mostL
     c.Families = 0;
     p4est_refine_ext(this->P->Forest, 0, -1, refineWanted, nullptr, replaceLeaves);
     total += c.Families;
-    if (this->P->anyRank(mostLeaves >= 0 && this->leafCount() > mostLeaves))
+    if (this->P->Comm->anyRank(mostLeaves >= 0 && this->leafCount() > mostLeaves))
     {
       return -1;
     }
-    if (!this->P->anyRank(c.Families > 0))
+    if (!this->P->Comm->anyRank(c.Families > 0))
     {
       return total;
     }
@@ -458,7 +454,7 @@ long CellTree<Dim>::coarsen(int minimumLevel, const CoarsenTest& wants)
     this->P->refresh(); // the tree as this pass starts, with the ghosts' levels
     p4est_coarsen_ext(this->P->Forest, 0, 0, coarsenWanted, nullptr, replaceLeaves);
     total += c.Families;
-    if (!this->P->anyRank(c.Families > 0))
+    if (!this->P->Comm->anyRank(c.Families > 0))
     {
       return total;
     }
@@ -486,9 +482,8 @@ void CellTree<Dim>::leaves(LeafGraph<Dim>& graph, std::vector<Data*>& data) cons
   const Callbacks& c = this->P->Calls;
   this->P->refresh();
   const p4est_t* forest = this->P->Forest;
-  p4est_tree_t* root = onlyTree(this->P->Forest);
-  const size_t owned = root->quadrants.elem_count;
-  p4est_ghost_t* ghost = this->P->Ghost;
+  const size_t owned = static_cast<size_t>(forest->local_num_quadrants);
+  const p4est_ghost_t* ghost = this->P->Ghost;
   const size_t n = owned + this->P->ghostCount();
   graph.Owned = static_cast<int>(owned);
   graph.Centres.resize(n);
@@ -506,17 +501,17 @@ void CellTree<Dim>::leaves(LeafGraph<Dim>& graph, std::vector<Data*>& data) cons
   const std::int64_t first = static_cast<std::int64_t>(forest->global_first_quadrant[forest->mpirank]);
   for (size_t i = 0; i < owned; ++i)
   {
-    const p4est_quadrant_t* q = p4est_quadrant_array_index(&root->quadrants, i);
+    const p4est_quadrant_t* q = this->P->quadrant(i);
     describe(i, q, first + static_cast<std::int64_t>(i));
     data[i] = &dataOf(q);
   }
-  for (int rank = 0; ghost && rank < forest->mpisize; ++rank)
+  for (int rank = 0; ghost && rank < forest->mpisize; ++rank) // ghosts by owner, owner's index
   {
     for (p4est_locidx_t g = ghost->proc_offsets[rank]; g < ghost->proc_offsets[rank + 1]; ++g)
     {
-      const p4est_quadrant_t* q = p4est_quadrant_array_index(&ghost->ghosts, static_cast<size_t>(g));
-      describe(owned + static_cast<size_t>(g), q,
-        static_cast<std::int64_t>(forest->global_first_quadrant[rank]) + q->p.piggy3.local_num);
+      const size_t i = owned + static_cast<size_t>(g);
+      const p4est_quadrant_t* q = this->P->quadrant(i);
+      describe(i, q, static_cast<std::int64_t>(forest->global_first_quadrant[rank]) + q->p.piggy3.local_num);
     }
   }
   graph.Offsets.assign(1, 0);
@@ -525,8 +520,7 @@ void CellTree<Dim>::leaves(LeafGraph<Dim>& graph, std::vector<Data*>& data) cons
   { return graph.GlobalIds[static_cast<size_t>(a)] < graph.GlobalIds[static_cast<size_t>(b)]; };
   for (size_t i = 0; i < n; ++i)
   {
-    const p4est_quadrant_t* q = i < owned ? p4est_quadrant_array_index(&root->quadrants, i)
-                                          : p4est_quadrant_array_index(&ghost->ghosts, i - owned);
+    const p4est_quadrant_t* q = this->P->quadrant(i);
     const auto begin = static_cast<std::ptrdiff_t>(graph.Neighbours.size());
     appendNeighbours(this->P->Table, q->level, indexAtLevel(q), graph.Neighbours);
     std::sort(graph.Neighbours.begin() + begin, graph.Neighbours.end(), inGlobalOrder);

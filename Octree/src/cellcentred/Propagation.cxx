@@ -39,7 +39,7 @@ bool exchangeGhosts(const LeafGraph<D>& graph, const CellTree<D>& tree, Propagat
       front.push_back(static_cast<int>(i));
     }
   }
-  return tree.communicator().allReduce(std::int64_t(front.empty() ? 0 : 1), ReduceOp::Max) > 0;
+  return tree.communicator().anyRank(!front.empty());
 }
 
 } // namespace

@@ -116,6 +116,8 @@ public:
     this->allReduce(&value, 1, op);
     return value;
   }
+  /// Whether `local` holds on any rank: the loop tests every rank must take alike.
+  bool anyRank(bool local) const { return this->allReduce(std::int64_t(local ? 1 : 0), ReduceOp::Max) > 0; }
 
   /// Every rank's elements, in rank order (T trivially copyable);
   /// `counts` (optional) receives the element count of every rank.
