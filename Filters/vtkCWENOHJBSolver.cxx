@@ -337,7 +337,8 @@ int vtkCWENOHJBSolver::RequestData(
   {
     t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
   }
-  sltk::ThreadPool pool(this->NumberOfThreads);
+  sltk::ThreadPool pool(sltk::threadsPerRank(this->NumberOfThreads, this->Communicator ? this->Communicator->size() : 1));
+  this->ThreadsUsed = pool.size();
   sltk::vtkbridge::AlgorithmInterrupter progress(this);
   sltk::Context ctx;
   ctx.Executor = &pool;

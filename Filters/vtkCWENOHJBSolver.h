@@ -114,9 +114,13 @@ public:
   ///@}
 
   ///@{
-  /// Threads; 0 means all hardware threads. Default 0.
+  /// Threads of this rank; 0 (the default) means the cores this process may use shared among
+  /// the MPI ranks on its machine, at most VTK_SMP_MAX_THREADS (sltk::threadsPerRank, the rule
+  /// of every front end).
   vtkSetMacro(NumberOfThreads, int);
   vtkGetMacro(NumberOfThreads, int);
+  /// The threads the last execution ran on this rank.
+  vtkGetMacro(ThreadsUsed, int);
   ///@}
 
   enum ControlSetType
@@ -261,6 +265,7 @@ protected:
   double CourantNumber = 0.0;
   int Interpolator = CWENOZ;
   int NumberOfThreads = 0;
+  int ThreadsUsed = 0;
   char* DynamicsX = nullptr;
   char* DynamicsY = nullptr;
   char* DynamicsZ = nullptr;

@@ -433,7 +433,8 @@ int vtkSLLevelSetReconstruct::RequestData(
     vtkErrorMacro(<< ranges.message());
     return 0;
   }
-  sltk::ThreadPool pool(this->NumberOfThreads);
+  sltk::ThreadPool pool(sltk::threadsPerRank(this->NumberOfThreads, comm->size()));
+  this->ThreadsUsed = pool.size();
   sltk::vtkbridge::AlgorithmInterrupter progress(this);
   sltk::vtkbridge::VTKLogger logger;
   sltk::Context ctx;

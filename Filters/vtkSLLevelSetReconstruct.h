@@ -276,9 +276,13 @@ public:
   ///@}
 
   ///@{
-  /// Threads used by the solver; 0 means all hardware threads. Default 0.
+  /// Threads of this rank; 0 (the default) means the cores this process may use shared among
+  /// the MPI ranks on its machine, at most VTK_SMP_MAX_THREADS (sltk::threadsPerRank, the rule
+  /// of every front end).
   vtkSetMacro(NumberOfThreads, int);
   vtkGetMacro(NumberOfThreads, int);
+  /// The threads the last execution ran on this rank.
+  vtkGetMacro(ThreadsUsed, int);
   ///@}
 
 protected:
@@ -309,6 +313,7 @@ protected:
   int Padding = 10;
   int InitialGuess = OUTSIDE_MARKING;
   int NumberOfThreads = 0;
+  int ThreadsUsed = 0;
   double FinalEta = 1.0;
   std::vector<double> RunSchedule; ///< p, eta of run 1, p, eta of run 2, ...
   bool RemoveOutliers = false;

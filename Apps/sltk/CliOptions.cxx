@@ -190,7 +190,7 @@ CLI::Option* addInterpolatorOption(
 CLI::Option* addThreadsOption(CLI::App* app, int& threads)
 {
   return addNumber(app, "--threads", threads,
-    "threads (default 0: all; under mpirun, the cores shared by the\nranks on a node; at most 1024)")
+    "threads (default 0: the cores shared by the ranks on a node,\nat most VTK_SMP_MAX_THREADS; at most 1024)")
     ->check(within(0, 1024))
     ->option_text("T");
 }

@@ -111,7 +111,7 @@ int Hjb::run() const
   solver->SetFinalTime(this->FinalTime);
   solver->SetCourantNumber(this->Courant);
   solver->SetInterpolator(static_cast<int>(this->Interpolator));
-  solver->SetNumberOfThreads(MpiSession::threadsPerRank(this->Threads));
+  solver->SetNumberOfThreads(this->Threads); // the filter shares the cores among the ranks
   // Each rank computes its block of the grid; rank 0 also collects the whole image when it writes one .vti.
   const int rank = MpiSession::rank(), ranks = MpiSession::size();
   if (ranks > 1 && (pieces || rank > 0))

@@ -257,7 +257,7 @@ int Reconstruct::run() const
   filter->SetNumberOfRuns(o.Runs);
   filter->SetMaximumNumberOfIterations(o.MaxIterations);
   filter->SetInitialGuess(static_cast<int>(o.Guess));
-  filter->SetNumberOfThreads(MpiSession::threadsPerRank(this->Threads));
+  filter->SetNumberOfThreads(this->Threads); // the filter shares the cores among the ranks
   filter->SetFinalEta(this->Eta);
   for (const sltk::RunParameters& run : o.Schedule)
   {

@@ -1,16 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "MpiSession.h"
 
-#include "sltk/exec/Memory.h"
-
 #include <vtkCommunicator.h>
 #include <vtkMPIController.h>
 #include <vtkMultiProcessController.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <thread>
 
 namespace sltkcli
 {
@@ -67,16 +63,6 @@ int MpiSession::size()
 {
   auto* global = vtkMultiProcessController::GetGlobalController();
   return global ? global->GetNumberOfProcesses() : 1;
-}
-
-int MpiSession::threadsPerRank(int requested)
-{
-  if (requested > 0 || size() < 2)
-  {
-    return requested;
-  }
-  // The ranks on this node share its cores.
-  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / sltk::ranksSharingThisMachine(size()));
 }
 
 double MpiSession::maxOverRanks(double value)

@@ -29,9 +29,6 @@ public:
   /// This process's rank and the rank count (0 and 1 without a launcher).
   static int rank();
   static int size();
-  /// The threads a rank uses for --threads `requested`: as given, or (0, all the cores) the
-  /// cores of the node shared by the ranks on it, at least 1 (without a launcher: `requested`).
-  static int threadsPerRank(int requested);
   /// The largest `value` over the ranks (a collective call: every rank makes it).
   static double maxOverRanks(double value);
 

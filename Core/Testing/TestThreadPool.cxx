@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cstdlib>
 #include <cmath>
 #include <vector>
 
@@ -104,4 +106,26 @@ TEST(Context, InjectedInterrupterIsUsed)
   ctx.Progress = &stop;
   EXPECT_FALSE(ctx.interrupter().wasInterrupted(0.25));
   EXPECT_TRUE(ctx.interrupter().wasInterrupted(0.5));
+}
+
+// The one thread rule of every front end (ThreadPool.h): an explicit count
+// wins; else the cores shared among the ranks on this machine, capped by
+// VTK_SMP_MAX_THREADS. Each test runs in its own process (gtest_discover_tests).
+TEST(ThreadPool, ThreadsPerRankShareTheCoresAndHonourTheCap)
+{
+  ::unsetenv("VTK_SMP_MAX_THREADS");
+  ::unsetenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+  ::unsetenv("MPI_LOCALNRANKS");
+  const int cores = sltk::threadsPerRank(0, 1);
+  EXPECT_GE(cores, 1);
+  EXPECT_EQ(sltk::threadsPerRank(3, 2), 3);
+  EXPECT_EQ(sltk::threadsPerRank(0, 2), std::max(1, cores / 2)); // no launcher's count: both ranks here
+  ::setenv("OMPI_COMM_WORLD_LOCAL_SIZE", "1", 1);                 // the other rank on another machine
+  EXPECT_EQ(sltk::threadsPerRank(0, 2), cores);
+  ::setenv("VTK_SMP_MAX_THREADS", "1", 1);
+  EXPECT_EQ(sltk::threadsPerRank(0, 1), 1);
+  EXPECT_EQ(sltk::ThreadPool(0).size(), 1);
+  EXPECT_EQ(sltk::threadsPerRank(4, 1), 4); // the explicit property is not capped
+  ::setenv("VTK_SMP_MAX_THREADS", "0", 1);  // VTK's "no cap"
+  EXPECT_EQ(sltk::threadsPerRank(0, 1), cores);
 }

@@ -4,7 +4,12 @@ needs them asks) gives each rank its block plus that many rows of the
 neighbour's on each inner side, flagged in vtkGhostType (DUPLICATEPOINT and
 DUPLICATECELL beyond the block), holding the one-rank values; the surface is
 contoured without them (the same piece at every ghost level)
-(Documentation/Distributed.md)."""
+(Documentation/Distributed.md). Each rank runs the threads of the one thread
+rule (sltk::threadsPerRank): by default the cores this process may use shared
+by the ranks on its machine, at most VTK_SMP_MAX_THREADS; on a 2-core node,
+one a rank."""
+import os
+
 from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 from vtkmodules.vtkParallelCore import vtkDummyController, vtkMultiProcessController
@@ -21,6 +26,9 @@ cloud.SetPhiResolution(40)
 cloud.Update()
 
 
+threads_used = []
+
+
 def reconstruct(ghost_levels, controller=None):
     recon = sltk.vtkSLLevelSetReconstruct()
     recon.SetInputData(cloud.GetOutput())
@@ -30,10 +38,16 @@ def reconstruct(ghost_levels, controller=None):
         recon.Update()
     else:
         recon.UpdatePiece(rank, ranks, ghost_levels)
+        threads_used.append(recon.GetThreadsUsed())
     return recon.GetOutputDataObject(0), recon.GetOutputDataObject(1)
 
 
 block, piece = reconstruct(0)
+local_ranks = int(os.environ.get("OMPI_COMM_WORLD_LOCAL_SIZE", ranks))
+expected = max(1, len(os.sched_getaffinity(0)) // local_ranks)
+cap = int(os.environ.get("VTK_SMP_MAX_THREADS", "0") or 0)
+expected = min(expected, cap) if cap > 0 else expected
+assert threads_used == [expected], "rank %d runs %s thread(s), not %d" % (rank, threads_used, expected)
 assert block.GetPointData().GetArray(vtkDataSetAttributes.GhostArrayName()) is None, "no ghost level asked, none given"
 whole, _ = reconstruct(0, vtkDummyController())  # the one-rank image, on every rank
 levels = 2

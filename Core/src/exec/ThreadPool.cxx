@@ -1,16 +1,55 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/exec/ThreadPool.h"
 
+#include "sltk/exec/Memory.h"
+
 #include <algorithm>
+#include <cstdlib>
+#ifdef __linux__
+#include <sched.h>
+#endif
 
 namespace sltk
 {
+
+namespace
+{
+/// The cores this process may run on: its CPU affinity where the system tells
+/// it (mpirun's --bind-to narrows it), else the machine's.
+int usableCores()
+{
+#ifdef __linux__
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof(set), &set) == 0 && CPU_COUNT(&set) > 0)
+  {
+    return CPU_COUNT(&set);
+  }
+#endif
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+} // namespace
+
+int threadsPerRank(int requested, int ranks)
+{
+  if (requested > 0)
+  {
+    return requested;
+  }
+  int threads = std::max(1, usableCores() / ranksSharingThisMachine(ranks));
+  if (const char* cap = std::getenv("VTK_SMP_MAX_THREADS"))
+  {
+    const int most = std::atoi(cap);
+    threads = most > 0 ? std::min(threads, most) : threads;
+  }
+  return threads;
+}
 
 ThreadPool::ThreadPool(int threads)
 {
   if (threads <= 0)
   {
-    threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    threads = threadsPerRank(0);
   }
   this->Workers.reserve(static_cast<size_t>(threads - 1));
   for (int t = 1; t < threads; ++t)

@@ -13,7 +13,8 @@
 #include "sltk/levelset/CutOff.h"
 #include "sltk/levelset/Ellipsoid.h"
 #include "sltk/recon/LevelSetStep.h"
-#include "sltk/recon/StoppingRule.h"
+#include "sltk/recon/Reconstruction.h"
+#include "sltk/recon/RunIterations.h"
 
 #include <cmath>
 #include <sstream>
@@ -288,6 +289,145 @@ Index leavesAtLevel(const CellTree<D>& tree, const LeafGraph<D>& g, int level)
   return static_cast<Index>(tree.communicator().allReduce(count, ReduceOp::Sum));
 }
 
+
+/// The band storage of a run on the cell-centred tree (sltk/recon/RunIterations.h):
+/// the tree adapted to the band before every iteration (5.6), the energy on
+/// the leaves' polynomials (CellEnergy.h), the SL step (5.4) and Saye's
+/// reinitialisation with the propagation (5.2.4), each followed by the fits
+/// (5.5). Records are in unit-box units; the leaves at the run's level per
+/// iteration go to FinestLeaves.
+template <int D>
+class CellBand
+{
+public:
+  CellBand(CellTree<D>& tree, TreeState<D>& state, const std::vector<std::array<double, D>>& points,
+    const CellCentredOptions& options, const GridSpec<D>& grid, const BandWidths& widths, int level, long mostLeaves,
+    int run, const Context& ctx)
+    : Tree(tree)
+    , S(state)
+    , Points(points)
+    , Options(options)
+    , Grid(grid)
+    , Widths(widths)
+    , Level(level)
+    , MostLeaves(mostLeaves)
+    , Run(run)
+    , Ctx(ctx)
+  {
+  }
+
+  /// The run's level as a uniform grid over the tree's cube (its cell is Delta x_min, (5.1)).
+  const GridSpec<D>& grid() const { return this->Grid; }
+
+  /// (5.6): the tree adapted to phi^n's band; its leaves, fits and d described again when it changed.
+  Status prepare()
+  {
+    if (!adaptTree(
+          this->Tree, this->Level, this->Options.MinimumLevel, this->Widths.Beta, this->Widths.Gamma, this->MostLeaves))
+    {
+      return treeTooLarge(this->Run, this->Level, this->MostLeaves);
+    }
+    if (this->Tree.revision() != this->Described) // else S holds this tree's leaves, d and phi^n already
+    {
+      describeTree<D>(this->Tree, this->Points, this->Ctx, this->S);
+      this->Described = this->Tree.revision();
+      ++this->TreeChanges;
+    }
+    return Status::ok();
+  }
+
+  Status energy(const EnergyOptions& options, EnergyResult& ep)
+  {
+    const CellEnergy e = cellEnergy(this->S.Graph, this->S.PhiPolynomials, this->S.DistancePolynomials,
+      this->Grid.Spacing[0], options.P, 2.0, this->Ctx, this->Tree.communicator());
+    ep = EnergyResult{};
+    ep.Integral = e.Integral;
+    ep.SecondIntegral = e.SecondIntegral;
+    ep.FrontCells = e.FrontLeaves;
+    ep.Energy = std::pow(e.Integral, 1.0 / options.P);
+    ep.SecondEnergy = std::sqrt(e.SecondIntegral);
+    return Status::ok();
+  }
+
+  double farFraction(double far) const { return this->errors(far).FarFraction; }
+
+  Status step(const LevelSetStepParameters& step)
+  {
+    StepModel m;
+    m.P = step.P;
+    m.Eta = step.Eta;
+    m.Energy = step.Energy;
+    m.TimeStep = step.TimeStep; // (5.12)
+    m.Beta = step.Widths.Beta;
+    m.Gamma = step.Widths.Gamma;
+    m.Singular = 1e-3 * m.TimeStep; // (4.26) with D = 1e-3, alpha = 1, as the uniform step
+    SLTK_RETURN_IF_ERROR(semiLagrangianStep(this->Tree, this->S, m, this->Next));
+    this->Tree.syncGhosts(this->Next);
+    return Status::ok();
+  }
+
+  Status reinitialise()
+  {
+    std::vector<CellPolynomial<D>> polynomials;
+    fitLeastSquaresQ1(this->S.Graph, this->Next, this->Ctx, polynomials);
+    this->Tree.syncGhosts(polynomials); // the ghosts' seeds
+    reinitialiseByClosestPoints(this->S.Graph, polynomials, this->Widths.Gamma, this->Ctx, this->Next, &this->Tree);
+    this->Tree.syncGhosts(this->Next);
+    fitLeastSquaresQ1(this->S.Graph, this->Next, this->Ctx, polynomials);
+    storePhi(this->S, std::move(this->Next), std::move(polynomials));
+    return Status::ok();
+  }
+
+  bool measure(IterationRecord& it, bool interrupted)
+  {
+    it.CloudError = this->errors(0.0).Mean;
+    it.Leaves = static_cast<Index>(this->Tree.globalLeafCount());
+    it.UniformNodes = Index(1) << (D * this->Level);
+    this->FinestLeaves.push_back(leavesAtLevel(this->Tree, this->S.Graph, this->Level));
+    return !this->Tree.communicator().agree(interrupted ? Status::aborted() : Status::ok()).isOk();
+  }
+
+  void finish(RunRecord<D>& record, double far) const
+  {
+    const CellCloudErrors e = this->errors(far);
+    record.FarPoints = e.FarFraction;
+    if (record.Iterations == 0)
+    {
+      record.CloudError = e.Mean;
+    }
+  }
+
+  std::string describe() const
+  {
+    return "; level " + std::to_string(this->Level) + ", " + std::to_string(this->Tree.globalLeafCount()) +
+      " leaves, " + std::to_string(this->TreeChanges) + " iterations changed the tree";
+  }
+
+  int treeChanges() const { return this->TreeChanges; }
+  const std::vector<Index>& finestLeaves() const { return this->FinestLeaves; }
+
+private:
+  CellCloudErrors errors(double far) const
+  {
+    return cellCloudErrors<D>(
+      this->Points, this->S.LeafOfPoint, this->S.PhiPolynomials, this->S.Graph.Owned, far, this->Tree.communicator());
+  }
+
+  CellTree<D>& Tree;
+  TreeState<D>& S;
+  const std::vector<std::array<double, D>>& Points;
+  const CellCentredOptions& Options;
+  const GridSpec<D> Grid;
+  const BandWidths Widths; // beta and gamma (1.56) of the run's Delta x_min
+  const int Level;
+  const long MostLeaves;
+  const int Run;
+  const Context& Ctx;
+  long Described = -1; // the tree's revision that S describes: phi was cut before the run
+  int TreeChanges = 0;
+  std::vector<double> Next; // phi^{n+1} between the step and the reinitialisation
+  std::vector<Index> FinestLeaves;
+};
 } // namespace
 
 template <int D>
@@ -364,98 +504,51 @@ Status reconstructCellCentred(const ReconstructionPlan<D>& plan, const CellCentr
   }
 
   const std::vector<std::array<double, D>>& points = plan.Cloud.Points;
-  std::vector<double> energies;
   const double energyScale = std::pow(plan.Box.Scale, (2.0 + D - 1.0) / 2.0); // the user's units (recordsToUser)
   for (int run = 1; run <= o.Runs; ++run)
   {
     const int level = cube.FirstLevel + run - 1;
-    const double dx = cube.Edge / std::ldexp(1.0, level); // (5.1)
-    const RunParameters model = o.parameters(run);
-    StepModel m;
-    m.P = model.P;
-    m.Eta = model.Eta;
-    m.TimeStep = dx; // (5.12)
-    m.Beta = o.BetaFactor * dx;
-    m.Gamma = o.GammaFactor * dx;
-    m.Singular = 1e-3 * m.TimeStep; // (4.26) with D = 1e-3, alpha = 1, as the uniform step
-    for (CellData<D>* q : s.Data)   // the previous run's gamma was twice as wide
+    GridSpec<D> grid; // the run's level over the tree's cube: its cell is Delta x_min (5.1)
+    for (int a = 0; a < D; ++a)
     {
-      q->Phi = cutLevel(q->Phi, m.Gamma);
+      grid.Dims[a] = (Index(1) << level) + 1;
+      grid.Spacing[a] = cube.Edge / std::ldexp(1.0, level);
+      grid.Origin[a] = result.DomainOrigin[static_cast<size_t>(a)];
     }
+    const BandWidths widths = BandWidths::forSpacing(grid.Spacing[0], o.BetaFactor, o.GammaFactor);
+    for (CellData<D>* q : s.Data) // the previous run's gamma was twice as wide
+    {
+      q->Phi = cutLevel(q->Phi, widths.Gamma);
+    }
+    // Algorithm 1's iterations, as the uniform grids and the tiled band run them.
+    CellBand<D> band(*tree, s, points, options, grid, widths, level, mostLeaves, run, ctx);
+    ReconstructionResult<D> records;
+    bool vanished = false;
+    const Status status = iterateRun<D>(band, o, run, plan.CloudSpacing, ctx, records, vanished);
+    for (size_t k = 0; k < records.History.size(); ++k)
+    {
+      const IterationRecord& r = records.History[k];
+      CellCentredIteration it;
+      it.Run = run;
+      it.Iteration = r.Iteration;
+      it.Energy = r.Energy * energyScale;
+      it.CloudError = r.CloudError * plan.Box.Scale;
+      it.Leaves = r.Leaves;
+      it.FinestLeaves = band.finestLeaves()[k];
+      it.UniformCells = r.UniformNodes;
+      result.History.push_back(it);
+    }
+    SLTK_RETURN_IF_ERROR(status);
+    const RunRecord<D>& done = records.Runs.back();
     CellCentredRun record;
     record.Run = run;
     record.Level = level;
-    record.CellSize = dx;
-    energies.clear();
-    long described = -1; // the tree's revision that s describes: phi was cut above
-    int n = 0;
-    for (; n < o.MaxIterations; ++n)
-    {
-      if (!adaptTree(*tree, level, options.MinimumLevel, m.Beta, m.Gamma, mostLeaves))
-      {
-        return treeTooLarge(run, level, mostLeaves);
-      }
-      if (tree->revision() != described) // else s holds this tree's leaves, d and phi^n already
-      {
-        describeTree<D>(*tree, points, ctx, s);
-        described = tree->revision();
-        ++record.TreeChanges;
-      }
-      // E_p of phi^n for the scale factor (4.32), E_2 for the stopping rule (4.33).
-      const CellEnergy energy = cellEnergy(s.Graph, s.PhiPolynomials, s.DistancePolynomials, dx, m.P, 2.0, ctx, comm);
-      if (energy.FrontLeaves == 0)
-      {
-        return Status::numericalFailure("run " + std::to_string(run) + ": the zero level set vanished");
-      }
-      m.Energy = std::pow(energy.Integral, 1.0 / m.P);
-      energies.push_back(std::sqrt(energy.SecondIntegral));
-      if (n >= o.MinIterations && energyStalled(energies, o.EnergyWindow, o.Tolerance))
-      {
-        break;
-      }
-      const bool interrupted = ctx.interrupter().wasInterrupted((run - 1 + double(n + 1) / o.MaxIterations) / o.Runs);
-      SLTK_RETURN_IF_ERROR(comm.agree(interrupted ? Status::aborted() : Status::ok()));
-      std::vector<double> phi;
-      SLTK_RETURN_IF_ERROR(semiLagrangianStep(*tree, s, m, phi));
-      tree->syncGhosts(phi);
-      std::vector<CellPolynomial<D>> polynomials;
-      fitLeastSquaresQ1(s.Graph, phi, ctx, polynomials);
-      tree->syncGhosts(polynomials); // the ghosts' seeds
-      reinitialiseByClosestPoints(s.Graph, polynomials, m.Gamma, ctx, phi, tree.get());
-      tree->syncGhosts(phi);
-      fitLeastSquaresQ1(s.Graph, phi, ctx, polynomials);
-      storePhi(s, std::move(phi), std::move(polynomials));
-
-      CellCentredIteration it;
-      it.Run = run;
-      it.Iteration = n + 1;
-      it.Energy = energies.back() * energyScale;
-      it.CloudError = cellCloudError<D>(points, s.LeafOfPoint, s.PhiPolynomials, s.Graph.Owned, comm) * plan.Box.Scale;
-      it.Leaves = static_cast<Index>(tree->globalLeafCount());
-      it.FinestLeaves = leavesAtLevel(*tree, s.Graph, level);
-      it.UniformCells = Index(1) << (D * level);
-      result.History.push_back(it);
-      record.Energy = it.Energy;
-      record.CloudError = it.CloudError;
-      std::ostringstream line;
-      line.precision(4);
-      line << "cell-centred run " << run << " iteration " << n + 1 << ": E_2 " << it.Energy << ", Err_P "
-           << it.CloudError << ", " << it.Leaves << " leaves";
-      if (comm.rank() == 0)
-      {
-        ctx.logger().log(LogLevel::Debug, line.str());
-      }
-    }
-    record.Iterations = n;
+    record.CellSize = grid.Spacing[0];
+    record.Iterations = done.Iterations;
+    record.TreeChanges = band.treeChanges();
+    record.Energy = done.Iterations ? result.History.back().Energy : done.Energy * energyScale;
+    record.CloudError = done.Iterations ? result.History.back().CloudError : done.CloudError * plan.Box.Scale;
     result.Runs.push_back(record);
-    std::ostringstream line;
-    line.precision(4);
-    line << "cell-centred run " << run << " (level " << level << "): " << n << " iterations (" << record.TreeChanges
-         << " changed the tree), E_2 " << record.Energy << ", Err_P " << record.CloudError;
-    if (comm.rank() == 0)
-    {
-      ctx.logger().log(LogLevel::Info, line.str());
-    }
   }
   // s describes the final tree: no adaptation follows the last iteration's
   // described tree. Each rank returns its own leaves.

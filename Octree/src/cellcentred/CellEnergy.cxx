@@ -167,8 +167,8 @@ CellEnergy cellEnergy(const LeafGraph<D>& graph, const std::vector<CellPolynomia
 }
 
 template <int D>
-double cellCloudError(const std::vector<std::array<double, D>>& points, const std::vector<int>& leafOfPoint,
-  const std::vector<CellPolynomial<D>>& phi, int owned, const Communicator& comm)
+CellCloudErrors cellCloudErrors(const std::vector<std::array<double, D>>& points, const std::vector<int>& leafOfPoint,
+  const std::vector<CellPolynomial<D>>& phi, int owned, double far, const Communicator& comm)
 {
   // |p_k(Q)| at the points in this rank's leaves, added in the points' order over all ranks.
   struct PointError
@@ -190,22 +190,29 @@ double cellCloudError(const std::vector<std::array<double, D>>& points, const st
   {
     error[static_cast<size_t>(at.Point)] = at.Error;
   }
-  double sum = 0.0;
+  double sum = 0.0, farCount = 0.0;
   for (const double e : error)
   {
     sum += e;
+    farCount += e > far ? 1.0 : 0.0;
   }
-  return points.empty() ? 0.0 : sum / static_cast<double>(points.size());
+  CellCloudErrors result;
+  if (!points.empty())
+  {
+    result.Mean = sum / static_cast<double>(points.size());
+    result.FarFraction = farCount / static_cast<double>(points.size());
+  }
+  return result;
 }
 
 template CellEnergy cellEnergy(const LeafGraph<2>&, const std::vector<CellPolynomial<2>>&,
   const std::vector<CellPolynomial<2>>&, double, double, double, const Context&, const Communicator&);
 template CellEnergy cellEnergy(const LeafGraph<3>&, const std::vector<CellPolynomial<3>>&,
   const std::vector<CellPolynomial<3>>&, double, double, double, const Context&, const Communicator&);
-template double cellCloudError<2>(const std::vector<std::array<double, 2>>&, const std::vector<int>&,
-  const std::vector<CellPolynomial<2>>&, int, const Communicator&);
-template double cellCloudError<3>(const std::vector<std::array<double, 3>>&, const std::vector<int>&,
-  const std::vector<CellPolynomial<3>>&, int, const Communicator&);
+template CellCloudErrors cellCloudErrors<2>(const std::vector<std::array<double, 2>>&, const std::vector<int>&,
+  const std::vector<CellPolynomial<2>>&, int, double, const Communicator&);
+template CellCloudErrors cellCloudErrors<3>(const std::vector<std::array<double, 3>>&, const std::vector<int>&,
+  const std::vector<CellPolynomial<3>>&, int, double, const Communicator&);
 
 } // namespace octree
 } // namespace sltk

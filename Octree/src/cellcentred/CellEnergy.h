@@ -46,12 +46,20 @@ CellEnergy cellEnergy(const LeafGraph<D>& graph, const std::vector<CellPolynomia
   const std::vector<CellPolynomial<D>>& distance, double finest, double p, double q, const Context& ctx,
   const Communicator& comm);
 
+/// Err_P (4.35) and the far points of the cell-centred tree.
+struct CellCloudErrors
+{
+  double Mean = 0.0;        ///< Err_P: the mean of |p_k(Q)|
+  double FarFraction = 0.0; ///< the share of the points with |p_k(Q)| > far
+};
+
 /// Err_P (4.35): the mean of |p_k(Q)| over the points Q, k the leaf holding Q
-/// (CellTree::locate; the leaves below `owned` are this rank's), over all
-/// ranks of `comm` (collective), added in the points' order.
+/// (CellTree::locate; the leaves below `owned` are this rank's), and the
+/// share of the points farther than `far`, over all ranks of `comm`
+/// (collective), added in the points' order.
 template <int D>
-double cellCloudError(const std::vector<std::array<double, D>>& points, const std::vector<int>& leafOfPoint,
-  const std::vector<CellPolynomial<D>>& phi, int owned, const Communicator& comm);
+CellCloudErrors cellCloudErrors(const std::vector<std::array<double, D>>& points, const std::vector<int>& leafOfPoint,
+  const std::vector<CellPolynomial<D>>& phi, int owned, double far, const Communicator& comm);
 
 } // namespace octree
 } // namespace sltk

@@ -21,10 +21,20 @@
 namespace sltk
 {
 
+/// The threads one of `ranks` MPI ranks runs, the one rule of every front end
+/// (filters, plugin, CLI, pvbatch, pvserver): `requested` when it is > 0 (the
+/// NumberOfThreads property, --threads); else the cores this process may run
+/// on (its CPU affinity, which the launcher's binding narrows) shared equally
+/// among the ranks on this machine (ranksSharingThisMachine, Memory.h), at
+/// least 1, and at most VTK_SMP_MAX_THREADS when that is set to a positive
+/// number (the cap VTK users set for vtkSMPTools).
+int threadsPerRank(int requested, int ranks = 1);
+
 class ThreadPool
 {
 public:
-  /// `threads` <= 0 means std::thread::hardware_concurrency().
+  /// `threads` <= 0 means threadsPerRank(0): every core this process may use,
+  /// at most VTK_SMP_MAX_THREADS.
   explicit ThreadPool(int threads = 0);
   ~ThreadPool();
   ThreadPool(const ThreadPool&) = delete;

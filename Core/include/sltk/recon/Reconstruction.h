@@ -96,15 +96,6 @@ void recordsToUser(const UnitBox<D>& box, ReconstructionResult<D>& result)
   }
 }
 
-/// Runs 1..`runs` of Algorithm 1 on the plan's uniform grids, with the same
-/// recoveries as reconstruct() for run 1 (a wider K_P) but not the finer
-/// restart, and leaves the result in unit-box units (4.5): the first run of
-/// the tiled reconstruction (tiled/TiledReconstruction.h). With several ranks
-/// the runs are split in slabs as reconstruct()'s.
-template <int D>
-Status reconstructFirstRuns(const ReconstructionPlan<D>& plan, int runs, const Context& ctx,
-  ReconstructionResult<D>& result, const Communicator& comm = serialCommunicator());
-
 extern template Status reconstruct(
   const PointCloud<2>&, const ReconstructionOptions&, const Context&, ReconstructionResult<2>&);
 extern template Status reconstruct(
@@ -113,9 +104,5 @@ extern template Status reconstruct(
   const ReconstructionPlan<2>&, const Context&, ReconstructionResult<2>&, const Communicator&);
 extern template Status reconstruct(
   const ReconstructionPlan<3>&, const Context&, ReconstructionResult<3>&, const Communicator&);
-extern template Status reconstructFirstRuns(
-  const ReconstructionPlan<2>&, int, const Context&, ReconstructionResult<2>&, const Communicator&);
-extern template Status reconstructFirstRuns(
-  const ReconstructionPlan<3>&, int, const Context&, ReconstructionResult<3>&, const Communicator&);
 
 } // namespace sltk

@@ -1,0 +1,218 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file RunLoop.h
+/// Algorithm 1's runs (thesis 4.5.2), written once for every storage: run r
+/// on the grid dx = C_dx h_P / 2^(r-1) (4.36), its set-up, its iterations
+/// (RunIterations.h) and, beyond the thesis, the recoveries when a run loses
+/// its zero level set or leaves points far from the surface. The uniform grids
+/// (SlabRuns.h) and the tiled band (tiled/TiledRuns.h) are the storages.
+///
+/// A storage `R` of the runs provides (every call collective):
+///  - `Status setUp(int run, double outsideFactor)`: run `run`'s grid, d and
+///    initial data (run 1 from the cloud with K_P = `outsideFactor`);
+///  - `Status iterate(int run, ReconstructionResult<D>&, bool& vanished)`:
+///    the run's iterations (iterateRun on the storage's band);
+///  - `void advance(int run)`: the run's result becomes the previous run's;
+///  - `Status keepCurrent(int run, ReconstructionResult<D>&)`: the result is
+///    this run's; `void keepFailed(int run, ReconstructionResult<D>&)` keeps
+///    what a failed run reached, where the storage can;
+///  - `Status keepPrevious(int run, ReconstructionResult<D>&)`: the result is
+///    the previous run's (or the reason the storage no longer holds it).
+
+#include "sltk/exec/Communicator.h"
+#include "sltk/exec/Context.h"
+#include "sltk/recon/AutomaticParameters.h"
+#include "sltk/recon/Reconstruction.h"
+#include "sltk/recon/StoppingRule.h"
+#include "sltk/recon/StrayPoints.h"
+
+#include <algorithm>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sltk
+{
+
+namespace detail
+{
+/// Drops the history of `run`: a run that lost its zero level set and is redone or replaced.
+inline void forgetRun(int run, std::vector<IterationRecord>& history)
+{
+  history.erase(std::remove_if(history.begin(), history.end(), [run](const IterationRecord& it) { return it.Run == run; }),
+    history.end());
+}
+
+template <int D>
+void recover(const std::string& what, const Context& ctx, ReconstructionResult<D>& result)
+{
+  ctx.logger().log(LogLevel::Warning, what);
+  result.Recoveries.push_back(what);
+}
+} // namespace detail
+
+/// Runs 1..lastRun of Algorithm 1 with `options` (the plan's, or a finer
+/// start: reconstructWithRecoveries()) on `runs`' storage. A run 1 that loses
+/// its zero level set with an automatic K_P starts again with the ladder's
+/// next K_P (AutomaticParameters.h); a later run that loses it is replaced by
+/// the previous run's result where the storage holds it.
+template <int D, class Runs>
+Status runAlgorithm1(Runs& runs, const ReconstructionPlan<D>& plan, const ReconstructionOptions& options,
+  const Context& ctx, ReconstructionResult<D>& result, int lastRun)
+{
+  double outsideFactor = options.OutsideThresholdFactor;
+  // An automatic K_P may be raised when run 1 loses its zero level set (AutomaticParameters.h).
+  const double outsideRoom = plan.Enclosure ? outsideFactorWithRestart(outsideFactor) : outsideFactor;
+  for (int run = 1; run <= lastRun; ++run)
+  {
+    ctx.interrupter().start("run " + std::to_string(run) + "/" + std::to_string(options.Runs));
+    const Status setUp = runs.setUp(run, outsideFactor);
+    if (!setUp.isOk())
+    {
+      ctx.interrupter().end();
+      return setUp;
+    }
+    bool vanished = false;
+    const Status status = runs.iterate(run, result, vanished);
+    ctx.interrupter().end();
+    const double wider = nextOutsideFactor(outsideFactor);
+    if (vanished && run == 1 && wider > 0.0 && wider <= outsideRoom)
+    {
+      // The initial surface leaked through a hole: start run 1 again from a wider one.
+      detail::recover("run 1 lost its zero level set with the automatic K_P = " + std::to_string(outsideFactor) +
+          "; restarted with K_P = " + std::to_string(wider),
+        ctx, result);
+      detail::forgetRun(1, result.History);
+      outsideFactor = wider;
+      result.OutsideThresholdFactor = wider;
+      run = 0;
+      continue;
+    }
+    if (vanished && run > 1)
+    {
+      // Keep the last run that held a surface rather than fail (its grid is coarser).
+      const Status kept = runs.keepPrevious(run, result);
+      if (kept.isOk())
+      {
+        detail::recover("run " + std::to_string(run) + " lost its zero level set; the result is run " +
+            std::to_string(run - 1) + "'s, on its grid (try a smaller eta in later runs, --schedule)",
+          ctx, result);
+        detail::forgetRun(run, result.History);
+        return kept;
+      }
+      return Status::numericalFailure(status.message() + "; " + kept.message());
+    }
+    if (!status.isOk())
+    {
+      runs.keepFailed(run, result);
+      if (vanished)
+      {
+        const std::string stray = strayPointAdvice(plan.Cloud, ctx);
+        return Status::numericalFailure(
+          status.message() + "; " + (stray.empty() ? "try a larger K_P or a larger eta" : stray));
+      }
+      return status;
+    }
+    if (run < lastRun)
+    {
+      runs.advance(run);
+    }
+  }
+  return runs.keepCurrent(lastRun, result);
+}
+
+/// Every rank must hold the same plan, made from the whole cloud (each rank's
+/// slab boundaries and messages follow from it): its size, h_P, the runs'
+/// grids and a checksum of the points, compared over the ranks.
+template <int D>
+Status samePlanOnEveryRank(const ReconstructionPlan<D>& plan, const Communicator& comm)
+{
+  std::vector<double> print = { static_cast<double>(plan.Cloud.size()), plan.CloudSpacing,
+    static_cast<double>(plan.Grids.Runs.size()), 0.0 };
+  for (const auto& p : plan.Cloud.Points)
+  {
+    for (int a = 0; a < D; ++a)
+    {
+      print[3] += p[a];
+    }
+  }
+  std::int64_t count[2] = { static_cast<std::int64_t>(plan.Grids.Runs.size()), 0 };
+  count[1] = -count[0];
+  comm.allReduce(count, 2, ReduceOp::Max);
+  if (count[0] == -count[1])
+  {
+    for (const GridSpec<D>& g : plan.Grids.Runs)
+    {
+      for (int a = 0; a < D; ++a)
+      {
+        print.insert(print.end(), { static_cast<double>(g.Dims[a]), g.Origin[a], g.Spacing[a] });
+      }
+    }
+  }
+  std::vector<double> low = print, high = print;
+  comm.allReduce(low.data(), low.size(), ReduceOp::Min);
+  comm.allReduce(high.data(), high.size(), ReduceOp::Max);
+  return count[0] == -count[1] && low == high
+    ? Status::ok()
+    : Status::invalidArgument("the ranks hold different clouds or plans (each needs the whole cloud and the same "
+                              "options): give every rank the whole cloud, e.g. a reader that is not split into pieces");
+}
+
+/// Algorithm 1 on the plan with every recovery: `runWith(options, grids)`
+/// runs it (runAlgorithm1 on a fresh storage, filling `records`) with the
+/// plan's options; when C_dx was chosen automatically and more than
+/// FarPointWarning of the points end more than one run-1 cell from the
+/// surface (features thinner than run 1's cells were lost), it runs again from
+/// half the C_dx with one run fewer, which ends on the same finest grid. The
+/// records are returned in the user's units (recordsToUser), with the plan's
+/// choices; the storage's fields are left in unit-box units.
+template <int D, class RunWith>
+Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Context& ctx, const Communicator& comm,
+  ReconstructionResult<D>& records, RunWith&& runWith)
+{
+  records = ReconstructionResult<D>{};
+  if (!plan.Locator || plan.Grids.Runs.size() != static_cast<size_t>(plan.Options.Runs))
+  {
+    return Status::invalidArgument("reconstruct: the plan is incomplete (planReconstruction failed or was not called)");
+  }
+  if (comm.size() > 1)
+  {
+    SLTK_RETURN_IF_ERROR(samePlanOnEveryRank(plan, comm));
+  }
+  const auto start = [&](const ReconstructionOptions& options, const std::vector<GridSpec<D>>& grids)
+  {
+    records.OutsideThresholdFactor = options.OutsideThresholdFactor;
+    records.CellSizeFactor = options.CellSizeFactor;
+    return runWith(options, grids);
+  };
+  Status status = start(plan.Options, plan.Grids.Runs);
+  ReconstructionOptions finer = plan.Options;
+  finer.Runs -= 1;
+  finer.CellSizeFactor /= 2.0;
+  GridPlan<D> finerGrids;
+  if (status.isOk() && plan.AutomaticCellSize && finer.Runs >= 1 && !records.Runs.empty() &&
+    records.Runs.back().FarPoints > FarPointWarning &&
+    comm.agree(planRunGrids(plan, finer.Runs, finer.CellSizeFactor, finerGrids)).isOk()) // machines differ
+  {
+    // Run 1 lost features thinner than its cells: start at half the cell size with
+    // one run fewer, which ends on the same finest grid (the same memory).
+    std::ostringstream what;
+    what << 100.0 * records.Runs.back().FarPoints
+         << "% of the points ended more than one cell of run 1 from the surface with C_dx = "
+         << plan.Options.CellSizeFactor << ": reconstructed again from C_dx = " << finer.CellSizeFactor << " with "
+         << finer.Runs << " run(s), which end on the same finest grid";
+    ctx.logger().log(LogLevel::Warning, what.str());
+    std::vector<std::string> recoveries = std::move(records.Recoveries);
+    recoveries.push_back(what.str());
+    records = ReconstructionResult<D>{};
+    status = start(finer, finerGrids.Runs);
+    records.Recoveries.insert(records.Recoveries.begin(), recoveries.begin(), recoveries.end());
+  }
+  records.CloudSpacing = plan.userCloudSpacing();
+  records.Cleaning = plan.Cleaning;
+  records.Choices = plan.Choices;
+  recordsToUser(plan.Box, records);
+  return status;
+}
+
+} // namespace sltk

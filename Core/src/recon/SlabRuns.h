@@ -1,0 +1,256 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file SlabRuns.h
+/// The runs of Algorithm 1 on uniform grids (RunLoop.h): each run's grid cut
+/// into slabs over the ranks (RunSlab.h; the whole grid on one rank), the
+/// distance to the cloud (4.4.2) and the initial data (4.4.4) of run 1, the
+/// previous run's phi and d interpolated on a later run's grid, and the
+/// iterations on the slab band (SlabBand.h).
+
+#include "sltk/recon/CloudInitialData.h"
+#include "sltk/recon/CloudInitialDataSlabs.h"
+#include "sltk/recon/DistanceFunction.h"
+#include "sltk/recon/LocalOffset.h"
+#include "sltk/interp/Q1.h"
+#include "sltk/recon/SlabPolicy.h"
+
+#include "sltk/recon/RunIterations.h"
+#include "RunSlab.h"
+#include "SlabBand.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sltk
+{
+
+constexpr int PhiGhost = 2; // WENO3 / CWENO stencils (Q1 needs 1)
+
+// The owner of a far foot must hold its stencil: Interp::GhostWidth + 2 rows (footInWindow()).
+static_assert(SlabGhostRows >= PhiGhost + 2, "the owner of a far foot holds its stencil");
+
+/// The previous run's phi (ghosts filled, on `fromSlab`'s window) interpolated
+/// at the owned nodes of `slab`'s window (Q1: monotone); the ghost rows then
+/// come from their owners. Each rank's owned rows lie inside its previous
+/// window with a row to spare (RunSlab::plan cuts a later run's grid near
+/// where the previous run's slabs meet, within laterCutRange(), SlabPolicy.h):
+/// checked.
+template <int D>
+Status transfer(
+  const GridField<D>& from, const RunSlab<D>& fromSlab, const RunSlab<D>& slab, const Context& ctx, GridField<D>& to)
+{
+  const GridSpec<D> grid = slab.window();
+  to.resize(grid, PhiGhost);
+  const Index b = slab.ownedBegin(), e = slab.ownedEnd();
+  if (slab.distributed())
+  {
+    const GridSpec<D>& f = from.spec();
+    const SlabPlan& fs = fromSlab.slab();
+    const double lowest = fs.First > 0 ? f.coordinate(D - 1, 1) : -HUGE_VAL;
+    const double highest = fs.Stop < fromSlab.rows() ? f.coordinate(D - 1, f.Dims[D - 1] - 2) : HUGE_VAL;
+    const double first = grid.coordinate(D - 1, slab.slab().Begin - slab.slab().First);
+    const double last = grid.coordinate(D - 1, slab.slab().End - 1 - slab.slab().First);
+    const Status covered = first >= lowest && last <= highest
+      ? Status::ok()
+      : Status::invalidArgument("the previous run's slab does not cover this run's owned rows (rank " +
+          std::to_string(slab.comm().rank()) + "): run on fewer ranks");
+    SLTK_RETURN_IF_ERROR(slab.agree(covered));
+  }
+  ctx.parallelFor(b, e,
+    [&](Index first, Index stop)
+    {
+      Q1Interpolator<D> interp(from);
+      for (Index k = first; k < stop; ++k)
+      {
+        const auto i = to.nodeIndex(k);
+        double x[D];
+        for (int a = 0; a < D; ++a)
+        {
+          x[a] = grid.coordinate(a, i[a]);
+        }
+        to(i) = interpolate(interp, from.spec(), x);
+      }
+    });
+  slab.exchange(to);
+  return Status::ok();
+}
+
+/// Run 1's phi0 from the distance (4.4.4), with the local offset when the plan has one.
+template <int D>
+Status cloudInitialDataOn(const ReconstructionPlan<D>& plan, double outsideFactor, const GridField<D>& dist,
+  const RunSlab<D>& slab, const Context& ctx, GridField<D>& phi)
+{
+  InitialDataOptions io;
+  io.Ghost = PhiGhost;
+  const double threshold = outsideFactor * plan.CloudSpacing;
+  const auto phi0 = [&](const GridField<D>& u)
+  {
+    return slab.distributed() ? cloudInitialDataSlabs(u, threshold, slab.slab(), slab.rows(), slab.comm(), ctx, phi, io)
+                              : cloudInitialData(u, threshold, ctx, phi, io);
+  };
+  if (plan.Sparsity.empty())
+  {
+    return phi0(dist);
+  }
+  // The local offset K_P h_P rho(x) (LocalOffset.h): the marking and sweeping on u = d / rho.
+  const double sparsest = *std::max_element(plan.Sparsity.begin(), plan.Sparsity.end());
+  const double reach = sparsest * outsideFactor * plan.CloudSpacing;
+  GridField<D> scaled;
+  SLTK_RETURN_IF_ERROR(slab.distributed()
+      ? locallyScaledDistanceSlabs(dist, *plan.Locator, plan.Sparsity, reach, slab.slab(), slab.comm(), ctx, scaled)
+      : locallyScaledDistance(dist, *plan.Locator, plan.Sparsity, reach, ctx, scaled));
+  return phi0(scaled);
+}
+
+/// Initial data of a run: run 1 from the cloud (4.4.4) or an ellipsoid, later
+/// runs from the previous result; cut (1.49) and made a distance near the front.
+template <int D>
+Status initialData(const ReconstructionPlan<D>& plan, double outsideFactor, const GridField<D>& dist,
+  const GridField<D>* previous, const RunSlab<D>* previousSlab, const RunSlab<D>& slab, const Context& ctx,
+  GridField<D>& phi)
+{
+  const ReconstructionOptions& options = plan.Options;
+  const GridSpec<D> grid = slab.window();
+  const double gamma = options.GammaFactor * grid.Spacing[0];
+  if (previous)
+  {
+    SLTK_RETURN_IF_ERROR(transfer(*previous, *previousSlab, slab, ctx, phi));
+  }
+  else if (plan.InitialEllipsoid)
+  {
+    SLTK_RETURN_IF_ERROR(slab.agree(ellipsoidLevelSet(*plan.InitialEllipsoid, grid, ctx, phi, PhiGhost)));
+  }
+  else
+  {
+    SLTK_RETURN_IF_ERROR(cloudInitialDataOn(plan, outsideFactor, dist, slab, ctx, phi));
+  }
+  cutLevelSet(phi, gamma, ctx);
+  if (previous)
+  {
+    NodeList band, wide;
+    std::vector<std::uint8_t> scratch;
+    collectBand(phi, gamma, ctx, band); // the window's: ghost rows' nodes dilate into the owned rows
+    dilateBand(grid, band, options.ReinitDilation, scratch, wide);
+    slab.keepOwned(wide);
+    SLTK_RETURN_IF_ERROR(reinitialiseOn(phi, wide, slab, options.Reinit, ctx));
+    cutLevelSet(phi, wide, gamma, ctx);
+    slab.exchange(phi);
+  }
+  phi.fillGhosts();
+  return Status::ok();
+}
+
+
+/// The uniform storage of the runs (RunLoop.h's `Runs`): phi and d of the
+/// current run and of the previous one on this rank's slabs.
+template <int D, class Interp>
+class SlabRuns
+{
+public:
+  SlabRuns(const ReconstructionPlan<D>& plan, const ReconstructionOptions& options,
+    const std::vector<GridSpec<D>>& grids, const Context& ctx, const Communicator& comm)
+    : Plan(plan)
+    , Options(options)
+    , Grids(grids)
+    , Ctx(ctx)
+    , Exact(plan.Cloud, *plan.Locator)
+    , Slab(comm)
+    , PreviousSlab(comm)
+  {
+  }
+
+  /// Run `run`'s slab, d and initial data: run 1 from the cloud with K_P =
+  /// `outsideFactor`, later runs from the previous run.
+  Status setUp(int run, double outsideFactor)
+  {
+    const GridSpec<D>& grid = this->Grids[static_cast<size_t>(run - 1)];
+    const auto setup = std::chrono::steady_clock::now();
+    SLTK_RETURN_IF_ERROR(this->Slab.plan(grid, this->Plan.Cloud, run > 1 ? &this->PreviousSlab : nullptr));
+    if (run == 1)
+    {
+      DistanceOptions dopt;
+      dopt.Ghost = PhiGhost;
+      const Communicator& comm = this->Slab.comm();
+      SLTK_RETURN_IF_ERROR(this->Slab.distributed()
+          ? distanceToCloudSlabs(*this->Plan.Locator, grid, this->Slab.slab(), comm, this->Ctx, this->Dist, dopt)
+          : distanceToCloud(*this->Plan.Locator, grid, this->Ctx, this->Dist, dopt)); // (4.4.2)
+    }
+    else
+    {
+      // Later runs: d interpolated from the previous run; exact values follow the band.
+      SLTK_RETURN_IF_ERROR(transfer(this->PreviousDist, this->PreviousSlab, this->Slab, this->Ctx, this->Dist));
+      this->Dist.fillGhosts();
+    }
+    const double distanceSeconds = detail::secondsSince(setup);
+    SLTK_RETURN_IF_ERROR(initialData(this->Plan, outsideFactor, this->Dist, run > 1 ? &this->Previous : nullptr,
+      run > 1 ? &this->PreviousSlab : nullptr, this->Slab, this->Ctx, this->Phi));
+    std::ostringstream log;
+    log << "run " << run << ": grid " << grid.nodeCount() << " nodes, distance " << distanceSeconds
+        << " s, initial data " << detail::secondsSince(setup) - distanceSeconds << " s";
+    if (this->Slab.distributed())
+    {
+      const SlabPlan& s = this->Slab.slab();
+      log << "; rank " << this->Slab.comm().rank() << " of " << this->Slab.comm().size() << " owns rows " << s.Begin
+          << ".." << s.End - 1 << " of " << this->Slab.rows() << " (" << s.Ghost << " ghost rows)";
+    }
+    this->Ctx.logger().log(LogLevel::Info, log.str());
+    return Status::ok();
+  }
+
+  Status iterate(int run, ReconstructionResult<D>& result, bool& vanished)
+  {
+    SlabBand<D, Interp> band(this->Plan.Cloud, this->Options, this->Ctx, this->Exact, this->Slab, this->Phi, this->Dist);
+    const Status status = iterateRun<D>(band, this->Options, run, this->Plan.CloudSpacing, this->Ctx, result, vanished);
+    // d was made exact where each rank's band reached: the ghost rows take the
+    // owners' values (the next run interpolates them; the blocks share a row).
+    this->Slab.exchange(this->Dist);
+    return status;
+  }
+
+  /// This run's result becomes the previous run's (the next run's cut follows its band).
+  void advance(int run)
+  {
+    this->Slab.recordBand(this->Phi, this->Options.GammaFactor * this->Grids[static_cast<size_t>(run - 1)].Spacing[0]);
+    this->Previous = std::move(this->Phi);
+    this->PreviousDist = std::move(this->Dist);
+    this->PreviousSlab = this->Slab;
+  }
+
+  /// The result is this run's (also when it failed: what it reached).
+  Status keepCurrent(int, ReconstructionResult<D>& result)
+  {
+    keep(std::move(this->Phi), std::move(this->Dist), this->Slab, result);
+    return Status::ok();
+  }
+  void keepFailed(int run, ReconstructionResult<D>& result) { this->keepCurrent(run, result); }
+
+  /// The result is the previous run's, on its grid.
+  Status keepPrevious(int, ReconstructionResult<D>& result)
+  {
+    keep(std::move(this->Previous), std::move(this->PreviousDist), this->PreviousSlab, result);
+    return Status::ok();
+  }
+
+private:
+  static void keep(GridField<D>&& phi, GridField<D>&& dist, const RunSlab<D>& of, ReconstructionResult<D>& result)
+  {
+    result.SignedDistance = std::move(phi);
+    result.Distance = std::move(dist);
+    result.WholeGrid = of.whole();
+    result.Slab = of.slab();
+  }
+
+  const ReconstructionPlan<D>& Plan;
+  const ReconstructionOptions& Options;
+  const std::vector<GridSpec<D>>& Grids;
+  const Context& Ctx;
+  ExactDistanceCache<D> Exact; // one for all runs
+  GridField<D> Phi, Previous, Dist, PreviousDist;
+  RunSlab<D> Slab, PreviousSlab;
+};
+
+} // namespace sltk
