@@ -151,19 +151,25 @@ static_assert(vtkCWENOHJBSolver::Q1 == static_cast<int>(sltk::InterpolatorKind::
 int vtkCWENOHJBSolver::BuildSolver(vtkInformation* inInfo, vtkImageData* values,
   std::unique_ptr<sltk::HjbSolver>& solver, const sltk::Communicator* comm)
 {
-  // The properties' documented ranges (the plugin XML's domains): refused, never clamped.
+  // The properties' ranges (enumerations here, the others Core's, OptionRanges.h, from which
+  // the plugin XML's domains are made): refused, never clamped.
   sltk::Status status = sltk::vtkbridge::checkPropertyRanges({
     { "Preset", double(this->Preset), CUSTOM, TEST5_ZERMELO },
-    { "NumberOfNodes", double(this->NumberOfNodes), 5, 100000 },
-    { "CourantNumber", this->CourantNumber, 0, 100 },
-    { "NumberOfThreads", double(this->NumberOfThreads), 0, 1024 },
     { "ControlSet", double(this->ControlSet), NO_CONTROL, SPHERE },
-    { "ControlDimension", double(this->ControlDimension), 1, 3 },
     { "RKOrder", double(this->RKOrder), 1, 3 },
-    { "TabulationPoints", double(this->TabulationPoints), 1, 1000 },
-    { "WarmStartPoints", double(this->WarmStartPoints), 0, 15 },
-    { "MinimizerTolerance", this->MinimizerTolerance, 0, 1 },
   });
+  if (status.isOk())
+  {
+    status = sltk::vtkbridge::checkOptionRanges({
+      { "NumberOfNodes", double(this->NumberOfNodes) },
+      { "CourantNumber", this->CourantNumber },
+      { "NumberOfThreads", double(this->NumberOfThreads) },
+      { "ControlDimension", double(this->ControlDimension) },
+      { "TabulationPoints", double(this->TabulationPoints) },
+      { "WarmStartPoints", double(this->WarmStartPoints) },
+      { "MinimizerTolerance", this->MinimizerTolerance },
+    });
+  }
   if (!status.isOk())
   {
     vtkErrorMacro(<< status.message());

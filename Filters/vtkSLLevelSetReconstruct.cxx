@@ -12,6 +12,7 @@
 #include "sltk/cloud/CloudPieces.h"
 #include "sltk/exec/CountingCommunicator.h"
 #include "sltk/exec/Memory.h"
+#include "sltk/recon/OptionRanges.h"
 #include "sltk/recon/Reconstruction.h"
 #include "sltk/tiled/TiledReconstruction.h"
 
@@ -57,6 +58,40 @@ int vtkSLLevelSetReconstruct::FillInputPortInformation(int, vtkInformation* info
   return 1;
 }
 
+namespace
+{
+const sltk::OptionRange* rangeRow(int i)
+{
+  constexpr int rows = static_cast<int>(sizeof(sltk::OptionRanges) / sizeof(sltk::OptionRanges[0]));
+  return i >= 0 && i < rows ? &sltk::OptionRanges[i] : nullptr;
+}
+} // namespace
+
+int vtkSLLevelSetReconstruct::GetNumberOfPropertyRanges()
+{
+  return static_cast<int>(sizeof(sltk::OptionRanges) / sizeof(sltk::OptionRanges[0]));
+}
+
+const char* vtkSLLevelSetReconstruct::GetPropertyRangeName(int i)
+{
+  return rangeRow(i) ? rangeRow(i)->Property : nullptr;
+}
+
+double vtkSLLevelSetReconstruct::GetPropertyRangeMinimum(int i)
+{
+  return rangeRow(i) ? rangeRow(i)->Min : 0.0;
+}
+
+double vtkSLLevelSetReconstruct::GetPropertyRangeMaximum(int i)
+{
+  return rangeRow(i) ? rangeRow(i)->Max : 0.0;
+}
+
+bool vtkSLLevelSetReconstruct::GetPropertyRangeZeroIsAutomatic(int i)
+{
+  return rangeRow(i) && rangeRow(i)->ZeroIsAutomatic;
+}
+
 int vtkSLLevelSetReconstruct::FillOutputPortInformation(int port, vtkInformation* info)
 {
   // Port 0: vtkImageData or, with AdaptiveStorage, vtkHyperTreeGrid (RequestDataObject).
@@ -88,25 +123,26 @@ static_assert(vtkSLLevelSetReconstruct::Q1 == static_cast<int>(sltk::Interpolato
     vtkSLLevelSetReconstruct::CWENOZ == static_cast<int>(sltk::InterpolatorKind::CwenoZ),
   "the filter's InterpolatorType names the registry's codes (InterpolatorKind.h)");
 
-/// The properties' documented ranges (the plugin XML's domains): a value outside
-/// is refused with its name and range, never clamped.
+/// The properties' ranges, Core's (OptionRanges.h: the plugin XML's domains are
+/// made from them): a value outside is refused with its name and range, never clamped.
 sltk::Status checkRanges(vtkSLLevelSetReconstruct* self)
 {
-  return sltk::vtkbridge::checkPropertyRanges({
-    { "NumberOfRuns", double(self->GetNumberOfRuns()), 1, 6 },
-    { "MaximumNumberOfIterations", double(self->GetMaximumNumberOfIterations()), 1, 100000 },
-    { "Tolerance", self->GetTolerance(), 0, 1 },
-    { "Padding", double(self->GetPadding()), 4, 1000 },
-    { "InitialGuess", double(self->GetInitialGuess()), 0, 2 },
-    { "FinalEta", self->GetFinalEta(), 0, 100 },
-    { "OutlierDeviations", self->GetOutlierDeviations(), 0.5, 100 },
-    { "ThinningFactor", self->GetThinningFactor(), 0, 100 },
-    { "NumberOfThreads", double(self->GetNumberOfThreads()), 0, 1024 },
-    { "CellSizeFactor", self->GetCellSizeFactor(), sltk::CellSizeFactorRange[0], sltk::CellSizeFactorRange[1], true },
-    { "MaximumLevel", double(self->GetMaximumLevel()), double(sltk::MaximumLevelRange[0]),
-      double(sltk::MaximumLevelRange[1]), true },
-    { "OutsideThresholdFactor", self->GetOutsideThresholdFactor(), sltk::OutsideThresholdFactorRange[0],
-      sltk::OutsideThresholdFactorRange[1], true },
+  SLTK_RETURN_IF_ERROR(sltk::vtkbridge::checkPropertyRanges({
+    { "InitialGuess", double(self->GetInitialGuess()), 0, 2 }, // an enumeration
+  }));
+  return sltk::vtkbridge::checkOptionRanges({
+    { "NumberOfRuns", double(self->GetNumberOfRuns()) },
+    { "MaximumNumberOfIterations", double(self->GetMaximumNumberOfIterations()) },
+    { "Tolerance", self->GetTolerance() },
+    { "Padding", double(self->GetPadding()) },
+    { "FinalEta", self->GetFinalEta() },
+    { "OutlierDeviations", self->GetOutlierDeviations() },
+    { "ThinningFactor", self->GetThinningFactor() },
+    { "NumberOfThreads", double(self->GetNumberOfThreads()) },
+    { "CellSizeFactor", self->GetCellSizeFactor() },
+    { "MaximumLevel", double(self->GetMaximumLevel()) },
+    { "OutsideThresholdFactor", self->GetOutsideThresholdFactor() },
+    { "MemoryBudget", double(self->GetMemoryBudget()) },
   });
 }
 
@@ -135,10 +171,6 @@ sltk::Status optionsOf(vtkSLLevelSetReconstruct* self, sltk::ReconstructionOptio
   {
     // Table 4.1 with eta of runs >= 3 replaced (noisy data: Fig. 4.8, 4.11).
     o.Schedule = { sltk::table41(1), sltk::table41(2), { sltk::table41(3).P, self->GetFinalEta() } };
-  }
-  if (self->GetMemoryBudget() < 0)
-  {
-    return sltk::Status::invalidArgument("MemoryBudget must be >= 0 MB (0: automatic)");
   }
   o.MemoryBudget = static_cast<std::uint64_t>(self->GetMemoryBudget()) << 20;
   o.Cleaning.Automatic = self->GetAutomaticCleaning();

@@ -56,6 +56,18 @@ public:
   vtkTypeMacro(vtkSLLevelSetReconstruct, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  ///@{
+  /// Core's table of the options' ranges (sltk/recon/OptionRanges.h), the one
+  /// source of the filters' checks, the CLI's and the plugin XML's domains: row
+  /// `i`'s property, its range and whether its 0 means automatic (the
+  /// reconstruction's and vtkCWENOHJBSolver's properties).
+  static int GetNumberOfPropertyRanges();
+  static const char* GetPropertyRangeName(int i);
+  static double GetPropertyRangeMinimum(int i);
+  static double GetPropertyRangeMaximum(int i);
+  static bool GetPropertyRangeZeroIsAutomatic(int i);
+  ///@}
+
   /// Spatial reconstruction used at the feet of the characteristics.
   enum InterpolatorType
   {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "CliOptions.h"
 
+#include "sltk/recon/OptionRanges.h"
+
 #include "sltk/core/LowerCase.h"
 
 #include <algorithm>
@@ -110,6 +112,21 @@ CLI::Validator within(double low, double high, bool lowOpen)
   return check.non_modifying();
 }
 
+CLI::Validator withinRange(const char* property)
+{
+  const sltk::OptionRange* r = sltk::findOptionRange(property);
+  std::ostringstream range;
+  range << "in [" << r->Min << ", " << r->Max << "]" << (r->ZeroIsAutomatic ? " (or 0: automatic)" : "");
+  CLI::Validator check(
+    [r, text = range.str()](std::string& input)
+    {
+      const double v = std::stod(input); // a number: addNumber's transform ran first
+      return sltk::inOptionRange(*r, v) ? std::string() : "must be " + text + ", got " + input;
+    },
+    "");
+  return check.non_modifying();
+}
+
 CLI::Option* addNumberList(CLI::App* app, const std::string& name, std::vector<double>& values, size_t minCount,
   size_t maxCount, const std::string& description)
 {
@@ -191,7 +208,7 @@ CLI::Option* addThreadsOption(CLI::App* app, int& threads)
 {
   return addNumber(app, "--threads", threads,
     "threads (default 0: the cores shared by the ranks on a node,\nat most VTK_SMP_MAX_THREADS; at most 1024)")
-    ->check(within(0, 1024))
+    ->check(withinRange("NumberOfThreads"))
     ->option_text("T");
 }
 
@@ -217,7 +234,7 @@ void addPlanOptions(CLI::App* app, sltk::ReconstructionOptions& options)
     "level L - R + 1 (5.10)")
     ->option_text("L")
     ->excludes("--cdx")
-    ->check(within(sltk::MaximumLevelRange[0], sltk::MaximumLevelRange[1]));
+    ->check(withinRange("MaximumLevel"));
   addNumber(app, "--kp", options.OutsideThresholdFactor,
     "K_P: initial surface at K h_P from the cloud (default: automatic,\nthe K of 2-32, at least 2 C_dx, that encloses "
     "the most; the "
@@ -226,10 +243,10 @@ void addPlanOptions(CLI::App* app, sltk::ReconstructionOptions& options)
   app
     ->add_option_function<double>(
       "--memory-budget", [&options](double mb) { options.MemoryBudget = static_cast<std::uint64_t>(mb * 1048576.0); },
-      "MB for the automatic C_dx (default 1024); with --cdx, grids beyond it\nare refused (default: the memory "
+      "MB for the automatic C_dx (default 0: 1024); with --cdx, grids beyond\nit are refused (default: the memory "
       "available; under mpirun, for the windows\nof the ranks on each machine)")
     ->transform(numberText(false))
-    ->check(within(16, 1e8))
+    ->check(withinRange("MemoryBudget"))
     ->option_text("MB");
   app->add_flag_callback(
     "--uniform-offset", [&options]() { options.LocalOffset = false; },

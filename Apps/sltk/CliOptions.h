@@ -27,6 +27,8 @@ CLI::Option* addNumber(CLI::App* app, const std::string& name, int& value, const
 
 /// A check of an addNumber option: "must be in [low, high], got x" (`lowOpen`: (low, high]).
 CLI::Validator within(double low, double high = std::numeric_limits<double>::infinity(), bool lowOpen = false);
+/// The range of a property in Core's table (sltk/recon/OptionRanges.h), as the filters check it.
+CLI::Validator withinRange(const char* property);
 
 /// "v1,v2,...": minCount to maxCount finite numbers, stored in `values` (kept when the option is absent).
 CLI::Option* addNumberList(CLI::App* app, const std::string& name, std::vector<double>& values, size_t minCount,

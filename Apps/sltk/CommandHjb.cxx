@@ -208,14 +208,14 @@ Command addHjbCommand(CLI::App& sltk)
     "| test5 (Zermelo with\nobstacles, 2D)   (default test1)")
     ->option_text("NAME");
   addNumber(app, "--n", command->N, "preset: nodes per direction, 5 to 100000 (default 81)")
-    ->check(within(5, 100000))
+    ->check(withinRange("NumberOfNodes"))
     ->option_text("N");
   addNumber(app, "--final-time", command->FinalTime, "final time (default: the preset's; 0 gives the initial datum)")
     ->check(within(0))
     ->option_text("T");
   addNumber(app, "--courant", command->Courant,
-    "dt = L dx, L in (0, 100] (default: the preset's; custom: 1,\ndx the smallest spacing)")
-    ->check(within(0, 100, true))
+    "dt = L dx, L in [0, 100] (default 0: the preset's; custom: 1,\ndx the smallest spacing)")
+    ->check(withinRange("CourantNumber"))
     ->option_text("L");
   addInterpolatorOption(app, command->Interpolator, "cwenoz");
   addThreadsOption(app, command->Threads);

@@ -553,17 +553,17 @@ Command addReconstructCommand(CLI::App& sltk)
     ->option_text("FILE");
   addInterpolatorOption(app, o.Interpolator, "weno3", &o.LeastSquaresQ1);
   addPlanOptions(app, o);
-  app->get_option("--cdx")->check(within(sltk::CellSizeFactorRange[0], sltk::CellSizeFactorRange[1]));
-  app->get_option("--kp")->check(within(sltk::OutsideThresholdFactorRange[0], sltk::OutsideThresholdFactorRange[1]));
-  app->get_option("--runs")->check(within(1, 6));
-  app->get_option("--outlier-sigma")->check(within(0.5, 100))->needs("--remove-outliers");
-  app->get_option("--thin")->check(within(0, 100));
+  app->get_option("--cdx")->check(withinRange("CellSizeFactor"));
+  app->get_option("--kp")->check(withinRange("OutsideThresholdFactor"));
+  app->get_option("--runs")->check(withinRange("NumberOfRuns"));
+  app->get_option("--outlier-sigma")->check(withinRange("OutlierDeviations"))->needs("--remove-outliers");
+  app->get_option("--thin")->check(withinRange("ThinningFactor"));
   addNumber(app, "--max-iterations", o.MaxIterations, "iteration cap per run (default 100)")
-    ->check(within(1))
+    ->check(withinRange("MaximumNumberOfIterations"))
     ->option_text("N");
   addNumber(
     app, "--eta", command->Eta, "eta of runs >= 3 (Table 4.1: 1); larger smooths noisy scans\n(thesis Fig. 4.8)")
-    ->check(within(0, 100))
+    ->check(withinRange("FinalEta"))
     ->option_text("E");
   app
     ->add_option_function<std::string>(

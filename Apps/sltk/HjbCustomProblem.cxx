@@ -83,7 +83,7 @@ void HjbCustomProblem::addOptions(CLI::App* app)
     "none | box | ball | sphere (default none: pure transport)")
     ->option_text("KIND");
   addNumber(app, "--control-dim", this->ControlDimension, "dimension of a = (a1, ..., aM) (default 1)")
-    ->check(within(1, 3))
+    ->check(withinRange("ControlDimension"))
     ->option_text("M");
   addNumberList(app, "--control-lower", this->Lower, 1, 3, "box corner (default -1)")->option_text("A,...");
   addNumberList(app, "--control-upper", this->Upper, 1, 3, "box corner (default 1)")->option_text("A,...");
@@ -94,15 +94,15 @@ void HjbCustomProblem::addOptions(CLI::App* app)
     ->option_text("1|2|3");
   addNumber(app, "--tabulation", this->Tabulation,
     "tabulated controls per axis of A before the local search\n(1 to 1000, default 33)")
-    ->check(within(1, 1000))
+    ->check(withinRange("TabulationPoints"))
     ->option_text("N");
   addNumber(app, "--warm-start", this->WarmStart,
     "after the first step, search a coarse N^q grid of A and an N^q\ngrid around each node's previous argmin "
     "instead of tabulating A\n(0 to 15, default 0: off; 5 suits Test 4)")
-    ->check(within(0, 15))
+    ->check(withinRange("WarmStartPoints"))
     ->option_text("N");
   addNumber(app, "--tolerance", this->Tolerance, "local search tolerance, in [0, 1] (default 1e-8)")
-    ->check(within(0, 1))
+    ->check(withinRange("MinimizerTolerance"))
     ->option_text("TOL");
   app->add_flag("--reach", this->Reach, "write ReachTime also without an obstacle");
   const std::vector<CLI::Option*> options = app->get_options();

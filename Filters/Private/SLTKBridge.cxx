@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SLTKBridge.h"
 
+#include "sltk/recon/OptionRanges.h"
+
 #include <sstream>
 
 #include "sltk/core/OrList.h"
@@ -65,6 +67,18 @@ Status checkPropertyRanges(std::initializer_list<PropertyRange> ranges)
         << (r.ZeroIsAutomatic ? ", or 0 for automatic" : "");
       return Status::invalidArgument(m.str());
     }
+  }
+  return Status::ok();
+}
+
+Status checkOptionRanges(std::initializer_list<PropertyValue> values)
+{
+  for (const PropertyValue& v : values)
+  {
+    const OptionRange* range = findOptionRange(v.Name);
+    SLTK_RETURN_IF_ERROR(range ? checkOptionRange(*range, v.Value, v.Name)
+                               : Status::invalidArgument(std::string("the property ") + v.Name +
+                                   " has no range in Core's table (OptionRanges.h): a defect, please report it"));
   }
   return Status::ok();
 }

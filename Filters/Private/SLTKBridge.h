@@ -47,8 +47,21 @@ struct PropertyRange
 };
 
 /// The first property outside its range, refused with its name and range
-/// (a value is never clamped); ok when all are inside.
+/// (a value is never clamped); ok when all are inside. For enumerations; the
+/// ranges of the other options are Core's (checkOptionRanges).
 Status checkPropertyRanges(std::initializer_list<PropertyRange> ranges);
+
+/// A filter property's value.
+struct PropertyValue
+{
+  const char* Name;
+  double Value;
+};
+
+/// The first property outside its row of Core's table (sltk/recon/OptionRanges.h,
+/// which the plugin XML's domains are made from), refused with its name and
+/// range; ok when all are inside.
+Status checkOptionRanges(std::initializer_list<PropertyValue> values);
 
 /// Progress and abort of a vtkAlgorithm: UpdateProgress + AbortExecute.
 class AlgorithmInterrupter final : public Interrupter

@@ -7,6 +7,7 @@
 #include "sltk/grid/GridSpec.h"
 #include "sltk/interp/InterpolatorKind.h"
 #include "sltk/levelset/ReinitOptions.h"
+#include "sltk/recon/OptionRanges.h"
 
 #include <vector>
 
@@ -42,12 +43,13 @@ inline RunParameters table41(int run)
   return { 2.0, 1.0 };
 }
 
-/// The ranges of C_dx and K_P given explicitly (0 is automatic), shared by the
-/// CLI, the filters' property checks and validateReconstructionOptions().
-constexpr double CellSizeFactorRange[2] = { 0.05, 100.0 };
-constexpr double OutsideThresholdFactorRange[2] = { 0.1, 100.0 };
-/// The finest octree levels a plan may ask for (0: C_dx decides).
-constexpr int MaximumLevelRange[2] = { 1, 30 };
+/// The ranges of C_dx, K_P and the finest octree level given explicitly (0 is
+/// automatic; OptionRanges.h holds every option's range).
+constexpr double CellSizeFactorRange[2] = { optionRange("CellSizeFactor").Min, optionRange("CellSizeFactor").Max };
+constexpr double OutsideThresholdFactorRange[2] = { optionRange("OutsideThresholdFactor").Min,
+  optionRange("OutsideThresholdFactor").Max };
+constexpr int MaximumLevelRange[2] = { static_cast<int>(optionRange("MaximumLevel").Min),
+  static_cast<int>(optionRange("MaximumLevel").Max) };
 
 struct ReconstructionOptions
 {
