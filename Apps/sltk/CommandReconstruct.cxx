@@ -39,6 +39,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -114,6 +115,9 @@ struct Reconstruct
   bool Octree = false; ///< AdaptiveStorage: runs 2..R stored as tiles around the front
   bool given(const char* name) const { return this->Parser->count(name) > 0; }
   std::string problemBeforeWork(bool pieces, vtkPolyData* reference, int& code) const;
+  vtkSmartPointer<vtkSLLevelSetReconstruct> makeFilter(vtkPointSet* cloud) const;
+  sltk::Status writeRankPieces(vtkDataObject* grid) const;
+  sltk::Status writeFiles(vtkDataObject* grid, vtkPolyData* surface, vtkPointSet* cloud, vtkTable* history) const;
   int run() const;
 };
 
@@ -129,6 +133,143 @@ std::vector<std::string> stringValues(vtkFieldData* fd, const char* name)
     }
   }
   return values;
+}
+
+/// The cloud, the automatic choices, the recoveries and the cleaning, as the
+/// grid's field data tells them (SLTKReconstructionOutput.h).
+void printCloud(vtkFieldData* fd, const std::string& path, vtkIdType points)
+{
+  std::printf("cloud      %s (%lld points, h_P = %.6g)\n", path.c_str(), static_cast<long long>(points),
+    fd->GetArray("CloudSpacing")->GetTuple1(0));
+  for (const std::string& choice : stringValues(fd, "AutomaticChoices"))
+  {
+    std::printf("automatic  %s\n", choice.c_str());
+  }
+  for (const std::string& recovery : stringValues(fd, "Recoveries"))
+  {
+    std::printf("recovered  %s\n", recovery.c_str());
+  }
+  const auto fieldValue = [fd](const char* name) { return fd->GetArray(name)->GetTuple1(0); };
+  const long long outliers = static_cast<long long>(fieldValue("OutliersRemoved"));
+  if (outliers > 0 || fieldValue("ThinningCell") > 0.0)
+  {
+    std::printf("cleaning   %lld outliers removed, thinning cell %.4g: %lld points reconstructed\n", outliers,
+      fieldValue("ThinningCell"), static_cast<long long>(fieldValue("ReconstructedPoints")));
+  }
+}
+
+/// The surface's (or the curve's) size and topology, printed and returned.
+SurfaceTopology printSurface(vtkPolyData* surface, bool planar)
+{
+  const SurfaceTopology topology = surfaceTopology(surface);
+  if (planar)
+  {
+    std::printf("\ncurve      %lld points, %lld segments, %lld closed curve(s)\n",
+      static_cast<long long>(surface->GetNumberOfPoints()), static_cast<long long>(surface->GetNumberOfCells()),
+      topology.Pieces);
+  }
+  else
+  {
+    std::printf("\nsurface    %lld points, %lld cells, %lld piece(s), Euler characteristic %lld\n",
+      static_cast<long long>(surface->GetNumberOfPoints()), static_cast<long long>(surface->GetNumberOfCells()),
+      topology.Pieces, topology.Euler);
+  }
+  return topology;
+}
+
+/// The time, the peak memory and, under mpirun, the busiest rank's traffic.
+void printTotals(double seconds, double peakMb, int ranks, double bytesSent, double collectives, bool octree)
+{
+  std::printf(ranks > 1 ? "total      %.2f s, peak memory %.0f MB (the largest rank's), %d ranks\n"
+                        : "total      %.2f s, peak memory %.0f MB\n",
+    seconds, peakMb, ranks);
+  if (ranks > 1)
+  {
+    std::printf("traffic    %.1f MB sent by the busiest rank (%s), %.0f collective calls\n", bytesSent / 1e6,
+      octree ? "ghost rows of run 1, then ghost tiles" : "ghost rows", collectives);
+  }
+}
+
+/// Warnings about the result: a surface that did not reach the cloud, points
+/// left far from it (features thinner than run 1's cell), with advice that was
+/// not what just ran.
+void warnAboutResult(vtkFieldData* fd, const std::vector<std::string>& recoveries)
+{
+  const double hP = fd->GetArray("CloudSpacing")->GetTuple1(0);
+  const auto last = [fd](const char* name)
+  {
+    vtkDataArray* a = fd->GetArray(name);
+    return a && a->GetNumberOfTuples() ? a->GetTuple1(a->GetNumberOfTuples() - 1) : 0.0;
+  };
+  const double finalError = last("RunCloudError");
+  if (finalError > 2.0 * hP)
+  {
+    std::fprintf(stderr,
+      "sltk: warning: the surface ends %.1f h_P from the cloud on average: it did not reach the points; try a "
+      "larger --kp (scans with holes), a smaller --cdx or --initial sphere\n",
+      finalError / hP);
+  }
+  const double lost = last("RunFarPoints");
+  if (lost > 0.01) // StoppingRule.h, FarPointWarning
+  {
+    const bool restarted = std::any_of(recoveries.begin(), recoveries.end(),
+      [](const std::string& r) { return r.find("reconstructed again from C_dx") != std::string::npos; });
+    const vtkIdType runs = fd->GetArray("RunFarPoints")->GetNumberOfTuples();
+    std::fprintf(stderr,
+      "sltk: warning: %.1f%% of the points lie more than one cell of run 1 from the surface: features thinner "
+      "than that cell were lost; %s\n",
+      100.0 * lost,
+      restarted     ? "the automatic restart from half the C_dx did not keep them: a smaller --cdx with as many runs "
+                      "(--octree for the memory) may"
+        : runs <= 1 ? "a smaller --cdx may keep them"
+                    : "try half the --cdx with one run fewer (the same finest grid)");
+  }
+}
+
+/// The runs' table on standard output and their records for --json, from the
+/// run summary in the grid's field data (SLTKReconstructionOutput.h).
+nlohmann::ordered_json printRuns(vtkFieldData* fd, int ranks)
+{
+  auto* grids = fd->GetArray("RunGridDimensions");
+  auto* its = fd->GetArray("RunIterations");
+  auto* energy = fd->GetArray("RunEnergy");
+  auto* cloudError = fd->GetArray("RunCloudError");
+  auto* runSeconds = fd->GetArray("RunSeconds");
+  auto* farPoints = fd->GetArray("RunFarPoints");
+  auto* ghostRows = fd->GetArray("RunGhostRows");
+  auto* farFeet = fd->GetArray("RunFarFeet");
+  auto* storedNodes = fd->GetArray("RunStoredNodes"); // --octree only
+  auto* uniformNodes = fd->GetArray("RunUniformNodes");
+  auto* runLeaves = fd->GetArray("RunLeaves");
+  std::printf("\n run            grid   iterations      energy E_2     Err_P        time\n");
+  nlohmann::ordered_json runRecords = nlohmann::ordered_json::array();
+  for (vtkIdType r = 0; r < grids->GetNumberOfTuples(); ++r)
+  {
+    const double* g = grids->GetTuple3(r);
+    std::printf("%4lld  %5.0f x %4.0f x %4.0f  %6.0f  %14.6g  %10.4g  %8.2f s\n", static_cast<long long>(r + 1), g[0],
+      g[1], g[2], its->GetTuple1(r), energy->GetTuple1(r), cloudError->GetTuple1(r), runSeconds->GetTuple1(r));
+    runRecords.push_back({ { "run", r + 1 },
+      { "grid", { static_cast<long long>(g[0]), static_cast<long long>(g[1]), static_cast<long long>(g[2]) } },
+      { "iterations", static_cast<long long>(its->GetTuple1(r)) }, { "energy", energy->GetTuple1(r) },
+      { "err_cloud", cloudError->GetTuple1(r) }, { "far_points", farPoints->GetTuple1(r) },
+      { "seconds", runSeconds->GetTuple1(r) } });
+    if (ranks > 1 && ghostRows && farFeet)
+    {
+      runRecords.back()["ghost_rows"] = static_cast<long long>(ghostRows->GetTuple1(r));
+      runRecords.back()["far_feet"] = static_cast<long long>(farFeet->GetTuple1(r));
+    }
+    if (storedNodes && uniformNodes && runLeaves)
+    {
+      const double stored = storedNodes->GetTuple1(r), all = uniformNodes->GetTuple1(r);
+      const double leaves = runLeaves->GetTuple1(r);
+      std::printf(
+        "      stored %.0f of %.0f nodes (%.1f%%), %.0f octree leaves\n", stored, all, 100.0 * stored / all, leaves);
+      runRecords.back()["stored_nodes"] = static_cast<long long>(stored);
+      runRecords.back()["uniform_nodes"] = static_cast<long long>(all);
+      runRecords.back()["leaves"] = static_cast<long long>(leaves);
+    }
+  }
+  return runRecords;
 }
 
 /// The problems found before any work: "" or the message, with its exit code
@@ -198,6 +339,99 @@ std::string Reconstruct::problemBeforeWork(bool pieces, vtkPolyData* reference, 
   return "";
 }
 
+/// The filter of the options: the octree's (vtkSLLevelSetReconstruct with
+/// AdaptiveStorage always on) for --octree.
+vtkSmartPointer<vtkSLLevelSetReconstruct> Reconstruct::makeFilter(vtkPointSet* cloud) const
+{
+  const sltk::ReconstructionOptions& o = this->Options;
+  const vtkSmartPointer<vtkSLLevelSetReconstruct> filter = this->Octree
+    ? vtkSmartPointer<vtkSLLevelSetReconstruct>(vtkSmartPointer<vtkOctreeSDF>::New())
+    : vtkSmartPointer<vtkSLLevelSetReconstruct>::New();
+  filter->SetInputData(cloud);
+  filter->SetInterpolator(static_cast<int>(o.Interpolator));
+  filter->SetLeastSquaresQ1(o.LeastSquaresQ1);
+  filter->SetCellSizeFactor(o.CellSizeFactor);
+  filter->SetMaximumLevel(o.MaximumLevel);
+  filter->SetOutsideThresholdFactor(o.OutsideThresholdFactor);
+  filter->SetNumberOfRuns(o.Runs);
+  filter->SetMaximumNumberOfIterations(o.MaxIterations);
+  filter->SetInitialGuess(static_cast<int>(o.Guess));
+  filter->SetNumberOfThreads(this->Threads); // the filter shares the cores among the ranks
+  filter->SetFinalEta(this->Eta);
+  for (const sltk::RunParameters& run : o.Schedule)
+  {
+    filter->AddRunParameters(run.P, run.Eta);
+  }
+  filter->SetMemoryBudget(static_cast<int>(o.MemoryBudget >> 20));
+  filter->SetAutomaticCleaning(o.Cleaning.Automatic);
+  filter->SetLocalOffset(o.LocalOffset);
+  filter->SetFollowFarPoints(o.FollowFarPoints);
+  filter->SetRemoveOutliers(o.Cleaning.RemoveOutliers);
+  filter->SetOutlierDeviations(o.Cleaning.Outliers.Deviations);
+  filter->SetThinningFactor(o.Cleaning.ThinningFactor);
+  filter->SetDetectTunnels(o.DetectTunnels);
+  filter->SetGenerateAdaptiveGrid(this->given("--output")); // the trees only for -o FILE.htg
+  return filter;
+}
+
+/// Under mpirun, -o as pieces: each rank's own trees (--octree) or its block of
+/// the image at its place in the whole extent (the blocks are the solver's slabs).
+sltk::Status Reconstruct::writeRankPieces(vtkDataObject* grid) const
+{
+  if (this->Octree)
+  {
+    vtkNew<vtkTrivialProducer> producer; // each rank's own trees (the tiles it owns)
+    producer->SetOutput(grid);
+    return writeHyperTreeGridPieces(this->Output, producer, vtkMultiProcessController::GetGlobalController());
+  }
+  vtkNew<vtkImageData> block;
+  block->ShallowCopy(grid);
+  int extent[6];
+  block->GetExtent(extent);
+  for (int k = 0; k < 6; ++k)
+  {
+    extent[k] = static_cast<int>(k % 2 ? MpiSession::maxOverRanks(extent[k]) : -MpiSession::maxOverRanks(-extent[k]));
+  }
+  vtkNew<vtkTrivialProducer> producer;
+  producer->SetOutput(block);
+  producer->SetWholeExtent(extent);
+  return writeImagePieces(this->Output, producer, vtkMultiProcessController::GetGlobalController());
+}
+
+/// The files rank 0 writes besides the summary: -o (unless written in pieces,
+/// `grid` null then), --surface, --png and --csv.
+sltk::Status Reconstruct::writeFiles(
+  vtkDataObject* grid, vtkPolyData* surface, vtkPointSet* cloud, vtkTable* history) const
+{
+  if (grid && this->given("--output"))
+  {
+    SLTK_RETURN_IF_ERROR(this->Octree ? writeHyperTreeGrid(this->Output, vtkHyperTreeGrid::SafeDownCast(grid))
+                                      : writeImage(this->Output, vtkImageData::SafeDownCast(grid)));
+  }
+  if (this->given("--surface"))
+  {
+    SLTK_RETURN_IF_ERROR(writeSurface(this->Surface, surface));
+  }
+  if (this->given("--png"))
+  {
+    SLTK_RETURN_IF_ERROR(renderPng(this->Png, surface, cloud));
+  }
+  if (!this->given("--csv"))
+  {
+    return sltk::Status::ok();
+  }
+  return writeAtomically(this->Csv,
+    [&](const std::string& temporary)
+    {
+      vtkNew<vtkDelimitedTextWriter> writer;
+      writer->SetInputData(history);
+      writer->SetFileName(temporary.c_str());
+      writer->SetFieldDelimiter(",");
+      writer->SetUseStringDelimiter(false);
+      return writer->Write() == 1;
+    });
+}
+
 int Reconstruct::run() const
 {
   const int rank = MpiSession::rank(), ranks = MpiSession::size();
@@ -237,10 +471,7 @@ int Reconstruct::run() const
   {
     vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_INFO);
   }
-  // --octree: the octree filter (vtkSLLevelSetReconstruct with AdaptiveStorage always on).
-  const vtkSmartPointer<vtkSLLevelSetReconstruct> filter = this->Octree
-    ? vtkSmartPointer<vtkSLLevelSetReconstruct>(vtkSmartPointer<vtkOctreeSDF>::New())
-    : vtkSmartPointer<vtkSLLevelSetReconstruct>::New();
+  const vtkSmartPointer<vtkSLLevelSetReconstruct> filter = this->makeFilter(cloud);
   vtkNew<ErrorCollector> errors;
   filter->AddObserver(vtkCommand::ErrorEvent, errors);
   vtkNew<ProgressBar> bar;
@@ -248,30 +479,6 @@ int Reconstruct::run() const
   {
     filter->AddObserver(vtkCommand::ProgressEvent, bar);
   }
-  filter->SetInputData(cloud);
-  filter->SetInterpolator(static_cast<int>(o.Interpolator));
-  filter->SetLeastSquaresQ1(o.LeastSquaresQ1);
-  filter->SetCellSizeFactor(o.CellSizeFactor);
-  filter->SetMaximumLevel(o.MaximumLevel);
-  filter->SetOutsideThresholdFactor(o.OutsideThresholdFactor);
-  filter->SetNumberOfRuns(o.Runs);
-  filter->SetMaximumNumberOfIterations(o.MaxIterations);
-  filter->SetInitialGuess(static_cast<int>(o.Guess));
-  filter->SetNumberOfThreads(this->Threads); // the filter shares the cores among the ranks
-  filter->SetFinalEta(this->Eta);
-  for (const sltk::RunParameters& run : o.Schedule)
-  {
-    filter->AddRunParameters(run.P, run.Eta);
-  }
-  filter->SetMemoryBudget(static_cast<int>(o.MemoryBudget >> 20));
-  filter->SetAutomaticCleaning(o.Cleaning.Automatic);
-  filter->SetLocalOffset(o.LocalOffset);
-  filter->SetFollowFarPoints(o.FollowFarPoints);
-  filter->SetRemoveOutliers(o.Cleaning.RemoveOutliers);
-  filter->SetOutlierDeviations(o.Cleaning.Outliers.Deviations);
-  filter->SetThinningFactor(o.Cleaning.ThinningFactor);
-  filter->SetDetectTunnels(o.DetectTunnels);
-  filter->SetGenerateAdaptiveGrid(this->given("--output")); // the trees only for -o FILE.htg
   if (ranks > 1)
   {
     filter->UpdatePiece(rank, ranks, 0); // each rank its slab (a collective update)
@@ -288,39 +495,13 @@ int Reconstruct::run() const
         errors->Message, static_cast<size_t>(cloud->GetNumberOfPoints()), o.Cleaning.ThinningFactor > 0));
   }
   vtkDataObject* grid = filter->GetOutputDataObject(0); // the image, or --octree's hyper tree grid
-  auto* image = vtkImageData::SafeDownCast(grid);
   auto* history = vtkTable::SafeDownCast(filter->GetOutputDataObject(2));
   const double seconds =
     MpiSession::maxOverRanks(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  if (pieces && this->Octree)
+  status = pieces ? this->writeRankPieces(grid) : sltk::Status::ok();
+  if (!status.isOk())
   {
-    vtkNew<vtkTrivialProducer> producer; // each rank's own trees (the tiles it owns)
-    producer->SetOutput(grid);
-    status = writeHyperTreeGridPieces(this->Output, producer, vtkMultiProcessController::GetGlobalController());
-    if (!status.isOk())
-    {
-      return fail(status.message());
-    }
-  }
-  else if (pieces)
-  {
-    // Each rank's block, at its place in the whole extent (the blocks are the solver's slabs).
-    vtkNew<vtkImageData> block;
-    block->ShallowCopy(image);
-    int extent[6];
-    block->GetExtent(extent);
-    for (int k = 0; k < 6; ++k)
-    {
-      extent[k] = static_cast<int>(k % 2 ? MpiSession::maxOverRanks(extent[k]) : -MpiSession::maxOverRanks(-extent[k]));
-    }
-    vtkNew<vtkTrivialProducer> producer;
-    producer->SetOutput(block);
-    producer->SetWholeExtent(extent);
-    status = writeImagePieces(this->Output, producer, vtkMultiProcessController::GetGlobalController());
-    if (!status.isOk())
-    {
-      return fail(status.message());
-    }
+    return fail(status.message());
   }
   const double peakMb = MpiSession::maxOverRanks(static_cast<double>(sltk::peakResidentBytes()) / 1e6);
   const auto rankValue = [&](const char* name)
@@ -340,105 +521,17 @@ int Reconstruct::run() const
 
   // Summary table.
   vtkFieldData* fd = grid->GetFieldData();
-  auto* grids = fd->GetArray("RunGridDimensions");
-  auto* its = fd->GetArray("RunIterations");
-  auto* energy = fd->GetArray("RunEnergy");
-  auto* cloudError = fd->GetArray("RunCloudError");
-  auto* runSeconds = fd->GetArray("RunSeconds");
-  auto* farPoints = fd->GetArray("RunFarPoints");
-  auto* ghostRows = fd->GetArray("RunGhostRows");
-  auto* farFeet = fd->GetArray("RunFarFeet");
-  auto* storedNodes = fd->GetArray("RunStoredNodes"); // --octree only
-  auto* uniformNodes = fd->GetArray("RunUniformNodes");
-  auto* runLeaves = fd->GetArray("RunLeaves");
-  std::printf("cloud      %s (%lld points, h_P = %.6g)\n", path.c_str(),
-    static_cast<long long>(cloud->GetNumberOfPoints()), fd->GetArray("CloudSpacing")->GetTuple1(0));
+  printCloud(fd, path, cloud->GetNumberOfPoints());
   const auto fieldValue = [fd](const char* name) { return fd->GetArray(name)->GetTuple1(0); };
   const long long reconstructed = static_cast<long long>(fieldValue("ReconstructedPoints"));
   const long long outliers = static_cast<long long>(fieldValue("OutliersRemoved"));
   const std::vector<std::string> choices = stringValues(fd, "AutomaticChoices");
   const std::vector<std::string> recoveries = stringValues(fd, "Recoveries");
-  for (const std::string& choice : choices)
-  {
-    std::printf("automatic  %s\n", choice.c_str());
-  }
-  for (const std::string& recovery : recoveries)
-  {
-    std::printf("recovered  %s\n", recovery.c_str());
-  }
-  if (outliers > 0 || fieldValue("ThinningCell") > 0.0)
-  {
-    std::printf("cleaning   %lld outliers removed, thinning cell %.4g: %lld points reconstructed\n", outliers,
-      fieldValue("ThinningCell"), reconstructed);
-  }
-  std::printf("\n run            grid   iterations      energy E_2     Err_P        time\n");
-  nlohmann::ordered_json runRecords = nlohmann::ordered_json::array();
-  for (vtkIdType r = 0; r < grids->GetNumberOfTuples(); ++r)
-  {
-    const double* g = grids->GetTuple3(r);
-    std::printf("%4lld  %5.0f x %4.0f x %4.0f  %6.0f  %14.6g  %10.4g  %8.2f s\n", static_cast<long long>(r + 1), g[0],
-      g[1], g[2], its->GetTuple1(r), energy->GetTuple1(r), cloudError->GetTuple1(r), runSeconds->GetTuple1(r));
-    runRecords.push_back({ { "run", r + 1 },
-      { "grid", { static_cast<long long>(g[0]), static_cast<long long>(g[1]), static_cast<long long>(g[2]) } },
-      { "iterations", static_cast<long long>(its->GetTuple1(r)) }, { "energy", energy->GetTuple1(r) },
-      { "err_cloud", cloudError->GetTuple1(r) }, { "far_points", farPoints->GetTuple1(r) },
-      { "seconds", runSeconds->GetTuple1(r) } });
-    if (ranks > 1 && ghostRows && farFeet)
-    {
-      runRecords.back()["ghost_rows"] = static_cast<long long>(ghostRows->GetTuple1(r));
-      runRecords.back()["far_feet"] = static_cast<long long>(farFeet->GetTuple1(r));
-    }
-    if (storedNodes && uniformNodes && runLeaves)
-    {
-      const double stored = storedNodes->GetTuple1(r), all = uniformNodes->GetTuple1(r);
-      const double leaves = runLeaves->GetTuple1(r);
-      std::printf(
-        "      stored %.0f of %.0f nodes (%.1f%%), %.0f octree leaves\n", stored, all, 100.0 * stored / all, leaves);
-      runRecords.back()["stored_nodes"] = static_cast<long long>(stored);
-      runRecords.back()["uniform_nodes"] = static_cast<long long>(all);
-      runRecords.back()["leaves"] = static_cast<long long>(leaves);
-    }
-  }
+  const nlohmann::ordered_json runRecords = printRuns(fd, ranks);
   const double hP = fd->GetArray("CloudSpacing")->GetTuple1(0);
-  const double finalError =
-    cloudError->GetNumberOfTuples() ? cloudError->GetTuple1(cloudError->GetNumberOfTuples() - 1) : 0.0;
-  if (finalError > 2.0 * hP)
-  {
-    std::fprintf(stderr,
-      "sltk: warning: the surface ends %.1f h_P from the cloud on average: it did not reach the points; try a "
-      "larger --kp (scans with holes), a smaller --cdx or --initial sphere\n",
-      finalError / hP);
-  }
-  const double lost = farPoints->GetNumberOfTuples() ? farPoints->GetTuple1(farPoints->GetNumberOfTuples() - 1) : 0.0;
-  if (lost > 0.01) // Reconstruction.cxx, FarPointWarning
-  {
-    std::fprintf(stderr,
-      "sltk: warning: %.1f%% of the points lie more than one cell of run 1 from the surface: features thinner "
-      "than that cell were lost; try half the --cdx with one run fewer (the same finest grid;\n"
-      "automatic C_dx does this when run 1's grid then fits --memory-budget)\n",
-      100.0 * lost);
-  }
-  const SurfaceTopology topology = surfaceTopology(surface);
-  if (planar)
-  {
-    std::printf("\ncurve      %lld points, %lld segments, %lld closed curve(s)\n",
-      static_cast<long long>(surface->GetNumberOfPoints()), static_cast<long long>(surface->GetNumberOfCells()),
-      topology.Pieces);
-  }
-  else
-  {
-    std::printf("\nsurface    %lld points, %lld cells, %lld piece(s), Euler characteristic %lld\n",
-      static_cast<long long>(surface->GetNumberOfPoints()), static_cast<long long>(surface->GetNumberOfCells()),
-      topology.Pieces, topology.Euler);
-  }
-  std::printf(ranks > 1 ? "total      %.2f s, peak memory %.0f MB (the largest rank's), %d ranks\n"
-                        : "total      %.2f s, peak memory %.0f MB\n",
-    seconds, peakMb, ranks);
-  if (ranks > 1)
-  {
-    std::printf("traffic    %.1f MB sent by the busiest rank (%s), %.0f collective calls\n", bytesSent / 1e6,
-      this->Octree ? "ghost rows of run 1, then ghost tiles" : "ghost rows", collectives);
-  }
+  warnAboutResult(fd, recoveries);
+  const SurfaceTopology topology = printSurface(surface, planar);
+  printTotals(seconds, peakMb, ranks, bytesSent, collectives, this->Octree);
   SurfaceDistances distances;
   if (this->given("--reference"))
   {
@@ -451,47 +544,10 @@ int Reconstruct::run() const
       distances.Chamfer, distances.Hausdorff, distances.MeanToReference, distances.MeanFromReference);
   }
 
-  if (this->given("--output") && !pieces)
+  status = this->writeFiles(pieces ? nullptr : grid, surface, cloud, history);
+  if (!status.isOk())
   {
-    status = this->Octree ? writeHyperTreeGrid(this->Output, vtkHyperTreeGrid::SafeDownCast(grid))
-                          : writeImage(this->Output, image);
-    if (!status.isOk())
-    {
-      return fail(status.message());
-    }
-  }
-  if (this->given("--surface"))
-  {
-    status = writeSurface(this->Surface, surface);
-    if (!status.isOk())
-    {
-      return fail(status.message());
-    }
-  }
-  if (this->given("--png"))
-  {
-    status = renderPng(this->Png, surface, cloud);
-    if (!status.isOk())
-    {
-      return fail(status.message());
-    }
-  }
-  if (this->given("--csv"))
-  {
-    status = writeAtomically(this->Csv,
-      [&](const std::string& temporary)
-      {
-        vtkNew<vtkDelimitedTextWriter> writer;
-        writer->SetInputData(history);
-        writer->SetFileName(temporary.c_str());
-        writer->SetFieldDelimiter(",");
-        writer->SetUseStringDelimiter(false);
-        return writer->Write() == 1;
-      });
-    if (!status.isOk())
-    {
-      return fail(status.message());
-    }
+    return fail(status.message());
   }
   if (this->given("--json"))
   {

@@ -39,7 +39,8 @@ namespace detail
 /// Drops the history of `run`: a run that lost its zero level set and is redone or replaced.
 inline void forgetRun(int run, std::vector<IterationRecord>& history)
 {
-  history.erase(std::remove_if(history.begin(), history.end(), [run](const IterationRecord& it) { return it.Run == run; }),
+  history.erase(
+    std::remove_if(history.begin(), history.end(), [run](const IterationRecord& it) { return it.Run == run; }),
     history.end());
 }
 
@@ -190,6 +191,7 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
   finer.Runs -= 1;
   finer.CellSizeFactor /= 2.0;
   GridPlan<D> finerGrids;
+  bool restarted = false;
   if (status.isOk() && plan.AutomaticCellSize && finer.Runs >= 1 && !records.Runs.empty() &&
     records.Runs.back().FarPoints > FarPointWarning &&
     comm.agree(planRunGrids(plan, finer.Runs, finer.CellSizeFactor, finerGrids)).isOk()) // machines differ
@@ -207,6 +209,20 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
     records = ReconstructionResult<D>{};
     status = start(finer, finerGrids.Runs);
     records.Recoveries.insert(records.Recoveries.begin(), recoveries.begin(), recoveries.end());
+    restarted = true;
+  }
+  if (status.isOk() && !records.Runs.empty() && records.Runs.back().FarPoints > FarPointWarning)
+  {
+    // Advice that is not what just ran.
+    std::ostringstream warning;
+    warning << 100.0 * records.Runs.back().FarPoints
+            << "% of the points lie more than one cell of run 1 from the surface: features thinner than that cell "
+            << "were lost; "
+            << (restarted ? "the restart from half the C_dx did not keep them: a smaller C_dx with as many runs "
+                            "(the tiled storage for the memory) may"
+                   : records.Runs.size() <= 1 ? "a smaller C_dx may keep them"
+                                              : "try half the C_dx with one run fewer (the same finest grid)");
+    ctx.logger().log(LogLevel::Warning, warning.str());
   }
   records.CloudSpacing = plan.userCloudSpacing();
   records.Cleaning = plan.Cleaning;

@@ -121,6 +121,62 @@ bool footInWindow(const GridSpec<D>& window, const FarFeet<D>& far, double row)
     (far.HighEdge || cell + Interp::GhostWidth + 1 <= static_cast<double>(window.Dims[D - 1] - 1));
 }
 
+namespace detail
+{
+/// The advection's direction at a band node: grad d (centred), or grad phi
+/// through a tunnel (4.5.6: DetectTunnels, 0.6 h_P < d < 2 dx and |grad d| < 0.5).
+template <int D, class Vector>
+Vector advectionDirection(const GridField<D>& dist, const double* pd, const Vector& gphi, const LevelSetStepParameters& par)
+{
+  const Vector gd = centredGradient(dist, pd);
+  const double d = *pd;
+  if (par.DetectTunnels && d < par.TunnelDistance && d > par.TunnelMinDistance)
+  {
+    double gd2 = 0.0;
+    for (int a = 0; a < D; ++a)
+    {
+      gd2 += gd[a] * gd[a];
+    }
+    if (gd2 < 0.25) // |grad d| < 0.5 (4.5.6)
+    {
+      return gphi;
+    }
+  }
+  return gd;
+}
+
+/// The far feet one chunk of the band found (levelSetStepValues).
+template <int D>
+struct ChunkFeet
+{
+  std::vector<Index> Positions;
+  std::vector<double> Values;
+  std::vector<std::array<double, D>> Feet;
+  std::vector<Index> Slots;
+};
+
+/// The chunks' far feet joined in chunk order into `far` (the same lists for any thread count).
+template <int D>
+void joinFarFeet(std::map<Index, ChunkFeet<D>>& farByChunk, FarFeet<D>& far)
+{
+  far.Positions.clear();
+  far.Values.clear();
+  far.Feet.clear();
+  far.Slots.clear();
+  for (auto& [first, chunk] : farByChunk)
+  {
+    const Index shift = static_cast<Index>(far.Values.size());
+    for (const Index slot : chunk.Slots)
+    {
+      far.Slots.push_back(shift + slot);
+    }
+    far.Positions.insert(far.Positions.end(), chunk.Positions.begin(), chunk.Positions.end());
+    far.Values.insert(far.Values.end(), chunk.Values.begin(), chunk.Values.end());
+    far.Feet.insert(far.Feet.end(), chunk.Feet.begin(), chunk.Feet.end());
+  }
+}
+} // namespace detail
+
 /// The new values of one step on `band` (ascending linear node indices, no
 /// ghosts) into `values` (band order), phi unchanged. phi must carry
 /// Interp::GhostWidth ghost layers, dist at least one; the ghosts of phi are
@@ -148,13 +204,7 @@ Status levelSetStepValues(const Context& ctx, GridField<D>& phi, const GridField
   constexpr int Points = 1 << (D - 1); // 2 in 2D (4.22), 4 in 3D (4.24)
   const double singular = par.SingularD * std::pow(par.TimeStep, par.SingularAlpha);
   // Far feet of each chunk, joined in chunk order after the loop (the same lists for any thread count).
-  struct ChunkFeet
-  {
-    std::vector<Index> Positions;
-    std::vector<double> Values;
-    std::vector<std::array<double, D>> Feet;
-    std::vector<Index> Slots;
-  };
+  using ChunkFeet = detail::ChunkFeet<D>;
   std::map<Index, ChunkFeet> farByChunk;
   std::mutex farMutex;
 
@@ -195,19 +245,7 @@ Status levelSetStepValues(const Context& ctx, GridField<D>& phi, const GridField
           const double d = *pd;
           // scale factor with cut-off (4.32)
           const double scale = cutOff(*pp, par.Widths) * (par.P == 1.0 ? 1.0 : std::pow(d / par.Energy, par.P - 1.0));
-          auto gd = detail::centredGradient(dist, pd);
-          if (par.DetectTunnels && d < par.TunnelDistance && d > par.TunnelMinDistance)
-          {
-            double gd2 = 0.0;
-            for (int a = 0; a < D; ++a)
-            {
-              gd2 += gd[a] * gd[a];
-            }
-            if (gd2 < 0.25) // |grad d| < 0.5 (4.5.6)
-            {
-              gd = gphi;
-            }
-          }
+          const auto gd = detail::advectionDirection(dist, pd, gphi, par);
           std::array<std::array<double, D>, D - 1> sigma;
           detail::tangentFrame(gphi, norm, sigma);
           const double spread = std::sqrt(2.0 * scale * par.Eta * d * par.TimeStep / par.P);
@@ -280,21 +318,7 @@ Status levelSetStepValues(const Context& ctx, GridField<D>& phi, const GridField
   }
   if (far)
   {
-    far->Positions.clear();
-    far->Values.clear();
-    far->Feet.clear();
-    far->Slots.clear();
-    for (auto& [first, chunk] : farByChunk)
-    {
-      const Index shift = static_cast<Index>(far->Values.size());
-      for (const Index slot : chunk.Slots)
-      {
-        far->Slots.push_back(shift + slot);
-      }
-      far->Positions.insert(far->Positions.end(), chunk.Positions.begin(), chunk.Positions.end());
-      far->Values.insert(far->Values.end(), chunk.Values.begin(), chunk.Values.end());
-      far->Feet.insert(far->Feet.end(), chunk.Feet.begin(), chunk.Feet.end());
-    }
+    detail::joinFarFeet(farByChunk, *far);
   }
   return Status::ok();
 }

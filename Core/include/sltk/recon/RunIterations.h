@@ -83,18 +83,11 @@ struct IterationPhases
   double Band = 0.0, Energy = 0.0, Step = 0.0, Reinitialisation = 0.0, Metrics = 0.0;
 };
 
-/// The run's warnings: far points left by the last run, a surface that did not reach the cloud.
+/// The run's warning when its surface did not reach the cloud (the far points
+/// are told after the recoveries, reconstructWithRecoveries).
 template <int D>
-void warnAboutRun(const RunRecord<D>& record, int run, int runs, double cloudSpacing, const Context& ctx)
+void warnAboutRun(const RunRecord<D>& record, int run, double cloudSpacing, const Context& ctx)
 {
-  if (run == runs && record.FarPoints > FarPointWarning)
-  {
-    std::ostringstream warning;
-    warning << "run " << run << ": " << 100.0 * record.FarPoints
-            << "% of the points lie more than one cell of run 1 from the surface: features thinner than that cell "
-            << "were lost; try half the C_dx with one run fewer (the same finest grid)";
-    ctx.logger().log(LogLevel::Warning, warning.str());
-  }
   if (record.CloudError > 2.0 * cloudSpacing)
   {
     std::ostringstream warning;
@@ -105,8 +98,8 @@ void warnAboutRun(const RunRecord<D>& record, int run, int runs, double cloudSpa
 }
 
 template <int D>
-void reportRun(const RunRecord<D>& record, int run, const IterationPhases& p, const std::string& storage,
-  const Context& ctx)
+void reportRun(
+  const RunRecord<D>& record, int run, const IterationPhases& p, const std::string& storage, const Context& ctx)
 {
   std::ostringstream log;
   log << "run " << run << ": " << record.Iterations << " iterations, E_2 = " << record.Energy
@@ -215,7 +208,7 @@ Status iterateRun(Band& band, const ReconstructionOptions& options, int run, dou
     record.Energy = energies.empty() ? 0.0 : energies.back();
   }
   band.finish(record, far);
-  detail::warnAboutRun(record, run, options.Runs, cloudSpacing, ctx);
+  detail::warnAboutRun(record, run, cloudSpacing, ctx);
   detail::reportRun(record, run, phases, band.describe(), ctx);
   result.Runs.push_back(record);
   return Status::ok();
