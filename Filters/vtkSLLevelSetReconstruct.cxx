@@ -62,14 +62,13 @@ namespace
 {
 const sltk::OptionRange* rangeRow(int i)
 {
-  constexpr int rows = static_cast<int>(sizeof(sltk::OptionRanges) / sizeof(sltk::OptionRanges[0]));
-  return i >= 0 && i < rows ? &sltk::OptionRanges[i] : nullptr;
+  return i >= 0 && i < sltk::OptionRangeCount ? &sltk::OptionRanges[i] : nullptr;
 }
 } // namespace
 
 int vtkSLLevelSetReconstruct::GetNumberOfPropertyRanges()
 {
-  return static_cast<int>(sizeof(sltk::OptionRanges) / sizeof(sltk::OptionRanges[0]));
+  return sltk::OptionRangeCount;
 }
 
 const char* vtkSLLevelSetReconstruct::GetPropertyRangeName(int i)

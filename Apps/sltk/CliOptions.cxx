@@ -248,6 +248,9 @@ void addPlanOptions(CLI::App* app, sltk::ReconstructionOptions& options)
     ->transform(numberText(false))
     ->check(withinRange("MemoryBudget"))
     ->option_text("MB");
+  addNumber(app, "--padding", options.Padding, "empty cells around the cloud on every side (default 10)")
+    ->check(withinRange("Padding"))
+    ->option_text("N");
   app->add_flag_callback(
     "--uniform-offset", [&options]() { options.LocalOffset = false; },
     "run 1's initial surface at K_P h_P everywhere (the thesis), not K_P h_P\ntimes the local sparsity of the cloud");

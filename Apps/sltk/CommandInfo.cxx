@@ -183,8 +183,6 @@ Command addInfoCommand(CLI::App& sltk)
   CLI::App* app = addCloudCommand(sltk, "info", infoDescription, info->Cloud);
   info->Parser = app;
   addPlanOptions(app, info->Options);
-  addNumber(app, "--padding", info->Options.Padding, "empty cells around the cloud per side (default 10)")
-    ->option_text("P");
   addThreadsOption(app, info->Threads);
   app->add_option("--json", info->Json, "also write the summary as JSON")->option_text("FILE");
   app->add_flag("--octree", info->Octree,

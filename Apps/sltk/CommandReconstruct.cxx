@@ -355,6 +355,8 @@ vtkSmartPointer<vtkSLLevelSetReconstruct> Reconstruct::makeFilter(vtkPointSet* c
   filter->SetOutsideThresholdFactor(o.OutsideThresholdFactor);
   filter->SetNumberOfRuns(o.Runs);
   filter->SetMaximumNumberOfIterations(o.MaxIterations);
+  filter->SetTolerance(o.Tolerance);
+  filter->SetPadding(o.Padding);
   filter->SetInitialGuess(static_cast<int>(o.Guess));
   filter->SetNumberOfThreads(this->Threads); // the filter shares the cores among the ranks
   filter->SetFinalEta(this->Eta);
@@ -617,6 +619,11 @@ Command addReconstructCommand(CLI::App& sltk)
   addNumber(app, "--max-iterations", o.MaxIterations, "iteration cap per run (default 100)")
     ->check(withinRange("MaximumNumberOfIterations"))
     ->option_text("N");
+  addNumber(app, "--tolerance", o.Tolerance,
+    "a run stops when the mean energy of the last iterations changes by less\nthan this, relatively (4.33; "
+    "default 1e-4)")
+    ->check(withinRange("Tolerance"))
+    ->option_text("TOL");
   addNumber(
     app, "--eta", command->Eta, "eta of runs >= 3 (Table 4.1: 1); larger smooths noisy scans\n(thesis Fig. 4.8)")
     ->check(withinRange("FinalEta"))

@@ -105,6 +105,9 @@ void HjbCustomProblem::addOptions(CLI::App* app)
     ->check(withinRange("MinimizerTolerance"))
     ->option_text("TOL");
   app->add_flag("--reach", this->Reach, "write ReachTime also without an obstacle");
+  app->add_flag("--control-per-step", this->ControlPerStep,
+    "one control per time step instead of one per RK stage (PerStageControls\noff; the stages' controls A^nu "
+    "are needed for high order)");
   const std::vector<CLI::Option*> options = app->get_options();
   for (size_t k = before; k < options.size(); ++k)
   {
@@ -188,6 +191,7 @@ std::string HjbCustomProblem::apply(vtkCWENOHJBSolver* solver) const
   solver->SetWarmStartPoints(this->WarmStart);
   solver->SetMinimizerTolerance(this->Tolerance);
   solver->SetComputeReachableSet(this->Reach ? 1 : 0);
+  solver->SetPerStageControls(this->ControlPerStep ? 0 : 1);
   return "";
 }
 

@@ -38,6 +38,7 @@ struct HjbCustomProblem
   int WarmStart = 0;
   double Tolerance = 1e-8;
   bool Reach = false;
+  bool ControlPerStep = false; ///< PerStageControls off: one control per time step
 
   /// Adds its options to `app`, in the help group Group.
   void addOptions(CLI::App* app);

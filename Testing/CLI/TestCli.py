@@ -229,6 +229,24 @@ sched = json.load(open(sched_json)) if rc == 0 else {"runs": [{}, {}]}
 expect(rc == 0 and sched["runs"][1].get("err_cloud", 1) < 0.01 and
        sched["runs"][1].get("energy") != summary["runs"][1]["energy"],
        "--schedule 1:0,2:0 runs and changes the result (%s)" % err.strip())
+# Every option of the filter in the CLI too: --padding (Padding) and --tolerance (Tolerance), with
+# Core's ranges (OptionRanges.h).
+pad_json = os.path.join(tmp, "padding.json")
+rc, _, err = run("info", sphere, "--runs", "2", "--padding", "6", "--json", pad_json)
+padded = json.load(open(pad_json))["runs"] if rc == 0 else []
+expect(len(padded) == 2 and all(a <= b for a, b in zip(padded[1]["grid"], uniform_planned[1]["grid"])) and
+       padded[1]["grid"] != uniform_planned[1]["grid"],
+       "--padding 6: run 2's grid narrower than with the default 10 (%s)" % err.strip())
+rc, _, err = run("info", sphere, "--padding", "3")
+expect(rc == 2 and "[4, 1000]" in err, "--padding 3 refused with Core's range: " + err.strip())
+tol_json = os.path.join(tmp, "tolerance.json")
+rc, _, err = run("reconstruct", sphere, "--runs", "2", "--interpolator", "q1", "--tolerance", "0.5", "--quiet",
+                 "--json", tol_json)
+loose = json.load(open(tol_json)) if rc == 0 else {"runs": []}
+expect(rc == 0 and sum(r["iterations"] for r in loose["runs"]) < sum(r["iterations"] for r in summary["runs"]),
+       "--tolerance 0.5 stops the runs sooner than the default 1e-4 (%s)" % err.strip())
+rc, _, err = run("reconstruct", sphere, "--tolerance", "2")
+expect(rc == 2 and "[0, 1]" in err, "--tolerance 2 refused with Core's range: " + err.strip())
 
 vti = os.path.join(tmp, "v0.vti")
 rc, out, err = run("hjb", "--n", "41", "--final-time", "0", "-o", vti, "--json", os.path.join(tmp, "hjb.json"))
@@ -265,6 +283,17 @@ expect(rc == 0 and am.get("evaluations_per_node") == 1 and am.get("l1_error", 1)
 rc, _, err = run(*quadratic, "--argmin1", "x", "-o", os.path.join(tmp, "argmin-bad.vti"))
 expect(rc == 1 and "argmin component a2 is empty" in err and not os.path.exists(os.path.join(tmp, "argmin-bad.vti")),
        "a missing argmin component is named, no file: " + err.strip())
+# --control-per-step (PerStageControls off): one control per time step instead of one per RK stage.
+heun = [("2" if a == "1" and quadratic[k - 1] == "--rk" else a) for k, a in enumerate(quadratic)]
+staged, stepped = os.path.join(tmp, "staged.json"), os.path.join(tmp, "stepped.json")
+rc1, _, err1 = run(*heun, "--json", staged)
+rc2, _, err2 = run(*heun, "--control-per-step", "--json", stepped)
+st = json.load(open(staged)) if rc1 == 0 else {}
+sp = json.load(open(stepped)) if rc2 == 0 else {}
+expect(rc1 == 0 and rc2 == 0 and st.get("l1_error") is not None and sp.get("l1_error") is not None and
+       st.get("l1_error") != sp.get("l1_error"),
+       "--control-per-step reaches the solver (L1 %s per stage, %s per step) %s %s"
+       % (st.get("l1_error"), sp.get("l1_error"), err1.strip(), err2.strip()))
 expect(not [f for f in os.listdir(tmp) if ".part" in f], "no temporary files are left behind")
 
 sys.exit(1 if failures else 0)

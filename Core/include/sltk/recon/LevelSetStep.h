@@ -126,7 +126,8 @@ namespace detail
 /// The advection's direction at a band node: grad d (centred), or grad phi
 /// through a tunnel (4.5.6: DetectTunnels, 0.6 h_P < d < 2 dx and |grad d| < 0.5).
 template <int D, class Vector>
-Vector advectionDirection(const GridField<D>& dist, const double* pd, const Vector& gphi, const LevelSetStepParameters& par)
+Vector advectionDirection(
+  const GridField<D>& dist, const double* pd, const Vector& gphi, const LevelSetStepParameters& par)
 {
   const Vector gd = centredGradient(dist, pd);
   const double d = *pd;

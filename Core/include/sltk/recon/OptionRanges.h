@@ -62,25 +62,34 @@ constexpr bool sameOptionName(const char* a, const char* b)
   return *a == *b;
 }
 
-/// The row of `property`; nullptr when it has none.
-constexpr const OptionRange* findOptionRange(const char* property)
+inline constexpr int OptionRangeCount = static_cast<int>(sizeof(OptionRanges) / sizeof(OptionRanges[0]));
+
+/// The row number of `property`; -1 when it has none.
+constexpr int optionRangeIndex(const char* property)
 {
-  for (const OptionRange& r : OptionRanges)
+  for (int i = 0; i < OptionRangeCount; ++i)
   {
-    if (sameOptionName(r.Property, property))
+    if (sameOptionName(OptionRanges[i].Property, property))
     {
-      return &r;
+      return i;
     }
   }
-  return nullptr;
+  return -1;
+}
+
+/// The row of `property`; nullptr when it has none.
+inline const OptionRange* findOptionRange(const char* property)
+{
+  const int i = optionRangeIndex(property);
+  return i >= 0 ? &OptionRanges[i] : nullptr;
 }
 
 /// The row of `property`, evaluated at compile time where it is used as a
 /// constant (a name without a row does not compile there).
 constexpr const OptionRange& optionRange(const char* property)
 {
-  return findOptionRange(property) ? *findOptionRange(property)
-                                   : throw "OptionRanges.h: no row for this property";
+  return optionRangeIndex(property) >= 0 ? OptionRanges[optionRangeIndex(property)]
+                                         : throw "OptionRanges.h: no row for this property";
 }
 
 inline bool inOptionRange(const OptionRange& r, double value)
