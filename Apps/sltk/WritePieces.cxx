@@ -2,6 +2,7 @@
 #include "WritePieces.h"
 
 #include "WriteAtomically.h"
+#include "XmlDataSettings.h"
 #include "sltk/core/LowerCase.h"
 
 #include <vtkAlgorithm.h>
@@ -115,6 +116,11 @@ sltk::Status writePiecesWith(const std::string& path, vtkAlgorithm* producer, vt
   if constexpr (std::is_same<Writer, vtkXMLPHyperTreeGridWriter>::value)
   {
     writer->SetDataModeToBinary(); // as writeHyperTreeGrid (Documentation/Toolchain.md: the appended mode)
+    useFastXmlData(writer, false);
+  }
+  else
+  {
+    useFastXmlData(writer);
   }
   writer->SetFileName(summary.string().c_str());
   writer->SetNumberOfPieces(size);

@@ -4,6 +4,7 @@
 #include "FileNames.h"
 
 #include "WriteAtomically.h"
+#include "XmlDataSettings.h"
 
 #include <vtkHyperTreeGrid.h>
 #include <vtkImageData.h>
@@ -14,6 +15,8 @@
 #include <vtkXMLHyperTreeGridWriter.h>
 #include <vtkXMLImageDataWriter.h>
 #include <vtkXMLPolyDataWriter.h>
+
+#include <type_traits>
 
 namespace sltkcli
 {
@@ -26,6 +29,10 @@ bool writeWith(vtkDataObject* data, const std::string& path)
   vtkNew<Writer> writer;
   writer->SetInputData(data);
   writer->SetFileName(path.c_str());
+  if constexpr (std::is_base_of<vtkXMLWriter, Writer>::value)
+  {
+    useFastXmlData(writer);
+  }
   return writer->Write() == 1;
 }
 } // namespace
@@ -77,6 +84,7 @@ sltk::Status writeHyperTreeGrid(const std::string& path, vtkHyperTreeGrid* grid)
       writer->SetInputData(grid);
       writer->SetFileName(temporary.c_str());
       writer->SetDataModeToBinary();
+      useFastXmlData(writer, false);
       return writer->Write() == 1;
     });
 }
