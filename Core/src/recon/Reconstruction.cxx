@@ -20,7 +20,7 @@ Status reconstruct(
         [&](auto tag)
         {
           SlabRuns<D, typename decltype(tag)::type> runs(plan, options, grids, ctx, comm);
-          return runAlgorithm1(runs, plan, options, ctx, result, options.Runs);
+          return runAlgorithm1(runs, plan, options, ctx, result);
         });
     });
   plan.Box.toUser(result.SignedDistance);

@@ -5,7 +5,8 @@
 /// on the grid dx = C_dx h_P / 2^(r-1) (4.36), its set-up, its iterations
 /// (RunIterations.h) and, beyond the thesis, the recoveries when a run loses
 /// its zero level set or leaves points far from the surface. The uniform grids
-/// (SlabRuns.h) and the tiled band (tiled/TiledRuns.h) are the storages.
+/// (SlabRuns.h) and the tiled band (TiledRuns in tiled/TiledReconstruction.cxx) are
+/// the storages.
 ///
 /// A storage `R` of the runs provides (every call collective):
 ///  - `Status setUp(int run, double outsideFactor)`: run `run`'s grid, d and
@@ -52,19 +53,19 @@ void recover(const std::string& what, const Context& ctx, ReconstructionResult<D
 }
 } // namespace detail
 
-/// Runs 1..lastRun of Algorithm 1 with `options` (the plan's, or a finer
+/// Runs 1..options.Runs of Algorithm 1 with `options` (the plan's, or a finer
 /// start: reconstructWithRecoveries()) on `runs`' storage. A run 1 that loses
 /// its zero level set with an automatic K_P starts again with the ladder's
 /// next K_P (AutomaticParameters.h); a later run that loses it is replaced by
 /// the previous run's result where the storage holds it.
 template <int D, class Runs>
 Status runAlgorithm1(Runs& runs, const ReconstructionPlan<D>& plan, const ReconstructionOptions& options,
-  const Context& ctx, ReconstructionResult<D>& result, int lastRun)
+  const Context& ctx, ReconstructionResult<D>& result)
 {
   double outsideFactor = options.OutsideThresholdFactor;
   // An automatic K_P may be raised when run 1 loses its zero level set (AutomaticParameters.h).
   const double outsideRoom = plan.Enclosure ? outsideFactorWithRestart(outsideFactor) : outsideFactor;
-  for (int run = 1; run <= lastRun; ++run)
+  for (int run = 1; run <= options.Runs; ++run)
   {
     ctx.interrupter().start("run " + std::to_string(run) + "/" + std::to_string(options.Runs));
     const Status setUp = runs.setUp(run, outsideFactor);
@@ -114,12 +115,12 @@ Status runAlgorithm1(Runs& runs, const ReconstructionPlan<D>& plan, const Recons
       }
       return status;
     }
-    if (run < lastRun)
+    if (run < options.Runs)
     {
       runs.advance(run);
     }
   }
-  return runs.keepCurrent(lastRun, result);
+  return runs.keepCurrent(options.Runs, result);
 }
 
 /// Every rank must hold the same plan, made from the whole cloud (each rank's

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/tiled/TiledReconstruction.h"
 
-#include "sltk/recon/RunIterations.h"
 #include "../recon/RunLoop.h"
 #include "../recon/SlabRuns.h"
 #include "TiledBand.h"
 #include "TiledTransfer.h"
 #include "sltk/grid/SlabExchange.h"
 #include "sltk/recon/ReconstructionInterpolator.h"
+#include "sltk/recon/RunIterations.h"
 
 #include <algorithm>
 #include <chrono>
@@ -119,7 +119,8 @@ public:
     TiledRunRecord storage;
     storage.PeakTiles = this->Field.tileCount(); // the transfer's and the setup reinitialisation's
     TiledBand<D, Interp> band(this->Plan, run, this->Ctx, this->Field, this->Distribution, storage);
-    const Status status = iterateRun<D>(band, this->Options, run, this->Plan.CloudSpacing, this->Ctx, records, vanished);
+    const Status status =
+      iterateRun<D>(band, this->Options, run, this->Plan.CloudSpacing, this->Ctx, records, vanished);
     recordStorage(this->Field, run, storage, this->Distribution, this->Out.Storage);
     return status;
   }
@@ -228,7 +229,7 @@ Status reconstructTiled(
         [&](auto tag)
         {
           TiledRuns<D, typename decltype(tag)::type> runs(plan, options, grids, ctx, comm, result);
-          const Status status = runAlgorithm1(runs, plan, options, ctx, result.Records, options.Runs);
+          const Status status = runAlgorithm1(runs, plan, options, ctx, result.Records);
           for (IterationRecord& it : result.Records.History)
           {
             if (it.Run == 1) // run 1 is uniform: every node is a leaf
@@ -291,4 +292,3 @@ template Status reconstructTiled(
   const ReconstructionPlan<3>&, const Context&, TiledReconstructionResult<3>&, const Communicator&);
 
 } // namespace sltk
-
