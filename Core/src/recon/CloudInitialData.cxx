@@ -2,7 +2,7 @@
 #include "sltk/recon/CloudInitialData.h"
 
 #include "ExternalMarking.h"
-#include "sltk/levelset/FastSweeping.h"
+#include "sltk/recon/CloudInitialDataSlabs.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,13 +17,8 @@ template <int D>
 Status markExternal(const GridField<D, double>& distance, double threshold, const Context& ctx,
   std::vector<std::uint8_t>& external, int* rounds)
 {
-  const GridSpec<D>& g = distance.spec();
-  if (!(threshold > 0.0) || !std::isfinite(threshold))
-  {
-    return Status::invalidArgument("the threshold gamma_P = K_P h_P must be positive and finite");
-  }
-  marking::markBoundary(distance, 0, g.Dims[D - 1], ctx, external);
-  return marking::spreadExternal(distance, threshold, ctx, external, rounds);
+  const Index rows = distance.spec().Dims[D - 1];
+  return markExternalSlabs(distance, threshold, wholeSlab(rows), rows, serialCommunicator(), ctx, external, rounds);
 }
 
 template <int D>
@@ -63,23 +58,9 @@ template <int D>
 Status cloudInitialData(const GridField<D, double>& distance, double threshold, const Context& ctx,
   GridField<D, double>& phi0, const InitialDataOptions& options, InitialDataReport* report)
 {
-  SLTK_RETURN_IF_ERROR(marking::checkInitialDataOptions(options));
-  InitialDataReport local;
-  std::vector<std::uint8_t> external;
-  SLTK_RETURN_IF_ERROR(markExternal(distance, threshold, ctx, external, &local.MarkingRounds));
-  SLTK_RETURN_IF_ERROR(marking::initialDataFromMarks(distance, threshold, external, ctx, phi0, options, local,
-    [&](GridField<D, double>& w, const std::vector<std::uint8_t>& frozen, int& cycles)
-    {
-      FastSweepingReport swept;
-      const Status status = fastSweep(w, frozen, ctx, marking::sweepOptions(options), &swept);
-      cycles = swept.Cycles;
-      return status;
-    }));
-  if (report)
-  {
-    *report = local;
-  }
-  return Status::ok();
+  const Index rows = distance.spec().Dims[D - 1];
+  return cloudInitialDataSlabs(
+    distance, threshold, wholeSlab(rows), rows, serialCommunicator(), ctx, phi0, options, report);
 }
 
 template <int D>

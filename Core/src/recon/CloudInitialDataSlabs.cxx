@@ -31,10 +31,12 @@ Status markExternalSlabs(const GridField<D, double>& distance, double threshold,
   SLTK_RETURN_IF_ERROR(comm.agree(input));
   marking::markBoundary(distance, slab.First, rows, ctx, external);
   const Index rowNodes = g.nodeCount() / g.Dims[D - 1];
-  int round = 0;
-  for (;; ++round)
+  int passes = 0; // rounds of passes over all axes, summed over the exchanges
+  for (;;)
   {
-    SLTK_RETURN_IF_ERROR(comm.agree(marking::spreadExternal(distance, threshold, ctx, external, nullptr)));
+    int spread = 0;
+    SLTK_RETURN_IF_ERROR(comm.agree(marking::spreadExternal(distance, threshold, ctx, external, &spread)));
+    passes += spread;
     // The neighbours' marks OR-ed into my ghost rows: a mark is never wrong, so none is taken back.
     bool received = false;
     exchangeSlabRows<std::uint8_t>(
@@ -57,7 +59,7 @@ Status markExternalSlabs(const GridField<D, double>& distance, double threshold,
   }
   if (rounds)
   {
-    *rounds = round + 1;
+    *rounds = passes;
   }
   return Status::ok();
 }

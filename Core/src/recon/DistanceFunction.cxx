@@ -120,27 +120,8 @@ template <int D>
 Status distanceToCloud(const PointLocator<D>& locator, const GridSpec<D>& grid, const Context& ctx,
   GridField<D, double>& distance, const DistanceOptions& options, DistanceReport* report)
 {
-  SLTK_RETURN_IF_ERROR(checkDistanceInput(locator.cloud(), grid, options));
-  distance.resize(grid, options.Ghost, std::numeric_limits<double>::infinity());
-  std::vector<std::uint8_t> exact;
-  Index exactNodes = 0;
-  SLTK_RETURN_IF_ERROR(exactNearPoints(locator, grid, 0, ctx, options, distance, exact, exactNodes));
-  // Fast sweeping for all other nodes (4.4.2, ref. [121]).
-  FastSweepingOptions sweep;
-  sweep.MaxCycles = options.MaxSweepCycles;
-  sweep.Tolerance = options.SweepTolerance;
-  FastSweepingReport swept;
-  SLTK_RETURN_IF_ERROR(fastSweep(distance, exact, ctx, sweep, &swept));
-  if (options.Ghost > 0)
-  {
-    distance.fillGhosts();
-  }
-  if (report)
-  {
-    report->ExactNodes = exactNodes;
-    report->SweepCycles = swept.Cycles;
-  }
-  return Status::ok();
+  return distanceToCloudSlabs(
+    locator, grid, wholeSlab(grid.Dims[D - 1]), serialCommunicator(), ctx, distance, options, report);
 }
 
 template <int D>

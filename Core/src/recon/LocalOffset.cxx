@@ -132,12 +132,8 @@ template <int D>
 Status locallyScaledDistance(const GridField<D, double>& distance, const PointLocator<D>& locator,
   const std::vector<double>& sparsity, double reach, const Context& ctx, GridField<D, double>& scaled)
 {
-  GridField<D, double> rho;
-  std::vector<Index> order;
-  SLTK_RETURN_IF_ERROR(queryNearCloud(distance, locator, sparsity, reach, ctx, rho, order));
-  carryDescent(distance, order, 0, distance.spec().Dims[D - 1], rho);
-  divideByRho(distance, rho, ctx, scaled);
-  return Status::ok();
+  return locallyScaledDistanceSlabs(distance, locator, sparsity, reach, wholeSlab(distance.spec().Dims[D - 1]),
+    serialCommunicator(), ctx, scaled);
 }
 
 template <int D>

@@ -75,11 +75,8 @@ public:
   /// Keeps the nodes of the owned rows (window numbering, ascending).
   void keepOwned(NodeList& nodes) const
   {
-    if (this->distributed())
-    {
-      const Index b = this->ownedBegin(), e = this->ownedEnd();
-      nodes.erase(std::remove_if(nodes.begin(), nodes.end(), [b, e](Index k) { return k < b || k >= e; }), nodes.end());
-    }
+    const Index b = this->ownedBegin(), e = this->ownedEnd();
+    nodes.erase(std::remove_if(nodes.begin(), nodes.end(), [b, e](Index k) { return k < b || k >= e; }), nodes.end());
   }
 
   /// The band nodes (|phi| < gamma) of the `depth` ghost rows next to the
@@ -111,18 +108,15 @@ public:
   /// owners' values (collective; nothing on one rank).
   void exchange(GridField<D>& field, Index depth = std::numeric_limits<Index>::max()) const
   {
-    if (this->distributed())
-    {
-      exchangeGhostRows(field, this->Slab, *this->Comm, nullptr, depth);
-    }
+    exchangeGhostRows(field, this->Slab, *this->Comm, nullptr, depth);
   }
 
   /// The same status on every rank (the first failure's); as given on one rank.
-  Status agree(const Status& status) const { return this->distributed() ? this->Comm->agree(status) : status; }
+  Status agree(const Status& status) const { return this->Comm->agree(status); }
 
-  double sum(double value) const { return this->distributed() ? this->Comm->allReduce(value, ReduceOp::Sum) : value; }
+  double sum(double value) const { return this->Comm->allReduce(value, ReduceOp::Sum); }
 
-  double max(double value) const { return this->distributed() ? this->Comm->allReduce(value, ReduceOp::Max) : value; }
+  double max(double value) const { return this->Comm->allReduce(value, ReduceOp::Max); }
 
   /// Records the band (|phi| < gamma) of phi's owned rows, nodes per row of
   /// the whole grid summed over the ranks, for the next run's cut (plan()).

@@ -26,13 +26,12 @@
 namespace sltk
 {
 
-/// The reinitialisation (1.38)-(1.45) of the owned nodes `nodes`, on slabs when distributed.
+/// The reinitialisation (1.38)-(1.45) of the owned nodes `nodes` on this rank's slab.
 template <int D>
 Status reinitialiseOn(
   GridField<D>& phi, const NodeList& nodes, const RunSlab<D>& slab, const ReinitOptions& options, const Context& ctx)
 {
-  return slab.distributed() ? reinitialiseSlabs<D>(phi, nodes, slab.slab(), slab.comm(), options, ctx)
-                            : reinitialise<D>(phi, nodes, options, ctx);
+  return reinitialiseSlabs<D>(phi, nodes, slab.slab(), slab.comm(), options, ctx);
 }
 
 template <int D, class Interp>
@@ -74,10 +73,7 @@ public:
   {
     SLTK_RETURN_IF_ERROR(
       this->Slab.agree(energyFunctional(this->Phi, this->Dist, this->Band, this->Ctx, ep, options)));
-    if (this->Slab.distributed())
-    {
-      reduceEnergy(ep, options, this->Slab.comm());
-    }
+    reduceEnergy(ep, options, this->Slab.comm());
     return Status::ok();
   }
 
@@ -145,10 +141,7 @@ public:
       sums[0] += std::fabs(this->Phi(this->Phi.nodeIndex(this->ReinitBand[k])) - this->Previous[k]);
       sums[1] += std::fabs(this->Previous[k]);
     }
-    if (this->Slab.distributed())
-    {
-      this->Slab.comm().allReduce(sums, 5, ReduceOp::Sum);
-    }
+    this->Slab.comm().allReduce(sums, 5, ReduceOp::Sum);
     it.Change = sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
     it.CloudError = sums[2] / static_cast<double>(this->Cloud.size());
     it.BandSize = static_cast<Index>(sums[3]);

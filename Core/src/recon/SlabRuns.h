@@ -46,20 +46,18 @@ Status transfer(
   const GridSpec<D> grid = slab.window();
   to.resize(grid, PhiGhost);
   const Index b = slab.ownedBegin(), e = slab.ownedEnd();
-  if (slab.distributed())
-  {
-    const GridSpec<D>& f = from.spec();
-    const SlabPlan& fs = fromSlab.slab();
-    const double lowest = fs.First > 0 ? f.coordinate(D - 1, 1) : -HUGE_VAL;
-    const double highest = fs.Stop < fromSlab.rows() ? f.coordinate(D - 1, f.Dims[D - 1] - 2) : HUGE_VAL;
-    const double first = grid.coordinate(D - 1, slab.slab().Begin - slab.slab().First);
-    const double last = grid.coordinate(D - 1, slab.slab().End - 1 - slab.slab().First);
-    const Status covered = first >= lowest && last <= highest
-      ? Status::ok()
-      : Status::invalidArgument("the previous run's slab does not cover this run's owned rows (rank " +
-          std::to_string(slab.comm().rank()) + "): run on fewer ranks");
-    SLTK_RETURN_IF_ERROR(slab.agree(covered));
-  }
+  // The previous window's rows, but for its ghost rows' outermost (one rank: every row).
+  const GridSpec<D>& f = from.spec();
+  const SlabPlan& fs = fromSlab.slab();
+  const double lowest = fs.First > 0 ? f.coordinate(D - 1, 1) : -HUGE_VAL;
+  const double highest = fs.Stop < fromSlab.rows() ? f.coordinate(D - 1, f.Dims[D - 1] - 2) : HUGE_VAL;
+  const double firstOwned = grid.coordinate(D - 1, slab.slab().Begin - slab.slab().First);
+  const double lastOwned = grid.coordinate(D - 1, slab.slab().End - 1 - slab.slab().First);
+  const Status covered = firstOwned >= lowest && lastOwned <= highest
+    ? Status::ok()
+    : Status::invalidArgument("the previous run's slab does not cover this run's owned rows (rank " +
+        std::to_string(slab.comm().rank()) + "): run on fewer ranks");
+  SLTK_RETURN_IF_ERROR(slab.agree(covered));
   ctx.parallelFor(b, e,
     [&](Index first, Index stop)
     {
@@ -89,8 +87,7 @@ Status cloudInitialDataOn(const ReconstructionPlan<D>& plan, double outsideFacto
   const double threshold = outsideFactor * plan.CloudSpacing;
   const auto phi0 = [&](const GridField<D>& u)
   {
-    return slab.distributed() ? cloudInitialDataSlabs(u, threshold, slab.slab(), slab.rows(), slab.comm(), ctx, phi, io)
-                              : cloudInitialData(u, threshold, ctx, phi, io);
+    return cloudInitialDataSlabs(u, threshold, slab.slab(), slab.rows(), slab.comm(), ctx, phi, io);
   };
   if (plan.Sparsity.empty())
   {
@@ -100,9 +97,8 @@ Status cloudInitialDataOn(const ReconstructionPlan<D>& plan, double outsideFacto
   const double sparsest = *std::max_element(plan.Sparsity.begin(), plan.Sparsity.end());
   const double reach = sparsest * outsideFactor * plan.CloudSpacing;
   GridField<D> scaled;
-  SLTK_RETURN_IF_ERROR(slab.distributed()
-      ? locallyScaledDistanceSlabs(dist, *plan.Locator, plan.Sparsity, reach, slab.slab(), slab.comm(), ctx, scaled)
-      : locallyScaledDistance(dist, *plan.Locator, plan.Sparsity, reach, ctx, scaled));
+  SLTK_RETURN_IF_ERROR(
+    locallyScaledDistanceSlabs(dist, *plan.Locator, plan.Sparsity, reach, slab.slab(), slab.comm(), ctx, scaled));
   return phi0(scaled);
 }
 
@@ -175,9 +171,8 @@ public:
       DistanceOptions dopt;
       dopt.Ghost = PhiGhost;
       const Communicator& comm = this->Slab.comm();
-      SLTK_RETURN_IF_ERROR(this->Slab.distributed()
-          ? distanceToCloudSlabs(*this->Plan.Locator, grid, this->Slab.slab(), comm, this->Ctx, this->Dist, dopt)
-          : distanceToCloud(*this->Plan.Locator, grid, this->Ctx, this->Dist, dopt)); // (4.4.2)
+      SLTK_RETURN_IF_ERROR(distanceToCloudSlabs(
+        *this->Plan.Locator, grid, this->Slab.slab(), comm, this->Ctx, this->Dist, dopt)); // (4.4.2)
     }
     else
     {

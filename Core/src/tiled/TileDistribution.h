@@ -18,7 +18,8 @@
 ///    iteration), so that every slot map stays the same;
 ///  - sums are added in the one-rank order (orderedSum), so the result does
 ///    not depend on the number of ranks, to the last bit.
-/// With one rank every call is a no-op or the serial operation.
+/// One rank runs the same code: it owns every slot, so it holds no ghost, and
+/// its exchanges and reductions are the serial communicator's copies.
 
 #include "TileOwners.h"
 #include "sltk/core/IndexBox.h"
@@ -66,10 +67,6 @@ public:
   /// The owners of the field's slots; ghosts are then held again by holdGhosts().
   void setOwners(const TiledField<D>& field, std::vector<std::int32_t> owners)
   {
-    if (!this->distributed())
-    {
-      return;
-    }
     this->Owners = std::move(owners);
     this->Zone = distanceToRank<D>(field.slotDims(), this->Owners, this->rank(), MaxGhostLayers + 1);
     this->HeldDepth = 1; // a new grid: one layer until a step asks for more
@@ -91,10 +88,10 @@ public:
     return tiles;
   }
 
-  /// The owner of every slot (empty on one rank).
+  /// The owner of every slot.
   const std::vector<std::int32_t>& owners() const { return this->Owners; }
-  bool ownsSlot(Index s) const { return !this->distributed() || this->Owners[static_cast<size_t>(s)] == this->rank(); }
-  int ownerOf(Index s) const { return this->distributed() ? this->Owners[static_cast<size_t>(s)] : 0; }
+  bool ownsSlot(Index s) const { return this->Owners[static_cast<size_t>(s)] == this->rank(); }
+  int ownerOf(Index s) const { return this->Owners[static_cast<size_t>(s)]; }
   bool owns(const TiledField<D>& field, std::int32_t id) const { return this->ownsSlot(field.tileSlot(id)); }
 
   /// The tiles of `tiles` this rank owns, in their order.
@@ -119,7 +116,7 @@ public:
     {
       count += this->owns(field, id) ? 1 : 0;
     }
-    return this->distributed() ? this->Comm->allReduce(count, ReduceOp::Sum) : count;
+    return this->Comm->allReduce(count, ReduceOp::Sum);
   }
 
   /// The tiles and the octree's leaves, as the hyper tree grid holds them
@@ -145,12 +142,8 @@ public:
       mine[0] += entry >= 0 ? 1 : 0;
       mine[1] += entry >= 0 ? field.leafCount(entry) : 1; // a slot without a tile: one leaf
     }
-    std::int64_t largest = mine[1];
-    if (this->distributed())
-    {
-      largest = this->Comm->allReduce(largest, ReduceOp::Max);
-      this->Comm->allReduce(mine, 2, ReduceOp::Sum);
-    }
+    const std::int64_t largest = this->Comm->allReduce(mine[1], ReduceOp::Max);
+    this->Comm->allReduce(mine, 2, ReduceOp::Sum);
     return { mine[0], mine[1], largest };
   }
 
@@ -160,7 +153,7 @@ public:
   {
     const Status mine = local.isOk() ? this->Broken : local;
     this->Broken = Status::ok();
-    return this->distributed() ? this->Comm->agree(mine) : mine;
+    return this->Comm->agree(mine);
   }
 
   /// Slot changes of this rank's own slots: a tile there, or a side.
@@ -172,10 +165,7 @@ public:
   };
   void recordChange(std::vector<std::int64_t>& changes, Index slot, SlotState state) const
   {
-    if (this->distributed())
-    {
-      changes.push_back(slot * 4 + static_cast<std::int64_t>(state));
-    }
+    changes.push_back(slot * 4 + static_cast<std::int64_t>(state));
   }
 
   /// Every rank's `changes` (recordChange) applied to this rank's slot map:
@@ -185,10 +175,6 @@ public:
   template <class Forget>
   void shareChanges(TiledField<D>& field, const std::vector<std::int64_t>& changes, Forget&& forget)
   {
-    if (!this->distributed())
-    {
-      return;
-    }
     this->PlanValid = false;
     const std::vector<std::int64_t> all = this->Comm->allGatherV(changes);
     std::vector<std::uint8_t> remove;
@@ -247,10 +233,6 @@ public:
   template <class Forget>
   void holdGhosts(TiledField<D>& field, int depth, Forget&& forget)
   {
-    if (!this->distributed())
-    {
-      return;
-    }
     this->HeldDepth = depth;
     this->PlanValid = false;
     std::vector<std::uint8_t> remove;
@@ -282,10 +264,6 @@ public:
   /// Collective over the neighbours.
   void exchange(TiledField<D>& field, bool withDistance)
   {
-    if (!this->distributed())
-    {
-      return;
-    }
     this->plan(field);
     const size_t tileBytes =
       sizeof(std::int64_t) + static_cast<size_t>(TiledField<D>::Nodes) * (withDistance ? 2 : 1) * sizeof(double);
@@ -300,10 +278,6 @@ public:
   /// the neighbours.
   void exchangeFaces(TiledField<D>& field)
   {
-    if (!this->distributed())
-    {
-      return;
-    }
     this->plan(field);
     constexpr size_t FaceBytes = static_cast<size_t>(TiledField<D>::Nodes / TileEdge) * sizeof(double);
     this->exchangeWithNeighbours([&](std::uint8_t faces) { return std::bitset<8>(faces).count() * FaceBytes; },
@@ -327,10 +301,6 @@ public:
   template <class Forget>
   void migrate(TiledField<D>& field, std::vector<std::int32_t> owners, Forget&& forget)
   {
-    if (!this->distributed())
-    {
-      return;
-    }
     std::vector<std::vector<std::int32_t>> leaving(static_cast<size_t>(this->Comm->size()));
     std::vector<std::uint8_t> remove(static_cast<size_t>(field.tileCount()), 0);
     field.forEachTileInSlotOrder(
@@ -391,16 +361,13 @@ public:
   }
 
   /// The sums over every rank's `items` (key, N values) added in the order of
-  /// the keys, starting from `start`: on one rank, the items in their order
-  /// (the callers' are in key order). Collective.
+  /// the keys, starting from `start` (the callers' are in key order: one rank
+  /// adds its items in their order). Collective.
   template <size_t N>
   std::array<double, N> orderedSum(std::vector<KeyedSums<N>> items, std::array<double, N> start) const
   {
-    if (this->distributed())
-    {
-      items = this->Comm->allGatherV(items);
-      std::stable_sort(items.begin(), items.end(), [](const auto& x, const auto& y) { return x.Key < y.Key; });
-    }
+    items = this->Comm->allGatherV(items);
+    std::stable_sort(items.begin(), items.end(), [](const auto& x, const auto& y) { return x.Key < y.Key; });
     for (const auto& item : items)
     {
       for (size_t k = 0; k < N; ++k)
@@ -411,7 +378,7 @@ public:
     return start;
   }
 
-  double max(double value) const { return this->distributed() ? this->Comm->allReduce(value, ReduceOp::Max) : value; }
+  double max(double value) const { return this->Comm->allReduce(value, ReduceOp::Max); }
 
 private:
   /// Who sends what: this rank's tiles to each rank within the held depth of

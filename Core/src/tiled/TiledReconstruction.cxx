@@ -36,15 +36,12 @@ void recordStorage(const TiledField<D>& field, int run, const TiledRunRecord& it
   r.LargestRankLeaves = held.LargestRankLeaves;
   r.UniformNodes = field.grid().nodeCount();
   r.Bytes = field.bytes();
-  if (distribution.distributed())
-  {
-    std::int64_t counts[4] = { r.AddedTiles, r.FreedTiles, r.PeakTiles, r.ExactDistances };
-    distribution.comm().allReduce(counts, 4, ReduceOp::Sum);
-    r.AddedTiles = counts[0];
-    r.FreedTiles = counts[1];
-    r.PeakTiles = counts[2];
-    r.ExactDistances = counts[3];
-  }
+  std::int64_t counts[4] = { r.AddedTiles, r.FreedTiles, r.PeakTiles, r.ExactDistances };
+  distribution.comm().allReduce(counts, 4, ReduceOp::Sum);
+  r.AddedTiles = counts[0];
+  r.FreedTiles = counts[1];
+  r.PeakTiles = counts[2];
+  r.ExactDistances = counts[3];
   storage.push_back(r);
 }
 
@@ -179,10 +176,8 @@ private:
     const Index nodes = grid.nodeCount();
     // Run 1 is uniform: every node is a leaf, and each rank owns its slab's rows.
     this->FirstRunLeaves = nodes;
-    this->FirstRunLargestRankLeaves = this->Distribution.distributed()
-      ? comm.allReduce(
-          static_cast<std::int64_t>((first.Slab.End - first.Slab.Begin) * (nodes / grid.Dims[D - 1])), ReduceOp::Max)
-      : nodes;
+    this->FirstRunLargestRankLeaves = comm.allReduce(
+      static_cast<std::int64_t>((first.Slab.End - first.Slab.Begin) * (nodes / grid.Dims[D - 1])), ReduceOp::Max);
     this->Dense = this->Distribution.distributed()
       ? gatherSlabRows(first.SignedDistance, first.Slab, first.WholeGrid, first.SignedDistance.ghost(), comm)
       : std::move(first.SignedDistance);

@@ -204,10 +204,7 @@ Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma
       forEachIndexInBox<D>(
         lo, hi, [&](const std::array<Index, D>& t) { marked[static_cast<size_t>(field.slotIndex(t))] = 1; });
     });
-  if (distribution.distributed())
-  {
-    distribution.setOwners(field, transferOwners(previous, field, marked, distribution));
-  }
+  distribution.setOwners(field, transferOwners(previous, field, marked, distribution));
   Index count = 0;
   for (Index s = 0; s < field.slotCount(); ++s)
   {
@@ -286,26 +283,23 @@ Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma
       }
     },
     1);
-  if (distribution.distributed())
+  using State = typename TileDistribution<D>::SlotState;
+  std::vector<std::int64_t> changes;
+  for (Index s = 0; s < field.slotCount(); ++s)
   {
-    using State = typename TileDistribution<D>::SlotState;
-    std::vector<std::int64_t> changes;
-    for (Index s = 0; s < field.slotCount(); ++s)
+    if (distribution.ownsSlot(s) && (field.slot(s) >= 0 || field.slot(s) == TiledField<D>::Inside))
     {
-      if (distribution.ownsSlot(s) && (field.slot(s) >= 0 || field.slot(s) == TiledField<D>::Inside))
-      {
-        distribution.recordChange(changes, s, field.slot(s) >= 0 ? State::Tile : State::Inside);
-      }
+      distribution.recordChange(changes, s, field.slot(s) >= 0 ? State::Tile : State::Inside);
     }
-    distribution.shareChanges(field, changes, NothingToForget);
-    if (previous.Tiled)
-    {
-      distribution.migrate(
-        field, distribution.balancedOwners(field, TileDistribution<D>::tileSlots(field)), NothingToForget);
-    }
-    distribution.holdGhosts(field, 1, NothingToForget);
-    distribution.exchange(field, true);
   }
+  distribution.shareChanges(field, changes, NothingToForget);
+  if (previous.Tiled)
+  {
+    distribution.migrate(
+      field, distribution.balancedOwners(field, TileDistribution<D>::tileSlots(field)), NothingToForget);
+  }
+  distribution.holdGhosts(field, 1, NothingToForget);
+  distribution.exchange(field, true);
   return Status::ok();
 }
 

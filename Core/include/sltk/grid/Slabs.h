@@ -58,6 +58,15 @@ inline Status planSlabAt(
   return Status::ok();
 }
 
+/// One rank's slab holding every row of `rows` (no ghost rows): the slab
+/// functions' one-rank call, so that one rank runs the code of many.
+inline SlabPlan wholeSlab(Index rows)
+{
+  SlabPlan plan;
+  plan.End = plan.Stop = rows;
+  return plan;
+}
+
 /// The even boundaries of `rows` rows over `size` ranks (evenSlabBegin).
 inline std::vector<Index> evenSlabBoundaries(Index rows, int size)
 {

@@ -20,13 +20,15 @@ namespace sltk
 
 /// Step 1 on `distance`, this rank's window of `slab` in a grid of `rows` rows
 /// along the last axis (the ghost rows hold the neighbours' distances, as
-/// distanceToCloudSlabs leaves them). `rounds`: marking rounds, each ended by
-/// one exchange. A collective call.
+/// distanceToCloudSlabs leaves them). `rounds`: the rounds of passes over all
+/// axes, summed over the exchanges. A collective call; markExternal is its
+/// one-rank call (wholeSlab).
 template <int D>
 Status markExternalSlabs(const GridField<D, double>& distance, double threshold, const SlabPlan& slab, Index rows,
   const Communicator& comm, const Context& ctx, std::vector<std::uint8_t>& external, int* rounds = nullptr);
 
-/// Steps 1-2 on the window: phi0 of the window (rows slab.First .. slab.Stop - 1).
+/// Steps 1-2 on the window: phi0 of the window (rows slab.First .. slab.Stop - 1);
+/// cloudInitialData is its one-rank call.
 template <int D>
 Status cloudInitialDataSlabs(const GridField<D, double>& distance, double threshold, const SlabPlan& slab, Index rows,
   const Communicator& comm, const Context& ctx, GridField<D, double>& phi0, const InitialDataOptions& options = {},

@@ -32,7 +32,8 @@ Status locallyScaledDistance(const GridField<D, double>& distance, const PointLo
 /// The same on this rank's window of a slab decomposition (grid/Slabs.h, the
 /// ghost rows of `distance` current): the descent is carried on the window and
 /// the ghost rows exchanged until none changes on any rank, so u is the
-/// one-rank u (a descent path may cross slabs). A collective call.
+/// one-rank u (a descent path may cross slabs). A collective call;
+/// locallyScaledDistance is its one-rank call (wholeSlab).
 template <int D>
 Status locallyScaledDistanceSlabs(const GridField<D, double>& distance, const PointLocator<D>& locator,
   const std::vector<double>& sparsity, double reach, const SlabPlan& slab, const Communicator& comm,
