@@ -224,7 +224,24 @@ struct TestSpec
   std::string ErrTable; // empty: no errors (Test 5)
   std::string CpuTable;
   long long DefaultMaxN;
+  double NMinusOneFactor = -1.0; // the orders count N + this intervals per axis: N - 1, periodic grids N
+  bool MinMaxTable = false;      // Table 3.9's min and max as well (Test 4)
 };
+
+// The thesis's tests of 3.5 and their tables (Test 3 also with the text's T = 0.5).
+const char* const Test1Title = "Test 1 (3.5.1): rotation, RK3, dt = 3 dx, T = 1 -- Tables 3.1, 3.2";
+const char* const Test2Title = "Test 2 (3.5.2): 1D semi-concave, RK1, dt = 10 dx, T = 1 -- Tables 3.3, 3.4";
+const char* const Test3Title = "Test 3 (3.5.3): 1D eikonal, periodic, RK3 over A^3, dt = dx, T = 1 -- Tables 3.5, 3.6";
+const char* const Test3hTitle = "Test 3 with the text's T = 0.5 (thesis columns are Table 3.5's, T = 1 caption)";
+const char* const Test4Title =
+  "Test 4 (3.5.4): 2D semi-convex, disc R = 2.2, RK1, dt = 5/4 dx, T = 0.5 -- Tables 3.7, 3.8";
+const char* const Test5Title = "Test 5 (3.5.5): Zermelo with obstacles, RK3 over A^3, dt = dx, T = 3 -- Table 3.10";
+const TestSpec Test1{ "1", Test1Title, "table_3_1_test1_errors", "table_3_2_test1_cpu_s", 321 };
+const TestSpec Test2{ "2", Test2Title, "table_3_3_test2_errors", "table_3_4_test2_cpu_s", 2561 };
+const TestSpec Test3{ "3", Test3Title, "table_3_5_test3_errors", "table_3_6_test3_cpu_s", 1006, 0.0 };
+const TestSpec Test3h{ "3h", Test3hTitle, "table_3_5_test3_errors", "table_3_6_test3_cpu_s", 1006, 0.0 };
+const TestSpec Test4{ "4", Test4Title, "table_3_7_test4_errors", "table_3_8_test4_cpu_s", 81, -1.0, true };
+const TestSpec Test5{ "5", Test5Title, "", "table_3_10_test5_cpu_s", 126 };
 
 void printHeader(const TestSpec& spec, bool errors)
 {
@@ -243,8 +260,10 @@ void printHeader(const TestSpec& spec, bool errors)
 
 template <int D, class Problem, class SetupFn>
 void runTable(const ThesisTables& tables, const TestSpec& spec, const Config& cfg, const sltk::Context& ctx,
-  const Problem& problem, SetupFn&& makeSetup, double nMinusOneFactor, bool minMaxTable = false)
+  const Problem& problem, SetupFn&& makeSetup)
 {
+  const double nMinusOneFactor = spec.NMinusOneFactor;
+  const bool minMaxTable = spec.MinMaxTable;
   std::vector<std::string> names;
   if (!spec.ErrTable.empty())
   {
@@ -390,54 +409,19 @@ int main(int argc, char** argv)
   std::printf("SLTK HJB benchmark (thesis 3.5): threads %d, cell cache %d (0: automatic), warm start %d (-1: "
               "preset), median of %d run(s)\n",
     cfg.Threads, cfg.Cache, cfg.Warm, cfg.Repeat);
-  auto wants = [&](const char* id) { return cfg.Test == "all" || cfg.Test == id; };
-  if (wants("1"))
+  // A table runs when --test names it (or is "all"), in the dimension of its preset's grid.
+  auto run = [&](const TestSpec& spec, const auto& problem, auto makeSetup)
   {
-    runTable<2>(
-      tables,
-      { "1", "Test 1 (3.5.1): rotation, RK3, dt = 3 dx, T = 1 -- Tables 3.1, 3.2", "table_3_1_test1_errors",
-        "table_3_2_test1_cpu_s", 321 },
-      cfg, ctx, sltk::test1Problem(), [](long long n) { return sltk::test1Setup(n); }, -1.0);
-  }
-  if (wants("2"))
-  {
-    runTable<1>(
-      tables,
-      { "2", "Test 2 (3.5.2): 1D semi-concave, RK1, dt = 10 dx, T = 1 -- Tables 3.3, 3.4", "table_3_3_test2_errors",
-        "table_3_4_test2_cpu_s", 2561 },
-      cfg, ctx, sltk::test2Problem(), [](long long n) { return sltk::test2Setup(n); }, -1.0);
-  }
-  if (wants("3"))
-  {
-    runTable<1>(
-      tables,
-      { "3", "Test 3 (3.5.3): 1D eikonal, periodic, RK3 over A^3, dt = dx, T = 1 -- Tables 3.5, 3.6",
-        "table_3_5_test3_errors", "table_3_6_test3_cpu_s", 1006 },
-      cfg, ctx, sltk::test3Problem(), [](long long n) { return sltk::test3Setup(n, 1.0); }, 0.0);
-  }
-  if (cfg.Test == "3h" || cfg.Test == "all")
-  {
-    runTable<1>(
-      tables,
-      { "3h", "Test 3 with the text's T = 0.5 (thesis columns are Table 3.5's, T = 1 caption)",
-        "table_3_5_test3_errors", "table_3_6_test3_cpu_s", 1006 },
-      cfg, ctx, sltk::test3Problem(), [](long long n) { return sltk::test3Setup(n, 0.5); }, 0.0);
-  }
-  if (wants("4"))
-  {
-    runTable<2>(
-      tables,
-      { "4", "Test 4 (3.5.4): 2D semi-convex, disc R = 2.2, RK1, dt = 5/4 dx, T = 0.5 -- Tables 3.7, 3.8",
-        "table_3_7_test4_errors", "table_3_8_test4_cpu_s", 81 },
-      cfg, ctx, sltk::test4Problem(), [](long long n) { return sltk::test4Setup(n); }, -1.0, true);
-  }
-  if (wants("5"))
-  {
-    runTable<2>(
-      tables,
-      { "5", "Test 5 (3.5.5): Zermelo with obstacles, RK3 over A^3, dt = dx, T = 3 -- Table 3.10", "",
-        "table_3_10_test5_cpu_s", 126 },
-      cfg, ctx, sltk::test5Problem(), [](long long n) { return sltk::test5Setup(n); }, -1.0);
-  }
+    if (cfg.Test == "all" || cfg.Test == spec.Id)
+    {
+      runTable<decltype(makeSetup(0LL).Grid)::Dim>(tables, spec, cfg, ctx, problem, makeSetup);
+    }
+  };
+  run(Test1, sltk::test1Problem(), [](long long n) { return sltk::test1Setup(n); });
+  run(Test2, sltk::test2Problem(), [](long long n) { return sltk::test2Setup(n); });
+  run(Test3, sltk::test3Problem(), [](long long n) { return sltk::test3Setup(n, 1.0); });
+  run(Test3h, sltk::test3Problem(), [](long long n) { return sltk::test3Setup(n, 0.5); });
+  run(Test4, sltk::test4Problem(), [](long long n) { return sltk::test4Setup(n); });
+  run(Test5, sltk::test5Problem(), [](long long n) { return sltk::test5Setup(n); });
   return 0;
 }

@@ -94,6 +94,45 @@ std::vector<sltk::RunParameters> scheduleWithFinalEta(double finalEta)
   return { sltk::table41(1), sltk::table41(2), { 2.0, finalEta } };
 }
 
+/// The scans of 4.5.4-4.5.5 (--scans): file, thesis table, title, C_dx, K_P, initial guess,
+/// iteration limit and the note printed with the table.
+const std::vector<ScanCase>& scanCases()
+{
+  constexpr auto marking = sltk::InitialGuess::OutsideMarking;
+  constexpr auto ellipsoid = sltk::InitialGuess::BoundingEllipsoid;
+  // The notes of the clouds that are not the thesis's.
+  constexpr const char* teapot = "(3644-point mesh vertices; thesis cloud unknown) ";
+  constexpr const char* fandisk =
+    "(substitute for the 4102-point mechanical part: final Err_P Q1 7.59e-03, WENO 3.74e-03) ";
+  constexpr const char* knot = "(CGAL knot1, 3200 points; thesis 10000-point knot: 61/23/10 iterations) ";
+  constexpr const char* knotEllipse = "(ellipsoid guess; thesis: 120/24/14 iterations) ";
+  constexpr const char* frog = "(5429 points, not the thesis's 2512-point frog) ";
+  static const std::vector<ScanCase> cases = {
+    // 4.5.5 / Table 4.7: C_dx = 2, K_P = 10 (holes in the bottom).
+    { "bunny", "bunny/bunny.xyz", "table_4_7_bunny_35947pts", "Bunny", 2.0, 10.0, marking, 100, "" },
+    // teapot.obj is an open surface (1036 boundary edges): with K_P = 2 the outside marking
+    // leaks inside and the WENO run 3 loses its front; K_P = 10 as for the thesis's scans with holes.
+    { "teapot", "teapot/teapot.xyz", "", "Teapot", 1.0, 10.0, marking, 100, teapot },
+    // 4.5.4 "mechanical part": the thesis's 4102-point cloud is not available; fandisk is a substitute.
+    { "fandisk", "fandisk/fandisk.xyz", "", "Mechanical part", 1.0, 2.0, marking, 100, fandisk },
+    // 4.5.4: C_dx = 2, K_P = 10, usual initial data (thesis: 61, 23, 10 iterations, 10000 points).
+    { "knot", "knot/knot1.xyz", "", "Knot", 2.0, 10.0, marking, 100, knot },
+    // 4.5.4: ellipsoid initial guess, at most 200 iterations (thesis: 120, 24, 14 iterations).
+    { "knotellipse", "knot/knot1.xyz", "", "Knot (ellipse)", 2.0, 10.0, ellipsoid, 200, knotEllipse },
+    // 4.5.5 / Table 4.6: K_P = 10 (the thesis's frog has 2512 points; ours 5429, another scan).
+    { "frog", "frog/frog.xyz", "table_4_6_frog_2512pts", "Frog", 1.0, 10.0, marking, 100, frog },
+  };
+  return cases;
+}
+
+/// The scan named `name`, or null when it is not one.
+const ScanCase* findScan(const std::string& name)
+{
+  const auto& cases = scanCases();
+  const auto it = std::find_if(cases.begin(), cases.end(), [&](const ScanCase& c) { return c.Name == name; });
+  return it == cases.end() ? nullptr : &*it;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -213,48 +252,9 @@ int main(int argc, char** argv)
                         [shape](const std::array<double, 3>& x) { return shape.sdf(x); }, 3, NaN },
         interps3, args, thesis, ctx);
     }
-    else if (name == "bunny")
+    else if (const ScanCase* scan = findScan(name))
     {
-      // 4.5.5 / Table 4.7: C_dx = 2, K_P = 10 (holes in the bottom).
-      runScan({ name, "bunny/bunny.xyz", "table_4_7_bunny_35947pts", "Bunny", 2.0, 10.0,
-                sltk::InitialGuess::OutsideMarking, 100, "" },
-        interps3, args, thesis, ctx);
-    }
-    else if (name == "teapot")
-    {
-      // teapot.obj is an open surface (1036 boundary edges): with K_P = 2 the outside marking
-      // leaks inside and the WENO run 3 loses its front; K_P = 10 as for the thesis's scans with holes.
-      runScan({ name, "teapot/teapot.xyz", "", "Teapot", 1.0, 10.0, sltk::InitialGuess::OutsideMarking, 100,
-                "(3644-point mesh vertices; thesis cloud unknown) " },
-        interps3, args, thesis, ctx);
-    }
-    else if (name == "fandisk")
-    {
-      // 4.5.4 "mechanical part": the thesis's 4102-point cloud is not available; fandisk is a substitute.
-      runScan({ name, "fandisk/fandisk.xyz", "", "Mechanical part", 1.0, 2.0, sltk::InitialGuess::OutsideMarking, 100,
-                "(substitute for the 4102-point mechanical part: final Err_P Q1 7.59e-03, WENO 3.74e-03) " },
-        interps3, args, thesis, ctx);
-    }
-    else if (name == "knot")
-    {
-      // 4.5.4: C_dx = 2, K_P = 10, usual initial data (thesis: 61, 23, 10 iterations, 10000 points).
-      runScan({ name, "knot/knot1.xyz", "", "Knot", 2.0, 10.0, sltk::InitialGuess::OutsideMarking, 100,
-                "(CGAL knot1, 3200 points; thesis 10000-point knot: 61/23/10 iterations) " },
-        interps3, args, thesis, ctx);
-    }
-    else if (name == "knotellipse")
-    {
-      // 4.5.4: ellipsoid initial guess, at most 200 iterations (thesis: 120, 24, 14 iterations).
-      runScan({ name, "knot/knot1.xyz", "", "Knot (ellipse)", 2.0, 10.0, sltk::InitialGuess::BoundingEllipsoid, 200,
-                "(ellipsoid guess; thesis: 120/24/14 iterations) " },
-        interps3, args, thesis, ctx);
-    }
-    else if (name == "frog")
-    {
-      // 4.5.5 / Table 4.6: K_P = 10 (the thesis's frog has 2512 points; ours 5429, another scan).
-      runScan({ name, "frog/frog.xyz", "table_4_6_frog_2512pts", "Frog", 1.0, 10.0, sltk::InitialGuess::OutsideMarking,
-                100, "(5429 points, not the thesis's 2512-point frog) " },
-        interps3, args, thesis, ctx);
+      runScan(*scan, interps3, args, thesis, ctx);
     }
     else
     {

@@ -5,6 +5,8 @@
 
 #include "sltk/grid/SampleField.h"
 
+#include "TestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -66,6 +68,52 @@ std::vector<std::array<double, D>> randomPoints(int count, unsigned seed)
     }
   }
   return pts;
+}
+
+/// Calls visit(cell) for every cell of a grid with n nodes per axis, the cell's
+/// index along x running fastest; the axes below `firstAxis` keep the index they
+/// have in `cell` (a slab of cells).
+template <int D, class Visit>
+void forEachCell(Index n, Visit visit, std::array<Index, D> cell = {}, int firstAxis = 0)
+{
+  Index cells = 1;
+  for (int a = firstAxis; a < D; ++a)
+  {
+    cells *= n - 1;
+  }
+  for (Index c = 0; c < cells; ++c)
+  {
+    Index rest = c;
+    for (int a = firstAxis; a < D; ++a)
+    {
+      cell[a] = rest % (n - 1);
+      rest /= n - 1;
+    }
+    visit(static_cast<const std::array<Index, D>&>(cell));
+  }
+}
+
+/// Calls visit(t) for the (perCell + 1)^D local points t of a cell, spaced
+/// 1 / perCell in [0, 1]^D (its corners included), t[0] running fastest.
+template <int D, class Visit>
+void forEachCellPoint(int perCell, Visit visit)
+{
+  int points = 1;
+  for (int a = 0; a < D; ++a)
+  {
+    points *= perCell + 1;
+  }
+  for (int p = 0; p < points; ++p)
+  {
+    std::array<double, D> t{};
+    int q = p;
+    for (int a = 0; a < D; ++a)
+    {
+      t[a] = double(q % (perCell + 1)) / double(perCell);
+      q /= perCell + 1;
+    }
+    visit(static_cast<const std::array<double, D>&>(t));
+  }
 }
 
 double smooth1(const double* x)
@@ -230,33 +278,22 @@ double maxNodalError(Index n, unsigned seed)
   const auto u = sampleWithGhosts(g, [&](const double*) { return std::uniform_real_distribution<double>(-1, 1)(gen); });
   CwenoInterpolator<D, V> r(u);
   double err = 0.0;
-  std::array<Index, D> cell{};
-  Index cells = 1;
-  for (int a = 0; a < D; ++a)
-  {
-    cells *= n - 1;
-  }
-  for (Index c = 0; c < cells; ++c)
-  {
-    Index rest = c;
-    for (int a = 0; a < D; ++a)
+  forEachCell<D>(n,
+    [&](const std::array<Index, D>& cell)
     {
-      cell[a] = rest % (n - 1);
-      rest /= n - 1;
-    }
-    r.prepare(cell);
-    for (int corner = 0; corner < (1 << D); ++corner)
-    {
-      std::array<double, D> t{};
-      std::array<Index, D> node = cell;
-      for (int a = 0; a < D; ++a)
+      r.prepare(cell);
+      for (int corner = 0; corner < (1 << D); ++corner)
       {
-        t[a] = double((corner >> a) & 1);
-        node[a] += (corner >> a) & 1;
+        std::array<double, D> t{};
+        std::array<Index, D> node = cell;
+        for (int a = 0; a < D; ++a)
+        {
+          t[a] = double((corner >> a) & 1);
+          node[a] += (corner >> a) & 1;
+        }
+        err = std::max(err, std::fabs(r.eval(t) - u(node)));
       }
-      err = std::max(err, std::fabs(r.eval(t) - u(node)));
-    }
-  }
+    });
   return err;
 }
 } // namespace
@@ -323,17 +360,6 @@ TEST(Cweno, FourthOrderOnSmoothData3D)
 
 namespace
 {
-template <int D>
-double radius2(const double* x)
-{
-  double r = 0.0;
-  for (int a = 0; a < D; ++a)
-  {
-    r += x[a] * x[a];
-  }
-  return r;
-}
-
 double kinkAtNode(const double* x) // kink on the grid plane x = 0 (a node line of every grid used)
 {
   return std::fabs(x[0]) + 0.3 * std::exp(x[1]) + 0.2 * x[2]; // monotone in y, z: extrema at nodes
@@ -347,13 +373,13 @@ double jumpBetweenNodes(const double* x) // jump on the plane x = 0.013, between
 template <int D>
 double cap(const double* x) // max(1 - |x|^2 / R^2, 0), R = 0.7: kinks on a circle / sphere
 {
-  return std::max(1.0 - radius2<D>(x) / 0.49, 0.0);
+  return std::max(1.0 - sltktest::squaredNorm<D>(x) / 0.49, 0.0);
 }
 
 template <int D>
 double ball(const double* x) // jump on the circle / sphere of radius 0.613
 {
-  return radius2<D>(x) < 0.613 * 0.613 ? 1.0 : 0.0;
+  return sltktest::squaredNorm<D>(x) < 0.613 * 0.613 ? 1.0 : 0.0;
 }
 
 /// Largest excursion of the reconstruction outside [min u, max u] (u: all nodal
@@ -368,36 +394,17 @@ double relativeOvershoot(Index n, F f, int perCell)
   const double hi = *range.second;
   CwenoInterpolator<D, V> r(u);
   double over = 0.0;
-  Index cells = 1;
-  int points = 1;
-  for (int a = 0; a < D; ++a)
-  {
-    cells *= n - 1;
-    points *= perCell + 1;
-  }
-  for (Index c = 0; c < cells; ++c)
-  {
-    std::array<Index, D> cell{};
-    Index rest = c;
-    for (int a = 0; a < D; ++a)
+  forEachCell<D>(n,
+    [&](const std::array<Index, D>& cell)
     {
-      cell[a] = rest % (n - 1);
-      rest /= n - 1;
-    }
-    r.prepare(cell);
-    for (int p = 0; p < points; ++p)
-    {
-      std::array<double, D> t{};
-      int q = p;
-      for (int a = 0; a < D; ++a)
-      {
-        t[a] = double(q % (perCell + 1)) / double(perCell);
-        q /= perCell + 1;
-      }
-      const double v = r.eval(t);
-      over = std::max(over, std::max(v - hi, lo - v));
-    }
-  }
+      r.prepare(cell);
+      forEachCellPoint<D>(perCell,
+        [&](const std::array<double, D>& t)
+        {
+          const double v = r.eval(t);
+          over = std::max(over, std::max(v - hi, lo - v));
+        });
+    });
   return over / (hi - lo);
 }
 
@@ -410,32 +417,24 @@ double minSideWeight(Index n, F f, Index cellX, bool high)
   const auto u = sampleWithGhosts(g, [&](const double* x) { return f(x); });
   CwenoInterpolator<D, V> r(u);
   double worst = 1.0;
-  Index cells = 1;
-  for (int a = 1; a < D; ++a)
-  {
-    cells *= n - 1;
-  }
-  for (Index c = 0; c < cells; ++c)
-  {
-    std::array<Index, D> cell{};
-    cell[0] = cellX;
-    Index rest = c;
-    for (int a = 1; a < D; ++a)
+  std::array<Index, D> slab{};
+  slab[0] = cellX;
+  forEachCell<D>(
+    n,
+    [&](const std::array<Index, D>& cell)
     {
-      cell[a] = rest % (n - 1);
-      rest /= n - 1;
-    }
-    r.prepare(cell);
-    double side = 0.0;
-    for (int k = 0; k < r.Octants; ++k)
-    {
-      if (((k & 1) == 1) == high)
+      r.prepare(cell);
+      double side = 0.0;
+      for (int k = 0; k < r.Octants; ++k)
       {
-        side += r.weights()[1 + k];
+        if (((k & 1) == 1) == high)
+        {
+          side += r.weights()[1 + k];
+        }
       }
-    }
-    worst = std::min(worst, side);
-  }
+      worst = std::min(worst, side);
+    },
+    slab, 1);
   return worst;
 }
 
@@ -663,6 +662,34 @@ TEST(Cweno, IndicatorMatricesMatchThesisAppendix2D)
 
 namespace
 {
+/// max |v_{k+1} - 2 v_k + v_{k-1}| along every axis, at the nodes of the 4^D stencil of
+/// `cell` where the increment is defined inside the stencil.
+template <int D>
+double largestSecondIncrement(const sltk::GridField<D>& u, const std::array<Index, D>& cell)
+{
+  const auto& stride = u.strides();
+  double second = 0.0;
+  for (int s = 0; s < sltk::cweno::ipow(4, D); ++s)
+  {
+    std::array<Index, D> node = cell;
+    int k = s;
+    for (int a = 0; a < D; ++a)
+    {
+      node[a] += k % 4 - 1;
+      k /= 4;
+    }
+    const double* p = u.pointer(node);
+    for (int a = 0, sk = s; a < D; ++a, sk /= 4)
+    {
+      if (sk % 4 == 1 || sk % 4 == 2)
+      {
+        second = std::max(second, std::fabs(p[stride[a]] - 2.0 * p[0] + p[-stride[a]]));
+      }
+    }
+  }
+  return second;
+}
+
 /// sup over cells and points of |I_r - I_1| / max |v_{k+1} - 2 v_k + v_{k-1}|, the
 /// second increments taken along every axis at the nodes of the 4^D stencil where
 /// they are defined inside it (1D: k = i, i + 1, the ones the reconstruction depends on).
@@ -673,65 +700,27 @@ double measuredCr(Index n, F data, int perCell)
   const auto u = sampleWithGhosts(g, data);
   CwenoInterpolator<D, V> r(u);
   sltk::Q1Interpolator<D> q1(u);
-  const auto& stride = u.strides();
   double cr = 0.0;
-  Index cells = 1;
-  int points = 1;
-  for (int a = 0; a < D; ++a)
-  {
-    cells *= n - 1;
-    points *= perCell + 1;
-  }
-  for (Index c = 0; c < cells; ++c)
-  {
-    std::array<Index, D> cell{};
-    Index rest = c;
-    for (int a = 0; a < D; ++a)
+  forEachCell<D>(n,
+    [&](const std::array<Index, D>& cell)
     {
-      cell[a] = rest % (n - 1);
-      rest /= n - 1;
-    }
-    r.prepare(cell);
-    q1.prepare(cell);
-    double second = 0.0;
-    for (int s = 0; s < sltk::cweno::ipow(4, D); ++s)
-    {
-      std::array<Index, D> node = cell;
-      int k = s;
-      for (int a = 0; a < D; ++a)
-      {
-        node[a] += k % 4 - 1;
-        k /= 4;
-      }
-      const double* p = u.pointer(node);
-      for (int a = 0, sk = s; a < D; ++a, sk /= 4)
-      {
-        if (sk % 4 == 1 || sk % 4 == 2)
+      r.prepare(cell);
+      q1.prepare(cell);
+      const double second = largestSecondIncrement<D>(u, cell);
+      forEachCellPoint<D>(perCell,
+        [&](const std::array<double, D>& t)
         {
-          second = std::max(second, std::fabs(p[stride[a]] - 2.0 * p[0] + p[-stride[a]]));
-        }
-      }
-    }
-    for (int p = 0; p < points; ++p)
-    {
-      std::array<double, D> t{};
-      int k = p;
-      for (int a = 0; a < D; ++a)
-      {
-        t[a] = double(k % (perCell + 1)) / double(perCell);
-        k /= perCell + 1;
-      }
-      const double diff = std::fabs(r.eval(t) - q1.eval(t));
-      if (second > 0.0)
-      {
-        cr = std::max(cr, diff / second);
-      }
-      else
-      {
-        EXPECT_LT(diff, 1e-12); // multilinear data: both reconstructions agree
-      }
-    }
-  }
+          const double diff = std::fabs(r.eval(t) - q1.eval(t));
+          if (second > 0.0)
+          {
+            cr = std::max(cr, diff / second);
+          }
+          else
+          {
+            EXPECT_LT(diff, 1e-12); // multilinear data: both reconstructions agree
+          }
+        });
+    });
   return cr;
 }
 

@@ -25,6 +25,20 @@ double radius(const std::array<double, D>& x)
   }
   return std::sqrt(s);
 }
+
+/// The P = 1 energy with weight 1 of the sphere (circle in 2D) of radius r about C,
+/// phi = |x - C| - r on [-1, 1]^D with n nodes per axis: its area (length) as the
+/// functional measures it, in e.
+template <int D>
+sltk::Status sphereMeasure(sltk::Index n, double r, sltk::EnergyResult& e)
+{
+  const auto g = sltk::uniformBox<D>(n, -1.0, 1.0);
+  const auto phi = sltktest::sampleNodes<D>(g, 1, [&](const std::array<double, D>& x) { return radius<D>(x) - r; });
+  const auto one = sltktest::sampleNodes<D>(g, 1, [](const std::array<double, D>&) { return 1.0; });
+  sltk::EnergyOptions options;
+  options.P = 1.0;
+  return sltk::energyFunctional(phi, one, sltk::Context{}, e, options);
+}
 } // namespace
 
 TEST(EnergyFunctional, CircleLengthConvergesAtSecondOrder)
@@ -33,13 +47,8 @@ TEST(EnergyFunctional, CircleLengthConvergesAtSecondOrder)
   double previous = 0.0;
   for (sltk::Index n : { 21, 41, 81, 161 })
   {
-    const auto g = sltk::uniformBox<2>(n, -1.0, 1.0);
-    const auto phi = sltktest::sampleNodes<2>(g, 1, [&](const std::array<double, 2>& x) { return radius<2>(x) - r; });
-    const auto one = sltktest::sampleNodes<2>(g, 1, [](const std::array<double, 2>&) { return 1.0; });
     sltk::EnergyResult e;
-    sltk::EnergyOptions options;
-    options.P = 1.0;
-    ASSERT_TRUE(sltk::energyFunctional(phi, one, sltk::Context{}, e, options).isOk());
+    ASSERT_TRUE(sphereMeasure<2>(n, r, e).isOk());
     const double error = std::fabs(e.Energy - 2.0 * Pi * r);
     std::printf("circle n=%lld: length %.8f, error %.3e", static_cast<long long>(n), e.Energy, error);
     if (previous > 0.0)
@@ -132,13 +141,8 @@ TEST(EnergyFunctional, SphereAreaConvergesWithTheGrid)
   int k = 0;
   for (sltk::Index n : { 21, 41 })
   {
-    const auto g = sltk::uniformBox<3>(n, -1.0, 1.0);
-    const auto phi = sltktest::sampleNodes<3>(g, 1, [&](const std::array<double, 3>& x) { return radius<3>(x) - r; });
-    const auto one = sltktest::sampleNodes<3>(g, 1, [](const std::array<double, 3>&) { return 1.0; });
     sltk::EnergyResult e;
-    sltk::EnergyOptions options;
-    options.P = 1.0;
-    ASSERT_TRUE(sltk::energyFunctional(phi, one, sltk::Context{}, e, options).isOk());
+    ASSERT_TRUE(sphereMeasure<3>(n, r, e).isOk());
     errors[k++] = std::fabs(e.Energy / (4.0 * Pi * r * r) - 1.0);
     std::printf("sphere r=0.5 n=%lld: relative area error %.3f%%\n", static_cast<long long>(n), 100.0 * errors[k - 1]);
   }

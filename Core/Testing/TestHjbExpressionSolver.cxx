@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -46,6 +47,22 @@ sltk::HjbRunResult expressions(const sltk::HjbExpressionSpec& spec)
     return {};
   }
   return solveToEnd(solver);
+}
+
+/// A problem of the given dimension on [0, upper] (upper 0 on the unused axes),
+/// with `nodes` nodes per axis (1 on the unused ones), the dynamics f_D and the
+/// initial datum v0; boundaries, controls and times are the caller's.
+sltk::HjbExpressionSpec fromOrigin(int dimension, const std::array<Index, 3>& nodes, const std::array<double, 3>& upper,
+  const std::array<std::string, 3>& dynamics, const std::string& initial)
+{
+  sltk::HjbExpressionSpec s;
+  s.Dimension = dimension;
+  s.Nodes = nodes;
+  s.Lower = { 0.0, 0.0, 0.0 };
+  s.Upper = upper;
+  s.Dynamics = dynamics;
+  s.Initial = initial;
+  return s;
 }
 
 /// Test 1 (3.5.1) as formulas; v0 given as node values (the C2 bump).
@@ -203,14 +220,8 @@ TEST(HjbExpressionSolver, ZermeloMatchesTest5PresetWithObstaclesAndReachableSet)
 TEST(HjbExpressionSolver, TransportFollowsTheSignOfTheHamiltonian)
 {
   // f_D = 1: H = -p, v_t - v_x = 0, v = v0(x + t) (1D, periodic).
-  sltk::HjbExpressionSpec s;
-  s.Dimension = 1;
-  s.Nodes = { 64, 1, 1 };
-  s.Lower = { 0.0, 0.0, 0.0 };
-  s.Upper = { 2.0 * M_PI, 0.0, 0.0 };
+  sltk::HjbExpressionSpec s = fromOrigin(1, { 64, 1, 1 }, { 2.0 * M_PI, 0.0, 0.0 }, { "1", "", "" }, "sin(x)");
   s.Bounds[0] = sltk::Boundary::Periodic;
-  s.Dynamics = { "1", "", "" };
-  s.Initial = "sin(x)";
   s.Exact = "sin(x + t)";
   s.FinalTime = 1.0;
   s.CourantNumber = 2.5;
@@ -223,14 +234,8 @@ TEST(HjbExpressionSolver, ThreeDimensionalTransportWithControls)
 {
   // f_D = a in the box [0, 1] x [0, 0] x [0, 0], f_C = 0: v = min over a1 of v0(x + a1 t) on a
   // periodic cube; with v0 = cos(x) the minimiser walks towards x = pi (exact for x + t <= pi).
-  sltk::HjbExpressionSpec s;
-  s.Dimension = 3;
-  s.Nodes = { 24, 8, 8 };
-  s.Lower = { 0.0, 0.0, 0.0 };
-  s.Upper = { 2.0 * M_PI, 1.0, 1.0 };
+  sltk::HjbExpressionSpec s = fromOrigin(3, { 24, 8, 8 }, { 2.0 * M_PI, 1.0, 1.0 }, { "a1", "a2", "a3" }, "cos(x)");
   s.Bounds = { sltk::Boundary::Periodic, sltk::Boundary::Periodic, sltk::Boundary::Periodic };
-  s.Dynamics = { "a1", "a2", "a3" };
-  s.Initial = "cos(x)";
   s.Exact = "x <= pi - t ? cos(x + t) : (x <= pi ? -1 : cos(x))";
   s.Controls = sltk::ControlKind::Box;
   s.ControlDimension = 3;
@@ -429,13 +434,7 @@ TEST(HjbExpressionSolver, ReachTimesAreInterpolatedBetweenSteps)
 {
   // v0 = 0.5 - x, f_D = 1: v(t, x) = 0.5 - x - t, so x is reached at T(x) = max(0.5 - x, 0), which
   // the linear interpolation of u in time (3.40) recovers exactly between the steps.
-  sltk::HjbExpressionSpec s;
-  s.Dimension = 1;
-  s.Nodes = { 41, 1, 1 };
-  s.Lower = { 0.0, 0.0, 0.0 };
-  s.Upper = { 1.0, 0.0, 0.0 };
-  s.Dynamics = { "1", "", "" };
-  s.Initial = "0.5 - x";
+  sltk::HjbExpressionSpec s = fromOrigin(1, { 41, 1, 1 }, { 1.0, 0.0, 0.0 }, { "1", "", "" }, "0.5 - x");
   s.ReachableSet = true;
   s.FinalTime = 0.3;
   s.CourantNumber = 2.3; // dt = 0.0575 is not a multiple of dx

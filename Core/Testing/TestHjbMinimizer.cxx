@@ -17,6 +17,35 @@ using sltk::ControlMinimizer;
 using sltk::LocalSearch;
 using sltk::MinimizerOptions;
 
+/// (x - 0.7)^2 + 3 (y + 1.1)^2 + (x - 0.7)(y + 1.1) of the control (x, y):
+/// a tilted bowl, its minimum 0 at (0.7, -1.1).
+double tiltedBowl(const sltk::ControlSequence<2, 1>& a)
+{
+  const double x = a[0][0] - 0.7, y = a[0][1] + 1.1;
+  return x * x + 3.0 * y * y + x * y;
+}
+
+/// Minimises f over the disc (`points` tabulation points per axis, the default
+/// search with `tolerance`) and expects that no control f is given lies outside
+/// the disc (by more than 1e-12): the projected search keeps its vertices in A.
+template <class F>
+auto minimizeInDisc(const ControlSet<2>& disc, int points, double tolerance, F f)
+{
+  MinimizerOptions opt;
+  opt.TabulationPoints = points;
+  opt.Tolerance = tolerance;
+  const ControlMinimizer<2, 1> m(disc, opt);
+  int outside = 0;
+  const auto r = m.minimize(
+    [&](const sltk::ControlSequence<2, 1>& a)
+    {
+      outside += disc.contains(a[0], 1e-12) ? 0 : 1;
+      return f(a);
+    });
+  EXPECT_EQ(outside, 0) << "controls evaluated outside the disc";
+  return r;
+}
+
 TEST(HjbControlSet, MembershipAndProjection)
 {
   const auto box = ControlSet<2>::box({ -1.0, 0.0 }, { 1.0, 2.0 });
@@ -115,17 +144,7 @@ TEST(HjbMinimizer, GoldenSectionStopsAtTheBoundary)
 TEST(HjbMinimizer, NelderMeadInteriorMinimumInADisc)
 {
   const auto disc = ControlSet<2>::ball({ 0.0, 0.0 }, 2.2);
-  MinimizerOptions opt;
-  opt.TabulationPoints = 11;
-  opt.Tolerance = 1e-10;
-  const ControlMinimizer<2, 1> m(disc, opt);
-  int outside = 0;
-  const auto r = m.minimize([&](const sltk::ControlSequence<2, 1>& a) {
-    outside += disc.contains(a[0], 1e-12) ? 0 : 1;
-    const double x = a[0][0] - 0.7, y = a[0][1] + 1.1;
-    return x * x + 3.0 * y * y + x * y;
-  });
-  EXPECT_EQ(outside, 0);
+  const auto r = minimizeInDisc(disc, 11, 1e-10, tiltedBowl);
   EXPECT_NEAR(r.Controls[0][0], 0.7, 1e-6);
   EXPECT_NEAR(r.Controls[0][1], -1.1, 1e-6);
   EXPECT_NEAR(r.Value, 0.0, 1e-12);
@@ -145,8 +164,7 @@ TEST(HjbMinimizer, WarmStartFindsTheMinimumWithFewerEvaluations)
   auto f = [&](const sltk::ControlSequence<2, 1>& a)
   {
     outside += disc.contains(a[0], 1e-12) ? 0 : 1;
-    const double x = a[0][0] - 0.7, y = a[0][1] + 1.1;
-    return x * x + 3.0 * y * y + x * y;
+    return tiltedBowl(a);
   };
   const auto cold = m.minimize(f);
   const auto warm = m.minimizeFrom(f, { 0.6, -1.2 }); // the previous step's argmin, nearby
@@ -184,15 +202,9 @@ TEST(HjbMinimizer, NelderMeadKeepsVerticesInsideWhenTheMinimumIsOutside)
 {
   // Unconstrained minimum at (3, 4), |(3, 4)| = 5: the constrained one is 2 (3, 4) / 5.
   const auto disc = ControlSet<2>::ball({ 0.0, 0.0 }, 2.0);
-  MinimizerOptions opt;
-  opt.TabulationPoints = 9;
-  const ControlMinimizer<2, 1> m(disc, opt);
-  int outside = 0;
-  const auto r = m.minimize([&](const sltk::ControlSequence<2, 1>& a) {
-    outside += disc.contains(a[0], 1e-12) ? 0 : 1;
-    return (a[0][0] - 3.0) * (a[0][0] - 3.0) + (a[0][1] - 4.0) * (a[0][1] - 4.0);
-  });
-  EXPECT_EQ(outside, 0);
+  const auto r = minimizeInDisc(disc, 9, MinimizerOptions{}.Tolerance,
+    [](const sltk::ControlSequence<2, 1>& a)
+    { return (a[0][0] - 3.0) * (a[0][0] - 3.0) + (a[0][1] - 4.0) * (a[0][1] - 4.0); });
   EXPECT_NEAR(r.Controls[0][0], 1.2, 1e-5);
   EXPECT_NEAR(r.Controls[0][1], 1.6, 1e-5);
 }

@@ -17,6 +17,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <initializer_list>
+#include <string>
 #include <vector>
 
 namespace
@@ -64,6 +66,42 @@ double order(double coarse, double fine, Index nCoarse, Index nFine)
   return std::log(coarse / fine) / std::log(double(nFine - 1) / double(nCoarse - 1));
 }
 
+/// What a thesis table gives for one reconstruction on N nodes per axis: the L1
+/// error (Tables 3.1-3.7) and, where not NaN, the minimum and maximum (Table 3.9).
+struct Thesis
+{
+  Index N;
+  double Error;
+  double Min = std::nan("");
+  double Max = std::nan("");
+};
+
+/// Solves the problem with Interp on setup(N) for each entry, in order, and expects
+/// the L1 error and the minimum within 20% of the thesis's, the maximum within 1%;
+/// `name` (e.g. "Test 4 WENO") and N name a failure. Returns the runs.
+template <class Interp, class Problem, class Setup>
+std::vector<HjbRun> expectThesis(
+  const Problem& problem, Setup setup, const std::string& name, std::initializer_list<Thesis> entries)
+{
+  std::vector<HjbRun> runs;
+  for (const Thesis& e : entries)
+  {
+    runs.push_back(solve<Interp>(problem, setup(e.N)));
+    const HjbRun& r = runs.back();
+    const std::string n = " N=" + std::to_string(e.N);
+    expectWithin(r.Error, e.Error, 0.2, (name + n).c_str());
+    if (!std::isnan(e.Min))
+    {
+      expectWithin(r.Min, e.Min, 0.2, (name + " min" + n).c_str());
+    }
+    if (!std::isnan(e.Max))
+    {
+      expectWithin(r.Max, e.Max, 0.01, (name + " max" + n).c_str());
+    }
+  }
+  return runs;
+}
+
 // --- Test 1: pure transport (A = {}) -------------------------------------------------------------
 
 TEST(HjbScheme, PureTransportEqualsTheLinearSLStep)
@@ -100,15 +138,11 @@ TEST(HjbScheme, Test1MatchesTable31)
 {
   // Table 3.1, N = 41 and 81 (WENO, CWENO, CWENOZ).
   const auto problem = sltk::withFixedOrder<sltk::Test1Order>(sltk::test1Problem());
-  const HjbRun w41 = solve<Weno2>(problem, sltk::test1Setup(41));
-  const HjbRun c41 = solve<Cweno2>(problem, sltk::test1Setup(41));
-  const HjbRun z41 = solve<CwenoZ2>(problem, sltk::test1Setup(41));
-  const HjbRun z81 = solve<CwenoZ2>(problem, sltk::test1Setup(81));
-  expectWithin(w41.Error, 5.46e-4, 0.2, "Test 1 WENO N=41");
-  expectWithin(c41.Error, 4.88e-4, 0.2, "Test 1 CWENO N=41");
-  expectWithin(z41.Error, 4.84e-4, 0.2, "Test 1 CWENOZ N=41");
-  expectWithin(z81.Error, 7.85e-5, 0.2, "Test 1 CWENOZ N=81");
-  EXPECT_NEAR(order(z41.Error, z81.Error, 41, 81), 2.62, 0.3);
+  expectThesis<Weno2>(problem, sltk::test1Setup, "Test 1 WENO", { { 41, 5.46e-4 } });
+  expectThesis<Cweno2>(problem, sltk::test1Setup, "Test 1 CWENO", { { 41, 4.88e-4 } });
+  const auto z =
+    expectThesis<CwenoZ2>(problem, sltk::test1Setup, "Test 1 CWENOZ", { { 41, 4.84e-4 }, { 81, 7.85e-5 } });
+  EXPECT_NEAR(order(z[0].Error, z[1].Error, 41, 81), 2.62, 0.3);
 }
 
 // --- Test 2: 1D semi-concave data, A = [-pi/2, pi/2] ---------------------------------------------
@@ -144,12 +178,8 @@ TEST(HjbScheme, Test2MatchesTable33)
 TEST(HjbScheme, Test2MatchesTable33_Long)
 {
   const auto problem = sltk::withFixedOrder<sltk::Test2Order>(sltk::test2Problem());
-  const HjbRun w321 = solve<Weno1>(problem, sltk::test2Setup(321));
-  const HjbRun w641 = solve<Weno1>(problem, sltk::test2Setup(641));
-  const HjbRun z641 = solve<CwenoZ1>(problem, sltk::test2Setup(641));
-  expectWithin(w321.Error, 2.45e-8, 0.2, "Test 2 WENO N=321");
-  expectWithin(w641.Error, 2.61e-9, 0.2, "Test 2 WENO N=641");
-  expectWithin(z641.Error, 1.75e-9, 0.2, "Test 2 CWENOZ N=641");
+  expectThesis<Weno1>(problem, sltk::test2Setup, "Test 2 WENO", { { 321, 2.45e-8 }, { 641, 2.61e-9 } });
+  expectThesis<CwenoZ1>(problem, sltk::test2Setup, "Test 2 CWENOZ", { { 641, 1.75e-9 } });
 }
 
 // --- Test 3: 1D eikonal, periodic, per-stage controls ---------------------------------------------
@@ -157,25 +187,22 @@ TEST(HjbScheme, Test2MatchesTable33_Long)
 TEST(HjbScheme, Test3MatchesTable35)
 {
   const auto problem = sltk::withFixedOrder<sltk::Test3Order>(sltk::test3Problem());
-  const HjbRun w = solve<Weno1>(problem, sltk::test3Setup(126));
-  const HjbRun c = solve<Cweno1>(problem, sltk::test3Setup(126));
-  expectWithin(w.Error, 1.28e-5, 0.2, "Test 3 WENO N=126");
-  expectWithin(c.Error, 1.38e-5, 0.2, "Test 3 CWENO N=126");
+  const auto setup = [](Index n) { return sltk::test3Setup(n); };
+  const auto w = expectThesis<Weno1>(problem, setup, "Test 3 WENO", { { 126, 1.28e-5 } });
+  expectThesis<Cweno1>(problem, setup, "Test 3 CWENO", { { 126, 1.38e-5 } });
   // One control per step instead of one per RK stage loses third order (Documentation/Numerics.md, "HJB").
   auto single = sltk::test3Setup(126);
   single.Options.Minimizer.PerStageControls = false;
   const HjbRun s = solve<Weno1>(problem, single);
-  EXPECT_GT(s.Error, 5.0 * w.Error);
+  EXPECT_GT(s.Error, 5.0 * w[0].Error);
 }
 
 TEST(HjbScheme, Test3MatchesTable35_Long)
 {
   const auto problem = sltk::withFixedOrder<sltk::Test3Order>(sltk::test3Problem());
-  const HjbRun z252 = solve<CwenoZ1>(problem, sltk::test3Setup(252));
-  const HjbRun z503 = solve<CwenoZ1>(problem, sltk::test3Setup(503));
-  expectWithin(z252.Error, 1.70e-6, 0.2, "Test 3 CWENOZ N=252");
-  expectWithin(z503.Error, 2.10e-7, 0.2, "Test 3 CWENOZ N=503");
-  EXPECT_NEAR(std::log(z252.Error / z503.Error) / std::log(503.0 / 252.0), 3.02, 0.3);
+  const auto z = expectThesis<CwenoZ1>(
+    problem, [](Index n) { return sltk::test3Setup(n); }, "Test 3 CWENOZ", { { 252, 1.70e-6 }, { 503, 2.10e-7 } });
+  EXPECT_NEAR(std::log(z[0].Error / z[1].Error) / std::log(503.0 / 252.0), 3.02, 0.3);
 }
 
 // --- Test 4: 2D semi-convex data, A = disc ------------------------------------------------------
@@ -183,15 +210,9 @@ TEST(HjbScheme, Test3MatchesTable35_Long)
 TEST(HjbScheme, Test4MatchesTables37And39)
 {
   const auto problem = sltk::withFixedOrder<sltk::Test4Order>(sltk::test4Problem());
-  const HjbRun w = solve<Weno2>(problem, sltk::test4Setup(41));
-  const HjbRun c = solve<Cweno2>(problem, sltk::test4Setup(41));
-  expectWithin(w.Error, 4.02e-2, 0.2, "Test 4 WENO N=41");
-  expectWithin(c.Error, 3.38e-2, 0.2, "Test 4 CWENO N=41");
-  // Table 3.9: CWENO undershoots more in the flat region, both stay below 1.
-  expectWithin(w.Min, -4.62e-5, 0.2, "Test 4 WENO min N=41");
-  expectWithin(c.Min, -5.19e-3, 0.2, "Test 4 CWENO min N=41");
-  expectWithin(w.Max, 0.989, 0.01, "Test 4 WENO max N=41");
-  expectWithin(c.Max, 0.992, 0.01, "Test 4 CWENO max N=41");
+  // Tables 3.7 (error) and 3.9 (min, max): CWENO undershoots more in the flat region, both stay below 1.
+  expectThesis<Weno2>(problem, sltk::test4Setup, "Test 4 WENO", { { 41, 4.02e-2, -4.62e-5, 0.989 } });
+  expectThesis<Cweno2>(problem, sltk::test4Setup, "Test 4 CWENO", { { 41, 3.38e-2, -5.19e-3, 0.992 } });
 }
 
 TEST(HjbScheme, Test4WarmStartMatchesTheFullTabulation)
@@ -224,12 +245,8 @@ TEST(HjbScheme, Test4WarmStartMatchesTheFullTabulation)
 TEST(HjbScheme, Test4MatchesTables37And39_Long)
 {
   const auto problem = sltk::withFixedOrder<sltk::Test4Order>(sltk::test4Problem());
-  const HjbRun w = solve<Weno2>(problem, sltk::test4Setup(81));
-  const HjbRun z = solve<CwenoZ2>(problem, sltk::test4Setup(81));
-  expectWithin(w.Error, 2.25e-2, 0.2, "Test 4 WENO N=81");
-  expectWithin(z.Error, 1.81e-2, 0.2, "Test 4 CWENOZ N=81");
-  expectWithin(w.Min, -1.21e-5, 0.2, "Test 4 WENO min N=81");
-  expectWithin(z.Min, -3.39e-3, 0.2, "Test 4 CWENOZ min N=81");
+  expectThesis<Weno2>(problem, sltk::test4Setup, "Test 4 WENO", { { 81, 2.25e-2, -1.21e-5 } });
+  expectThesis<CwenoZ2>(problem, sltk::test4Setup, "Test 4 CWENOZ", { { 81, 1.81e-2, -3.39e-3 } });
 }
 
 // --- Test 5: obstacles (3.39) and reachable sets (3.40) ------------------------------------------

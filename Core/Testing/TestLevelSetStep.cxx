@@ -6,6 +6,8 @@
 #include "sltk/interp/Q1.h"
 #include "sltk/interp/Weno3.h"
 
+#include "TestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,12 +17,7 @@ namespace
 template <int D>
 double radius(const double* x)
 {
-  double r = 0.0;
-  for (int a = 0; a < D; ++a)
-  {
-    r += x[a] * x[a];
-  }
-  return std::sqrt(r);
+  return std::sqrt(sltktest::squaredNorm<D>(x));
 }
 
 /// Zero crossing of phi along the positive x axis (linear between nodes).

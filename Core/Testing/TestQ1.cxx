@@ -3,6 +3,8 @@
 
 #include "sltk/grid/SampleField.h"
 
+#include "TestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -49,12 +51,7 @@ TEST(Q1, InterpolatesNodalValuesExactly)
   auto f = [](const double* x) { return std::exp(x[0]) * std::sin(3 * x[1]); };
   auto u = sample(g, f);
   sltk::Q1Interpolator<2> q(u);
-  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
-  {
-    auto i = u.nodeIndex(k);
-    const double x[2] = { g.coordinate(0, i[0]), g.coordinate(1, i[1]) };
-    EXPECT_EQ(sltk::interpolate(q, g, x), u(i));
-  }
+  sltktest::expectNodalValuesExactly<2>(q, g, u);
 }
 
 TEST(Q1, SecondOrderIn1D)

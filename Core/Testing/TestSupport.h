@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file TestSupport.h
-/// Small helpers shared by the Core tests: node coordinates and nodal sampling
-/// of functions of a point. Grids are sltk::uniformBox (sltk/grid/GridSpec.h),
+/// Small helpers shared by the Core tests: node coordinates, nodal sampling
+/// of functions of a point, |x|^2, and the check that an interpolator returns
+/// the nodal values. Grids are sltk::uniformBox (sltk/grid/GridSpec.h),
 /// fields with ghost values filled by the boundary policy are
 /// sltk::sampleField (sltk/grid/SampleField.h), synthetic clouds and exact
 /// distances are in sltk/cloud/SyntheticClouds.h.
 
 #include "sltk/grid/GridField.h"
+#include "sltk/interp/Interpolator.h"
+
+#include <gtest/gtest.h>
 
 #include <array>
 
@@ -45,6 +49,31 @@ sltk::GridField<D> sampleNodes(const sltk::GridSpec<D>& g, int ghost, F f)
     u(i) = f(nodeCoordinates<D>(g, i));
   }
   return u;
+}
+
+/// |x|^2, x given by its D coordinates.
+template <int D>
+double squaredNorm(const double* x)
+{
+  double r = 0.0;
+  for (int a = 0; a < D; ++a)
+  {
+    r += x[a] * x[a];
+  }
+  return r;
+}
+
+/// Expects interpolation at every node of g to return the nodal value of u to
+/// the last bit (EXPECT_EQ, no tolerance); u is sampled on g.
+template <int D, class Interp>
+void expectNodalValuesExactly(Interp& interp, const sltk::GridSpec<D>& g, const sltk::GridField<D>& u)
+{
+  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
+  {
+    const auto i = u.nodeIndex(k);
+    const auto x = nodeCoordinates<D>(g, i);
+    EXPECT_EQ(sltk::interpolate(interp, g, x.data()), u(i)) << "node " << k;
+  }
 }
 
 } // namespace sltktest

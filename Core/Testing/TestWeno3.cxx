@@ -4,6 +4,8 @@
 
 #include "sltk/grid/SampleField.h"
 
+#include "TestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -105,22 +107,12 @@ TEST(Weno3, InterpolatesNodalValuesExactly)
   auto f2 = [](const double* x) { return std::exp(x[0]) * std::sin(3 * x[1]) + (x[1] > 0.1 ? 1.0 : 0.0); };
   auto u2 = sample(g2, f2);
   sltk::Weno3Interpolator<2> w2(u2);
-  for (sltk::Index k = 0; k < g2.nodeCount(); ++k)
-  {
-    auto i = u2.nodeIndex(k);
-    const double x[2] = { g2.coordinate(0, i[0]), g2.coordinate(1, i[1]) };
-    EXPECT_EQ(sltk::interpolate(w2, g2, x), u2(i));
-  }
+  sltktest::expectNodalValuesExactly<2>(w2, g2, u2);
   auto g3 = grid<3>(6);
   auto f3 = [](const double* x) { return std::fabs(x[0] - 0.1) + std::cos(2 * x[1]) * x[2] * x[2]; };
   auto u3 = sample(g3, f3);
   sltk::Weno3Interpolator<3> w3(u3);
-  for (sltk::Index k = 0; k < g3.nodeCount(); ++k)
-  {
-    auto i = u3.nodeIndex(k);
-    const double x[3] = { g3.coordinate(0, i[0]), g3.coordinate(1, i[1]), g3.coordinate(2, i[2]) };
-    EXPECT_EQ(sltk::interpolate(w3, g3, x), u3(i));
-  }
+  sltktest::expectNodalValuesExactly<3>(w3, g3, u3);
 }
 
 TEST(Weno3, ReproducesQuadratics)

@@ -36,6 +36,12 @@ struct RankRun
   sltk::Index OwnTiles = 0; ///< the last run's tiles this rank owns
 };
 
+/// Plans the thesis's reconstruction of the circle of 64 points (every rank the same plan).
+sltk::Status planThesisCircle(sltk::ReconstructionPlan<2>& plan)
+{
+  return sltk::planReconstruction(sltk::circleCloud(64), sltk::ReconstructionOptions::thesis(), sltk::Context{}, plan);
+}
+
 template <int D>
 RankRun expectSameAsOneRank(const sltk::PointCloud<D>& cloud, const sltk::ReconstructionOptions& options)
 {
@@ -180,9 +186,7 @@ TEST(TiledReconstructionRanks, AnInterruptionOnOneRankStopsEveryRankWithoutAHang
 {
   auto comm = world();
   sltk::ReconstructionPlan<2> plan;
-  ASSERT_TRUE(
-    sltk::planReconstruction(sltk::circleCloud(64), sltk::ReconstructionOptions::thesis(), sltk::Context{}, plan)
-      .isOk());
+  ASSERT_TRUE(planThesisCircle(plan).isOk());
   // Every check of a whole reconstruction counted; then a stop in run 1 (uniform, on slabs), and in the
   // last tiled run's iterations.
   StopOnOneRank count;
@@ -227,11 +231,9 @@ TEST(TiledReconstructionRanks, AFailureOnOneRankEndsEveryRankWithItsError)
 {
   // The last rank alone has a memory budget too small for run 2's tiles (its check fails where
   // the others' pass): every rank returns its error, none waits in a collective.
-  auto comm = world();
   sltk::ReconstructionPlan<2> plan;
-  ASSERT_TRUE(
-    sltk::planReconstruction(sltk::circleCloud(64), sltk::ReconstructionOptions::thesis(), sltk::Context{}, plan)
-      .isOk());
+  ASSERT_TRUE(planThesisCircle(plan).isOk());
+  auto comm = world();
   if (comm->rank() == comm->size() - 1)
   {
     plan.Options.MemoryBudget = 4096;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The unmasked leaves of vtkOctreeSDF's hyper tree grid with their cell data,
-// and the one-rank reference they are compared with (TestOctreeSDF.cxx,
-// TestOctreeSDF2D.cxx).
+// the one-rank reference they are compared with, and the MPI controller the
+// tests run under (TestOctreeSDF.cxx, TestOctreeSDF2D.cxx).
 #include "FilterTestCheck.h"
 
 #include "vtkCellData.h"
@@ -12,8 +12,10 @@
 #include "vtkFieldData.h"
 #include "vtkHyperTreeGrid.h"
 #include "vtkHyperTreeGridNonOrientedGeometryCursor.h"
+#include "vtkMPIController.h"
 #include "vtkNew.h"
 #include "vtkSLLevelSetReconstruct.h"
+#include "vtkSmartPointer.h"
 
 #include <algorithm>
 #include <array>
@@ -89,6 +91,27 @@ inline double fieldValue(vtkDataObject* data, const char* name, vtkIdType tuple 
 {
   vtkDataArray* a = data ? data->GetFieldData()->GetArray(name) : nullptr;
   return a && tuple < a->GetNumberOfTuples() ? a->GetTuple1(tuple) : std::nan("");
+}
+
+/// The MPI controller of a test's main(), this rank and the number of ranks.
+struct MpiRun
+{
+  vtkSmartPointer<vtkMPIController> Controller;
+  int Rank = 0;
+  int Size = 1;
+};
+
+/// Initialises MPI with main's arguments and makes its controller the global
+/// one (the filters' communicator); main clears it and finalises at the end.
+inline MpiRun startMpi(int* argc, char*** argv)
+{
+  MpiRun run;
+  run.Controller = vtkSmartPointer<vtkMPIController>::New();
+  run.Controller->Initialize(argc, argv);
+  vtkMultiProcessController::SetGlobalController(run.Controller);
+  run.Rank = run.Controller->GetLocalProcessId();
+  run.Size = run.Controller->GetNumberOfProcesses();
+  return run;
 }
 
 /// Runs `filter` (its other properties set) on `input` on this rank alone

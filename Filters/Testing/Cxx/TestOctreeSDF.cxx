@@ -98,10 +98,7 @@ vtkIdType openEdges(const std::vector<vtkSmartPointer<vtkDataObject>>& pieces, v
 
 int main(int argc, char* argv[])
 {
-  vtkNew<vtkMPIController> controller;
-  controller->Initialize(&argc, &argv);
-  vtkMultiProcessController::SetGlobalController(controller);
-  const int rank = controller->GetLocalProcessId(), size = controller->GetNumberOfProcesses();
+  const auto [controller, rank, size] = sltktest::startMpi(&argc, &argv);
   const std::string outDir = argc > 1 ? argv[1] : ".";
 
   const std::array<double, 3> centre{ 2.0, 1.0, -1.0 };

@@ -100,10 +100,7 @@ double farthestVertex(vtkPolyData* a, vtkPolyData* b)
 
 int main(int argc, char* argv[])
 {
-  vtkNew<vtkMPIController> controller;
-  controller->Initialize(&argc, &argv);
-  vtkMultiProcessController::SetGlobalController(controller);
-  const int rank = controller->GetLocalProcessId(), size = controller->GetNumberOfProcesses();
+  const auto [controller, rank, size] = sltktest::startMpi(&argc, &argv);
 
   const sltk::PointCloud<2> circle = sltk::circleCloud(64, Radius, { CentreX, CentreY });
   sltk::PointCloud<3> cloud;
