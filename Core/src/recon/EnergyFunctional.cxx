@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace sltk
 {
@@ -39,7 +40,7 @@ class CellEnergy
 public:
   CellEnergy(const GridField<D, double>& phi, const GridField<D, double>& distance, const EnergyOptions& options)
     : Phi(phi)
-    , PhiQ1(phi)
+    , Distance(distance)
     , DistanceQ1(distance)
     , P(options.P)
     , Q(options.SecondP)
@@ -175,47 +176,33 @@ private:
   }
 
   /// (4.30): subcells whose Q1 centre value satisfies |phi| < sqrt(3)/2 dx'.
+  /// phi and d at the R^D centres by one separable pass each (q1AtSubcellCentres,
+  /// bitwise Q1Interpolator::eval), summed in the order m_0 fastest.
   PowerSums subcells(const std::array<Index, D>& cell, bool& front)
   {
-    this->PhiQ1.prepareIfNeeded(cell);
-    this->DistanceQ1.prepareIfNeeded(cell);
-    const double inv = 1.0 / this->R;
+    double corner[1 << D];
+    cellCorners<D>(this->Phi, cell, corner);
+    q1AtSubcellCentres<D>(corner, this->R, this->Scratch, this->PhiAtCentres);
+    cellCorners<D>(this->Distance, cell, corner);
+    q1AtSubcellCentres<D>(corner, this->R, this->Scratch, this->DistanceAtCentres);
     PowerSums sum;
-    std::array<int, D> m{};
-    for (;;)
+    for (size_t k = 0; k < this->PhiAtCentres.size(); ++k)
     {
-      std::array<double, D> t;
-      for (int a = 0; a < D; ++a)
+      if (std::fabs(this->PhiAtCentres[k]) < this->HalfDiagonal)
       {
-        t[a] = (m[a] + 0.5) * inv;
-      }
-      if (std::fabs(this->PhiQ1.eval(t)) < this->HalfDiagonal)
-      {
-        const double d = this->DistanceQ1.eval(t);
+        const double d = this->DistanceAtCentres[k];
         sum.First += powAbs(d, this->P);
         sum.Second += this->Q > 0.0 ? powAbs(d, this->Q) : 0.0;
         front = true;
-      }
-      int a = 0;
-      for (; a < D; ++a)
-      {
-        if (++m[a] < this->R)
-        {
-          break;
-        }
-        m[a] = 0;
-      }
-      if (a == D)
-      {
-        break;
       }
     }
     return sum.scaled(this->SubcellWeight);
   }
 
   const GridField<D, double>& Phi;
-  Q1Interpolator<D> PhiQ1;
-  Q1Interpolator<D> DistanceQ1;
+  const GridField<D, double>& Distance;
+  Q1Interpolator<D> DistanceQ1;                                 // (4.29), 2D
+  std::vector<double> Scratch, PhiAtCentres, DistanceAtCentres; // (4.30), 3D
   double P;
   double Q;
   int R;
