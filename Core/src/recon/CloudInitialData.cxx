@@ -5,13 +5,15 @@
 #include "sltk/recon/CloudInitialDataSlabs.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace sltk
 {
 using marking::onBoundary;
-using marking::passUntilStable;
 
 template <int D>
 Status markExternal(const GridField<D, double>& distance, double threshold, const Context& ctx,
@@ -22,36 +24,71 @@ Status markExternal(const GridField<D, double>& distance, double threshold, cons
 }
 
 template <int D>
-Status outsideBottleneck(
-  const GridField<D, double>& distance, const Context& ctx, std::vector<double>& bottleneck, int* rounds)
+Status outsideBottleneck(const GridField<D, double>& distance, const Context& ctx, std::vector<double>& bottleneck)
 {
+  // The widest paths from the boundary, widest first (Dijkstra's order with
+  // max-min for plus-min): a node is final when it leaves the queue, so each
+  // is expanded once, O(n log n), where repeated passes along the axes need
+  // as many rounds as the widest paths turn. The values are the d of the
+  // nodes or +infinity, chosen by comparisons only: the fixed point of the
+  // passes, bit for bit.
   const GridSpec<D>& g = distance.spec();
   const double inf = std::numeric_limits<double>::infinity();
   bottleneck.assign(static_cast<size_t>(g.nodeCount()), -inf);
-  ctx.parallelFor(0, g.nodeCount(),
-    [&](Index b, Index e)
+  using Entry = std::pair<double, Index>; // (width, node)
+  std::vector<Entry> heap;
+  for (Index k = 0; k < g.nodeCount(); ++k)
+  {
+    if (onBoundary<D>(distance.nodeIndex(k), g, 0, g.Dims[D - 1]))
     {
-      for (Index k = b; k < e; ++k)
-      {
-        bottleneck[static_cast<size_t>(k)] = onBoundary<D>(distance.nodeIndex(k), g, 0, g.Dims[D - 1]) ? inf : -inf;
-      }
-    });
-  const double* d = distance.storage().data();
-  double* wide = bottleneck.data();
-  // A node takes the narrower of its own d and its neighbour's way out, when wider than its own.
-  return passUntilStable(
-    distance, ctx,
-    [&](Index node, Index offset, Index from)
+      bottleneck[static_cast<size_t>(k)] = inf;
+      heap.emplace_back(inf, k);
+    }
+  }
+  std::array<Index, D> nodeStride{};
+  for (Index a = 0, stride = 1; a < D; stride *= g.Dims[a], ++a)
+  {
+    nodeStride[a] = stride;
+  }
+  std::make_heap(heap.begin(), heap.end());
+  Index expanded = 0;
+  while (!heap.empty())
+  {
+    std::pop_heap(heap.begin(), heap.end());
+    const auto [width, node] = heap.back();
+    heap.pop_back();
+    if (width < bottleneck[static_cast<size_t>(node)])
     {
-      const double through = std::min(d[offset], wide[from]);
-      if (through > wide[node])
+      continue; // a stale entry: the node left the queue wider
+    }
+    const std::array<Index, D> i = distance.nodeIndex(node);
+    for (int a = 0; a < D; ++a)
+    {
+      for (const int side : { -1, 1 })
       {
-        wide[node] = through;
-        return true;
+        const Index j = i[a] + side;
+        if (j < 0 || j >= g.Dims[a])
+        {
+          continue;
+        }
+        const Index next = node + side * nodeStride[a];
+        std::array<Index, D> n = i;
+        n[a] = j;
+        const double through = std::min(distance(n), width);
+        if (through > bottleneck[static_cast<size_t>(next)])
+        {
+          bottleneck[static_cast<size_t>(next)] = through;
+          heap.emplace_back(through, next);
+          std::push_heap(heap.begin(), heap.end());
+        }
       }
-      return false;
-    },
-    rounds);
+    }
+    if (++expanded % (Index(1) << 20) == 0 && ctx.interrupter().wasInterrupted())
+    {
+      return Status::aborted();
+    }
+  }
+  return Status::ok();
 }
 
 template <int D>
@@ -102,8 +139,8 @@ Ellipsoid<D> boundingEllipsoid(const PointCloud<D>& cloud, double margin)
 
 template Status markExternal(const GridField<2, double>&, double, const Context&, std::vector<std::uint8_t>&, int*);
 template Status markExternal(const GridField<3, double>&, double, const Context&, std::vector<std::uint8_t>&, int*);
-template Status outsideBottleneck(const GridField<2, double>&, const Context&, std::vector<double>&, int*);
-template Status outsideBottleneck(const GridField<3, double>&, const Context&, std::vector<double>&, int*);
+template Status outsideBottleneck(const GridField<2, double>&, const Context&, std::vector<double>&);
+template Status outsideBottleneck(const GridField<3, double>&, const Context&, std::vector<double>&);
 template Status cloudInitialData(const GridField<2, double>&, double, const Context&, GridField<2, double>&,
   const InitialDataOptions&, InitialDataReport*);
 template Status cloudInitialData(const GridField<3, double>&, double, const Context&, GridField<3, double>&,

@@ -57,10 +57,10 @@ Status markExternal(const GridField<D, double>& distance, double threshold, cons
 /// axis-aligned node paths from the grid's boundary of the minimum of d along
 /// the path (+infinity on the boundary). markExternal with threshold t marks
 /// exactly the nodes with bottleneck >= t, so one computation answers every
-/// K_P at once (AutomaticParameters.h). Same passes and cost as markExternal.
+/// K_P at once (AutomaticParameters.h). Computed widest path first, once
+/// per node (O(n log n), one thread).
 template <int D>
-Status outsideBottleneck(
-  const GridField<D, double>& distance, const Context& ctx, std::vector<double>& bottleneck, int* rounds = nullptr);
+Status outsideBottleneck(const GridField<D, double>& distance, const Context& ctx, std::vector<double>& bottleneck);
 
 /// Steps 1-2: phi0 from the distance to the cloud and gamma_P = threshold > 0.
 template <int D>
@@ -81,8 +81,8 @@ extern template Status markExternal(
   const GridField<2, double>&, double, const Context&, std::vector<std::uint8_t>&, int*);
 extern template Status markExternal(
   const GridField<3, double>&, double, const Context&, std::vector<std::uint8_t>&, int*);
-extern template Status outsideBottleneck(const GridField<2, double>&, const Context&, std::vector<double>&, int*);
-extern template Status outsideBottleneck(const GridField<3, double>&, const Context&, std::vector<double>&, int*);
+extern template Status outsideBottleneck(const GridField<2, double>&, const Context&, std::vector<double>&);
+extern template Status outsideBottleneck(const GridField<3, double>&, const Context&, std::vector<double>&);
 extern template Status cloudInitialData(const GridField<2, double>&, double, const Context&, GridField<2, double>&,
   const InitialDataOptions&, InitialDataReport*);
 extern template Status cloudInitialData(const GridField<3, double>&, double, const Context&, GridField<3, double>&,
