@@ -8,7 +8,7 @@ vtkStandardNewMacro(vtkOctreeSDF);
 
 vtkOctreeSDF::vtkOctreeSDF()
 {
-  this->AdaptiveStorage = true;
+  this->OctreeStorage = true;
 }
 
 vtkHyperTreeGrid* vtkOctreeSDF::GetOutput()
@@ -24,9 +24,9 @@ vtkDataObject* vtkOctreeSDF::GetOutput(int port)
 int vtkOctreeSDF::RequestData(vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
 {
   // A property: the same on every rank, so every rank stops here together.
-  if (!this->AdaptiveStorage)
+  if (!this->OctreeStorage)
   {
-    vtkErrorMacro("AdaptiveStorage is off: vtkOctreeSDF always stores the octree; turn AdaptiveStorage back on, or "
+    vtkErrorMacro("OctreeStorage is off: vtkOctreeSDF always stores the octree; turn OctreeStorage back on, or "
                   "use vtkSLLevelSetReconstruct for the uniform grids");
     return 0;
   }

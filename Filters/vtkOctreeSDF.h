@@ -5,7 +5,7 @@
  *          watertight signed distance from an unorganised point cloud, stored
  *          only near the surface and output as a vtkHyperTreeGrid.
  *
- * vtkSLLevelSetReconstruct with AdaptiveStorage always on, and every property
+ * vtkSLLevelSetReconstruct with OctreeStorage always on, and every property
  * of it with the same meaning (CellSizeFactor and NumberOfRuns give the
  * finest cell, dx = CellSizeFactor * h_P / 2^(R-1)). Run 1 is computed on its
  * uniform grid, the coarsest; runs 2..R, one level finer each, store only the
@@ -36,7 +36,7 @@
  * the trees it owns and its piece of the surface (the pieces join), rank 0
  * also the history.
  *
- * Turning AdaptiveStorage off is refused when the filter runs:
+ * Turning OctreeStorage off is refused when the filter runs:
  * vtkSLLevelSetReconstruct computes the uniform grids.
  */
 #ifndef vtkOctreeSDF_h

@@ -12,9 +12,9 @@
 #include "sltk/cloud/CloudPieces.h"
 #include "sltk/exec/CountingCommunicator.h"
 #include "sltk/exec/Memory.h"
+#include "sltk/octree/TiledReconstruction.h"
 #include "sltk/recon/OptionRanges.h"
 #include "sltk/recon/Reconstruction.h"
-#include "sltk/tiled/TiledReconstruction.h"
 
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
@@ -93,7 +93,7 @@ bool vtkSLLevelSetReconstruct::GetPropertyRangeZeroIsAutomatic(int i)
 
 int vtkSLLevelSetReconstruct::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  // Port 0: vtkImageData or, with AdaptiveStorage, vtkHyperTreeGrid (RequestDataObject).
+  // Port 0: vtkImageData or, with OctreeStorage, vtkHyperTreeGrid (RequestDataObject).
   static const char* types[3] = { "vtkDataObject", "vtkPolyData", "vtkTable" };
   info->Set(vtkDataObject::DATA_TYPE_NAME(), types[port]);
   return 1;
@@ -209,7 +209,7 @@ void markOutputsComplete(vtkInformationVector* outputs, int imageGhostLevels = E
   }
 }
 
-/// Port 0 as the type RequestDataObject makes for AdaptiveStorage (a hyper
+/// Port 0 as the type RequestDataObject makes for OctreeStorage (a hyper
 /// tree grid with it, an image without); null, with the error, otherwise.
 template <class T>
 T* portZeroAs(vtkSLLevelSetReconstruct* self, vtkDataObject* output)
@@ -218,14 +218,14 @@ T* portZeroAs(vtkSLLevelSetReconstruct* self, vtkDataObject* output)
   if (!typed)
   {
     vtkErrorWithObjectMacro(self,
-      "port 0 is a " << (output ? output->GetClassName() : "null") << " where AdaptiveStorage "
-                     << (self->GetAdaptiveStorage() ? "on" : "off")
+      "port 0 is a " << (output ? output->GetClassName() : "null") << " where OctreeStorage "
+                     << (self->GetOctreeStorage() ? "on" : "off")
                      << " needs another type: update the pipeline after changing it");
   }
   return typed;
 }
 
-/// Runs 2..R stored as tiles (AdaptiveStorage): the field as a hyper tree grid
+/// Runs 2..R stored as tiles (OctreeStorage): the field as a hyper tree grid
 /// (every stored node's distance to the cloud computed first), the surface
 /// contoured tile by tile, the run summary with the stored and the uniform
 /// node counts per run. Under MPI the ranks share the tiles out while they
@@ -255,7 +255,7 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
   // Each rank outputs its own trees and contours its own blocks of tiles (its ghosts hold the
   // nodes around them): the pieces join.
   sltk::vtkbridge::tiledZeroLevelSet(result.Field, result.Box, surface, result.Owners, comm.rank(), z);
-  if (self->GetGenerateAdaptiveGrid())
+  if (self->GetGenerateHyperTreeGrid())
   {
     sltk::completeTiledDistances(plan, ctx, result.Field, result.Owners, comm.rank()); // its own tiles
     const sltk::PointLocator<D>& locator = *plan.Locator;
@@ -314,7 +314,7 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
 
 /// Plans (ReconstructionPlan.h) and runs Algorithm 1 on `cloud` (moved in),
 /// then fills the image (lying in the plane z = `z` in 2D), the history and,
-/// with AdaptiveStorage, the surface.
+/// with OctreeStorage, the surface.
 template <int D>
 int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, double z, const sltk::Context& ctx,
   const sltk::Communicator& comm, int ghostLevels, vtkDataObject* output, vtkPolyData* surface, vtkTable* history)
@@ -328,7 +328,7 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
   }
   options.Ranks = comm.size(); // the memory check sizes this machine's ranks' windows
   options.RanksHere = sltk::ranksSharingThisMachine(comm.size());
-  options.TiledStorage = self->GetAdaptiveStorage();
+  options.OctreeStorage = self->GetOctreeStorage();
   sltk::ReconstructionPlan<D> plan;
   status = comm.agree(sltk::planReconstruction(std::move(cloud), options, ctx, plan));
   if (!status.isOk())
@@ -336,7 +336,7 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
     vtkErrorWithObjectMacro(self, "Input point set rejected: " << status.message());
     return 0;
   }
-  if (self->GetAdaptiveStorage()) // a planar cloud: quadtrees in the plane z
+  if (self->GetOctreeStorage()) // a planar cloud: quadtrees in the plane z
   {
     return reconstructTiledInto<D>(self, plan, z, ctx, comm, output, surface, history);
   }
@@ -395,10 +395,10 @@ int vtkSLLevelSetReconstruct::RequestDataObject(
 {
   vtkInformation* info = outputVector->GetInformationObject(0);
   vtkDataObject* current = info->Get(vtkDataObject::DATA_OBJECT());
-  if (this->AdaptiveStorage ? !vtkHyperTreeGrid::SafeDownCast(current) : !vtkImageData::SafeDownCast(current))
+  if (this->OctreeStorage ? !vtkHyperTreeGrid::SafeDownCast(current) : !vtkImageData::SafeDownCast(current))
   {
     vtkSmartPointer<vtkDataObject> made;
-    if (this->AdaptiveStorage)
+    if (this->OctreeStorage)
     {
       made = vtkSmartPointer<vtkHyperTreeGrid>::New();
     }
@@ -486,7 +486,7 @@ int vtkSLLevelSetReconstruct::RequestData(
   {
     return 0;
   }
-  if (!this->AdaptiveStorage)
+  if (!this->OctreeStorage)
   {
     sltk::vtkbridge::zeroLevelSet(vtkImageData::SafeDownCast(output), surface);
   }
@@ -504,8 +504,8 @@ int vtkSLLevelSetReconstruct::RequestData(
   }
   sltk::vtkbridge::transferCloudAttributes(attributesFrom, surface);
   markOutputsComplete(outputVector,
-    comm->size() > 1 && !this->AdaptiveStorage ? std::min(ghostLevels, sltk::vtkbridge::ImageGhostLevelsAvailable)
-                                               : EveryGhostLevel);
+    comm->size() > 1 && !this->OctreeStorage ? std::min(ghostLevels, sltk::vtkbridge::ImageGhostLevelsAvailable)
+                                             : EveryGhostLevel);
   return 1;
 }
 
@@ -582,8 +582,8 @@ void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RemoveOutliers: " << this->RemoveOutliers << "\n";
   os << indent << "DetectTunnels: " << this->DetectTunnels << "\n";
   os << indent << "LeastSquaresQ1: " << this->LeastSquaresQ1 << "\n";
-  os << indent << "AdaptiveStorage: " << this->AdaptiveStorage << "\n";
-  os << indent << "GenerateAdaptiveGrid: " << this->GenerateAdaptiveGrid << "\n";
+  os << indent << "OctreeStorage: " << this->OctreeStorage << "\n";
+  os << indent << "GenerateHyperTreeGrid: " << this->GenerateHyperTreeGrid << "\n";
   os << indent << "OutlierDeviations: " << this->OutlierDeviations << "\n";
   os << indent << "ThinningFactor: " << this->ThinningFactor << "\n";
 }

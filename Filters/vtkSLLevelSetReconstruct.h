@@ -10,7 +10,7 @@
  *    inside; cut at +-4 dx away from the surface, (1.49)) and "DistanceToCloud",
  *    and a per-run summary in its field data (CloudSpacing, RunGridDimensions,
  *    RunIterations, RunEnergy, RunCloudError, RunSeconds); with
- *    AdaptiveStorage a vtkHyperTreeGrid with the same values as cell data;
+ *    OctreeStorage a vtkHyperTreeGrid with the same values as cell data;
  *  - port 1: vtkPolyData, the zero isosurface (3D) or contour (2D);
  *  - port 2: vtkTable, the convergence history (run, iteration, energy E_2,
  *    eps_1, Err_P, band size, time) for ParaView line charts.
@@ -32,7 +32,7 @@
  * vtkGhostType); the surface and the history are complete for any ghost level
  * (so that ParaView's request of one for the surface does not run the
  * reconstruction again), the image for the levels it holds.
- * With AdaptiveStorage, runs 2..R share their tiles out over the ranks in
+ * With OctreeStorage, runs 2..R share their tiles out over the ranks in
  * Morton order while they compute (Documentation/Octree.md, "Distributing the
  * tiled band"), with the one-rank iterations and values (to rounding,
  * Documentation/Octree.md): each rank outputs the trees of its own tiles
@@ -250,9 +250,9 @@ public:
   ///@}
 
   ///@{
-  /// AdaptiveStorage (default off): runs 2..R store only the tiles of 8^3
+  /// OctreeStorage (default off): runs 2..R store only the tiles of 8^3
   /// nodes (8^2 for a planar cloud) within one tile of the front, the finest levels of the octree
-  /// (sltk/tiled/TiledReconstruction.h, Documentation/Octree.md "The tiled
+  /// (sltk/octree/TiledReconstruction.h, Documentation/Octree.md "The tiled
   /// band"): the same iterations and surface as the uniform grids, with memory
   /// that follows the surface. Port 0 is then a vtkHyperTreeGrid instead of
   /// the image: one tree per 8^3 nodes, refined to one leaf per node where a
@@ -262,22 +262,43 @@ public:
   /// its field data (with RunStoredNodes, RunUniformNodes, RunLeaves and
   /// GlobalLeaves); the surface (port 1) is contoured tile by tile; the history
   /// (port 2) gains StoredNodes, Leaves, LargestRankLeaves and UniformNodes.
-  /// vtkOctreeSDF is this filter with AdaptiveStorage always on. The automatic
+  /// vtkOctreeSDF is this filter with OctreeStorage always on. The automatic
   /// restart with a finer C_dx for thin parts is not done.
-  vtkSetMacro(AdaptiveStorage, bool);
-  vtkGetMacro(AdaptiveStorage, bool);
-  vtkBooleanMacro(AdaptiveStorage, bool);
+  vtkSetMacro(OctreeStorage, bool);
+  vtkGetMacro(OctreeStorage, bool);
+  vtkBooleanMacro(OctreeStorage, bool);
   ///@}
 
   ///@{
-  /// With AdaptiveStorage, whether port 0's hyper tree grid gets its trees
+  /// With OctreeStorage, whether port 0's hyper tree grid gets its trees
   /// (default on). Off, it holds only the run summary: no distance to the
   /// cloud is computed at the stored nodes beyond the band and no tree is
   /// built, for callers that want the surface alone (the CLI without -o);
   /// on the full dragon (52.7M stored nodes) the trees cost 1.5 GB and 3 minutes.
-  vtkSetMacro(GenerateAdaptiveGrid, bool);
-  vtkGetMacro(GenerateAdaptiveGrid, bool);
-  vtkBooleanMacro(GenerateAdaptiveGrid, bool);
+  vtkSetMacro(GenerateHyperTreeGrid, bool);
+  vtkGetMacro(GenerateHyperTreeGrid, bool);
+  vtkBooleanMacro(GenerateHyperTreeGrid, bool);
+  ///@}
+
+  ///@{
+  /// Deprecated: use SetOctreeStorage, GetOctreeStorage, OctreeStorageOn and
+  /// OctreeStorageOff (AdaptiveStorage is OctreeStorage's old name; these
+  /// forwarding methods are removed in the next release).
+  void SetAdaptiveStorage(bool on) { this->SetOctreeStorage(on); }
+  bool GetAdaptiveStorage() { return this->GetOctreeStorage(); }
+  void AdaptiveStorageOn() { this->OctreeStorageOn(); }
+  void AdaptiveStorageOff() { this->OctreeStorageOff(); }
+  ///@}
+
+  ///@{
+  /// Deprecated: use SetGenerateHyperTreeGrid, GetGenerateHyperTreeGrid,
+  /// GenerateHyperTreeGridOn and GenerateHyperTreeGridOff (GenerateAdaptiveGrid
+  /// is GenerateHyperTreeGrid's old name; these forwarding methods are removed
+  /// in the next release).
+  void SetGenerateAdaptiveGrid(bool on) { this->SetGenerateHyperTreeGrid(on); }
+  bool GetGenerateAdaptiveGrid() { return this->GetGenerateHyperTreeGrid(); }
+  void GenerateAdaptiveGridOn() { this->GenerateHyperTreeGridOn(); }
+  void GenerateAdaptiveGridOff() { this->GenerateHyperTreeGridOff(); }
   ///@}
 
   ///@{
@@ -306,7 +327,7 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  /// Port 0's type: vtkImageData, or vtkHyperTreeGrid with AdaptiveStorage.
+  /// Port 0's type: vtkImageData, or vtkHyperTreeGrid with OctreeStorage.
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   /// Every request runs guarded: an exception becomes the filter's error (SLTKGuard.h).
   vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -333,8 +354,8 @@ protected:
   double ThinningFactor = 0.0;
   bool DetectTunnels = false;
   bool LeastSquaresQ1 = false;
-  bool AdaptiveStorage = false;
-  bool GenerateAdaptiveGrid = true;
+  bool OctreeStorage = false;
+  bool GenerateHyperTreeGrid = true;
   vtkMultiProcessController* Controller = nullptr;
 
 private:

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file BenchChapter5.cxx
-/// The thesis's adaptive tests (5.3) on the tiled band (tiled/TiledReconstruction.h,
+/// The thesis's adaptive tests (5.3) on the tiled band (octree/TiledReconstruction.h,
 /// Documentation/Octree.md): the circle (64 points), the square (24) and the
 /// heart (24) in 2D, Cube&Spheres (2346) in 3D, with the chapter's parameters:
 ///  - the finest cell of run 1 from (5.10)-(5.11): L0 = ceil(log2(Delta_P / (C h_P))),
@@ -39,8 +39,8 @@
 #include "sltk/exec/ThreadPool.h"
 #include "sltk/interp/InterpolatorKind.h"
 #include "sltk/interp/LsqQ1.h"
+#include "sltk/octree/TiledReconstruction.h"
 #include "sltk/recon/ReconstructionPlan.h"
-#include "sltk/tiled/TiledReconstruction.h"
 
 #include <algorithm>
 #include <chrono>
@@ -134,7 +134,7 @@ void runCase(const std::string& name, const sltk::PointCloud<D>& cloud, const Ex
     options.Runs = 3;
     options.Guess = sltk::InitialGuess::BoundingSphere;
     options.OutsideThresholdFactor = args.OutsideFactor;
-    options.TiledStorage = true;
+    options.OctreeStorage = true;
     options.LeastSquaresQ1 = interp == "lsq-q1"; // the thesis's own (5.5): LsqQ1.h
     if (!options.LeastSquaresQ1 && !sltk::parseInterpolator(interp, options.Interpolator))
     {

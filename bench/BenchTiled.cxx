@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// \file BenchTiled.cxx
-/// The tiled reconstruction (tiled/TiledReconstruction.h) against the uniform
+/// The tiled reconstruction (octree/TiledReconstruction.h) against the uniform
 /// one on the same plan: iterations and Err_P per run, wall time, stored
 /// nodes against the uniform grid, and this process's peak memory. Run each
 /// storage in its own process (--storage) under /usr/bin/time -v so that the
@@ -15,8 +15,8 @@
 #include "sltk/core/MortonKey.h"
 #include "sltk/exec/Memory.h"
 #include "sltk/exec/ThreadPool.h"
+#include "sltk/octree/TiledReconstruction.h"
 #include "sltk/recon/ReconstructionPlan.h"
-#include "sltk/tiled/TiledReconstruction.h"
 
 #include <algorithm>
 #include <chrono>

@@ -19,7 +19,7 @@ status=0
 
 if [ "${SLTK_SKIP_SANITIZE:-0}" != 1 ]; then
   asan="$build-asan"
-  cmake -S "$repo" -B "$asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSLTK_ENABLE_VTK=OFF -DSLTK_ENABLE_OCTREE=OFF -DSLTK_SANITIZE=ON \
+  cmake -S "$repo" -B "$asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSLTK_ENABLE_VTK=OFF -DSLTK_ENABLE_P4EST=OFF -DSLTK_SANITIZE=ON \
     -DSLTK_BUILD_BENCHMARKS=OFF >"$asan.configure.log" 2>&1 || { cat "$asan.configure.log"; exit 1; }
   cmake --build "$asan" -j "${SLTK_JOBS:-$(nproc)}"
   (cd "$asan" && ctest --output-on-failure -j 2 -LE long) || status=1

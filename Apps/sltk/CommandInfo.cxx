@@ -85,7 +85,7 @@ int printPlan(const std::string& path, long long read, sltk::PointCloud<D> cloud
     std::printf("automatic    %s\n", choice.c_str());
   }
   std::printf("density      %.6g   (spacing from the 16-neighbour radius)\n", density);
-  const bool tiled = plan.Options.TiledStorage;
+  const bool tiled = plan.Options.OctreeStorage;
   std::printf(tiled ? "\n run        dx                 grid            nodes    stored (est.)    memory (est.)\n"
                     : "\n run        dx                 grid            nodes    memory (est.)\n");
   nlohmann::ordered_json runs = nlohmann::ordered_json::array();
@@ -137,7 +137,7 @@ struct Info
   sltk::ReconstructionOptions Options;
   int Threads = 0;
   std::string Json;
-  bool Octree = false; ///< plan the tiled storage (sltk reconstruct --octree)
+  bool Octree = false; ///< plan the octree storage (sltk reconstruct --octree)
   int run() const;
 };
 
@@ -151,7 +151,7 @@ int Info::run() const
   }
   const auto start = std::chrono::steady_clock::now();
   sltk::ReconstructionOptions options = this->Options;
-  options.TiledStorage = this->Octree;
+  options.OctreeStorage = this->Octree;
   vtkSmartPointer<vtkPointSet> input;
   sltk::Status status = readPointCloud(path, input); // (its messages name the file)
   if (!status.isOk())

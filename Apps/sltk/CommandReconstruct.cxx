@@ -112,7 +112,7 @@ struct Reconstruct
   int Threads = 0;
   bool Quiet = false;
   bool Verbose = false;
-  bool Octree = false; ///< AdaptiveStorage: runs 2..R stored as tiles around the front
+  bool Octree = false; ///< OctreeStorage: runs 2..R stored as tiles around the front
   bool given(const char* name) const { return this->Parser->count(name) > 0; }
   std::string problemBeforeWork(bool pieces, vtkPolyData* reference, int& code) const;
   vtkSmartPointer<vtkSLLevelSetReconstruct> makeFilter(vtkPointSet* cloud) const;
@@ -340,7 +340,7 @@ std::string Reconstruct::problemBeforeWork(bool pieces, vtkPolyData* reference, 
 }
 
 /// The filter of the options: the octree's (vtkSLLevelSetReconstruct with
-/// AdaptiveStorage always on) for --octree.
+/// OctreeStorage always on) for --octree.
 vtkSmartPointer<vtkSLLevelSetReconstruct> Reconstruct::makeFilter(vtkPointSet* cloud) const
 {
   const sltk::ReconstructionOptions& o = this->Options;
@@ -372,7 +372,7 @@ vtkSmartPointer<vtkSLLevelSetReconstruct> Reconstruct::makeFilter(vtkPointSet* c
   filter->SetOutlierDeviations(o.Cleaning.Outliers.Deviations);
   filter->SetThinningFactor(o.Cleaning.ThinningFactor);
   filter->SetDetectTunnels(o.DetectTunnels);
-  filter->SetGenerateAdaptiveGrid(this->given("--output")); // the trees only for -o FILE.htg
+  filter->SetGenerateHyperTreeGrid(this->given("--output")); // the trees only for -o FILE.htg
   return filter;
 }
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "sltk/tiled/TiledField.h"
+#include "sltk/octree/TiledField.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "sltk/tiled/TiledReconstruction.h"
+#include "sltk/octree/TiledReconstruction.h"
 
 #include "sltk/cloud/SyntheticClouds.h"
 #include "sltk/core/IndexBox.h"
+#include "sltk/octree/TiledMemory.h"
 #include "sltk/recon/ReconstructionPlan.h"
-#include "sltk/tiled/TiledMemory.h"
 
 #include <gtest/gtest.h>
 
@@ -190,7 +190,7 @@ TEST(TiledReconstruction, CircleAgreesWithTheUniformVersionWithTheThesisLeastSqu
 TEST(TiledReconstruction, MemoryCheckSizesTheTilesNotTheUniformGrid)
 {
   // A sphere on a fine grid: the tiles need far less than the uniform grid, and the plan's
-  // memory check (TiledStorage) sizes them; the uniform plan is refused at the same budget.
+  // memory check (OctreeStorage) sizes them; the uniform plan is refused at the same budget.
   const auto cloud = sltk::sphereCloud(2562);
   sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
   options.CellSizeFactor = 0.5;
@@ -210,16 +210,16 @@ TEST(TiledReconstruction, MemoryCheckSizesTheTilesNotTheUniformGrid)
   EXPECT_EQ(uniformStatus.code(), sltk::StatusCode::OutOfMemory) << uniformStatus.message();
   // The uniform refusal names the tiled storage, which fits.
   EXPECT_NE(uniformStatus.message().find("--octree"), std::string::npos) << uniformStatus.message();
-  options.TiledStorage = true;
+  options.OctreeStorage = true;
   const sltk::Status tiledStatus = sltk::planReconstruction(cloud, options, ctx, plan);
   EXPECT_TRUE(tiledStatus.isOk()) << tiledStatus.message();
   options.MemoryBudget = static_cast<std::uint64_t>(0.5 * tiledNeed);
   const sltk::Status refused = sltk::planReconstruction(cloud, options, ctx, plan);
   EXPECT_EQ(refused.code(), sltk::StatusCode::OutOfMemory);
-  EXPECT_NE(refused.message().find("the tiled reconstruction"), std::string::npos) << refused.message();
+  EXPECT_NE(refused.message().find("the octree reconstruction"), std::string::npos) << refused.message();
   EXPECT_NE(refused.message().find("use C_dx >="), std::string::npos) << refused.message();
   // Where the tiles do not fit either, the uniform refusal does not offer them.
-  options.TiledStorage = false;
+  options.OctreeStorage = false;
   const sltk::Status neither = sltk::planReconstruction(cloud, options, ctx, plan);
   EXPECT_EQ(neither.code(), sltk::StatusCode::OutOfMemory);
   EXPECT_EQ(neither.message().find("--octree"), std::string::npos) << neither.message();

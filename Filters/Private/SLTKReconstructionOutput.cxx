@@ -329,7 +329,7 @@ void historyTable(const std::vector<IterationRecord>& history, vtkTable* table)
   largestRank->SetName("LargestRankLeaves");
   uniform->SetName("UniformNodes");
   seconds->SetName("Seconds");
-  // Tiled storage (AdaptiveStorage) records the nodes held after each iteration.
+  // Tiled storage (OctreeStorage) records the nodes held after each iteration.
   const bool tiled =
     std::any_of(history.begin(), history.end(), [](const IterationRecord& r) { return r.StoredNodes > 0; });
   for (const IterationRecord& r : history)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SLTKTiledGrid.h"
 
-#include "sltk/tiled/TiledReconstruction.h"
+#include "sltk/octree/TiledReconstruction.h"
 
 #include "vtkBitArray.h"
 #include "vtkCellData.h"

@@ -1,18 +1,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file SLTKTiledGrid.h
-/// A tiled reconstruction (sltk/tiled/TiledField.h, Documentation/Octree.md
+/// A tiled reconstruction (sltk/octree/TiledField.h, Documentation/Octree.md
 /// "The tiled band") as a vtkHyperTreeGrid, without the full grid: one hyper
 /// tree per slot of 8^3 nodes (8^2 in 2D: a quadtree per slot, in the plane z), its cell centred on the slot's nodes
 /// (the tree's cells are the uniform grid's dual cells). A slot with a tile is refined down to one leaf per node
 /// holding that node's values, but for its flat cells (TiledField::flatCell: every node at the same +-gamma), each one
-/// leaf with that value and the distance to the cloud at its centre; a slot without one is a single leaf (+-gamma, the distance at its centre). The leaves of
-/// a last slot's tile beyond the grid's nodes are masked. A refined cell holds the mean of its unmasked children. The
-/// dual grid of the leaves (vtkHyperTreeGridContour) therefore contours the nodes' values as the uniform grid does near
-/// the front.
+/// leaf with that value and the distance to the cloud at its centre; a slot without one is a single leaf (+-gamma, the
+/// distance at its centre). The leaves of a last slot's tile beyond the grid's nodes are masked. A refined cell holds
+/// the mean of its unmasked children. The dual grid of the leaves (vtkHyperTreeGridContour) therefore contours the
+/// nodes' values as the uniform grid does near the front.
 
+#include "sltk/octree/TiledField.h"
 #include "sltk/recon/UnitBox.h"
-#include "sltk/tiled/TiledField.h"
 
 #include <array>
 #include <cstdint>

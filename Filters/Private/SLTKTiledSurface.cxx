@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SLTKTiledSurface.h"
 
-#include "sltk/tiled/TiledReconstruction.h"
+#include "sltk/octree/TiledReconstruction.h"
 
 #include <vtkAppendPolyData.h>
 #include <vtkDoubleArray.h>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file SLTKTiledSurface.h
-/// The zero level set of a tiled reconstruction (sltk/tiled/TiledField.h,
+/// The zero level set of a tiled reconstruction (sltk/octree/TiledField.h,
 /// Documentation/Octree.md "The tiled band") as one vtkPolyData, without the
 /// full grid: the cells of the blocks of 4^D tile positions that hold a tile
 /// (the cells of their slots without a tile too, at +-gamma) are contoured by
@@ -11,8 +11,8 @@
 /// identical points. The union is the uniform contour of the same nodes: as
 /// watertight as it.
 
+#include "sltk/octree/TiledField.h"
 #include "sltk/recon/UnitBox.h"
-#include "sltk/tiled/TiledField.h"
 
 #include <cstdint>
 #include <vector>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // main() of the GoogleTest programs that run serially and under `mpiexec -n N`
-// (Mpi/, Octree/): MPI around the tests, results printed by rank 0, the
+// (Mpi/, P4est/): MPI around the tests, results printed by rank 0, the
 // failures of the other ranks printed by them (with their rank), and the exit
 // code is 1 on every rank when a test failed on any rank.
 #include <gtest/gtest.h>

@@ -10,7 +10,7 @@
 // relative, phi and d within 1e-15 of a cell), hence 1e-10.
 #include "MpiWorld.h"
 #include "sltk/cloud/SyntheticClouds.h"
-#include "sltk/tiled/TiledReconstruction.h"
+#include "sltk/octree/TiledReconstruction.h"
 
 #include <gtest/gtest.h>
 
@@ -147,7 +147,7 @@ TEST(TiledReconstructionRanks, SphereWithTheDefaultsIsTheOneRankReconstruction)
   // below). Every rank also runs the one-rank reconstruction, so under the sanitizers on a busy
   // machine the 2000 points this test had took over 5 minutes; 200 take 37-87 s on two ranks.
   sltk::ReconstructionOptions options;
-  options.TiledStorage = true;
+  options.OctreeStorage = true;
   const RankRun run = expectSameAsOneRank<3>(sltk::sphereCloud(200), options);
   if (world()->size() == 2)
   {
@@ -241,7 +241,7 @@ TEST(TiledReconstructionRanks, AFailureOnOneRankEndsEveryRankWithItsError)
   sltk::TiledReconstructionResult<2> result;
   const sltk::Status status = sltk::reconstructTiled(plan, sltk::Context{}, result, *comm);
   EXPECT_EQ(status.code(), sltk::StatusCode::OutOfMemory) << status.message();
-  EXPECT_NE(status.message().find("run 2 of the tiled reconstruction needs"), std::string::npos) << status.message();
+  EXPECT_NE(status.message().find("run 2 of the octree reconstruction needs"), std::string::npos) << status.message();
   if (comm->size() > 1)
   {
     EXPECT_NE(status.message().find("rank " + std::to_string(comm->size() - 1)), std::string::npos) << status.message();

@@ -147,7 +147,7 @@ def refused(f, what):
     out = f.GetOutputDataObject(0)
     assert errors, what + ": no error"
     empty = out.GetNumberOfPoints() == 0 if hasattr(out, "GetNumberOfPoints") else out.GetNumberOfCells() == 0
-    assert empty, what + ": an output was produced"  # an image, or AdaptiveStorage's hyper tree grid
+    assert empty, what + ": an output was produced"  # an image, or OctreeStorage's hyper tree grid
     sys.exit(3)  # the expected end of a refused case: the runner checks this code and the message
 """
 
@@ -502,8 +502,8 @@ refused(f, "a malformed formula")""", "the dynamics f_D component x", "column")
 python_case("hjb-courant-negative", """
 f = watched(sltk.vtkCWENOHJBSolver()); f.SetNumberOfNodes(31); f.SetCourantNumber(-1)
 refused(f, "CourantNumber -1")""", "CourantNumber")
-python_case("octree-adaptive-storage-off", """
-f = watched(sltk.vtkOctreeSDF()); f.SetInputDataObject(0, sphere()); f.AdaptiveStorageOff()
+python_case("octree-storage-off", """
+f = watched(sltk.vtkOctreeSDF()); f.SetInputDataObject(0, sphere()); f.OctreeStorageOff()
 f.Update()
 assert errors, "vtkOctreeSDF without its octree"
 sys.exit(3)""", "use vtkSLLevelSetReconstruct")

@@ -5,7 +5,7 @@ image is split into one block per rank, each rank contours its block, and the
 pieces join into one closed surface (ParaView's parallel Connectivity finds
 one region), with the whole convergence history; one execution serves the
 three ports; a filter that needs a ghost level (Gradient) gets one flagged
-row of the neighbour's. With AdaptiveStorage the ranks share the tiles out
+row of the neighbour's. With OctreeStorage the ranks share the tiles out
 (the uniform grids' iterations: as many history rows), each rank contours
 its own tiles (one closed surface across the pieces) and rank 0 outputs the
 whole hyper tree grid."""
@@ -64,8 +64,8 @@ assert mine.GetExtent() == block[:5] + (block[5] + 1,), \
 assert len(executions) == 2, "one more run for the ghost level (%d runs)" % len(executions)
 print("split cloud reconstructed on 2 slabs: bounds %s, one region" % (bounds,))
 
-# AdaptiveStorage: the tiles of run 2 shared out over the ranks; each outputs its own trees.
-tiled = SemiLagrangianLevelSetReconstruction(Input=cloud, NumberOfRuns=2, AdaptiveStorage=1)
+# OctreeStorage: the tiles of run 2 shared out over the ranks; each outputs its own trees.
+tiled = SemiLagrangianLevelSetReconstruction(Input=cloud, NumberOfRuns=2, OctreeStorage=1)
 tiled.UpdatePipeline()
 single = servermanager.Fetch(recon, idx=2)
 tiled_history = servermanager.Fetch(tiled, idx=2)
@@ -79,5 +79,5 @@ assert tiled_regions.CellData["RegionId"].GetRange() == (0.0, 0.0), "one closed 
 tiled_bounds = tiled.GetDataInformation(1).GetBounds()
 assert all(abs(a - b) < 1e-6 for a, b in zip(tiled_bounds, bounds)), \
     "the tiled surface spans the uniform one: %s, %s" % (tiled_bounds, bounds)
-print("AdaptiveStorage on 2 ranks: %d rows of history, %d leaves, one region" %
+print("OctreeStorage on 2 ranks: %d rows of history, %d leaves, one region" %
       (tiled_history.GetNumberOfRows(), tree.GetNumberOfCells()))

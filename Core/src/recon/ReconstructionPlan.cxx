@@ -6,13 +6,13 @@
 #include "sltk/cloud/CloudThinning.h"
 #include "sltk/cloud/LocalSpacing.h"
 #include "sltk/exec/Memory.h"
+#include "sltk/octree/TiledField.h"
+#include "sltk/octree/TiledMemory.h"
 #include "sltk/recon/AutomaticParameters.h"
 #include "sltk/recon/CloudInitialData.h"
 #include "sltk/recon/CloudPreparation.h"
 #include "sltk/recon/SlabPolicy.h"
 #include "sltk/recon/StrayPoints.h"
-#include "sltk/tiled/TiledField.h"
-#include "sltk/tiled/TiledMemory.h"
 
 #include <algorithm>
 #include <cmath>
@@ -435,7 +435,7 @@ double slotCount(const GridSpec<D>& grid)
   return static_cast<double>(grid.nodeCount()) / static_cast<double>(tileNodes<D>());
 }
 
-/// The tiled reconstruction's memory (TiledStorage): run 1's uniform grid and
+/// The tiled reconstruction's memory (OctreeStorage): run 1's uniform grid and
 /// the finest run's tiles (their slots, then the nodes estimated from the
 /// cloud, TiledMemory.h), against `budget` (0: none).
 template <int D>
@@ -476,7 +476,7 @@ GridPlanOptions runGridOptions(const ReconstructionPlan<D>& plan, int runs, doub
 
 } // namespace
 
-/// With TiledStorage: tiledNeedBytes must fit. A refusal names the smallest
+/// With OctreeStorage: tiledNeedBytes must fit. A refusal names the smallest
 /// C_dx, in steps of 5% up to the range's end, whose plan fits with 10%
 /// headroom: the need is run 1's grid and the slots (C_dx^-D) plus the tiles
 /// (C_dx^-(D-1)), so no single power predicts it.
@@ -500,7 +500,7 @@ Status checkTiledMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor
         : 0.0;
     }
     std::ostringstream m;
-    m << "the tiled reconstruction (" << runs << " runs, the finest grid " << grids.Runs.back().nodeCount()
+    m << "the octree reconstruction (" << runs << " runs, the finest grid " << grids.Runs.back().nodeCount()
       << " nodes) would need about " << need / 1e9 << " GB for run 1's grid and the finest run's tiles, more than the "
       << budget / 1e9 << " GB available: ";
     if (fit > 0.0)
@@ -542,7 +542,7 @@ Status withTiledAlternative(const ReconstructionPlan<D>& plan, GridPlanOptions p
   }
   std::ostringstream m;
   m << refusal.message() << "; or store only the tiles near the surface (about " << need / 1e9
-    << " GB): AdaptiveStorage in the filter, --octree with sltk reconstruct";
+    << " GB): OctreeStorage in the filter, --octree with sltk reconstruct";
   return Status::outOfMemory(m.str());
 }
 
@@ -553,13 +553,13 @@ double storedNodesEstimate(const ReconstructionPlan<D>& plan, int run)
 {
   const GridSpec<D>& grid = plan.Grids.Runs[static_cast<size_t>(run - 1)];
   const double nodes = static_cast<double>(grid.nodeCount());
-  return plan.Options.TiledStorage && run > 1 ? std::min(estimatedTiledNodes(plan.Cloud, grid), nodes) : nodes;
+  return plan.Options.OctreeStorage && run > 1 ? std::min(estimatedTiledNodes(plan.Cloud, grid), nodes) : nodes;
 }
 
 template <int D>
 double storageMemoryEstimate(const ReconstructionPlan<D>& plan, int run)
 {
-  if (!plan.Options.TiledStorage || run == 1)
+  if (!plan.Options.OctreeStorage || run == 1)
   {
     return plan.memoryEstimate(run);
   }
@@ -571,7 +571,7 @@ template <int D>
 Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor, GridPlan<D>& grids)
 {
   GridPlanOptions po = runGridOptions(plan, runs, cellSizeFactor); // room for run 1's initial surface
-  if (plan.Options.TiledStorage)
+  if (plan.Options.OctreeStorage)
   {
     po.MemoryBudget = std::numeric_limits<std::uint64_t>::max(); // not the uniform grids: their tiles
     SLTK_RETURN_IF_ERROR(planGrids(boundingBox(plan.Cloud), plan.CloudSpacing, po, grids));

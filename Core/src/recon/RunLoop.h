@@ -5,7 +5,7 @@
 /// on the grid dx = C_dx h_P / 2^(r-1) (4.36), its set-up, its iterations
 /// (RunIterations.h) and, beyond the thesis, the recoveries when a run loses
 /// its zero level set or leaves points far from the surface. The uniform grids
-/// (SlabRuns.h) and the tiled band (TiledRuns in tiled/TiledReconstruction.cxx) are
+/// (SlabRuns.h) and the tiled band (TiledRuns in octree/TiledReconstruction.cxx) are
 /// the storages.
 ///
 /// A storage `R` of the runs provides (every call collective):
@@ -220,7 +220,7 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
             << "% of the points lie more than one cell of run 1 from the surface: features thinner than that cell "
             << "were lost; "
             << (restarted ? "the restart from half the C_dx did not keep them: a smaller C_dx with as many runs "
-                            "(the tiled storage for the memory) may"
+                            "(the octree storage for the memory) may"
                    : records.Runs.size() <= 1 ? "a smaller C_dx may keep them"
                                               : "try half the C_dx with one run fewer (the same finest grid)");
     ctx.logger().log(LogLevel::Warning, warning.str());

@@ -150,15 +150,15 @@ int main(int argc, char* argv[])
     check(table && table->GetNumberOfRows() >= 2 && table->GetColumnByName("CloudError") != nullptr,
       "output 2 is the convergence history");
 
-    // AdaptiveStorage: runs >= 2 in tiles around the front; the same iterations, the same
+    // OctreeStorage: runs >= 2 in tiles around the front; the same iterations, the same
     // surface up to round-off (phi agrees to ~1e-14 cells, TestTiledReconstruction), watertight.
     const vtkIdType uniformPoints = surface ? surface->GetNumberOfPoints() : 0;
     const vtkIdType uniformRows = table ? table->GetNumberOfRows() : 0;
     const double uniformCloudError =
       table && uniformRows > 0 ? table->GetValueByName(uniformRows - 1, "CloudError").ToDouble() : 0.0;
     check(table && !table->GetColumnByName("StoredNodes"), "the uniform history has no StoredNodes column");
-    recon->AdaptiveStorageOn();
-    check(recon->GetExecutive()->Update() == 1, "AdaptiveStorage: the sphere is reconstructed");
+    recon->OctreeStorageOn();
+    check(recon->GetExecutive()->Update() == 1, "OctreeStorage: the sphere is reconstructed");
     auto* tiled = vtkPolyData::SafeDownCast(recon->GetOutputDataObject(1));
     vtkNew<vtkFeatureEdges> open;
     open->SetInputData(tiled);
@@ -168,19 +168,19 @@ int main(int argc, char* argv[])
     open->ManifoldEdgesOff();
     open->Update();
     check(tiled && tiled->GetNumberOfPolys() > 100 && open->GetOutput()->GetNumberOfCells() == 0,
-      "AdaptiveStorage: the surface contoured tile by tile has no boundary or non-manifold edge");
+      "OctreeStorage: the surface contoured tile by tile has no boundary or non-manifold edge");
     check(tiled && std::abs(tiled->GetNumberOfPoints() - uniformPoints) <= uniformPoints / 1000,
-      "AdaptiveStorage: the surface has the uniform one's points (" + std::to_string(tiled->GetNumberOfPoints()) +
+      "OctreeStorage: the surface has the uniform one's points (" + std::to_string(tiled->GetNumberOfPoints()) +
         " vs " + std::to_string(uniformPoints) + ")");
     auto* tiledTable = vtkTable::SafeDownCast(recon->GetOutputDataObject(2));
-    check(tiledTable && tiledTable->GetNumberOfRows() == uniformRows, "AdaptiveStorage: the same iterations");
+    check(tiledTable && tiledTable->GetNumberOfRows() == uniformRows, "OctreeStorage: the same iterations");
     auto* tree = vtkHyperTreeGrid::SafeDownCast(recon->GetOutputDataObject(0));
-    check(tree != nullptr, "AdaptiveStorage: port 0 is a hyper tree grid");
+    check(tree != nullptr, "OctreeStorage: port 0 is a hyper tree grid");
     auto* stored = tree ? tree->GetFieldData()->GetArray("RunStoredNodes") : nullptr;
     auto* all = tree ? tree->GetFieldData()->GetArray("RunUniformNodes") : nullptr;
     check(stored && all && stored->GetNumberOfTuples() == 2 && stored->GetTuple1(0) == all->GetTuple1(0) &&
         stored->GetTuple1(1) > 0 && stored->GetTuple1(1) < all->GetTuple1(1),
-      "AdaptiveStorage: stored and uniform node counts per run (run 1 uniform)");
+      "OctreeStorage: stored and uniform node counts per run (run 1 uniform)");
     {
       // Every iteration's stored nodes (thesis Fig. 5.7): run 1 its whole grid, run 2 its tiles.
       auto* storedColumn =
@@ -192,7 +192,7 @@ int main(int argc, char* argv[])
         (runColumn->GetTuple1(r) == 1 ? first : lastStored) = storedColumn->GetTuple1(r);
       }
       check(storedColumn && all && first == all->GetTuple1(0) && lastStored > 0.0 && lastStored < all->GetTuple1(1),
-        "AdaptiveStorage: the history's StoredNodes per iteration (run 1 " + std::to_string(first) +
+        "OctreeStorage: the history's StoredNodes per iteration (run 1 " + std::to_string(first) +
           ", its grid; the last " + std::to_string(lastStored) + ", fewer than run 2's grid)");
     }
     if (tree)
@@ -209,7 +209,7 @@ int main(int argc, char* argv[])
       }
       check(level && phi && dist && finest > 0 && finest <= stored->GetTuple1(1) && dist->GetRange()[0] >= 0.0 &&
           std::isfinite(dist->GetRange()[1]),
-        "AdaptiveStorage: the tree's leaves hold the stored nodes' values (" + std::to_string(finest) + " of " +
+        "OctreeStorage: the tree's leaves hold the stored nodes' values (" + std::to_string(finest) + " of " +
           std::to_string(static_cast<long long>(stored->GetTuple1(1))) + " stored nodes)");
       vtkNew<vtkHyperTreeGridContour> contour;
       contour->SetInputData(tree);
@@ -226,7 +226,7 @@ int main(int argc, char* argv[])
       treeOpen->Update();
       check(merged->GetOutput()->GetNumberOfPoints() == tiled->GetNumberOfPoints() &&
           treeOpen->GetOutput()->GetNumberOfCells() == 0,
-        "AdaptiveStorage: the tree's contour is the tiled surface (" +
+        "OctreeStorage: the tree's contour is the tiled surface (" +
           std::to_string(merged->GetOutput()->GetNumberOfPoints()) + " vs " +
           std::to_string(tiled->GetNumberOfPoints()) + " points), watertight");
       const std::string htg = outDir + "/adaptive.htg";
@@ -238,17 +238,17 @@ int main(int argc, char* argv[])
       reader->SetFileName(htg.c_str());
       check(
         writer->Write() == 1 && (reader->Update(), reader->GetOutput()->GetNumberOfCells() == tree->GetNumberOfCells()),
-        "AdaptiveStorage: the tree written as .htg reads back");
+        "OctreeStorage: the tree written as .htg reads back");
     }
-    recon->GenerateAdaptiveGridOff(); // the surface alone: no trees, the run summary kept
-    check(recon->GetExecutive()->Update() == 1, "AdaptiveStorage without the grid: reconstructed");
+    recon->GenerateHyperTreeGridOff(); // the surface alone: no trees, the run summary kept
+    check(recon->GetExecutive()->Update() == 1, "OctreeStorage without the grid: reconstructed");
     auto* bare = vtkHyperTreeGrid::SafeDownCast(recon->GetOutputDataObject(0));
     auto* bareSurface = vtkPolyData::SafeDownCast(recon->GetOutputDataObject(1));
     check(bare && bare->GetNumberOfCells() == 0 && bare->GetFieldData()->GetArray("RunStoredNodes") && bareSurface &&
         bareSurface->GetNumberOfPoints() == tiled->GetNumberOfPoints(),
-      "GenerateAdaptiveGrid off: no trees, the run summary and the same surface");
-    recon->GenerateAdaptiveGridOn();
-    recon->AdaptiveStorageOff();
+      "GenerateHyperTreeGrid off: no trees, the run summary and the same surface");
+    recon->GenerateHyperTreeGridOn();
+    recon->OctreeStorageOff();
     // LeastSquaresQ1: the thesis's chapter 5 interpolation (5.5) at the feet; its own result, watertight.
     recon->LeastSquaresQ1On();
     check(recon->GetExecutive()->Update() == 1, "LeastSquaresQ1: the sphere is reconstructed");
@@ -340,9 +340,19 @@ int main(int argc, char* argv[])
   {
     vtkNew<vtkOctreeSDF> octree;
     octree->SetInputDataObject(cloud(100, 2.0));
-    octree->AdaptiveStorageOff();
-    check(octree->GetExecutive()->Update() == 0, "vtkOctreeSDF refuses AdaptiveStorage off");
+    octree->OctreeStorageOff();
+    check(octree->GetExecutive()->Update() == 0, "vtkOctreeSDF refuses OctreeStorage off");
+    octree->OctreeStorageOn();
+    // The deprecated names forward to OctreeStorage and GenerateHyperTreeGrid for one release.
+    octree->SetAdaptiveStorage(false);
+    octree->GenerateAdaptiveGridOff();
+    check(!octree->GetOctreeStorage() && !octree->GetGenerateHyperTreeGrid() && !octree->GetAdaptiveStorage() &&
+        !octree->GetGenerateAdaptiveGrid(),
+      "the deprecated AdaptiveStorage and GenerateAdaptiveGrid methods forward to the new properties");
     octree->AdaptiveStorageOn();
+    octree->SetGenerateAdaptiveGrid(true);
+    check(octree->GetOctreeStorage() && octree->GetGenerateHyperTreeGrid(),
+      "the deprecated On and Set methods forward to the new properties");
     octree->SetMaximumLevel(40);
     check(octree->GetExecutive()->Update() == 0 && octree->GetMaximumLevel() == 40,
       "vtkOctreeSDF refuses MaximumLevel 40, not clamped");

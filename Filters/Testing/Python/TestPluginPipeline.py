@@ -80,9 +80,9 @@ recon.RunParameters = [0.5, 1]
 recon.UpdatePipeline()
 assert recon.GetDataInformation().GetNumberOfPoints() == 0, "p < 1 is refused"
 recon.RunParameters = []
-# AdaptiveStorage switches the SignedDistance output to a hyper tree grid (and back); ParaView's
+# OctreeStorage switches the SignedDistance output to a hyper tree grid (and back); ParaView's
 # Contour of its dual grid at 0 is the Surface output.
-recon.AdaptiveStorage = 1
+recon.OctreeStorage = 1
 recon.UpdatePipeline()
 assert recon.GetDataInformation().GetDataClassName() == "vtkHyperTreeGrid", recon.GetDataInformation().GetDataClassName()
 assert {"SignedDistance", "DistanceToCloud", "Level"} <= set(recon.CellData.keys()), recon.CellData.keys()
@@ -92,7 +92,7 @@ tiled_surface = servermanager.Fetch(recon, idx=1)
 bounds = tree_surface.GetDataInformation().GetBounds()
 assert tree_surface.GetDataInformation().GetNumberOfCells() == tiled_surface.GetNumberOfPolys() and \
     abs(bounds[1] - 1.0) < 0.05, (tree_surface.GetDataInformation().GetNumberOfCells(), tiled_surface.GetNumberOfPolys())
-recon.AdaptiveStorage = 0
+recon.OctreeStorage = 0
 recon.UpdatePipeline()
 assert recon.GetDataInformation().GetDataClassName() == "vtkImageData"
 

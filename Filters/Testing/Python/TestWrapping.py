@@ -62,7 +62,10 @@ solver.Update()
 assert not hjb_errors and solver.GetOutput().GetDimensions() == (31, 31, 1), "back in range, the filter runs"
 
 octree = sltk.vtkOctreeSDF()
-assert octree.GetAdaptiveStorage() and octree.IsA("vtkSLLevelSetReconstruct"), "the octree filter always stores the octree"
+assert octree.GetOctreeStorage() and octree.IsA("vtkSLLevelSetReconstruct"), "the octree filter always stores the octree"
+octree.SetAdaptiveStorage(0)  # the deprecated name still forwards, for one release
+assert not octree.GetOctreeStorage() and not octree.GetAdaptiveStorage(), "SetAdaptiveStorage forwards to OctreeStorage"
+octree.OctreeStorageOn()
 assert octree.GetOutput().IsA("vtkHyperTreeGrid") and octree.GetOutput(2).IsA("vtkTable"), "GetOutput() is the octree, GetOutput(port) any port"
 print("python wrapping ok")
 sys.exit(0)

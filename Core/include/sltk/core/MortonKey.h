@@ -3,7 +3,7 @@
 /// \file MortonKey.h
 /// The Morton (z-order) key of integer coordinates, the space-filling curve
 /// of p4est's partition: the distributed tiled band's owners
-/// (Core/src/tiled/TileOwners.h) and sltkBenchTiled's partition profile.
+/// (Core/src/octree/TileOwners.h) and sltkBenchTiled's partition profile.
 
 #include "sltk/core/Index.h"
 

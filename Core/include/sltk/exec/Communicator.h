@@ -65,7 +65,7 @@ public:
   /// rank 1, ... (sendCounts[r] bytes for rank r, 0 allowed); `out` receives
   /// every rank's bytes for this rank in rank order, receiveCounts[r] from
   /// rank r. The ghost and migration exchanges of the distributed tiled band
-  /// (sltk/tiled/TileDistribution.h).
+  /// (Core/src/octree/TileDistribution.h).
   virtual void allToAllV(const void* send, const std::vector<std::int64_t>& sendCounts, std::vector<unsigned char>& out,
     std::vector<std::int64_t>& receiveCounts) const = 0;
 
@@ -88,7 +88,7 @@ public:
   /// matching pairs: a message from r to q in r's `out`, with the same count
   /// in q's `in`, in the same order per pair. Only the ranks that exchange
   /// wait for each other: the cost grows with the neighbours, not with size()
-  /// (the ghost exchanges of sltk/tiled, TileDistribution.h). Serial: rank 0
+  /// (the ghost exchanges of Core/src/octree/TileDistribution.h). Serial: rank 0
   /// to itself, a copy. Returns false when a message came shorter than its
   /// Incoming count (the pairs disagree: an internal error of the caller).
   virtual bool neighbourExchange(const std::vector<Outgoing>& out, const std::vector<Incoming>& in) const = 0;

@@ -130,7 +130,7 @@ void exchangeGhostRows(GridField<D, T>& window, const SlabPlan& slab, const Comm
 /// `window` (slab.Begin .. slab.End - 1; the slabs tile the rows in rank
 /// order), with `ghost` ghost layers (not filled). A collective call: the
 /// tiled reconstruction's run 1, computed on slabs and small, read whole by
-/// every rank's transfer (tiled/TiledReconstruction.h).
+/// every rank's transfer (octree/TiledReconstruction.h).
 template <int D, class T>
 GridField<D, T> gatherSlabRows(
   const GridField<D, T>& window, const SlabPlan& slab, const GridSpec<D>& whole, int ghost, const Communicator& comm)

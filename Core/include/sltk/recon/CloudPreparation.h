@@ -2,7 +2,7 @@
 #pragma once
 /// \file CloudPreparation.h
 /// The first steps of every reconstruction, uniform (ReconstructionPlan.h)
-/// or adaptive (Octree/): the cloud checked and cleaned, then moved into the
+/// or adaptive (P4est/): the cloud checked and cleaned, then moved into the
 /// unit box [-1, 1]^D (4.5) with one point locator and h_P (4.36). One
 /// implementation for both, so that the two versions see the same cloud.
 

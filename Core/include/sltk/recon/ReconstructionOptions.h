@@ -107,10 +107,10 @@ struct ReconstructionOptions
   /// the same on any rank count.
   int Ranks = 1;
   int RanksHere = 1;
-  /// Runs 2..R stored in tiles (tiled/TiledReconstruction.h): the memory check
+  /// The octree storage: runs 2..R stored in tiles (octree/TiledReconstruction.h): the memory check
   /// sizes run 1's grid and the finest run's tiles (TiledMemory.h), not the
   /// finest uniform grid. The automatic C_dx still sizes the uniform grid.
-  bool TiledStorage = false;
+  bool OctreeStorage = false;
   bool DetectTunnels = false; ///< 4.5.6: follow grad phi where 0.6 h_P < d < 2 dx and |grad d| < 0.5
   /// Pre-processing of merged, noisy scans (CloudCleaning.h): automatic by
   /// default (gross outliers only, thinning only when the cloud is denser than

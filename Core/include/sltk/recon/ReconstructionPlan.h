@@ -91,13 +91,13 @@ Status planReconstruction(
 template <int D>
 Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor, GridPlan<D>& grids);
 
-/// Nodes run r (1-based) will store: its grid's, or with TiledStorage, for
+/// Nodes run r (1-based) will store: its grid's, or with OctreeStorage, for
 /// runs 2..R, the tiles' estimated from the cloud (estimatedTiledNodes,
 /// TiledMemory.h).
 template <int D>
 double storedNodesEstimate(const ReconstructionPlan<D>& plan, int run);
 
-/// Solver memory of run r (bytes): memoryEstimate(), or with TiledStorage,
+/// Solver memory of run r (bytes): memoryEstimate(), or with OctreeStorage,
 /// for runs 2..R, its stored nodes at TiledBytesPerStoredNode and its slots
 /// (what checkTiledMemory weighs for the finest run).
 template <int D>

@@ -3,8 +3,8 @@
 /// \file RunIterations.h
 /// The iterations of one run of Algorithm 1 (thesis 4.5, step 4), written once
 /// for every storage of a run's level set: the uniform grid on slabs
-/// (Core/src/recon/SlabBand.h), the tiled band (Core/src/tiled/TiledBand.h)
-/// and the thesis's cell-centred tree (Octree/src/cellcentred/). The loop owns the
+/// (Core/src/recon/SlabBand.h), the tiled band (Core/src/octree/TiledBand.h)
+/// and the thesis's cell-centred tree (P4est/src/cellcentred/). The loop owns the
 /// model's parameters, the stopping rule (4.33) with the far-point extension,
 /// the records, the interruption and the run's report; the storage owns where
 /// the band's values live and how they are exchanged between ranks.

@@ -5,7 +5,7 @@
 /// library SLTK::Mpi. The MPI_Comm is passed as an opaque handle, a pointer
 /// to it cast to void* (what vtkMPICommunicator::GetMPIComm()->GetHandle()
 /// returns in VTK 9.2), so this header needs no mpi.h. nativeHandle() gives
-/// the same kind of pointer back, for p4est (Octree/).
+/// the same kind of pointer back, for p4est (P4est/).
 
 #include "sltk/exec/Communicator.h"
 

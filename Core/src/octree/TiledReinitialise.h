@@ -1,0 +1,422 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file TiledReinitialise.h (private)
+/// The uniform version's narrow-band reinitialisation (Reinitialise.h: the
+/// constrained explicit values (1.38)-(1.45) on the nodes next to the front,
+/// then Jacobi pseudo-time steps of (1.30) with the sign (1.31) of phi0) on a
+/// TiledField, with the same kernels (ReinitInterface.h, ReinitScheme.h): the
+/// nodes are classified tile by tile on a copy of the tile with two nodes
+/// around it, and every pseudo-time step reads the axis neighbours straight
+/// from the tiles. The band is the band before the step dilated (1.53), as in
+/// the uniform version; the values are cut at +-gamma (1.49) afterwards.
+/// Distributed (TileDistribution.h), each rank updates the nodes of its own
+/// tiles and its ghosts' values follow every pseudo-time step.
+
+#include "TileDistribution.h"
+#include "sltk/exec/Context.h"
+#include "sltk/exec/ThreadPool.h"
+#include "sltk/levelset/ReinitInterface.h"
+#include "sltk/levelset/ReinitOptions.h"
+#include "sltk/octree/TiledField.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace sltk
+{
+
+template <int D>
+class TiledReinitialiser
+{
+public:
+  /// The nodes to reinitialise: those of `band`'s tiles with |phi| < gamma
+  /// and every node within `dilation` of one (1.53), in the tiles this rank
+  /// owns (`band`: every held tile with a band node, ghosts included); their
+  /// values now are phi^n of eps_1 (4.34).
+  void markBand(const TiledField<D>& field, const std::vector<std::int32_t>& band, int dilation, const Context& ctx,
+    const TileDistribution<D>& distribution)
+  {
+    const Index nodes = TiledField<D>::Nodes;
+    this->Mask.assign(static_cast<size_t>(field.tileCount() * nodes), 0);
+    std::vector<std::array<Index, D>> ball;
+    for (Index o = 0; o < ipow3(2 * dilation + 1); ++o)
+    {
+      std::array<Index, D> v{};
+      Index rest = o, r2 = 0;
+      for (int a = 0; a < D; ++a)
+      {
+        v[a] = rest % (2 * dilation + 1) - dilation;
+        rest /= 2 * dilation + 1;
+        r2 += v[a] * v[a];
+      }
+      if (r2 <= dilation * dilation)
+      {
+        ball.push_back(v);
+      }
+    }
+    std::vector<Index> ballOffsets; // the ball's offsets within one tile
+    for (const auto& v : ball)
+    {
+      Index offset = 0;
+      for (int a = 0; a < D; ++a)
+      {
+        offset += v[a] * (Index(1) << (TileBits * a));
+      }
+      ballOffsets.push_back(offset);
+    }
+    // Serial: neighbouring tiles share mask entries.
+    for (std::int32_t id : band)
+    {
+      const double* p = field.phi(id);
+      for (Index k = 0; k < nodes; ++k)
+      {
+        if (!(std::fabs(p[k]) < field.gamma()))
+        {
+          continue;
+        }
+        bool interior = true; // the whole ball inside this tile
+        for (int a = 0; a < D; ++a)
+        {
+          const Index c = (k >> (TileBits * a)) & (TileEdge - 1);
+          interior = interior && c >= dilation && c < TileEdge - dilation;
+        }
+        if (interior)
+        {
+          for (Index offset : ballOffsets)
+          {
+            this->Mask[static_cast<size_t>(id * nodes + k + offset)] = 1;
+          }
+          continue;
+        }
+        const auto i = field.node(id, k);
+        for (const auto& v : ball)
+        {
+          std::array<Index, D> j = i;
+          for (int a = 0; a < D; ++a)
+          {
+            j[a] += v[a];
+          }
+          Index local = 0;
+          const std::int32_t tile = tileOf(field, j, local);
+          if (tile >= 0)
+          {
+            this->Mask[static_cast<size_t>(tile * nodes + local)] = 1;
+          }
+        }
+      }
+    }
+    this->Nodes.clear();
+    this->Nodes.shrink_to_fit();
+    this->Nodes.reserve(static_cast<size_t>(std::count(this->Mask.begin(), this->Mask.end(), std::uint8_t(1))));
+    // Tile after tile in slot order, so that eps_1's sums do not depend on the tiles' ids.
+    field.forEachTileInSlotOrder(
+      [&](std::int32_t id)
+      {
+        if (!distribution.owns(field, id))
+        {
+          return;
+        }
+        for (Index k = 0; k < nodes; ++k)
+        {
+          if (this->Mask[static_cast<size_t>(id * nodes + k)])
+          {
+            this->Nodes.push_back({ id, static_cast<std::int32_t>(k) });
+          }
+        }
+      });
+    this->Before.resize(this->Nodes.size());
+    ctx.parallelFor(0, static_cast<Index>(this->Nodes.size()),
+      [&](Index b, Index e)
+      {
+        for (Index n = b; n < e; ++n)
+        {
+          const Node& node = this->Nodes[static_cast<size_t>(n)];
+          this->Before[static_cast<size_t>(n)] = field.phi(node.Tile)[node.Local];
+        }
+      });
+  }
+
+  /// Reinitialises and cuts the marked nodes (collective when distributed:
+  /// every rank returns the same status).
+  Status run(TiledField<D>& field, const ReinitOptions& options, const Context& ctx, TileDistribution<D>& distribution)
+  {
+    SLTK_RETURN_IF_ERROR(options.template validate<D>());
+    const GridSpec<D>& g = field.grid();
+    double h = g.Spacing[0];
+    for (int a = 0; a < D; ++a)
+    {
+      this->Spacing[a] = g.Spacing[a];
+      this->InverseSpacing[a] = 1.0 / g.Spacing[a];
+      h = std::min(h, g.Spacing[a]);
+    }
+    const size_t count = this->Nodes.size();
+    this->Fixed.assign(count, 0);
+    this->Coefficient.assign(count, 0.0);
+    this->Next.assign(count, 0.0);
+    this->ChunkChange.assign(
+      static_cast<size_t>(std::max<Index>(1, ThreadPool::chunkCount(0, static_cast<Index>(count), ChangeGrain))), 0.0);
+    this->classify(field, options, ctx);
+    this->findFaceNeighbours(field);
+    for (size_t n = 0; n < count; ++n)
+    {
+      if (this->Fixed[n])
+      {
+        field.phi(this->Nodes[n].Tile)[this->Nodes[n].Local] = this->Coefficient[n]; // the one step procedure
+      }
+    }
+    distribution.exchangeFaces(field);       // the pseudo-time steps read the ghosts' faces only
+    const double dtau = options.Courant * h; // (1.34)
+    for (int iteration = 1; iteration <= options.MaxIterations; ++iteration)
+    {
+      // The largest change, as the uniform version's BandSolver::step: the chunks' maxima, then
+      // their maximum (independent of how the nodes fall into chunks).
+      ctx.parallelFor(
+        0, static_cast<Index>(count),
+        [&](Index b, Index e)
+        {
+          double largest = 0.0;
+          double u[1 + 2 * D];
+          for (Index n = b; n < e; ++n)
+          {
+            if (this->Fixed[static_cast<size_t>(n)])
+            {
+              continue;
+            }
+            this->axes(field, this->Nodes[static_cast<size_t>(n)], u);
+            const double c = this->Coefficient[static_cast<size_t>(n)];
+            double v = u[0];
+            if (options.Method == ReinitMethod::RussoSmereka && this->Relax[static_cast<size_t>(n)])
+            {
+              const double sign = c > 0.0 ? 1.0 : (c < 0.0 ? -1.0 : 0.0);
+              v = u[0] - options.Courant * (sign * std::fabs(u[0]) - c); // (1.36)
+            }
+            else
+            {
+              v = reinitStep<D>(options.Scheme, u, this->InverseSpacing, c, dtau); // (1.32)/(1.35)
+            }
+            this->Next[static_cast<size_t>(n)] = v;
+            largest = std::isfinite(v) ? std::max(largest, std::fabs(v - u[0])) : HUGE_VAL;
+          }
+          this->ChunkChange[static_cast<size_t>(b / ChangeGrain)] = largest;
+        },
+        ChangeGrain);
+      const double change = distribution.max(*std::max_element(this->ChunkChange.begin(), this->ChunkChange.end()));
+      ctx.parallelFor(0, static_cast<Index>(count),
+        [&](Index b, Index e)
+        {
+          for (Index n = b; n < e; ++n)
+          {
+            if (!this->Fixed[static_cast<size_t>(n)])
+            {
+              const Node& node = this->Nodes[static_cast<size_t>(n)];
+              field.phi(node.Tile)[node.Local] = this->Next[static_cast<size_t>(n)];
+            }
+          }
+        });
+      distribution.exchangeFaces(field);
+      if (!std::isfinite(change))
+      {
+        return Status::numericalFailure(
+          "reinitialisation produced a non-finite value at pseudo-time step " + std::to_string(iteration));
+      }
+      if (change < options.Tolerance * h)
+      {
+        break;
+      }
+    }
+    // Cut (1.49) and eps_1 (4.34) over the marked nodes: tile by tile, the
+    // tiles added in slot order on any number of ranks.
+    std::vector<KeyedSums<2>> tiles;
+    for (size_t n = 0; n < count; ++n)
+    {
+      if (n == 0 || this->Nodes[n].Tile != this->Nodes[n - 1].Tile)
+      {
+        tiles.push_back({ static_cast<std::uint64_t>(field.tileSlot(this->Nodes[n].Tile)), {} });
+      }
+      double& v = field.phi(this->Nodes[n].Tile)[this->Nodes[n].Local];
+      v = std::min(field.gamma(), std::max(-field.gamma(), v));
+      tiles.back().Values[0] += std::fabs(v - this->Before[n]);
+      tiles.back().Values[1] += std::fabs(this->Before[n]);
+    }
+    distribution.exchange(field, false); // whole ghost tiles: the next iteration reads them all
+    const std::array<double, 2> sums = distribution.orderedSum(std::move(tiles), std::array<double, 2>{});
+    this->Change = sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
+    return Status::ok();
+  }
+
+  /// eps_1 (4.34) of the last run(): sum |phi^{n+1} - phi^n| / sum |phi^n| over the marked nodes.
+  double relativeChange() const { return this->Change; }
+
+private:
+  struct Node
+  {
+    std::int32_t Tile;
+    std::int32_t Local;
+  };
+
+  static Index ipow3(Index n)
+  {
+    Index r = 1;
+    for (int a = 0; a < D; ++a)
+    {
+      r *= n;
+    }
+    return r;
+  }
+
+  /// The tile holding grid index j (-1: none) and j's index in it.
+  static std::int32_t tileOf(const TiledField<D>& field, const std::array<Index, D>& j, Index& local)
+  {
+    std::array<Index, D> t{};
+    local = 0;
+    for (int a = 0; a < D; ++a)
+    {
+      if (j[a] < 0 || (j[a] >> TileBits) >= field.slotDims()[a])
+      {
+        return -1;
+      }
+      t[a] = j[a] >> TileBits;
+      local |= (j[a] & (TileEdge - 1)) << (TileBits * a);
+    }
+    return field.slot(field.slotIndex(t));
+  }
+
+  /// Face neighbours of every tile: for each axis the lower then the upper
+  /// slot's entry (a tile id, or TiledField's Outside / Inside), Outside beyond
+  /// the slots above, Self beyond the grid's first node (constant extension).
+  static constexpr std::int32_t Self = -3;
+  void findFaceNeighbours(const TiledField<D>& field)
+  {
+    this->FaceNeighbours.resize(static_cast<size_t>(field.tileCount()));
+    for (std::int32_t id = 0; id < field.tileCount(); ++id)
+    {
+      const auto& o = field.tileOrigin(id);
+      for (int a = 0; a < D; ++a)
+      {
+        for (int side = 0; side < 2; ++side)
+        {
+          auto t = o;
+          t[a] += side ? 1 : -1;
+          std::int32_t entry = TiledField<D>::Outside;
+          if (t[a] < 0)
+          {
+            entry = Self;
+          }
+          else if (t[a] < field.slotDims()[a])
+          {
+            entry = field.slot(field.slotIndex(t));
+          }
+          this->FaceNeighbours[static_cast<size_t>(id)][static_cast<size_t>(2 * a + side)] = entry;
+        }
+      }
+    }
+  }
+
+  /// u = (node, then the lower and upper neighbour of every axis) as
+  /// ReinitStencil::axes: from the node's tile, or across a tile face from
+  /// the neighbouring tile or slot.
+  void axes(const TiledField<D>& field, const Node& node, double* u) const
+  {
+    const double* p = field.phi(node.Tile);
+    u[0] = p[node.Local];
+    const auto& neighbours = this->FaceNeighbours[static_cast<size_t>(node.Tile)];
+    for (int a = 0; a < D; ++a)
+    {
+      const Index s = Index(1) << (TileBits * a);
+      const Index c = (node.Local >> (TileBits * a)) & (TileEdge - 1);
+      const Index across = (TileEdge - 1) * s; // the same node's place in the neighbouring tile
+      u[1 + 2 * a] = c > 0 ? p[node.Local - s] : this->acrossFace(field, neighbours[2 * a], node.Local + across, u[0]);
+      u[2 + 2 * a] = c < TileEdge - 1 ? p[node.Local + s]
+                                      : this->acrossFace(field, neighbours[2 * a + 1], node.Local - across, u[0]);
+    }
+  }
+
+  /// The value at `local` of a face neighbour `entry`; `self` for Self.
+  double acrossFace(const TiledField<D>& field, std::int32_t entry, Index local, double self) const
+  {
+    if (entry >= 0)
+    {
+      return field.phi(entry)[local];
+    }
+    if (entry == TiledField<D>::Remote)
+    {
+      return std::numeric_limits<double>::quiet_NaN(); // a ghost the exchange should have held
+    }
+    return entry == Self ? self : (entry == TiledField<D>::Inside ? -field.gamma() : field.gamma());
+  }
+
+  /// Role and coefficient of every marked node from phi0 (BandSolver::classify of Reinitialise.cxx).
+  void classify(const TiledField<D>& field, const ReinitOptions& options, const Context& ctx)
+  {
+    this->Relax.assign(this->Nodes.size(), 0);
+    // Marked nodes come tile by tile: one copy of the tile (and two nodes around it) per tile.
+    std::vector<size_t> starts;
+    for (size_t n = 0; n < this->Nodes.size(); ++n)
+    {
+      if (n == 0 || this->Nodes[n].Tile != this->Nodes[n - 1].Tile)
+      {
+        starts.push_back(n);
+      }
+    }
+    starts.push_back(this->Nodes.size());
+    double h = this->Spacing[0];
+    for (int a = 1; a < D; ++a)
+    {
+      h = std::min(h, this->Spacing[a]);
+    }
+    ctx.parallelFor(
+      0, static_cast<Index>(starts.size()) - 1,
+      [&](Index b, Index e)
+      {
+        GridField<D> block;
+        constexpr int Halo = 2;
+        double u[ReinitStencil<D>::BlockSize];
+        for (Index r = b; r < e; ++r)
+        {
+          const std::int32_t tile = this->Nodes[starts[static_cast<size_t>(r)]].Tile;
+          field.scratch(tile, Halo, 0, block, nullptr); // ReinitStencil reads no ghost layers
+          const ReinitStencil<D> stencil(block);
+          for (size_t n = starts[static_cast<size_t>(r)]; n < starts[static_cast<size_t>(r) + 1]; ++n)
+          {
+            std::array<Index, D> i{};
+            for (int a = 0; a < D; ++a)
+            {
+              i[a] = Halo + ((this->Nodes[n].Local >> (TileBits * a)) & (TileEdge - 1));
+            }
+            stencil.block(i, u);
+            const bool near = adjacentToInterface<D>(u); // (1.38)
+            if (near && options.Method == ReinitMethod::Constrained)
+            {
+              this->Fixed[n] = 1;
+              this->Coefficient[n] = constrainedDistance<D>(stencil, i, u, this->InverseSpacing, this->Spacing);
+            }
+            else if (near && options.Method == ReinitMethod::RussoSmereka)
+            {
+              this->Relax[n] = 1;
+              this->Coefficient[n] = interfaceDistance<D>(u, this->InverseSpacing, this->Spacing); // (1.37)
+            }
+            else
+            {
+              this->Coefficient[n] =
+                reinitSign(u[ReinitStencil<D>::Centre], centralGradientNorm<D>(u, this->InverseSpacing), h); // (1.31)
+            }
+          }
+        }
+      },
+      8);
+  }
+
+  std::vector<std::uint8_t> Mask;
+  std::vector<Node> Nodes;
+  std::vector<std::array<std::int32_t, 2 * D>> FaceNeighbours;
+  static constexpr Index ChangeGrain = 2048; ///< nodes a chunk of the largest change
+  std::vector<double> Before, Coefficient, Next, ChunkChange;
+  std::vector<std::uint8_t> Fixed, Relax;
+  double Spacing[D] = {};
+  double InverseSpacing[D] = {};
+  double Change = 0.0;
+};
+
+} // namespace sltk
