@@ -9,7 +9,9 @@
  *  - port 0: vtkImageData with the point arrays "SignedDistance" (negative
  *    inside; cut at +-4 dx away from the surface, (1.49)) and "DistanceToCloud",
  *    and a per-run summary in its field data (CloudSpacing, RunGridDimensions,
- *    RunIterations, RunEnergy, RunCloudError, RunSeconds); with
+ *    RunIterations, RunEnergy, RunCloudError, RunFarPoints, RunSeconds; the
+ *    strings AutomaticChoices, Recoveries and Warnings, the last empty unless
+ *    the result leaves points far from its surface, with the option that may help); with
  *    OctreeStorage a vtkHyperTreeGrid with the same values as cell data;
  *  - port 1: vtkPolyData, the zero isosurface (3D) or contour (2D);
  *  - port 2: vtkTable, the convergence history (run, iteration, energy E_2,

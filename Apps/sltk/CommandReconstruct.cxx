@@ -190,10 +190,10 @@ void printTotals(double seconds, double peakMb, int ranks, double bytesSent, dou
   }
 }
 
-/// Warnings about the result: a surface that did not reach the cloud, points
-/// left far from it (features thinner than run 1's cell), with advice that was
-/// not what just ran.
-void warnAboutResult(vtkFieldData* fd, const std::vector<std::string>& recoveries)
+/// Warnings about the result: a surface that did not reach the cloud, and
+/// Core's (points left far from it: features thinner than run 1's cell, with
+/// advice that was not what just ran).
+void warnAboutResult(vtkFieldData* fd, const std::vector<std::string>& warnings)
 {
   const double hP = fd->GetArray("CloudSpacing")->GetTuple1(0);
   const auto last = [fd](const char* name)
@@ -209,20 +209,9 @@ void warnAboutResult(vtkFieldData* fd, const std::vector<std::string>& recoverie
       "larger --kp (scans with holes), a smaller --cdx or --initial sphere\n",
       finalError / hP);
   }
-  const double lost = last("RunFarPoints");
-  if (lost > 0.01) // StoppingRule.h, FarPointWarning
+  for (const std::string& warning : warnings) // Core's: what did not fit, and what may help (not what just ran)
   {
-    const bool restarted = std::any_of(recoveries.begin(), recoveries.end(),
-      [](const std::string& r) { return r.find("reconstructed again from C_dx") != std::string::npos; });
-    const vtkIdType runs = fd->GetArray("RunFarPoints")->GetNumberOfTuples();
-    std::fprintf(stderr,
-      "sltk: warning: %.1f%% of the points lie more than one cell of run 1 from the surface: features thinner "
-      "than that cell were lost; %s\n",
-      100.0 * lost,
-      restarted     ? "the automatic restart from half the C_dx did not keep them: a smaller --cdx with as many runs "
-                      "(--octree for the memory) may"
-        : runs <= 1 ? "a smaller --cdx may keep them"
-                    : "try half the --cdx with one run fewer (the same finest grid)");
+    std::fprintf(stderr, "sltk: warning: %s\n", warning.c_str());
   }
 }
 
@@ -531,7 +520,8 @@ int Reconstruct::run() const
   const std::vector<std::string> recoveries = stringValues(fd, "Recoveries");
   const nlohmann::ordered_json runRecords = printRuns(fd, ranks);
   const double hP = fd->GetArray("CloudSpacing")->GetTuple1(0);
-  warnAboutResult(fd, recoveries);
+  const std::vector<std::string> warnings = stringValues(fd, "Warnings");
+  warnAboutResult(fd, warnings);
   const SurfaceTopology topology = printSurface(surface, planar);
   printTotals(seconds, peakMb, ranks, bytesSent, collectives, this->Octree);
   SurfaceDistances distances;
@@ -557,7 +547,7 @@ int Reconstruct::run() const
       { "points", static_cast<long long>(cloud->GetNumberOfPoints()) }, { "outliers_removed", outliers },
       { "thinning_cell", fieldValue("ThinningCell") }, { "points_reconstructed", reconstructed }, { "h_P", hP },
       { "cdx", fieldValue("CellSizeFactor") }, { "kp", fieldValue("OutsideThresholdFactor") },
-      { "automatic_choices", choices }, { "recoveries", recoveries }, { "seconds", seconds },
+      { "automatic_choices", choices }, { "recoveries", recoveries }, { "warnings", warnings }, { "seconds", seconds },
       { "peak_memory_mb", peakMb }, { "ranks", ranks }, { "bytes_sent_max", bytesSent }, { "collectives", collectives },
       { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) }, { "surface_pieces", topology.Pieces },
       { "euler_characteristic", planar ? nlohmann::ordered_json() : nlohmann::ordered_json(topology.Euler) },
@@ -605,7 +595,7 @@ Command addReconstructCommand(CLI::App& sltk)
   app
     ->add_option("--json", command->Json,
       "summary: points, points_reconstructed, outliers_removed, cdx, kp,\n"
-      "automatic_choices, recoveries, seconds, peak_memory_mb, ranks,\nsurface_pieces, "
+      "automatic_choices, recoveries, warnings, seconds, peak_memory_mb, ranks,\nsurface_pieces, "
       "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points; --octree: stored_nodes, "
       "uniform_nodes, leaves]")
     ->option_text("FILE");

@@ -243,6 +243,8 @@ TEST(AutomaticParameters, ThinFeatureLostByRunOneIsRecovered)
   EXPECT_GT(lost.Runs.back().FarPoints, 0.01) << "above the warning threshold";
   EXPECT_GT(phiNear(lost.SignedDistance, 0.75, 0.0), 0.0) << "the fin was expected to be lost at C_dx = 1";
   EXPECT_TRUE(lost.Recoveries.empty()) << "an explicit C_dx is used as given";
+  ASSERT_EQ(lost.Warnings.size(), 1u) << "the result says it does not fit";
+  EXPECT_NE(lost.Warnings[0].find("try half the C_dx with one run fewer"), std::string::npos) << lost.Warnings[0];
 
   // Automatic C_dx: the same first attempt, then half the cell size with one run
   // fewer, which keeps the fin and ends on the same finest grid.
@@ -254,6 +256,7 @@ TEST(AutomaticParameters, ThinFeatureLostByRunOneIsRecovered)
   EXPECT_EQ(kept.CellSizeFactor, 0.5);
   EXPECT_EQ(kept.Runs.size(), 2u);
   EXPECT_LT(kept.Runs.back().FarPoints, 0.01);
+  EXPECT_TRUE(kept.Warnings.empty()) << "the restart kept the fin: nothing to warn of";
   EXPECT_LT(phiNear(kept.SignedDistance, 0.75, 0.0), 0.0) << "the fin's middle is inside";
   EXPECT_GT(phiNear(kept.SignedDistance, 0.75, 0.1), 0.0) << "beside the fin is outside";
   EXPECT_EQ(kept.SignedDistance.spec().Spacing[0], lost.SignedDistance.spec().Spacing[0]) << "the same finest grid";

@@ -149,9 +149,10 @@ void runSummary(const ReconstructionResult<D>& result, vtkDataObject* image)
     { "CellSizeFactor", result.CellSizeFactor },
     { "OutsideThresholdFactor", result.OutsideThresholdFactor },
   };
-  const std::pair<const char*, const std::vector<std::string>*> notes[2] = {
+  const std::pair<const char*, const std::vector<std::string>*> notes[3] = {
     { "AutomaticChoices", &result.Choices },
     { "Recoveries", &result.Recoveries },
+    { "Warnings", &result.Warnings },
   };
   for (const auto& entry : notes)
   {

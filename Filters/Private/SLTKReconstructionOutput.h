@@ -40,8 +40,9 @@ constexpr int ImageGhostLevelsAvailable = static_cast<int>(SlabGhostRows) - 1;
 
 /// Per-run summary as field data of the output (the image, or the tiled
 /// reconstruction's hyper tree grid): CloudSpacing (h_P), the cleaning
-/// counts, CellSizeFactor and OutsideThresholdFactor used, AutomaticChoices and
-/// Recoveries (strings, AutomaticParameters.h), and one
+/// counts, CellSizeFactor and OutsideThresholdFactor used, AutomaticChoices,
+/// Recoveries and Warnings (strings: the automatic choices, the recoveries, and
+/// what the result does not fit with the option that may help; Reconstruction.h), and one
 /// tuple per run in RunGridDimensions (3 components), RunIterations,
 /// RunEnergy (E_2), RunCloudError (Err_P), RunFarPoints (fraction of the points
 /// more than one cell of run 1 from the surface), RunSeconds, RunGhostRows (the

@@ -224,6 +224,7 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
                    : records.Runs.size() <= 1 ? "a smaller C_dx may keep them"
                                               : "try half the C_dx with one run fewer (the same finest grid)");
     ctx.logger().log(LogLevel::Warning, warning.str());
+    records.Warnings.push_back(warning.str());
   }
   records.CloudSpacing = plan.userCloudSpacing();
   records.Cleaning = plan.Cleaning;

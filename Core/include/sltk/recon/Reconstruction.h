@@ -49,6 +49,9 @@ struct ReconstructionResult
   std::vector<RunRecord<D>> Runs;
   std::vector<IterationRecord> History;
   std::vector<std::string> Recoveries; ///< runs that lost their zero level set and what was done instead
+  /// What the result does not fit in the cloud (points left far from the
+  /// surface) and the option that may help; empty when it fits.
+  std::vector<std::string> Warnings;
 };
 
 /// Runs Algorithm 1. The cloud is validated first, then cleaned when
