@@ -8,8 +8,10 @@
 #include "SLTKReconstructionOutput.h"
 #include "SLTKTiledGrid.h"
 #include "SLTKTiledSurface.h"
+#include "SLTKUserFrame.h"
 
 #include "sltk/cloud/CloudPieces.h"
+#include "sltk/cloud/LocalFrame.h"
 #include "sltk/exec/CountingCommunicator.h"
 #include "sltk/exec/Memory.h"
 #include "sltk/octree/TiledReconstruction.h"
@@ -457,6 +459,18 @@ int vtkSLLevelSetReconstruct::RequestData(
     vtkLog(
       INFO, "the ranks held different pieces of the cloud: reconstructing their union, " << cloud.size() << " points");
   }
+  // Survey coordinates: a cloud far from the origin for its size is reconstructed in its
+  // local frame and the outputs are put back (LocalFrame.h). Its precision is checked
+  // where the user gave it: moved, it would hide digits the file never had.
+  const std::array<double, 3> shift =
+    cloud.Points.empty() ? std::array<double, 3>{} : sltk::localFrameShift(sltk::boundingBox(cloud));
+  const sltk::Status precise = comm->agree(sltk::isZeroShift(shift) ? sltk::Status::ok() : sltk::validateCloud(cloud));
+  if (!precise.isOk())
+  {
+    vtkErrorMacro("Input point set rejected: " << precise.message());
+    return 0;
+  }
+  sltk::moveToLocalFrame(cloud, shift);
 
   const sltk::Status ranges = comm->agree(checkRanges(this)); // before the thread pool takes NumberOfThreads
   if (!ranges.isOk())
@@ -490,6 +504,7 @@ int vtkSLLevelSetReconstruct::RequestData(
   {
     sltk::vtkbridge::zeroLevelSet(vtkImageData::SafeDownCast(output), surface);
   }
+  sltk::vtkbridge::toUserFrame(shift, output, surface);
   vtkSmartPointer<vtkPointSet> attributesFrom = input;
   if (joined) // every piece with its arrays, now that the reconstruction's memory is free
   {

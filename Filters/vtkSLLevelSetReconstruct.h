@@ -9,9 +9,11 @@
  *  - port 0: vtkImageData with the point arrays "SignedDistance" (negative
  *    inside; cut at +-4 dx away from the surface, (1.49)) and "DistanceToCloud",
  *    and a per-run summary in its field data (CloudSpacing, RunGridDimensions,
- *    RunIterations, RunEnergy, RunCloudError, RunFarPoints, RunSeconds; the
- *    strings AutomaticChoices, Recoveries and Warnings, the last empty unless
- *    the result leaves points far from its surface, with the option that may help); with
+ *    RunIterations, RunEnergy, RunCloudError, RunFarPoints, RunMisfitPoints, RunSeconds;
+ *    FitsCloud, 0 when more than 5% of the points lie more than two finest cells
+ *    and h_P from the surface; the strings AutomaticChoices, Recoveries and Warnings, the
+ *    last empty unless the result leaves points far from its surface, with the
+ *    option that may help); with
  *    OctreeStorage a vtkHyperTreeGrid with the same values as cell data;
  *  - port 1: vtkPolyData, the zero isosurface (3D) or contour (2D);
  *  - port 2: vtkTable, the convergence history (run, iteration, energy E_2,
@@ -20,7 +22,10 @@
  * The grid is derived from the data: dx = CellSizeFactor * h_P / 2^(r-1) in
  * run r, where h_P is the mean nearest-neighbour spacing of the cloud
  * (thesis (4.36)), padded by Padding cells on each side. A cloud whose z
- * extent is zero is reconstructed in 2D (a closed curve in its plane).
+ * extent is zero is reconstructed in 2D (a closed curve in its plane). A cloud
+ * far from the origin for its size (survey coordinates) is reconstructed in a
+ * local frame and the outputs come back in its coordinates, the surface's points
+ * in double (sltk/cloud/LocalFrame.h).
  *
  * Under MPI (pvbatch, pvserver, mpirun sltk reconstruct; the Controller, by
  * default the global controller) every rank reads the whole cloud and plans

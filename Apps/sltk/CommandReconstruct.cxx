@@ -225,6 +225,7 @@ nlohmann::ordered_json printRuns(vtkFieldData* fd, int ranks)
   auto* cloudError = fd->GetArray("RunCloudError");
   auto* runSeconds = fd->GetArray("RunSeconds");
   auto* farPoints = fd->GetArray("RunFarPoints");
+  auto* misfitPoints = fd->GetArray("RunMisfitPoints");
   auto* ghostRows = fd->GetArray("RunGhostRows");
   auto* farFeet = fd->GetArray("RunFarFeet");
   auto* storedNodes = fd->GetArray("RunStoredNodes"); // --octree only
@@ -241,7 +242,7 @@ nlohmann::ordered_json printRuns(vtkFieldData* fd, int ranks)
       { "grid", { static_cast<long long>(g[0]), static_cast<long long>(g[1]), static_cast<long long>(g[2]) } },
       { "iterations", static_cast<long long>(its->GetTuple1(r)) }, { "energy", energy->GetTuple1(r) },
       { "err_cloud", cloudError->GetTuple1(r) }, { "far_points", farPoints->GetTuple1(r) },
-      { "seconds", runSeconds->GetTuple1(r) } });
+      { "misfit_points", misfitPoints->GetTuple1(r) }, { "seconds", runSeconds->GetTuple1(r) } });
     if (ranks > 1 && ghostRows && farFeet)
     {
       runRecords.back()["ghost_rows"] = static_cast<long long>(ghostRows->GetTuple1(r));
@@ -458,6 +459,11 @@ int Reconstruct::run() const
         " cannot hold: write --surface as .vtp",
       2);
   }
+  const std::string imprecise = this->given("--surface") ? surfacePrecisionProblem(this->Surface, bounds) : "";
+  if (!imprecise.empty())
+  {
+    return fail(this->Surface + ": " + imprecise, 2);
+  }
   if (this->Verbose)
   {
     vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_INFO);
@@ -521,6 +527,7 @@ int Reconstruct::run() const
   const nlohmann::ordered_json runRecords = printRuns(fd, ranks);
   const double hP = fd->GetArray("CloudSpacing")->GetTuple1(0);
   const std::vector<std::string> warnings = stringValues(fd, "Warnings");
+  const bool fits = fieldValue("FitsCloud") != 0.0; // Core's verdict (ReconstructionResult::FitsCloud)
   warnAboutResult(fd, warnings);
   const SurfaceTopology topology = printSurface(surface, planar);
   printTotals(seconds, peakMb, ranks, bytesSent, collectives, this->Octree);
@@ -547,9 +554,10 @@ int Reconstruct::run() const
       { "points", static_cast<long long>(cloud->GetNumberOfPoints()) }, { "outliers_removed", outliers },
       { "thinning_cell", fieldValue("ThinningCell") }, { "points_reconstructed", reconstructed }, { "h_P", hP },
       { "cdx", fieldValue("CellSizeFactor") }, { "kp", fieldValue("OutsideThresholdFactor") },
-      { "automatic_choices", choices }, { "recoveries", recoveries }, { "warnings", warnings }, { "seconds", seconds },
-      { "peak_memory_mb", peakMb }, { "ranks", ranks }, { "bytes_sent_max", bytesSent }, { "collectives", collectives },
-      { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) }, { "surface_pieces", topology.Pieces },
+      { "automatic_choices", choices }, { "recoveries", recoveries }, { "warnings", warnings }, { "fits_cloud", fits },
+      { "seconds", seconds }, { "peak_memory_mb", peakMb }, { "ranks", ranks }, { "bytes_sent_max", bytesSent },
+      { "collectives", collectives }, { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) },
+      { "surface_pieces", topology.Pieces },
       { "euler_characteristic", planar ? nlohmann::ordered_json() : nlohmann::ordered_json(topology.Euler) },
       { "runs", runRecords } };
     if (this->given("--reference"))
@@ -563,6 +571,12 @@ int Reconstruct::run() const
     {
       return fail(status.message());
     }
+  }
+  if (!fits)
+  {
+    std::fprintf(
+      stderr, "sltk: the result does not fit the cloud (the warning above): its files are written; exit status 3\n");
+    return 3;
   }
   return 0;
 }
@@ -580,7 +594,10 @@ Command addReconstructCommand(CLI::App& sltk)
       "block (FILE/FILE_<rank>.vti);\n--octree: a hyper tree grid, .htg (.phtg under mpirun: each rank\nits own "
       "trees, FILE/FILE_<rank>.htg)")
     ->option_text("FILE.vti|.pvti|.htg|.phtg");
-  app->add_option("--surface", command->Surface, "zero level set: .vtp, .ply, .stl (3D) or .vtp (2D)")
+  app
+    ->add_option("--surface", command->Surface,
+      "zero level set: .vtp, .ply, .stl (3D) or .vtp (2D); a cloud far from the origin for\n                          "
+      "its size (survey coordinates) gets double vertices in .vtp and .ply, not .stl")
     ->check(CLI::Validator(surfaceFormatProblem, ""))
     ->option_text("FILE");
   app
@@ -595,8 +612,9 @@ Command addReconstructCommand(CLI::App& sltk)
   app
     ->add_option("--json", command->Json,
       "summary: points, points_reconstructed, outliers_removed, cdx, kp,\n"
-      "automatic_choices, recoveries, warnings, seconds, peak_memory_mb, ranks,\nsurface_pieces, "
-      "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points; --octree: stored_nodes, "
+      "automatic_choices, recoveries, warnings, fits_cloud, seconds, peak_memory_mb, ranks,\nsurface_pieces, "
+      "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points, misfit_points; --octree: "
+      "stored_nodes, "
       "uniform_nodes, leaves]")
     ->option_text("FILE");
   addInterpolatorOption(app, o.Interpolator, "weno3", &o.LeastSquaresQ1);

@@ -4,7 +4,9 @@
 /// Sub-commands of the `sltk` command line. Each adds its CLI11 parser to the
 /// program's; its run returns the process exit code: 0 success, 1 the job failed,
 /// 2 bad usage (options that contradict each other; CLI11's parse errors are
-/// printed by main(), also with 2). Failures print their message.
+/// printed by main(), also with 2), 3 a reconstruction whose result does not fit
+/// its cloud (ReconstructionResult::FitsCloud; the files are written). Failures
+/// print their message.
 
 #include <CLI/CLI.hpp>
 

@@ -18,6 +18,13 @@ namespace sltkcli
 /// Empty when the extension is supported, else a message naming the fix.
 std::string surfaceFormatProblem(const std::string& path);
 
+/// Empty when `path`'s format holds the surface of a cloud with these bounds (xmin,
+/// xmax, ymin, ...) to 1e-6 of its extent; for STL (32-bit floats by definition) far
+/// from the origin (sltk/cloud/LocalFrame.h), the problem and the formats that work.
+std::string surfacePrecisionProblem(const std::string& path, const double bounds[6]);
+
+/// .vtp, .ply or .stl by extension. A surface far from the origin for its size goes to
+/// PLY with double vertices (vtkPLYWriter writes floats, which resolve 1 at 1e7).
 sltk::Status writeSurface(const std::string& path, vtkPolyData* surface);
 
 /// XML image data (.vti).

@@ -43,7 +43,9 @@ int main(int argc, char** argv)
   sltk.get_formatter()->column_width(26);
   sltk.get_formatter()->label("SUBCOMMAND", "COMMAND");
   sltk.footer("Run `sltk <command> --help` for the options of a command.\n"
-              "Clouds: .ply .xyz .txt .csv .pts .obj .vtp .vtu .vtk");
+              "Clouds: .ply .xyz .txt .csv .pts .obj .vtp .vtu .vtk\n"
+              "Exit status: 0 done, 1 failed, 2 bad usage or input, 3 reconstructed but the result does not fit "
+              "the cloud (its files are written)");
   const std::vector<sltkcli::Command> commands = { sltkcli::addInfoCommand(sltk), sltkcli::addReconstructCommand(sltk),
     sltkcli::addHjbCommand(sltk) };
   for (const sltkcli::Command& command : commands)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/cloud/PointCloud.h"
 
+#include "sltk/cloud/LocalFrame.h"
+
 #include "sltk/cloud/SyntheticClouds.h"
 
 #include <gtest/gtest.h>
@@ -90,5 +92,37 @@ TEST(PointCloud, DuplicatePointsAreAccepted)
   auto c = sltk::sphereCloud(100);
   auto copy = c.Points;
   c.Points.insert(c.Points.end(), copy.begin(), copy.end());
+  EXPECT_TRUE(sltk::validateCloud(c).isOk());
+}
+
+TEST(LocalFrame, CloudsNearTheOriginAreNotMoved)
+{
+  // Within 16 extents: the thesis's and the shared clouds (at most 3) are reconstructed as given.
+  for (const double offset : { 0.0, 3.0, -20.0, 31.0 })
+  {
+    const auto c = sltk::sphereCloud(200, 1.0, { offset, 0.5, -0.25 });
+    EXPECT_TRUE(sltk::isZeroShift(sltk::localFrameShift(sltk::boundingBox(c)))) << offset;
+  }
+}
+
+TEST(LocalFrame, SurveyCoordinatesMoveExactly)
+{
+  // UTM-like: x, y near 1e6-1e7 with an extent of a few metres; z stays (a height within 16 extents).
+  auto c = sltk::sphereCloud(500, 2.5, { 6.5e6 + 0.3, 4.2e5 - 0.7, 12.0 });
+  const auto shift = sltk::localFrameShift(sltk::boundingBox(c));
+  EXPECT_EQ(shift[2], 0.0);
+  EXPECT_NEAR(shift[0], 6.5e6, 8.0); // the centre, to a multiple of the power of two >= the extent (8)
+  EXPECT_NEAR(shift[1], 4.2e5, 8.0);
+  EXPECT_EQ(std::fmod(shift[0], 8.0), 0.0);
+  const auto user = c;
+  sltk::moveToLocalFrame(c, shift);
+  for (size_t k = 0; k < c.Points.size(); ++k)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      EXPECT_LT(std::fabs(c.Points[k][a]), 16.0);
+      EXPECT_EQ(c.Points[k][a] + shift[a], user.Points[k][a]) << "moved and back is exact";
+    }
+  }
   EXPECT_TRUE(sltk::validateCloud(c).isOk());
 }

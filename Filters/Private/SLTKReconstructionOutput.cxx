@@ -113,8 +113,9 @@ void runSummary(const ReconstructionResult<D>& result, vtkDataObject* image)
   grids->SetName("RunGridDimensions");
   grids->SetNumberOfComponents(3);
   iterations->SetName("RunIterations");
-  vtkNew<vtkDoubleArray> energy, cloudError, farPoints, seconds;
+  vtkNew<vtkDoubleArray> energy, cloudError, farPoints, misfitPoints, seconds;
   farPoints->SetName("RunFarPoints");
+  misfitPoints->SetName("RunMisfitPoints");
   energy->SetName("RunEnergy");
   cloudError->SetName("RunCloudError");
   seconds->SetName("RunSeconds");
@@ -134,6 +135,7 @@ void runSummary(const ReconstructionResult<D>& result, vtkDataObject* image)
     energy->InsertNextValue(run.Energy);
     cloudError->InsertNextValue(run.CloudError);
     farPoints->InsertNextValue(run.FarPoints);
+    misfitPoints->InsertNextValue(run.MisfitPoints);
     seconds->InsertNextValue(run.Seconds);
     ghostRows->InsertNextValue(static_cast<int>(run.GhostRows));
     farFeet->InsertNextValue(static_cast<double>(run.FarFeet));
@@ -141,13 +143,14 @@ void runSummary(const ReconstructionResult<D>& result, vtkDataObject* image)
   vtkFieldData* fd = image->GetFieldData();
   // The pre-processing (CloudCleaning.h): counts as doubles (exact below 2^53).
   // and the parameters used (chosen when automatic: AutomaticParameters.h).
-  const std::pair<const char*, double> cleaning[6] = {
+  const std::pair<const char*, double> cleaning[7] = {
     { "InputPoints", static_cast<double>(result.Cleaning.InputPoints) },
     { "OutliersRemoved", static_cast<double>(result.Cleaning.OutliersRemoved) },
     { "ThinningCell", result.Cleaning.ThinningCell },
     { "ReconstructedPoints", static_cast<double>(result.Cleaning.OutputPoints) },
     { "CellSizeFactor", result.CellSizeFactor },
     { "OutsideThresholdFactor", result.OutsideThresholdFactor },
+    { "FitsCloud", result.FitsCloud ? 1.0 : 0.0 },
   };
   const std::pair<const char*, const std::vector<std::string>*> notes[3] = {
     { "AutomaticChoices", &result.Choices },
@@ -177,6 +180,7 @@ void runSummary(const ReconstructionResult<D>& result, vtkDataObject* image)
   fd->AddArray(energy);
   fd->AddArray(cloudError);
   fd->AddArray(farPoints);
+  fd->AddArray(misfitPoints);
   fd->AddArray(seconds);
   fd->AddArray(ghostRows);
   fd->AddArray(farFeet);

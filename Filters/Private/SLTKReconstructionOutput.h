@@ -40,12 +40,13 @@ constexpr int ImageGhostLevelsAvailable = static_cast<int>(SlabGhostRows) - 1;
 
 /// Per-run summary as field data of the output (the image, or the tiled
 /// reconstruction's hyper tree grid): CloudSpacing (h_P), the cleaning
-/// counts, CellSizeFactor and OutsideThresholdFactor used, AutomaticChoices,
+/// counts, CellSizeFactor and OutsideThresholdFactor used, FitsCloud (1 or 0), AutomaticChoices,
 /// Recoveries and Warnings (strings: the automatic choices, the recoveries, and
 /// what the result does not fit with the option that may help; Reconstruction.h), and one
 /// tuple per run in RunGridDimensions (3 components), RunIterations,
 /// RunEnergy (E_2), RunCloudError (Err_P), RunFarPoints (fraction of the points
-/// more than one cell of run 1 from the surface), RunSeconds, RunGhostRows (the
+/// more than one cell of run 1 from the surface), RunMisfitPoints (... more than two
+/// of the run's cells and than h_P), RunSeconds, RunGhostRows (the
 /// slabs' ghost rows at the run's end; 0 on one rank).
 template <int D>
 void runSummary(const ReconstructionResult<D>& result, vtkDataObject* image);

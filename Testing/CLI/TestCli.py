@@ -56,7 +56,8 @@ for kp, initial in (("10", "outside"), ("2", "ellipsoid")):
     rc2, _, err2 = run("reconstruct", sphere, "--kp", kp, "--initial", initial, "--cdx", "2", "--max-iterations", "1",
                        "--quiet", "--json", rec_kp)
     planned = [r["grid"] for r in json.load(open(info_kp))["runs"]] if rc1 == 0 else None
-    ran = [r["grid"] for r in json.load(open(rec_kp))["runs"]] if rc2 == 0 else []
+    # One iteration a run leaves the surface short of the points: a result that does not fit (exit 3).
+    ran = [r["grid"] for r in json.load(open(rec_kp))["runs"]] if rc2 in (0, 3) else []
     expect(planned == ran and len(ran) == 3, "info and reconstruct give the same grids with --kp %s --initial %s: %s vs %s"
            % (kp, initial, planned, ran))
 flat = os.path.join(tmp, "circle.xyz")
@@ -134,7 +135,22 @@ expect(summary["points"] == 2562 and len(summary["runs"]) == 2, "reconstruct JSO
 expect(summary["runs"][1]["err_cloud"] < 0.01, "Err_P of the sphere below 0.01 (got %g)" % summary["runs"][1]["err_cloud"])
 expect(all(k in summary for k in ("seconds", "peak_memory_mb")) and
        all(k in summary["runs"][0] for k in ("grid", "iterations", "energy", "err_cloud")), "reconstruct JSON fields")
+expect(summary["fits_cloud"] is True and summary["runs"][1]["misfit_points"] < 0.05,
+       "the sphere's result fits its cloud")
 expect(os.path.getsize(out_vti) > 0 and open(out_ply, "rb").read(3) == b"ply", "signed distance and PLY surface written")
+# A result that does not fit its cloud: a needle of points beside the sphere, thinner than run 1's cells
+# of C_dx = 4, is lost; the files are written, and the exit status is 3.
+needle = os.path.join(tmp, "needle.xyz")
+write_sphere(needle, 2562)
+with open(needle, "a") as f:
+    f.writelines("%.9f 0.0 0.0\n" % (1.0 + 1.5 * (k + 1) / 400) for k in range(400))
+needle_json, needle_vtp = os.path.join(tmp, "needle.json"), os.path.join(tmp, "needle.vtp")
+rc, _, err = run("reconstruct", needle, "--cdx", "4", "--runs", "1", "--quiet", "--json", needle_json,
+                 "--surface", needle_vtp)
+needle_summary = json.load(open(needle_json)) if os.path.exists(needle_json) else {}
+expect(rc == 3 and "the result does not fit the cloud" in err and "exit status 3" in err and
+       needle_summary.get("fits_cloud") is False and os.path.exists(needle_vtp),
+       "a result that does not fit: exit 3, the statement, fits_cloud false, files written (%d: %s)" % (rc, err))
 expect(open(out_csv).readline().startswith("Run,Iteration,Energy"), "convergence CSV written")
 # --octree: the tiled grid as a hyper tree grid (.htg), the surface and JSON as the uniform run's.
 out_htg = os.path.join(tmp, "sphere.htg")

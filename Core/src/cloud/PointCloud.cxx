@@ -148,7 +148,8 @@ Status validateCloud(const PointCloud<D>& cloud)
   {
     return Status::invalidArgument("the cloud's extent (" + std::to_string(diameter) +
       ") is too small against its distance from the origin (" + std::to_string(magnitude) +
-      "): translate the points near the origin before reconstructing");
+      "): its coordinates carry too few digits for the grid; translate the points near the origin where they are "
+      "made, before they are rounded to double");
   }
   // Two well-separated points: the first one and the one farthest from it.
   size_t i1 = 0;

@@ -226,6 +226,19 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
     ctx.logger().log(LogLevel::Warning, warning.str());
     records.Warnings.push_back(warning.str());
   }
+  if (status.isOk() && !records.Runs.empty() && records.Runs.back().MisfitPoints > FitShare)
+  {
+    std::ostringstream statement;
+    statement.precision(3);
+    statement << "the result does not fit the cloud: " << 100.0 * records.Runs.back().MisfitPoints
+              << "% of the points lie more than two finest cells and h_P ("
+              << plan.Box.Scale * misfitDistance(records.Runs.back().Grid.Spacing[0], plan.CloudSpacing)
+              << ") from the surface (features thinner than the cells were lost, or the points scatter more than "
+              << "that)" << (records.Warnings.empty() ? ": a smaller C_dx resolves thinner features" : "");
+    records.FitsCloud = false;
+    records.Warnings.insert(records.Warnings.begin(), statement.str());
+    ctx.logger().log(LogLevel::Warning, statement.str());
+  }
   records.CloudSpacing = plan.userCloudSpacing();
   records.Cleaning = plan.Cleaning;
   records.Choices = plan.Choices;

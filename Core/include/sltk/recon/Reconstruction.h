@@ -52,6 +52,9 @@ struct ReconstructionResult
   /// What the result does not fit in the cloud (points left far from the
   /// surface) and the option that may help; empty when it fits.
   std::vector<std::string> Warnings;
+  /// False when more than FitShare of the points lie more than two finest cells from the
+  /// surface (StoppingRule.h): the result does not fit the cloud, and Warnings says so first.
+  bool FitsCloud = true;
 };
 
 /// Runs Algorithm 1. The cloud is validated first, then cleaned when

@@ -174,6 +174,10 @@ struct RunRecord
   double CloudError = 0.0;
   double FarPoints =
     0.0; ///< fraction of the points more than one cell of run 1 (C_dx h_P, at least h_P) from the surface
+  /// Fraction of the points the surface misses, more than two of this run's cells and more
+  /// than h_P from it (misfitDistance): after the last run, whether the result fits the
+  /// cloud (Reconstruction.h, FitShare).
+  double MisfitPoints = 0.0;
   double Seconds = 0.0;
   Index MeanBandSize = 0;
   Index GhostRows = 0; ///< on several ranks: each slab's ghost rows (RunSlab.h); 0 on one rank

@@ -208,6 +208,7 @@ Status iterateRun(Band& band, const ReconstructionOptions& options, int run, dou
     record.Energy = energies.empty() ? 0.0 : energies.back();
   }
   band.finish(record, far);
+  record.MisfitPoints = band.farFraction(misfitDistance(dx, cloudSpacing));
   detail::warnAboutRun(record, run, cloudSpacing, ctx);
   detail::reportRun(record, run, phases, band.describe(), ctx);
   result.Runs.push_back(record);

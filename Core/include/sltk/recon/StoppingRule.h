@@ -20,6 +20,20 @@ namespace sltk
 /// the merged scans 0.8% at one h_P but C_dx = 3 there; kitten, frog, fandisk,
 /// teapot: at most 0.4% at one h_P.
 constexpr double FarPointWarning = 0.01;
+/// A result fits its cloud unless more than FitShare of the points lie more than two of
+/// its finest cells, and more than h_P, from its surface (RunRecord::MisfitPoints,
+/// misfitDistance): then it says so (ReconstructionResult::FitsCloud, a warning; the
+/// CLI's exit status 3). Why h_P too: at C_dx = 1 two finest cells are h_P / 2, and
+/// the smooth surface through a sampled crease misses that by more (the fandisk: 6.9%
+/// of its points beyond two cells, 0.17% beyond h_P; the teapot 12.8% and 0.6%).
+constexpr double FitShare = 0.05;
+/// A point the surface of a run misses lies beyond two of the run's cells and beyond h_P:
+/// nearer than the cloud's spacing a distance is the sampling's own uncertainty (FitShare).
+inline double misfitDistance(double dx, double cloudSpacing)
+{
+  return std::max(2.0 * dx, cloudSpacing);
+}
+
 /// ReconstructionOptions::FollowFarPoints: the relative fall of the far-point
 /// fraction over one energy window that keeps a stalled run going.
 constexpr double FarPointProgress = 0.1;

@@ -1,0 +1,168 @@
+"""Survey coordinates (Core/include/sltk/cloud/LocalFrame.h): a cloud far from the origin gives the
+surface of the same cloud near the origin, moved, in every front end and output.
+
+The cloud's coordinates are multiples of 2^-29, so that the shift (1e7, 1e7, 2.5e5) is exact in
+double: the two reconstructions see the same local cloud, and the outputs may differ only by the
+precision of their files. Usage: TestSurveyCoordinates.py SLTK_EXE (with the sltk Python module on
+PYTHONPATH)."""
+import json
+import math
+import os
+import struct
+import subprocess
+import sys
+import tempfile
+
+from vtkmodules.vtkCommonCore import vtkLogger, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+import sltk as sltk_filters
+
+vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
+sltk = sys.argv[1]
+tmp = tempfile.mkdtemp(prefix="sltk-survey-")
+failures = []
+SHIFT = (1e7, 1e7, 2.5e5)
+EXTENT = 2.4  # the ellipsoid's largest extent
+TOLERANCE = 1e-6 * EXTENT  # the issue's bound on the deviation
+
+
+def expect(cond, what):
+    print(("ok   " if cond else "FAIL ") + what)
+    if not cond:
+        failures.append(what)
+
+
+def ellipsoid(n=1500):
+    """Golden-angle points on an ellipsoid with semi-axes 1.2, 1.0, 0.7, as multiples of 2^-29."""
+    q = 2.0 ** 29
+    points = []
+    for k in range(n):
+        z = -1 + 2 * (k + 0.5) / n
+        r = math.sqrt(1 - z * z)
+        p = (1.2 * r * math.cos(2.4 * k), r * math.sin(2.4 * k), 0.7 * z)
+        points.append(tuple(round(v * q) / q for v in p))
+    return points
+
+
+def moved(points, by):
+    return [tuple(p[a] + by[a] for a in range(3)) for p in points]
+
+
+def write_xyz(path, points):
+    with open(path, "w") as f:
+        for p in points:
+            f.write("%r %r %r\n" % p)
+
+
+def read_ply_vertices(path):
+    """The vertices of a binary little-endian PLY whose vertex element is x, y, z (float or double)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode().splitlines()
+    first = next(k for k, line in enumerate(header) if line.startswith("element vertex"))
+    count = int(header[first].split()[2])
+    properties = [line.split()[1] for line in header[first + 1:] if line.startswith("property")]
+    properties = properties[:next((k for k, line in enumerate(header[first + 1:]) if line.startswith("element")),
+                                  len(properties))]
+    fmt = "<" + "".join({"double": "d", "float": "f"}[kind] for kind in properties)
+    size = struct.calcsize(fmt)
+    return properties[0], [struct.unpack_from(fmt, data, end + i * size)[:3] for i in range(count)]
+
+
+def largest_deviation(near, far, by):
+    return max(max(abs(f[a] - n[a] - by[a]) for a in range(3)) for n, f in zip(near, far))
+
+
+def vti_origin(path):
+    with open(path, "rb") as f:
+        head = f.read(4096).decode(errors="replace")
+    start = head.index('Origin="') + len('Origin="')
+    return [float(v) for v in head[start:head.index('"', start)].split()]
+
+
+# The CLI: the same surface moved, in a double PLY; the same image moved; the same summary.
+near, far = ellipsoid(), None
+far = moved(near, SHIFT)
+outputs = {}
+for name, points in (("near", near), ("far", far)):
+    cloud = os.path.join(tmp, name + ".xyz")
+    write_xyz(cloud, points)
+    files = {k: os.path.join(tmp, name + "." + k) for k in ("vti", "ply", "json")}
+    p = subprocess.run([sltk, "reconstruct", cloud, "--runs", "2", "--interpolator", "q1", "--quiet", "-o",
+                        files["vti"], "--surface", files["ply"], "--json", files["json"]],
+                       capture_output=True, text=True, timeout=300)
+    expect(p.returncode == 0, "sltk reconstruct of the %s cloud exits 0 (%s)" % (name, p.stderr.strip()))
+    outputs[name] = files
+near_json, far_json = (json.load(open(outputs[k]["json"])) for k in ("near", "far"))
+for key in ("surface_points", "surface_pieces", "euler_characteristic", "cdx", "kp"):
+    expect(near_json[key] == far_json[key], "%s the same far from the origin (%s, %s)" %
+           (key, near_json[key], far_json[key]))
+near_kind, near_vertices = read_ply_vertices(outputs["near"]["ply"])
+far_kind, far_vertices = read_ply_vertices(outputs["far"]["ply"])
+expect(far_kind == "double", "the far surface's PLY has double vertices (it has %s)" % far_kind)
+expect(len(near_vertices) == len(far_vertices) == near_json["surface_points"], "the PLYs hold every vertex")
+deviation = largest_deviation(near_vertices, far_vertices, SHIFT)
+expect(deviation <= TOLERANCE, "the far PLY is the near one moved, to %g (%g)" % (TOLERANCE, deviation))
+origin_near, origin_far = vti_origin(outputs["near"]["vti"]), vti_origin(outputs["far"]["vti"])
+expect(all(abs(origin_far[a] - origin_near[a] - SHIFT[a]) <= TOLERANCE for a in range(3)),
+       "the image's origin is moved by the shift (%s, %s)" % (origin_near, origin_far))
+
+# STL holds 32-bit floats: refused before any work, with the formats that hold the surface.
+p = subprocess.run([sltk, "reconstruct", os.path.join(tmp, "far.xyz"), "--surface", os.path.join(tmp, "far.stl")],
+                   capture_output=True, text=True, timeout=60)
+expect(p.returncode == 2 and "STL stores 32-bit floats" in p.stderr and ".vtp or .ply" in p.stderr,
+       "an STL surface far from the origin is refused with exit 2 and the fix (%d: %s)" % (p.returncode, p.stderr))
+expect(not os.path.exists(os.path.join(tmp, "far.stl")), "no STL file is left")
+
+
+def point_set(points):
+    vtk_points = vtkPoints()
+    vtk_points.SetDataTypeToDouble()
+    for p in points:
+        vtk_points.InsertNextPoint(p)
+    data = vtkPolyData()
+    data.SetPoints(vtk_points)
+    return data
+
+
+def reconstruct(filter_class, points):
+    f = filter_class()
+    f.SetNumberOfRuns(2)
+    f.SetInterpolator(sltk_filters.vtkSLLevelSetReconstruct.Q1)
+    f.SetInputData(point_set(points))
+    f.Update()
+    return f.GetOutputDataObject(0), f.GetOutputDataObject(1)
+
+
+def surface_points(surface):
+    return [surface.GetPoint(i) for i in range(surface.GetNumberOfPoints())]
+
+
+# The filters: the image (or the octree's grid) and the surface moved, the surface in double.
+near_image, near_surface = reconstruct(sltk_filters.vtkSLLevelSetReconstruct, near)
+far_image, far_surface = reconstruct(sltk_filters.vtkSLLevelSetReconstruct, far)
+expect(far_surface.GetNumberOfPoints() == near_surface.GetNumberOfPoints() > 0,
+       "vtkSLLevelSetReconstruct: the same surface points far from the origin")
+expect(far_surface.GetPoints().GetDataType() == 11, "vtkSLLevelSetReconstruct: the far surface's points are doubles")
+deviation = largest_deviation(surface_points(near_surface), surface_points(far_surface), SHIFT)
+expect(deviation <= TOLERANCE, "vtkSLLevelSetReconstruct: the surface moved, to %g (%g)" % (TOLERANCE, deviation))
+expect(all(abs(far_image.GetOrigin()[a] - near_image.GetOrigin()[a] - SHIFT[a]) <= TOLERANCE for a in range(3)),
+       "vtkSLLevelSetReconstruct: the image's origin moved")
+
+near_grid, near_surface = reconstruct(sltk_filters.vtkOctreeSDF, near)
+far_grid, far_surface = reconstruct(sltk_filters.vtkOctreeSDF, far)
+expect(far_surface.GetNumberOfPoints() == near_surface.GetNumberOfPoints() > 0,
+       "vtkOctreeSDF: the same surface points far from the origin")
+deviation = largest_deviation(surface_points(near_surface), surface_points(far_surface), SHIFT)
+expect(deviation <= TOLERANCE, "vtkOctreeSDF: the surface moved, to %g (%g)" % (TOLERANCE, deviation))
+expect(far_grid.GetNumberOfCells() == near_grid.GetNumberOfCells() > 0, "vtkOctreeSDF: the same cells")
+for axis, get in enumerate(("GetXCoordinates", "GetYCoordinates", "GetZCoordinates")):
+    a, b = getattr(near_grid, get)(), getattr(far_grid, get)()
+    expect(a.GetNumberOfTuples() == b.GetNumberOfTuples() and
+           all(abs(b.GetTuple1(i) - a.GetTuple1(i) - SHIFT[axis]) <= TOLERANCE for i in range(a.GetNumberOfTuples())),
+           "vtkOctreeSDF: the grid's %s moved" % get[3])
+
+if failures:
+    sys.exit("%d failure(s)" % len(failures))
