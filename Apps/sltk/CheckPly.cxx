@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "CheckPly.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -238,6 +239,10 @@ sltk::Status checkVertices(const std::string& path, const std::vector<PlyElement
   // vtkPLYReader reads the vertex element, then the face element, from the start of the data: an
   // element before them is not skipped but read as vertices (a crash, found by bench/fuzz).
   const bool vertexFirst = !elements.empty() && elements[0].Name == "vertex";
+  if (std::none_of(elements.begin(), elements.end(), [](const PlyElement& e) { return e.Name == "vertex"; }))
+  {
+    return sltk::Status::ioError(path + " has no vertices (no 'vertex' element): it holds no points to reconstruct");
+  }
   for (size_t k = 0; k < elements.size(); ++k)
   {
     const std::string& name = elements[k].Name;

@@ -123,6 +123,11 @@ sltk::Status readPointCloud(const std::string& path, vtkSmartPointer<vtkPointSet
   {
     return sltk::Status::ioError("cannot open '" + path + "': check the path and the permissions");
   }
+  probe.seekg(0, std::ios::end);
+  if (probe.tellg() == 0) // in our words, before a reader's ("Premature EOF reading first line")
+  {
+    return sltk::Status::ioError("'" + path + "' is empty (0 bytes): it holds no points");
+  }
   probe.close();
   const std::string ext = extensionOf(path);
   if (ext == "xyz" || ext == "txt" || ext == "csv" || ext == "pts")

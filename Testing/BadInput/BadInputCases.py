@@ -174,6 +174,9 @@ def cloud_case(name, data, extension, rc, *words, args=()):
 
 cloud_case("empty-file", b"", ".xyz", 1, "empty")
 cloud_case("header-only", b"x y z\n", ".xyz", 1, "empty")
+cloud_case("empty-vtk", b"", ".vtk", 1, "is empty (0 bytes)", "no points")
+cloud_case("ply-faces-without-vertices", b"ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\n"
+           b"end_header\n3 0 1 2\n", ".ply", 1, "has no vertices", "no points to reconstruct")
 cloud_case("binary-garbage", bad.garbage(), ".xyz", 1, "binary data")
 cloud_case("token-with-letters", b"0 0 0\n1 0 0\n0 1 0.02abc\n0 0 1\n", ".xyz", 1, "'0.02abc' is not a number", ":3:")
 cloud_case("nan-coordinate", bad.with_line(200, 17, "nan 0 0\n"), ".xyz", 1, "point 17", "non-finite")
