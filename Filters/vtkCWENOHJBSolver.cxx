@@ -176,7 +176,7 @@ int vtkCWENOHJBSolver::BuildSolver(vtkInformation* inInfo, vtkImageData* values,
     return 0;
   }
   sltk::InterpolatorKind interpolator{};
-  status = sltk::vtkbridge::interpolatorOf(this->Interpolator, interpolator);
+  status = sltk::interpolatorOfCode(this->Interpolator, interpolator);
   if (!status.isOk())
   {
     vtkErrorMacro(<< status.message());
@@ -343,7 +343,8 @@ int vtkCWENOHJBSolver::RequestData(
   {
     t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
   }
-  sltk::ThreadPool pool(sltk::threadsPerRank(this->NumberOfThreads, this->Communicator ? this->Communicator->size() : 1));
+  sltk::ThreadPool pool(
+    sltk::threadsPerRank(this->NumberOfThreads, this->Communicator ? this->Communicator->size() : 1));
   this->ThreadsUsed = pool.size();
   sltk::vtkbridge::AlgorithmInterrupter progress(this);
   sltk::Context ctx;

@@ -8,7 +8,7 @@ vtkStandardNewMacro(vtkOctreeSDF);
 
 vtkOctreeSDF::vtkOctreeSDF()
 {
-  this->OctreeStorage = true;
+  this->OctreeStorageOn();
 }
 
 vtkHyperTreeGrid* vtkOctreeSDF::GetOutput()
@@ -24,7 +24,7 @@ vtkDataObject* vtkOctreeSDF::GetOutput(int port)
 int vtkOctreeSDF::RequestData(vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
 {
   // A property: the same on every rank, so every rank stops here together.
-  if (!this->OctreeStorage)
+  if (!this->GetOctreeStorage())
   {
     vtkErrorMacro("OctreeStorage is off: vtkOctreeSDF always stores the octree; turn OctreeStorage back on, or "
                   "use vtkSLLevelSetReconstruct for the uniform grids");

@@ -17,6 +17,7 @@
 #include "sltk/octree/TiledReconstruction.h"
 #include "sltk/recon/OptionRanges.h"
 #include "sltk/recon/Reconstruction.h"
+#include "sltk/recon/ReconstructionSummary.h"
 
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
@@ -36,14 +37,67 @@
 #include "vtkTable.h"
 
 #include <algorithm>
+#include <climits>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 
 vtkStandardNewMacro(vtkSLLevelSetReconstruct);
 vtkCxxSetObjectMacro(vtkSLLevelSetReconstruct, Controller, vtkMultiProcessController);
 
+struct vtkSLLevelSetReconstruct::Internals
+{
+  sltk::ReconstructionOptions Options; ///< the properties' values, Core's defaults
+  /// Property values Core's options cannot hold, kept as given so that GetX
+  /// returns them and the next execution refuses them with the property's name,
+  /// as any value outside its range: an Interpolator or InitialGuess code outside
+  /// Core's enumeration, a negative MemoryBudget, a RunParameters value still
+  /// without its pair.
+  std::optional<int> Interpolator, InitialGuess, MemoryBudget;
+  std::optional<double> UnpairedRunValue;
+  std::optional<sltk::ReconstructionSummary> Summary; ///< the last execution's
+
+  /// The first kept value, refused; ok when none is kept.
+  sltk::Status refusedValue() const
+  {
+    sltk::InterpolatorKind kind{};
+    if (this->Interpolator)
+    {
+      return sltk::interpolatorOfCode(*this->Interpolator, kind);
+    }
+    if (this->InitialGuess)
+    {
+      return sltk::checkOptionRange(sltk::InitialGuessRange, *this->InitialGuess, "InitialGuess");
+    }
+    if (this->MemoryBudget)
+    {
+      return sltk::checkOptionRange(sltk::optionRange("MemoryBudget"), *this->MemoryBudget, "MemoryBudget");
+    }
+    if (this->UnpairedRunValue)
+    {
+      return sltk::Status::invalidArgument("RunParameters has " +
+        std::to_string(2 * this->Options.Schedule.size() + 1) +
+        " values: give (p, eta) pairs, an even number of values (or none for Table 4.1)");
+    }
+    return sltk::Status::ok();
+  }
+
+  /// The options of an execution on `comm`'s ranks: the properties', refused
+  /// when Core cannot hold one or one is outside Core's ranges.
+  sltk::Status optionsOn(const sltk::Communicator& comm, sltk::ReconstructionOptions& options) const
+  {
+    SLTK_RETURN_IF_ERROR(this->refusedValue());
+    SLTK_RETURN_IF_ERROR(sltk::validateOptionRanges(this->Options));
+    options = this->Options;
+    options.Ranks = comm.size(); // the memory check sizes this machine's ranks' windows
+    options.RanksHere = sltk::ranksSharingThisMachine(comm.size());
+    return sltk::Status::ok();
+  }
+};
+
 vtkSLLevelSetReconstruct::vtkSLLevelSetReconstruct()
+  : Impl(new Internals)
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(3);
@@ -93,6 +147,133 @@ bool vtkSLLevelSetReconstruct::GetPropertyRangeZeroIsAutomatic(int i)
   return rangeRow(i) && rangeRow(i)->ZeroIsAutomatic;
 }
 
+namespace
+{
+/// vtkSetMacro's semantics: Modified() only when the value changes.
+template <class T>
+void setOption(vtkObject* self, T& field, T value)
+{
+  if (field != value)
+  {
+    field = value;
+    self->Modified();
+  }
+}
+
+/// A property that Core holds in a type of its own: `hold(value)` converts it
+/// into the options, or returns false when Core's type cannot hold it, which is
+/// then kept in `kept` (returned by the getter, refused when the filter runs).
+template <class Hold>
+void setConverted(vtkObject* self, int current, int value, std::optional<int>& kept, Hold hold)
+{
+  if (value != current)
+  {
+    kept.reset();
+    if (!hold(value))
+    {
+      kept = value;
+    }
+    self->Modified();
+  }
+}
+} // namespace
+
+// The properties that are fields of Core's options, read and written in place.
+#define SLTK_OPTION_PROPERTY(Name, Type, field)                                                                        \
+  void vtkSLLevelSetReconstruct::Set##Name(Type value)                                                                 \
+  {                                                                                                                    \
+    setOption(this, this->Impl->Options.field, value);                                                                 \
+  }                                                                                                                    \
+  Type vtkSLLevelSetReconstruct::Get##Name()                                                                           \
+  {                                                                                                                    \
+    return this->Impl->Options.field;                                                                                  \
+  }
+
+SLTK_OPTION_PROPERTY(NumberOfRuns, int, Runs)
+SLTK_OPTION_PROPERTY(CellSizeFactor, double, CellSizeFactor)
+SLTK_OPTION_PROPERTY(MaximumLevel, int, MaximumLevel)
+SLTK_OPTION_PROPERTY(OutsideThresholdFactor, double, OutsideThresholdFactor)
+SLTK_OPTION_PROPERTY(MaximumNumberOfIterations, int, MaxIterations)
+SLTK_OPTION_PROPERTY(Tolerance, double, Tolerance)
+SLTK_OPTION_PROPERTY(Padding, int, Padding)
+SLTK_OPTION_PROPERTY(FinalEta, double, FinalEta)
+SLTK_OPTION_PROPERTY(LocalOffset, bool, LocalOffset)
+SLTK_OPTION_PROPERTY(FollowFarPoints, bool, FollowFarPoints)
+SLTK_OPTION_PROPERTY(AutomaticCleaning, bool, Cleaning.Automatic)
+SLTK_OPTION_PROPERTY(RemoveOutliers, bool, Cleaning.RemoveOutliers)
+SLTK_OPTION_PROPERTY(OutlierDeviations, double, Cleaning.Outliers.Deviations)
+SLTK_OPTION_PROPERTY(ThinningFactor, double, Cleaning.ThinningFactor)
+SLTK_OPTION_PROPERTY(DetectTunnels, bool, DetectTunnels)
+SLTK_OPTION_PROPERTY(LeastSquaresQ1, bool, LeastSquaresQ1)
+SLTK_OPTION_PROPERTY(OctreeStorage, bool, OctreeStorage)
+#undef SLTK_OPTION_PROPERTY
+
+// The properties in other units than Core's, converted here only: enumerations
+// as their codes, MemoryBudget in MB (Core: bytes).
+void vtkSLLevelSetReconstruct::SetInterpolator(int code)
+{
+  setConverted(this, this->GetInterpolator(), code, this->Impl->Interpolator,
+    [this](int c) { return sltk::interpolatorFromCode(c, this->Impl->Options.Interpolator); });
+}
+
+int vtkSLLevelSetReconstruct::GetInterpolator()
+{
+  return this->Impl->Interpolator.value_or(static_cast<int>(this->Impl->Options.Interpolator));
+}
+
+void vtkSLLevelSetReconstruct::SetInitialGuess(int code)
+{
+  setConverted(this, this->GetInitialGuess(), code, this->Impl->InitialGuess,
+    [this](int c)
+    {
+      const bool valid = sltk::inOptionRange(sltk::InitialGuessRange, c);
+      this->Impl->Options.Guess = valid ? static_cast<sltk::InitialGuess>(c) : this->Impl->Options.Guess;
+      return valid;
+    });
+}
+
+int vtkSLLevelSetReconstruct::GetInitialGuess()
+{
+  return this->Impl->InitialGuess.value_or(static_cast<int>(this->Impl->Options.Guess));
+}
+
+void vtkSLLevelSetReconstruct::SetMemoryBudget(int megabytes)
+{
+  setConverted(this, this->GetMemoryBudget(), megabytes, this->Impl->MemoryBudget,
+    [this](int mb)
+    {
+      this->Impl->Options.MemoryBudget =
+        mb >= 0 ? static_cast<std::uint64_t>(mb) * sltk::BytesPerMB : this->Impl->Options.MemoryBudget;
+      return mb >= 0;
+    });
+}
+
+int vtkSLLevelSetReconstruct::GetMemoryBudget()
+{
+  const std::uint64_t mb = this->Impl->Options.MemoryBudget / sltk::BytesPerMB;
+  return this->Impl->MemoryBudget.value_or(static_cast<int>(std::min<std::uint64_t>(mb, INT_MAX)));
+}
+
+void vtkSLLevelSetReconstruct::SetOptions(const sltk::ReconstructionOptions& options)
+{
+  this->Impl->Options = options;
+  this->Impl->Interpolator.reset();
+  this->Impl->InitialGuess.reset();
+  this->Impl->MemoryBudget.reset();
+  this->Impl->UnpairedRunValue.reset();
+  this->Modified();
+}
+
+const sltk::ReconstructionOptions& vtkSLLevelSetReconstruct::GetOptions() const
+{
+  return this->Impl->Options;
+}
+
+const sltk::ReconstructionSummary* vtkSLLevelSetReconstruct::GetLastSummary() const
+{
+  return this->Impl->Summary ? &*this->Impl->Summary : nullptr;
+}
+
 int vtkSLLevelSetReconstruct::FillOutputPortInformation(int port, vtkInformation* info)
 {
   // Port 0: vtkImageData or, with OctreeStorage, vtkHyperTreeGrid (RequestDataObject).
@@ -123,67 +304,6 @@ static_assert(vtkSLLevelSetReconstruct::Q1 == static_cast<int>(sltk::Interpolato
     vtkSLLevelSetReconstruct::CWENO == static_cast<int>(sltk::InterpolatorKind::Cweno) &&
     vtkSLLevelSetReconstruct::CWENOZ == static_cast<int>(sltk::InterpolatorKind::CwenoZ),
   "the filter's InterpolatorType names the registry's codes (InterpolatorKind.h)");
-
-/// The properties' ranges, Core's (OptionRanges.h: the plugin XML's domains are
-/// made from them): a value outside is refused with its name and range, never clamped.
-sltk::Status checkRanges(vtkSLLevelSetReconstruct* self)
-{
-  SLTK_RETURN_IF_ERROR(sltk::vtkbridge::checkPropertyRanges({
-    { "InitialGuess", double(self->GetInitialGuess()), 0, 2 }, // an enumeration
-  }));
-  return sltk::vtkbridge::checkOptionRanges({
-    { "NumberOfRuns", double(self->GetNumberOfRuns()) },
-    { "MaximumNumberOfIterations", double(self->GetMaximumNumberOfIterations()) },
-    { "Tolerance", self->GetTolerance() },
-    { "Padding", double(self->GetPadding()) },
-    { "FinalEta", self->GetFinalEta() },
-    { "OutlierDeviations", self->GetOutlierDeviations() },
-    { "ThinningFactor", self->GetThinningFactor() },
-    { "NumberOfThreads", double(self->GetNumberOfThreads()) },
-    { "CellSizeFactor", self->GetCellSizeFactor() },
-    { "MaximumLevel", double(self->GetMaximumLevel()) },
-    { "OutsideThresholdFactor", self->GetOutsideThresholdFactor() },
-    { "MemoryBudget", double(self->GetMemoryBudget()) },
-  });
-}
-
-sltk::Status optionsOf(vtkSLLevelSetReconstruct* self, sltk::ReconstructionOptions& o)
-{
-  SLTK_RETURN_IF_ERROR(checkRanges(self));
-  o = sltk::ReconstructionOptions{};
-  o.Runs = self->GetNumberOfRuns();
-  o.CellSizeFactor = self->GetCellSizeFactor();
-  o.MaximumLevel = self->GetMaximumLevel();
-  o.OutsideThresholdFactor = self->GetOutsideThresholdFactor();
-  o.Padding = self->GetPadding();
-  o.MaxIterations = self->GetMaximumNumberOfIterations();
-  o.Tolerance = self->GetTolerance();
-  o.Guess = static_cast<sltk::InitialGuess>(self->GetInitialGuess());
-  if (self->GetNumberOfRunParameterValues() % 2 != 0)
-  {
-    return sltk::Status::invalidArgument("RunParameters has " + std::to_string(self->GetNumberOfRunParameterValues()) +
-      " values: give (p, eta) pairs, an even number of values (or none for Table 4.1)");
-  }
-  for (int k = 0; k < self->GetNumberOfRunParameters(); ++k)
-  {
-    o.Schedule.push_back({ self->GetRunP(k), self->GetRunEta(k) });
-  }
-  if (o.Schedule.empty() && self->GetFinalEta() != sltk::table41(3).Eta)
-  {
-    // Table 4.1 with eta of runs >= 3 replaced (noisy data: Fig. 4.8, 4.11).
-    o.Schedule = { sltk::table41(1), sltk::table41(2), { sltk::table41(3).P, self->GetFinalEta() } };
-  }
-  o.MemoryBudget = static_cast<std::uint64_t>(self->GetMemoryBudget()) << 20;
-  o.Cleaning.Automatic = self->GetAutomaticCleaning();
-  o.LocalOffset = self->GetLocalOffset();
-  o.FollowFarPoints = self->GetFollowFarPoints();
-  o.Cleaning.RemoveOutliers = self->GetRemoveOutliers();
-  o.Cleaning.Outliers.Deviations = self->GetOutlierDeviations();
-  o.Cleaning.ThinningFactor = self->GetThinningFactor();
-  o.DetectTunnels = self->GetDetectTunnels();
-  o.LeastSquaresQ1 = self->GetLeastSquaresQ1();
-  return sltk::vtkbridge::interpolatorOf(self->GetInterpolator(), o.Interpolator);
-}
 
 constexpr int EveryGhostLevel = 32; // ParaView asks for 1, some filters 2-3
 
@@ -237,7 +357,7 @@ T* portZeroAs(vtkSLLevelSetReconstruct* self, vtkDataObject* output)
 template <int D>
 int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionPlan<D>& plan, double z,
   const sltk::Context& ctx, const sltk::Communicator& comm, vtkDataObject* output, vtkPolyData* surface,
-  vtkTable* history)
+  vtkTable* history, sltk::ReconstructionSummary& summary)
 {
   auto* grid = portZeroAs<vtkHyperTreeGrid>(self, output);
   if (!grid)
@@ -272,44 +392,16 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
       grid->GetFieldData()->AddArray(leaves);
     }
   }
-  sltk::vtkbridge::communicationSummary(comm.size(), bytesSent, collectives, grid);
+  summary = sltk::summarize(result);
+  summary.Ranks = comm.size();
+  summary.BytesSent = bytesSent;
+  summary.Collectives = collectives;
+  sltk::vtkbridge::communicationSummary(summary, grid);
   if (comm.rank() > 0)
   {
     return 1; // the history and the run summary once, on rank 0
   }
-  sltk::vtkbridge::runSummary(result.Records, grid);
-  vtkNew<vtkDoubleArray> stored, uniform, leaves, largest;
-  stored->SetName("RunStoredNodes");
-  uniform->SetName("RunUniformNodes");
-  leaves->SetName("RunLeaves");
-  largest->SetName("RunLargestRankLeaves");
-  for (size_t r = 0; r < result.Records.Runs.size(); ++r)
-  {
-    // Run 1 is uniform (its grid is the coarsest: a leaf per node; the largest rank's, its
-    // slab's, from the history), but for a single run, which is then stored in tiles: every
-    // tiled run has a storage record.
-    const double all = static_cast<double>(result.Records.Runs[r].Grid.nodeCount());
-    double held = all, leafCount = all, largestCount = all;
-    for (const sltk::IterationRecord& it : result.Records.History)
-    {
-      largestCount = it.Run == static_cast<int>(r + 1) ? static_cast<double>(it.LargestRankLeaves) : largestCount;
-    }
-    for (const sltk::TiledRunRecord& run : result.Storage)
-    {
-      const bool thisRun = run.Run == static_cast<int>(r + 1);
-      held = thisRun ? static_cast<double>(run.StoredNodes) : held;
-      leafCount = thisRun ? static_cast<double>(run.Leaves) : leafCount;
-      largestCount = thisRun ? static_cast<double>(run.LargestRankLeaves) : largestCount;
-    }
-    stored->InsertNextValue(held);
-    uniform->InsertNextValue(all);
-    leaves->InsertNextValue(leafCount);
-    largest->InsertNextValue(largestCount);
-  }
-  grid->GetFieldData()->AddArray(stored);
-  grid->GetFieldData()->AddArray(uniform);
-  grid->GetFieldData()->AddArray(leaves);
-  grid->GetFieldData()->AddArray(largest);
+  sltk::vtkbridge::runSummary(summary, grid);
   sltk::vtkbridge::historyTable(result.Records.History, history);
   return 1;
 }
@@ -318,29 +410,20 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
 /// then fills the image (lying in the plane z = `z` in 2D), the history and,
 /// with OctreeStorage, the surface.
 template <int D>
-int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, double z, const sltk::Context& ctx,
-  const sltk::Communicator& comm, int ghostLevels, vtkDataObject* output, vtkPolyData* surface, vtkTable* history)
+int reconstructInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionOptions& options,
+  sltk::PointCloud<D> cloud, double z, const sltk::Context& ctx, const sltk::Communicator& comm, int ghostLevels,
+  vtkDataObject* output, vtkPolyData* surface, vtkTable* history, sltk::ReconstructionSummary& summary)
 {
-  sltk::ReconstructionOptions options;
-  sltk::Status status = optionsOf(self, options);
-  if (!status.isOk())
-  {
-    vtkErrorWithObjectMacro(self, << status.message());
-    return 0;
-  }
-  options.Ranks = comm.size(); // the memory check sizes this machine's ranks' windows
-  options.RanksHere = sltk::ranksSharingThisMachine(comm.size());
-  options.OctreeStorage = self->GetOctreeStorage();
   sltk::ReconstructionPlan<D> plan;
-  status = comm.agree(sltk::planReconstruction(std::move(cloud), options, ctx, plan));
+  sltk::Status status = comm.agree(sltk::planReconstruction(std::move(cloud), options, ctx, plan));
   if (!status.isOk())
   {
     vtkErrorWithObjectMacro(self, "Input point set rejected: " << status.message());
     return 0;
   }
-  if (self->GetOctreeStorage()) // a planar cloud: quadtrees in the plane z
+  if (options.OctreeStorage) // a planar cloud: quadtrees in the plane z
   {
-    return reconstructTiledInto<D>(self, plan, z, ctx, comm, output, surface, history);
+    return reconstructTiledInto<D>(self, plan, z, ctx, comm, output, surface, history, summary);
   }
   auto* image = portZeroAs<vtkImageData>(self, output);
   if (!image)
@@ -356,8 +439,12 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, sltk::PointCloud<D> cloud, d
     return 0;
   }
   sltk::vtkbridge::toImage(result, z, ghostLevels, image);
-  sltk::vtkbridge::runSummary(result, image);
-  sltk::vtkbridge::communicationSummary(comm.size(), counted.bytesSent(), counted.collectives(), image);
+  summary = sltk::summarize(result);
+  summary.Ranks = comm.size();
+  summary.BytesSent = counted.bytesSent();
+  summary.Collectives = counted.collectives();
+  sltk::vtkbridge::runSummary(summary, image);
+  sltk::vtkbridge::communicationSummary(summary, image);
   if (comm.rank() == 0) // every rank has it; ParaView would append one copy per rank
   {
     sltk::vtkbridge::historyTable(result.History, history);
@@ -397,10 +484,11 @@ int vtkSLLevelSetReconstruct::RequestDataObject(
 {
   vtkInformation* info = outputVector->GetInformationObject(0);
   vtkDataObject* current = info->Get(vtkDataObject::DATA_OBJECT());
-  if (this->OctreeStorage ? !vtkHyperTreeGrid::SafeDownCast(current) : !vtkImageData::SafeDownCast(current))
+  const bool octree = this->GetOctreeStorage();
+  if (octree ? !vtkHyperTreeGrid::SafeDownCast(current) : !vtkImageData::SafeDownCast(current))
   {
     vtkSmartPointer<vtkDataObject> made;
-    if (this->OctreeStorage)
+    if (octree)
     {
       made = vtkSmartPointer<vtkHyperTreeGrid>::New();
     }
@@ -472,7 +560,14 @@ int vtkSLLevelSetReconstruct::RequestData(
   }
   sltk::moveToLocalFrame(cloud, shift);
 
-  const sltk::Status ranges = comm->agree(checkRanges(this)); // before the thread pool takes NumberOfThreads
+  this->Impl->Summary.reset();
+  sltk::ReconstructionOptions options;
+  sltk::Status valid = this->Impl->optionsOn(*comm, options);
+  if (valid.isOk()) // before the thread pool takes NumberOfThreads
+  {
+    valid = sltk::vtkbridge::checkOptionRanges({ { "NumberOfThreads", double(this->NumberOfThreads) } });
+  }
+  const sltk::Status ranges = comm->agree(valid); // every rank stops together
   if (!ranges.isOk())
   {
     vtkErrorMacro(<< ranges.message());
@@ -493,14 +588,17 @@ int vtkSLLevelSetReconstruct::RequestData(
     : 0;
   sltk::PointCloud<2> flat;
   double z = 0.0;
+  sltk::ReconstructionSummary summary;
   const int done = sltk::flattenIfPlanar(cloud, flat, z)
-    ? reconstructInto<2>(this, std::move(flat), z, ctx, *comm, ghostLevels, output, surface, history)
-    : reconstructInto<3>(this, std::move(cloud), 0.0, ctx, *comm, ghostLevels, output, surface, history);
+    ? reconstructInto<2>(this, options, std::move(flat), z, ctx, *comm, ghostLevels, output, surface, history, summary)
+    : reconstructInto<3>(
+        this, options, std::move(cloud), 0.0, ctx, *comm, ghostLevels, output, surface, history, summary);
   if (!done)
   {
     return 0;
   }
-  if (!this->OctreeStorage)
+  this->Impl->Summary = std::move(summary);
+  if (!options.OctreeStorage)
   {
     sltk::vtkbridge::zeroLevelSet(vtkImageData::SafeDownCast(output), surface);
   }
@@ -519,53 +617,65 @@ int vtkSLLevelSetReconstruct::RequestData(
   }
   sltk::vtkbridge::transferCloudAttributes(attributesFrom, surface);
   markOutputsComplete(outputVector,
-    comm->size() > 1 && !this->OctreeStorage ? std::min(ghostLevels, sltk::vtkbridge::ImageGhostLevelsAvailable)
-                                             : EveryGhostLevel);
+    comm->size() > 1 && !options.OctreeStorage ? std::min(ghostLevels, sltk::vtkbridge::ImageGhostLevelsAvailable)
+                                               : EveryGhostLevel);
   return 1;
 }
 
 void vtkSLLevelSetReconstruct::AddRunParameters(double p, double eta)
 {
-  this->RunSchedule.push_back(p);
-  this->RunSchedule.push_back(eta);
-  this->Modified();
+  this->AddRunParameterValue(p);
+  this->AddRunParameterValue(eta);
 }
 
 void vtkSLLevelSetReconstruct::AddRunParameterValue(double value)
 {
-  this->RunSchedule.push_back(value);
+  // A pair is Core's (p, eta): the first value of a pair waits for the second.
+  std::optional<double>& p = this->Impl->UnpairedRunValue;
+  if (p)
+  {
+    this->Impl->Options.Schedule.push_back({ *p, value });
+    p.reset();
+  }
+  else
+  {
+    p = value;
+  }
   this->Modified();
 }
 
 void vtkSLLevelSetReconstruct::RemoveAllRunParameters()
 {
-  if (!this->RunSchedule.empty())
+  if (!this->Impl->Options.Schedule.empty() || this->Impl->UnpairedRunValue)
   {
-    this->RunSchedule.clear();
+    this->Impl->Options.Schedule.clear();
+    this->Impl->UnpairedRunValue.reset();
     this->Modified();
   }
 }
 
 int vtkSLLevelSetReconstruct::GetNumberOfRunParameterValues() const
 {
-  return static_cast<int>(this->RunSchedule.size());
+  return 2 * this->GetNumberOfRunParameters() + (this->Impl->UnpairedRunValue ? 1 : 0);
 }
 
 int vtkSLLevelSetReconstruct::GetNumberOfRunParameters() const
 {
-  return static_cast<int>(this->RunSchedule.size() / 2);
+  return static_cast<int>(this->Impl->Options.Schedule.size());
 }
 
 double vtkSLLevelSetReconstruct::GetRunP(int index) const
 {
-  return index >= 0 && index < this->GetNumberOfRunParameters() ? this->RunSchedule[2 * static_cast<size_t>(index)]
-                                                                : 0.0;
+  return index >= 0 && index < this->GetNumberOfRunParameters()
+    ? this->Impl->Options.Schedule[static_cast<size_t>(index)].P
+    : 0.0;
 }
 
 double vtkSLLevelSetReconstruct::GetRunEta(int index) const
 {
-  return index >= 0 && index < this->GetNumberOfRunParameters() ? this->RunSchedule[2 * static_cast<size_t>(index) + 1]
-                                                                : 0.0;
+  return index >= 0 && index < this->GetNumberOfRunParameters()
+    ? this->Impl->Options.Schedule[static_cast<size_t>(index)].Eta
+    : 0.0;
 }
 
 void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
@@ -573,32 +683,32 @@ void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   sltk::InterpolatorKind kind{};
   os << indent << "Interpolator: "
-     << (sltk::interpolatorFromCode(this->Interpolator, kind) ? sltk::interpolatorInfo(kind).Label : "?") << "\n";
-  os << indent << "NumberOfRuns: " << this->NumberOfRuns << "\n";
-  os << indent << "CellSizeFactor: " << this->CellSizeFactor << "\n";
-  os << indent << "MaximumLevel: " << this->MaximumLevel << "\n";
-  os << indent << "OutsideThresholdFactor: " << this->OutsideThresholdFactor << "\n";
-  os << indent << "MemoryBudget: " << this->MemoryBudget << " MB\n";
-  os << indent << "AutomaticCleaning: " << this->AutomaticCleaning << "\n";
-  os << indent << "LocalOffset: " << this->LocalOffset << "\n";
-  os << indent << "FollowFarPoints: " << this->FollowFarPoints << "\n";
-  os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
-  os << indent << "Tolerance: " << this->Tolerance << "\n";
-  os << indent << "Padding: " << this->Padding << "\n";
-  os << indent << "InitialGuess: " << this->InitialGuess << "\n";
+     << (sltk::interpolatorFromCode(this->GetInterpolator(), kind) ? sltk::interpolatorInfo(kind).Label : "?") << "\n";
+  os << indent << "NumberOfRuns: " << this->GetNumberOfRuns() << "\n";
+  os << indent << "CellSizeFactor: " << this->GetCellSizeFactor() << "\n";
+  os << indent << "MaximumLevel: " << this->GetMaximumLevel() << "\n";
+  os << indent << "OutsideThresholdFactor: " << this->GetOutsideThresholdFactor() << "\n";
+  os << indent << "MemoryBudget: " << this->GetMemoryBudget() << " MB\n";
+  os << indent << "AutomaticCleaning: " << this->GetAutomaticCleaning() << "\n";
+  os << indent << "LocalOffset: " << this->GetLocalOffset() << "\n";
+  os << indent << "FollowFarPoints: " << this->GetFollowFarPoints() << "\n";
+  os << indent << "MaximumNumberOfIterations: " << this->GetMaximumNumberOfIterations() << "\n";
+  os << indent << "Tolerance: " << this->GetTolerance() << "\n";
+  os << indent << "Padding: " << this->GetPadding() << "\n";
+  os << indent << "InitialGuess: " << this->GetInitialGuess() << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
-  os << indent << "FinalEta: " << this->FinalEta << "\n";
+  os << indent << "FinalEta: " << this->GetFinalEta() << "\n";
   os << indent << "RunParameters (p, eta):";
   for (int k = 0; k < this->GetNumberOfRunParameters(); ++k)
   {
     os << " (" << this->GetRunP(k) << ", " << this->GetRunEta(k) << ")";
   }
-  os << (this->RunSchedule.empty() ? " none (Table 4.1)\n" : "\n");
-  os << indent << "RemoveOutliers: " << this->RemoveOutliers << "\n";
-  os << indent << "DetectTunnels: " << this->DetectTunnels << "\n";
-  os << indent << "LeastSquaresQ1: " << this->LeastSquaresQ1 << "\n";
-  os << indent << "OctreeStorage: " << this->OctreeStorage << "\n";
+  os << (this->GetNumberOfRunParameterValues() == 0 ? " none (Table 4.1)\n" : "\n");
+  os << indent << "RemoveOutliers: " << this->GetRemoveOutliers() << "\n";
+  os << indent << "DetectTunnels: " << this->GetDetectTunnels() << "\n";
+  os << indent << "LeastSquaresQ1: " << this->GetLeastSquaresQ1() << "\n";
+  os << indent << "OctreeStorage: " << this->GetOctreeStorage() << "\n";
   os << indent << "GenerateHyperTreeGrid: " << this->GenerateHyperTreeGrid << "\n";
-  os << indent << "OutlierDeviations: " << this->OutlierDeviations << "\n";
-  os << indent << "ThinningFactor: " << this->ThinningFactor << "\n";
+  os << indent << "OutlierDeviations: " << this->GetOutlierDeviations() << "\n";
+  os << indent << "ThinningFactor: " << this->GetThinningFactor() << "\n";
 }

@@ -52,9 +52,16 @@
 #include "SLTKFiltersModule.h" // for export macro
 #include "vtkImageAlgorithm.h"
 
-#include <vector> // for RunSchedule
+#include <memory> // for std::unique_ptr
 
 class vtkMultiProcessController;
+#ifndef __VTK_WRAP__
+namespace sltk
+{
+struct ReconstructionOptions;
+struct ReconstructionSummary;
+}
+#endif
 
 class SLTKFILTERS_EXPORT vtkSLLevelSetReconstruct : public vtkImageAlgorithm
 {
@@ -87,8 +94,8 @@ public:
   ///@{
   /// Interpolator (default WENO3, the thesis's choice for laser scans): an
   /// InterpolatorType value; RequestData refuses any other value with an error.
-  vtkSetMacro(Interpolator, int);
-  vtkGetMacro(Interpolator, int);
+  virtual void SetInterpolator(int value);
+  virtual int GetInterpolator();
   ///@}
 
   // The properties below are not clamped: a value outside its documented range
@@ -96,8 +103,8 @@ public:
 
   ///@{
   /// Number of runs of the multi-run schedule, each halving dx (Table 4.1). Default 3, range 1-6.
-  vtkSetMacro(NumberOfRuns, int);
-  vtkGetMacro(NumberOfRuns, int);
+  virtual void SetNumberOfRuns(int value);
+  virtual int GetNumberOfRuns();
   ///@}
 
   ///@{
@@ -105,8 +112,8 @@ public:
   /// automatic (1, the thesis's, unless the finest grid would exceed
   /// MemoryBudget; sltk/recon/AutomaticParameters.h); otherwise 0.05-100
   /// (other values are refused when the filter runs).
-  vtkSetMacro(CellSizeFactor, double);
-  vtkGetMacro(CellSizeFactor, double);
+  virtual void SetCellSizeFactor(double value);
+  virtual double GetCellSizeFactor();
   ///@}
 
   ///@{
@@ -115,8 +122,8 @@ public:
   /// with (5.10)-(5.11)), run 1 at level MaximumLevel - NumberOfRuns + 1.
   /// Range 1-30 with CellSizeFactor 0; a level whose grid would not fit the
   /// memory is refused with the level that fits.
-  vtkSetMacro(MaximumLevel, int);
-  vtkGetMacro(MaximumLevel, int);
+  virtual void SetMaximumLevel(int value);
+  virtual int GetMaximumLevel();
   ///@}
 
   ///@{
@@ -124,26 +131,26 @@ public:
   /// Default 0: automatic (the K_P of 2-32, at least 2 CellSizeFactor, whose
   /// initial surface encloses the most; the thesis uses 2, and 10 for scans
   /// with holes); otherwise 0.1-100.
-  vtkSetMacro(OutsideThresholdFactor, double);
-  vtkGetMacro(OutsideThresholdFactor, double);
+  virtual void SetOutsideThresholdFactor(double value);
+  virtual double GetOutsideThresholdFactor();
   ///@}
 
   ///@{
   /// Iteration cap per run (4.33). Default 100, range 1-100000.
-  vtkSetMacro(MaximumNumberOfIterations, int);
-  vtkGetMacro(MaximumNumberOfIterations, int);
+  virtual void SetMaximumNumberOfIterations(int value);
+  virtual int GetMaximumNumberOfIterations();
   ///@}
 
   ///@{
   /// Stopping tolerance on the relative energy change (4.33). Default 1e-4, range 0-1.
-  vtkSetMacro(Tolerance, double);
-  vtkGetMacro(Tolerance, double);
+  virtual void SetTolerance(double value);
+  virtual double GetTolerance();
   ///@}
 
   ///@{
   /// Empty cells added around the cloud's bounding box on every side. Default 10, range 4-1000.
-  vtkSetMacro(Padding, int);
-  vtkGetMacro(Padding, int);
+  virtual void SetPadding(int value);
+  virtual int GetPadding();
   ///@}
 
   /// Initial surface of the first run.
@@ -156,15 +163,15 @@ public:
 
   ///@{
   /// Initial surface of the first run. Default OUTSIDE_MARKING.
-  vtkSetMacro(InitialGuess, int);
-  vtkGetMacro(InitialGuess, int);
+  virtual void SetInitialGuess(int value);
+  virtual int GetInitialGuess();
   ///@}
 
   ///@{
   /// eta of the runs r >= 3 (Table 4.1: 1). Larger values smooth noisy data
   /// (thesis Fig. 4.8, 4.11). Default 1, range 0-100.
-  vtkSetMacro(FinalEta, double);
-  vtkGetMacro(FinalEta, double);
+  virtual void SetFinalEta(double value);
+  virtual double GetFinalEta();
   ///@}
 
   ///@{
@@ -190,8 +197,8 @@ public:
   /// LocalOffset (default on): run 1's initial surface lies K_P h_P rho(x) from
   /// the cloud, rho the local sparsity of the sampling (1 where it is even, up to
   /// 4; sltk/recon/LocalOffset.h); off: K_P h_P everywhere, as in the thesis.
-  vtkSetMacro(LocalOffset, bool);
-  vtkGetMacro(LocalOffset, bool);
+  virtual void SetLocalOffset(bool value);
+  virtual bool GetLocalOffset();
   vtkBooleanMacro(LocalOffset, bool);
   ///@}
 
@@ -200,8 +207,8 @@ public:
   /// goes on while more than 1% of the points lie over one cell of run 1 from
   /// the surface and that fraction still falls (by 10% per 10 iterations), up
   /// to MaximumNumberOfIterations; off: the thesis's rule alone.
-  vtkSetMacro(FollowFarPoints, bool);
-  vtkGetMacro(FollowFarPoints, bool);
+  virtual void SetFollowFarPoints(bool value);
+  virtual bool GetFollowFarPoints();
   vtkBooleanMacro(FollowFarPoints, bool);
   ///@}
 
@@ -210,8 +217,8 @@ public:
   /// With an explicit CellSizeFactor, 0 means the memory available. Under
   /// several ranks the check sizes the windows of the ranks on each machine
   /// (sltk/recon/SlabPolicy.h).
-  vtkSetMacro(MemoryBudget, int);
-  vtkGetMacro(MemoryBudget, int);
+  virtual void SetMemoryBudget(int value);
+  virtual int GetMemoryBudget();
   ///@}
 
   ///@{
@@ -224,24 +231,24 @@ public:
   /// voxel (edge ThinningFactor times the density spacing) by their mean
   /// (default 0: no thinning, range 0-100). The field data of port 0 report
   /// InputPoints, OutliersRemoved, ThinningCell and ReconstructedPoints.
-  vtkSetMacro(AutomaticCleaning, bool);
-  vtkGetMacro(AutomaticCleaning, bool);
+  virtual void SetAutomaticCleaning(bool value);
+  virtual bool GetAutomaticCleaning();
   vtkBooleanMacro(AutomaticCleaning, bool);
-  vtkSetMacro(RemoveOutliers, bool);
-  vtkGetMacro(RemoveOutliers, bool);
+  virtual void SetRemoveOutliers(bool value);
+  virtual bool GetRemoveOutliers();
   vtkBooleanMacro(RemoveOutliers, bool);
-  vtkSetMacro(OutlierDeviations, double);
-  vtkGetMacro(OutlierDeviations, double);
-  vtkSetMacro(ThinningFactor, double);
-  vtkGetMacro(ThinningFactor, double);
+  virtual void SetOutlierDeviations(double value);
+  virtual double GetOutlierDeviations();
+  virtual void SetThinningFactor(double value);
+  virtual double GetThinningFactor();
   ///@}
 
   ///@{
   /// Tunnel detection (thesis 4.5.6): where 0.6 h_P < d < 2 dx and |grad d| < 0.5,
   /// follow grad phi instead of grad d, so that the front goes down long narrow
   /// holes (two close sheets of points) instead of stopping at their mouth. Default off.
-  vtkSetMacro(DetectTunnels, bool);
-  vtkGetMacro(DetectTunnels, bool);
+  virtual void SetDetectTunnels(bool value);
+  virtual bool GetDetectTunnels();
   vtkBooleanMacro(DetectTunnels, bool);
   ///@}
 
@@ -251,8 +258,8 @@ public:
   /// polynomial fitted by least squares to its 3^D - 1 neighbours with the
   /// centre constraint (5.5), discontinuous between cells.
   /// For comparison with the thesis's adaptive results (Documentation/Octree.md).
-  vtkSetMacro(LeastSquaresQ1, bool);
-  vtkGetMacro(LeastSquaresQ1, bool);
+  virtual void SetLeastSquaresQ1(bool value);
+  virtual bool GetLeastSquaresQ1();
   vtkBooleanMacro(LeastSquaresQ1, bool);
   ///@}
 
@@ -271,8 +278,8 @@ public:
   /// (port 2) gains StoredNodes, Leaves, LargestRankLeaves and UniformNodes.
   /// vtkOctreeSDF is this filter with OctreeStorage always on. The automatic
   /// restart with a finer C_dx for thin parts is not done.
-  vtkSetMacro(OctreeStorage, bool);
-  vtkGetMacro(OctreeStorage, bool);
+  virtual void SetOctreeStorage(bool value);
+  virtual bool GetOctreeStorage();
   vtkBooleanMacro(OctreeStorage, bool);
   ///@}
 
@@ -308,6 +315,25 @@ public:
   void GenerateAdaptiveGridOff() { this->GenerateHyperTreeGridOff(); }
   ///@}
 
+#ifndef __VTK_WRAP__
+  ///@{
+  /// C++ only: the options the properties above read and write, Core's object
+  /// (sltk/recon/ReconstructionOptions.h, its defaults the properties'), for a
+  /// front end that fills it whole (the CLI). SetOptions replaces every option
+  /// (Ranks and RanksHere are the Controller's when the filter runs) and
+  /// forgets the property values Core cannot hold; the filter checks the
+  /// options against Core's ranges when it runs.
+  void SetOptions(const sltk::ReconstructionOptions& options);
+  const sltk::ReconstructionOptions& GetOptions() const;
+  ///@}
+
+  /// C++ only: what the last execution reported on this rank, typed (null before
+  /// one succeeded): the run summary that port 0's field data also hold, and this
+  /// rank's traffic. Under MPI every rank has the same records but for the times,
+  /// the ghost rows of its slab and its traffic.
+  const sltk::ReconstructionSummary* GetLastSummary() const;
+#endif
+
   ///@{
   /// The ranks the reconstruction is split over (nullptr, the default: the global controller, as in
   /// pvbatch and pvserver; a vtkDummyController reconstructs on this process alone).
@@ -339,33 +365,14 @@ protected:
   /// Every request runs guarded: an exception becomes the filter's error (SLTKGuard.h).
   vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  int Interpolator = WENO3;
-  int NumberOfRuns = 3;
-  double CellSizeFactor = 0.0;
-  int MaximumLevel = 0;
-  double OutsideThresholdFactor = 0.0;
-  int MemoryBudget = 0;
-  bool LocalOffset = true;
-  bool FollowFarPoints = true;
-  bool AutomaticCleaning = true;
-  int MaximumNumberOfIterations = 100;
-  double Tolerance = 1e-4;
-  int Padding = 10;
-  int InitialGuess = OUTSIDE_MARKING;
   int NumberOfThreads = 0;
   int ThreadsUsed = 0;
-  double FinalEta = 1.0;
-  std::vector<double> RunSchedule; ///< p, eta of run 1, p, eta of run 2, ...
-  bool RemoveOutliers = false;
-  double OutlierDeviations = 3.0;
-  double ThinningFactor = 0.0;
-  bool DetectTunnels = false;
-  bool LeastSquaresQ1 = false;
-  bool OctreeStorage = false;
   bool GenerateHyperTreeGrid = true;
   vtkMultiProcessController* Controller = nullptr;
 
 private:
+  struct Internals; // Core's options and the last summary (the wrapper never sees Core's types)
+  std::unique_ptr<Internals> Impl;
   vtkSLLevelSetReconstruct(const vtkSLLevelSetReconstruct&) = delete;
   void operator=(const vtkSLLevelSetReconstruct&) = delete;
 };

@@ -242,7 +242,9 @@ void addPlanOptions(CLI::App* app, sltk::ReconstructionOptions& options)
     ->option_text("K");
   app
     ->add_option_function<double>(
-      "--memory-budget", [&options](double mb) { options.MemoryBudget = static_cast<std::uint64_t>(mb * 1048576.0); },
+      "--memory-budget",
+      [&options](double mb)
+      { options.MemoryBudget = static_cast<std::uint64_t>(mb * static_cast<double>(sltk::BytesPerMB)); },
       "MB for the automatic C_dx (default 0: 1024); with --cdx, grids beyond\nit are refused (default: the memory "
       "available; under mpirun, for the windows\nof the ranks on each machine)")
     ->transform(numberText(false))

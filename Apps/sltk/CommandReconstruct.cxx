@@ -19,10 +19,9 @@
 #include "sltk/exec/Memory.h"
 #include "sltk/interp/InterpolatorKind.h"
 #include "sltk/recon/ReconstructionPlan.h"
+#include "sltk/recon/ReconstructionSummary.h"
 
-#include <vtkDataArray.h>
 #include <vtkDelimitedTextWriter.h>
-#include <vtkFieldData.h>
 #include <vtkHyperTreeGrid.h>
 #include <vtkImageData.h>
 #include <vtkLogger.h>
@@ -33,7 +32,6 @@
 #include <vtkPolyData.h>
 #include <vtkSLLevelSetReconstruct.h>
 #include <vtkSmartPointer.h>
-#include <vtkStringArray.h>
 #include <vtkTable.h>
 #include <vtkTrivialProducer.h>
 
@@ -107,13 +105,12 @@ struct Reconstruct
 {
   CLI::App* Parser = nullptr;
   std::string Cloud, Output, Surface, Png, Csv, Json, Reference;
-  sltk::ReconstructionOptions Options;
-  double Eta = 1.0; // of runs >= 3 without a schedule
+  sltk::ReconstructionOptions Options; ///< the flags' options, the filter's (SetOptions)
   int Threads = 0;
   bool Quiet = false;
   bool Verbose = false;
-  bool Octree = false; ///< OctreeStorage: runs 2..R stored as tiles around the front
   bool given(const char* name) const { return this->Parser->count(name) > 0; }
+  bool octree() const { return this->Options.OctreeStorage; } ///< --octree: runs 2..R stored as tiles
   std::string problemBeforeWork(bool pieces, vtkPolyData* reference, int& code) const;
   vtkSmartPointer<vtkSLLevelSetReconstruct> makeFilter(vtkPointSet* cloud) const;
   sltk::Status writeRankPieces(vtkDataObject* grid) const;
@@ -121,40 +118,25 @@ struct Reconstruct
   int run() const;
 };
 
-/// The values of a string array of the image's field data (empty when absent).
-std::vector<std::string> stringValues(vtkFieldData* fd, const char* name)
+/// The cloud, the automatic choices, the recoveries and the cleaning.
+void printCloud(const sltk::ReconstructionSummary& summary, const std::string& path, vtkIdType points)
 {
-  std::vector<std::string> values;
-  if (auto* a = vtkStringArray::SafeDownCast(fd->GetAbstractArray(name)))
-  {
-    for (vtkIdType k = 0; k < a->GetNumberOfValues(); ++k)
-    {
-      values.push_back(a->GetValue(k));
-    }
-  }
-  return values;
-}
-
-/// The cloud, the automatic choices, the recoveries and the cleaning, as the
-/// grid's field data tells them (SLTKReconstructionOutput.h).
-void printCloud(vtkFieldData* fd, const std::string& path, vtkIdType points)
-{
-  std::printf("cloud      %s (%lld points, h_P = %.6g)\n", path.c_str(), static_cast<long long>(points),
-    fd->GetArray("CloudSpacing")->GetTuple1(0));
-  for (const std::string& choice : stringValues(fd, "AutomaticChoices"))
+  std::printf(
+    "cloud      %s (%lld points, h_P = %.6g)\n", path.c_str(), static_cast<long long>(points), summary.CloudSpacing);
+  for (const std::string& choice : summary.Choices)
   {
     std::printf("automatic  %s\n", choice.c_str());
   }
-  for (const std::string& recovery : stringValues(fd, "Recoveries"))
+  for (const std::string& recovery : summary.Recoveries)
   {
     std::printf("recovered  %s\n", recovery.c_str());
   }
-  const auto fieldValue = [fd](const char* name) { return fd->GetArray(name)->GetTuple1(0); };
-  const long long outliers = static_cast<long long>(fieldValue("OutliersRemoved"));
-  if (outliers > 0 || fieldValue("ThinningCell") > 0.0)
+  const sltk::CloudCleaningReport& cleaning = summary.Cleaning;
+  if (cleaning.OutliersRemoved > 0 || cleaning.ThinningCell > 0.0)
   {
-    std::printf("cleaning   %lld outliers removed, thinning cell %.4g: %lld points reconstructed\n", outliers,
-      fieldValue("ThinningCell"), static_cast<long long>(fieldValue("ReconstructedPoints")));
+    std::printf("cleaning   %lld outliers removed, thinning cell %.4g: %lld points reconstructed\n",
+      static_cast<long long>(cleaning.OutliersRemoved), cleaning.ThinningCell,
+      static_cast<long long>(cleaning.OutputPoints));
   }
 }
 
@@ -193,15 +175,10 @@ void printTotals(double seconds, double peakMb, int ranks, double bytesSent, dou
 /// Warnings about the result: a surface that did not reach the cloud, and
 /// Core's (points left far from it: features thinner than run 1's cell, with
 /// advice that was not what just ran).
-void warnAboutResult(vtkFieldData* fd, const std::vector<std::string>& warnings)
+void warnAboutResult(const sltk::ReconstructionSummary& summary)
 {
-  const double hP = fd->GetArray("CloudSpacing")->GetTuple1(0);
-  const auto last = [fd](const char* name)
-  {
-    vtkDataArray* a = fd->GetArray(name);
-    return a && a->GetNumberOfTuples() ? a->GetTuple1(a->GetNumberOfTuples() - 1) : 0.0;
-  };
-  const double finalError = last("RunCloudError");
+  const double hP = summary.CloudSpacing;
+  const double finalError = summary.Runs.empty() ? 0.0 : summary.Runs.back().CloudError;
   if (finalError > 2.0 * hP)
   {
     std::fprintf(stderr,
@@ -209,54 +186,42 @@ void warnAboutResult(vtkFieldData* fd, const std::vector<std::string>& warnings)
       "larger --kp (scans with holes), a smaller --cdx or --initial sphere\n",
       finalError / hP);
   }
-  for (const std::string& warning : warnings) // Core's: what did not fit, and what may help (not what just ran)
+  for (const std::string& warning : summary.Warnings) // Core's: what did not fit, and what may help (not what just ran)
   {
     std::fprintf(stderr, "sltk: warning: %s\n", warning.c_str());
   }
 }
 
-/// The runs' table on standard output and their records for --json, from the
-/// run summary in the grid's field data (SLTKReconstructionOutput.h).
-nlohmann::ordered_json printRuns(vtkFieldData* fd, int ranks)
+/// The runs' table on standard output and their records for --json.
+nlohmann::ordered_json printRuns(const sltk::ReconstructionSummary& summary, int ranks)
 {
-  auto* grids = fd->GetArray("RunGridDimensions");
-  auto* its = fd->GetArray("RunIterations");
-  auto* energy = fd->GetArray("RunEnergy");
-  auto* cloudError = fd->GetArray("RunCloudError");
-  auto* runSeconds = fd->GetArray("RunSeconds");
-  auto* farPoints = fd->GetArray("RunFarPoints");
-  auto* misfitPoints = fd->GetArray("RunMisfitPoints");
-  auto* ghostRows = fd->GetArray("RunGhostRows");
-  auto* farFeet = fd->GetArray("RunFarFeet");
-  auto* storedNodes = fd->GetArray("RunStoredNodes"); // --octree only
-  auto* uniformNodes = fd->GetArray("RunUniformNodes");
-  auto* runLeaves = fd->GetArray("RunLeaves");
   std::printf("\n run            grid   iterations      energy E_2     Err_P        time\n");
   nlohmann::ordered_json runRecords = nlohmann::ordered_json::array();
-  for (vtkIdType r = 0; r < grids->GetNumberOfTuples(); ++r)
+  long long number = 0;
+  for (const sltk::RunSummary& run : summary.Runs)
   {
-    const double* g = grids->GetTuple3(r);
-    std::printf("%4lld  %5.0f x %4.0f x %4.0f  %6.0f  %14.6g  %10.4g  %8.2f s\n", static_cast<long long>(r + 1), g[0],
-      g[1], g[2], its->GetTuple1(r), energy->GetTuple1(r), cloudError->GetTuple1(r), runSeconds->GetTuple1(r));
-    runRecords.push_back({ { "run", r + 1 },
+    const auto& g = run.GridDimensions;
+    std::printf("%4lld  %5lld x %4lld x %4lld  %6d  %14.6g  %10.4g  %8.2f s\n", ++number, static_cast<long long>(g[0]),
+      static_cast<long long>(g[1]), static_cast<long long>(g[2]), run.Iterations, run.Energy, run.CloudError,
+      run.Seconds);
+    runRecords.push_back({ { "run", number },
       { "grid", { static_cast<long long>(g[0]), static_cast<long long>(g[1]), static_cast<long long>(g[2]) } },
-      { "iterations", static_cast<long long>(its->GetTuple1(r)) }, { "energy", energy->GetTuple1(r) },
-      { "err_cloud", cloudError->GetTuple1(r) }, { "far_points", farPoints->GetTuple1(r) },
-      { "misfit_points", misfitPoints->GetTuple1(r) }, { "seconds", runSeconds->GetTuple1(r) } });
-    if (ranks > 1 && ghostRows && farFeet)
+      { "iterations", static_cast<long long>(run.Iterations) }, { "energy", run.Energy },
+      { "err_cloud", run.CloudError }, { "far_points", run.FarPoints }, { "misfit_points", run.MisfitPoints },
+      { "seconds", run.Seconds } });
+    if (ranks > 1)
     {
-      runRecords.back()["ghost_rows"] = static_cast<long long>(ghostRows->GetTuple1(r));
-      runRecords.back()["far_feet"] = static_cast<long long>(farFeet->GetTuple1(r));
+      runRecords.back()["ghost_rows"] = static_cast<long long>(run.GhostRows);
+      runRecords.back()["far_feet"] = static_cast<long long>(run.FarFeet);
     }
-    if (storedNodes && uniformNodes && runLeaves)
+    if (summary.OctreeStorage)
     {
-      const double stored = storedNodes->GetTuple1(r), all = uniformNodes->GetTuple1(r);
-      const double leaves = runLeaves->GetTuple1(r);
-      std::printf(
-        "      stored %.0f of %.0f nodes (%.1f%%), %.0f octree leaves\n", stored, all, 100.0 * stored / all, leaves);
-      runRecords.back()["stored_nodes"] = static_cast<long long>(stored);
-      runRecords.back()["uniform_nodes"] = static_cast<long long>(all);
-      runRecords.back()["leaves"] = static_cast<long long>(leaves);
+      const double stored = static_cast<double>(run.StoredNodes), all = static_cast<double>(run.UniformNodes);
+      std::printf("      stored %.0f of %.0f nodes (%.1f%%), %.0f octree leaves\n", stored, all, 100.0 * stored / all,
+        static_cast<double>(run.Leaves));
+      runRecords.back()["stored_nodes"] = static_cast<long long>(run.StoredNodes);
+      runRecords.back()["uniform_nodes"] = static_cast<long long>(run.UniformNodes);
+      runRecords.back()["leaves"] = static_cast<long long>(run.Leaves);
     }
   }
   return runRecords;
@@ -284,12 +249,12 @@ std::string Reconstruct::problemBeforeWork(bool pieces, vtkPolyData* reference, 
   }
   const std::string extension = this->given("--output") ? extensionOf(this->Output) : "";
   const bool treeOutput = extension == "htg" || extension == "phtg";
-  if (this->Octree && this->given("--output") && !treeOutput)
+  if (this->octree() && this->given("--output") && !treeOutput)
   {
     return "--octree stores no full grid, so its -o is a hyper tree grid (one tree per 8^3 nodes, 8^2 in 2D, refined "
            "near the front): write -o FILE.htg (FILE.phtg under mpirun)";
   }
-  if (!this->Octree && treeOutput)
+  if (!this->octree() && treeOutput)
   {
     return "-o FILE." + extension +
       " is --octree's output (a hyper tree grid): add --octree, or write the uniform grid as .vti "
@@ -297,7 +262,7 @@ std::string Reconstruct::problemBeforeWork(bool pieces, vtkPolyData* reference, 
   }
   if (ranks > 1 && this->given("--output") && !pieces)
   {
-    return this->Octree
+    return this->octree()
       ? "under mpirun every rank holds only its own trees: write -o as .phtg (one piece per rank, FILE.phtg and "
         "FILE/FILE_<rank>.htg)"
       : "under mpirun every rank holds only its block of the grid: write -o as .pvti (one piece per rank, "
@@ -333,35 +298,12 @@ std::string Reconstruct::problemBeforeWork(bool pieces, vtkPolyData* reference, 
 /// OctreeStorage always on) for --octree.
 vtkSmartPointer<vtkSLLevelSetReconstruct> Reconstruct::makeFilter(vtkPointSet* cloud) const
 {
-  const sltk::ReconstructionOptions& o = this->Options;
-  const vtkSmartPointer<vtkSLLevelSetReconstruct> filter = this->Octree
+  const vtkSmartPointer<vtkSLLevelSetReconstruct> filter = this->octree()
     ? vtkSmartPointer<vtkSLLevelSetReconstruct>(vtkSmartPointer<vtkOctreeSDF>::New())
     : vtkSmartPointer<vtkSLLevelSetReconstruct>::New();
   filter->SetInputData(cloud);
-  filter->SetInterpolator(static_cast<int>(o.Interpolator));
-  filter->SetLeastSquaresQ1(o.LeastSquaresQ1);
-  filter->SetCellSizeFactor(o.CellSizeFactor);
-  filter->SetMaximumLevel(o.MaximumLevel);
-  filter->SetOutsideThresholdFactor(o.OutsideThresholdFactor);
-  filter->SetNumberOfRuns(o.Runs);
-  filter->SetMaximumNumberOfIterations(o.MaxIterations);
-  filter->SetTolerance(o.Tolerance);
-  filter->SetPadding(o.Padding);
-  filter->SetInitialGuess(static_cast<int>(o.Guess));
-  filter->SetNumberOfThreads(this->Threads); // the filter shares the cores among the ranks
-  filter->SetFinalEta(this->Eta);
-  for (const sltk::RunParameters& run : o.Schedule)
-  {
-    filter->AddRunParameters(run.P, run.Eta);
-  }
-  filter->SetMemoryBudget(static_cast<int>(o.MemoryBudget >> 20));
-  filter->SetAutomaticCleaning(o.Cleaning.Automatic);
-  filter->SetLocalOffset(o.LocalOffset);
-  filter->SetFollowFarPoints(o.FollowFarPoints);
-  filter->SetRemoveOutliers(o.Cleaning.RemoveOutliers);
-  filter->SetOutlierDeviations(o.Cleaning.Outliers.Deviations);
-  filter->SetThinningFactor(o.Cleaning.ThinningFactor);
-  filter->SetDetectTunnels(o.DetectTunnels);
+  filter->SetOptions(this->Options);                         // every flag of the plan is a field of Core's options
+  filter->SetNumberOfThreads(this->Threads);                 // the filter shares the cores among the ranks
   filter->SetGenerateHyperTreeGrid(this->given("--output")); // the trees only for -o FILE.htg
   return filter;
 }
@@ -370,7 +312,7 @@ vtkSmartPointer<vtkSLLevelSetReconstruct> Reconstruct::makeFilter(vtkPointSet* c
 /// the image at its place in the whole extent (the blocks are the solver's slabs).
 sltk::Status Reconstruct::writeRankPieces(vtkDataObject* grid) const
 {
-  if (this->Octree)
+  if (this->octree())
   {
     vtkNew<vtkTrivialProducer> producer; // each rank's own trees (the tiles it owns)
     producer->SetOutput(grid);
@@ -397,8 +339,8 @@ sltk::Status Reconstruct::writeFiles(
 {
   if (grid && this->given("--output"))
   {
-    SLTK_RETURN_IF_ERROR(this->Octree ? writeHyperTreeGrid(this->Output, vtkHyperTreeGrid::SafeDownCast(grid))
-                                      : writeImage(this->Output, vtkImageData::SafeDownCast(grid)));
+    SLTK_RETURN_IF_ERROR(this->octree() ? writeHyperTreeGrid(this->Output, vtkHyperTreeGrid::SafeDownCast(grid))
+                                        : writeImage(this->Output, vtkImageData::SafeDownCast(grid)));
   }
   if (this->given("--surface"))
   {
@@ -440,8 +382,6 @@ int Reconstruct::run() const
       problem.empty() ? "another rank stopped before the reconstruction (run on one rank to see why)" : problem,
       static_cast<int>(worst));
   }
-  const sltk::ReconstructionOptions& o = this->Options;
-
   const auto start = std::chrono::steady_clock::now();
   const std::string& path = this->Cloud;
   vtkSmartPointer<vtkPointSet> cloud;
@@ -489,7 +429,7 @@ int Reconstruct::run() const
   {
     return fail(path + ": " +
       withMergedScanHint(
-        errors->Message, static_cast<size_t>(cloud->GetNumberOfPoints()), o.Cleaning.ThinningFactor > 0));
+        errors->Message, static_cast<size_t>(cloud->GetNumberOfPoints()), this->Options.Cleaning.ThinningFactor > 0));
   }
   vtkDataObject* grid = filter->GetOutputDataObject(0); // the image, or --octree's hyper tree grid
   auto* history = vtkTable::SafeDownCast(filter->GetOutputDataObject(2));
@@ -501,12 +441,10 @@ int Reconstruct::run() const
     return fail(status.message());
   }
   const double peakMb = MpiSession::maxOverRanks(static_cast<double>(sltk::peakResidentBytes()) / 1e6);
-  const auto rankValue = [&](const char* name)
-  {
-    vtkDataArray* a = grid->GetFieldData()->GetArray(name);
-    return MpiSession::maxOverRanks(a ? a->GetTuple1(0) : 0.0);
-  };
-  const double bytesSent = rankValue("RankBytesSent"), collectives = rankValue("RankCollectives");
+  // The filter's typed summary of this rank (its field data hold the same for ParaView users).
+  const sltk::ReconstructionSummary& result = *filter->GetLastSummary();
+  const double bytesSent = MpiSession::maxOverRanks(static_cast<double>(result.BytesSent));
+  const double collectives = MpiSession::maxOverRanks(static_cast<double>(result.Collectives));
   // Rank 0 joins the ranks' pieces of the surface and writes the one set of outputs.
   const vtkSmartPointer<vtkPolyData> joined = gatherSurface(
     vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1)), vtkMultiProcessController::GetGlobalController());
@@ -517,20 +455,12 @@ int Reconstruct::run() const
   vtkPolyData* surface = joined;
 
   // Summary table.
-  vtkFieldData* fd = grid->GetFieldData();
-  printCloud(fd, path, cloud->GetNumberOfPoints());
-  const auto fieldValue = [fd](const char* name) { return fd->GetArray(name)->GetTuple1(0); };
-  const long long reconstructed = static_cast<long long>(fieldValue("ReconstructedPoints"));
-  const long long outliers = static_cast<long long>(fieldValue("OutliersRemoved"));
-  const std::vector<std::string> choices = stringValues(fd, "AutomaticChoices");
-  const std::vector<std::string> recoveries = stringValues(fd, "Recoveries");
-  const nlohmann::ordered_json runRecords = printRuns(fd, ranks);
-  const double hP = fd->GetArray("CloudSpacing")->GetTuple1(0);
-  const std::vector<std::string> warnings = stringValues(fd, "Warnings");
-  const bool fits = fieldValue("FitsCloud") != 0.0; // Core's verdict (ReconstructionResult::FitsCloud)
-  warnAboutResult(fd, warnings);
+  printCloud(result, path, cloud->GetNumberOfPoints());
+  const nlohmann::ordered_json runRecords = printRuns(result, ranks);
+  warnAboutResult(result);
+  const bool fits = result.FitsCloud; // Core's verdict (StoppingRule.h FitShare)
   const SurfaceTopology topology = printSurface(surface, planar);
-  printTotals(seconds, peakMb, ranks, bytesSent, collectives, this->Octree);
+  printTotals(seconds, peakMb, ranks, bytesSent, collectives, this->octree());
   SurfaceDistances distances;
   if (this->given("--reference"))
   {
@@ -551,13 +481,15 @@ int Reconstruct::run() const
   if (this->given("--json"))
   {
     nlohmann::ordered_json summary = { { "cloud", path },
-      { "points", static_cast<long long>(cloud->GetNumberOfPoints()) }, { "outliers_removed", outliers },
-      { "thinning_cell", fieldValue("ThinningCell") }, { "points_reconstructed", reconstructed }, { "h_P", hP },
-      { "cdx", fieldValue("CellSizeFactor") }, { "kp", fieldValue("OutsideThresholdFactor") },
-      { "automatic_choices", choices }, { "recoveries", recoveries }, { "warnings", warnings }, { "fits_cloud", fits },
-      { "seconds", seconds }, { "peak_memory_mb", peakMb }, { "ranks", ranks }, { "bytes_sent_max", bytesSent },
-      { "collectives", collectives }, { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) },
-      { "surface_pieces", topology.Pieces },
+      { "points", static_cast<long long>(cloud->GetNumberOfPoints()) },
+      { "outliers_removed", static_cast<long long>(result.Cleaning.OutliersRemoved) },
+      { "thinning_cell", result.Cleaning.ThinningCell },
+      { "points_reconstructed", static_cast<long long>(result.Cleaning.OutputPoints) }, { "h_P", result.CloudSpacing },
+      { "cdx", result.CellSizeFactor }, { "kp", result.OutsideThresholdFactor },
+      { "automatic_choices", result.Choices }, { "recoveries", result.Recoveries }, { "warnings", result.Warnings },
+      { "fits_cloud", fits }, { "seconds", seconds }, { "peak_memory_mb", peakMb }, { "ranks", ranks },
+      { "bytes_sent_max", bytesSent }, { "collectives", collectives },
+      { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) }, { "surface_pieces", topology.Pieces },
       { "euler_characteristic", planar ? nlohmann::ordered_json() : nlohmann::ordered_json(topology.Euler) },
       { "runs", runRecords } };
     if (this->given("--reference"))
@@ -632,8 +564,7 @@ Command addReconstructCommand(CLI::App& sltk)
     "default 1e-4)")
     ->check(withinRange("Tolerance"))
     ->option_text("TOL");
-  addNumber(
-    app, "--eta", command->Eta, "eta of runs >= 3 (Table 4.1: 1); larger smooths noisy scans\n(thesis Fig. 4.8)")
+  addNumber(app, "--eta", o.FinalEta, "eta of runs >= 3 (Table 4.1: 1); larger smooths noisy scans\n(thesis Fig. 4.8)")
     ->check(withinRange("FinalEta"))
     ->option_text("E");
   app
@@ -651,7 +582,7 @@ Command addReconstructCommand(CLI::App& sltk)
       "add Chamfer and Hausdorff distances to a reference surface\n(.off .ply .obj .stl .vtp) to the summary: "
       "Chamfer =\n(mean d(result->ref) + mean d(ref->result)) / 2")
     ->option_text("MESH");
-  app->add_flag("--octree", command->Octree,
+  app->add_flag("--octree", o.OctreeStorage,
     "memory that follows the surface: runs 2..R store only 8^3-node tiles\n(8^2 in 2D) around the front (the octree's "
     "finest "
     "levels; the same surface);\n-o FILE.htg: the grid as a hyper tree grid");

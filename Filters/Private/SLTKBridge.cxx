@@ -5,8 +5,6 @@
 
 #include <sstream>
 
-#include "sltk/core/OrList.h"
-
 #include "vtkAlgorithm.h"
 #include "vtkLogger.h"
 #include "vtkNew.h"
@@ -81,21 +79,6 @@ Status checkOptionRanges(std::initializer_list<PropertyValue> values)
                                    " has no range in Core's table (OptionRanges.h): a defect, please report it"));
   }
   return Status::ok();
-}
-
-Status interpolatorOf(int code, InterpolatorKind& kind)
-{
-  if (interpolatorFromCode(code, kind))
-  {
-    return Status::ok();
-  }
-  std::vector<std::string> valid;
-  for (const InterpolatorInfo& info : Interpolators)
-  {
-    valid.push_back(std::to_string(static_cast<int>(info.Kind)) + " (" + info.Label + ")");
-  }
-  return Status::invalidArgument(
-    "Interpolator " + std::to_string(code) + " is not an interpolator: use " + orList(valid));
 }
 
 void AlgorithmInterrupter::start(const std::string& phase)

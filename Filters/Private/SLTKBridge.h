@@ -8,7 +8,6 @@
 #include "sltk/cloud/PointCloud.h"
 #include "sltk/exec/Interrupter.h"
 #include "sltk/exec/Logger.h"
-#include "sltk/interp/InterpolatorKind.h"
 
 #include "vtkSmartPointer.h"
 
@@ -33,10 +32,6 @@ vtkSmartPointer<vtkPolyData> pointsOf(const PointCloud<3>& cloud);
 /// toCloud() followed by validateCloud(): the check every point-cloud filter
 /// runs before it allocates anything.
 Status toValidCloud(vtkPointSet* input, PointCloud<3>& cloud);
-
-/// The interpolator of a filter's Interpolator property (InterpolatorKind.h);
-/// fails with a message listing the valid values when `code` is out of range.
-Status interpolatorOf(int code, InterpolatorKind& kind);
 
 /// A filter property and its documented range (the plugin XML's domain).
 struct PropertyRange

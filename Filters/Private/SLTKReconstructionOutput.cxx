@@ -103,59 +103,29 @@ void toImage(ReconstructionResult<D>& result, double z, int ghostLevels, vtkImag
   }
 }
 
-template <int D>
-void runSummary(const ReconstructionResult<D>& result, vtkDataObject* image)
+namespace
 {
-  vtkNew<vtkDoubleArray> spacing;
-  spacing->SetName("CloudSpacing");
-  spacing->InsertNextValue(result.CloudSpacing);
-  vtkNew<vtkIntArray> grids, iterations;
-  grids->SetName("RunGridDimensions");
-  grids->SetNumberOfComponents(3);
-  iterations->SetName("RunIterations");
-  vtkNew<vtkDoubleArray> energy, cloudError, farPoints, misfitPoints, seconds;
-  farPoints->SetName("RunFarPoints");
-  misfitPoints->SetName("RunMisfitPoints");
-  energy->SetName("RunEnergy");
-  cloudError->SetName("RunCloudError");
-  seconds->SetName("RunSeconds");
-  vtkNew<vtkIntArray> ghostRows;
-  ghostRows->SetName("RunGhostRows");
-  vtkNew<vtkDoubleArray> farFeet; // counts as doubles (exact below 2^53)
-  farFeet->SetName("RunFarFeet");
-  for (const RunRecord<D>& run : result.Runs)
+/// A one-component array `name` of field data, a value per run.
+template <class Array, class Value>
+void addPerRun(vtkFieldData* fd, const char* name, const std::vector<RunSummary>& runs, Value value)
+{
+  vtkNew<Array> a;
+  a->SetName(name);
+  for (const RunSummary& run : runs)
   {
-    int dims[3] = { 1, 1, 1 };
-    for (int a = 0; a < D; ++a)
-    {
-      dims[a] = static_cast<int>(run.Grid.Dims[a]);
-    }
-    grids->InsertNextTypedTuple(dims);
-    iterations->InsertNextValue(run.Iterations);
-    energy->InsertNextValue(run.Energy);
-    cloudError->InsertNextValue(run.CloudError);
-    farPoints->InsertNextValue(run.FarPoints);
-    misfitPoints->InsertNextValue(run.MisfitPoints);
-    seconds->InsertNextValue(run.Seconds);
-    ghostRows->InsertNextValue(static_cast<int>(run.GhostRows));
-    farFeet->InsertNextValue(static_cast<double>(run.FarFeet));
+    a->InsertNextValue(value(run));
   }
+  fd->AddArray(a);
+}
+} // namespace
+
+void runSummary(const ReconstructionSummary& summary, vtkDataObject* image)
+{
   vtkFieldData* fd = image->GetFieldData();
-  // The pre-processing (CloudCleaning.h): counts as doubles (exact below 2^53).
-  // and the parameters used (chosen when automatic: AutomaticParameters.h).
-  const std::pair<const char*, double> cleaning[7] = {
-    { "InputPoints", static_cast<double>(result.Cleaning.InputPoints) },
-    { "OutliersRemoved", static_cast<double>(result.Cleaning.OutliersRemoved) },
-    { "ThinningCell", result.Cleaning.ThinningCell },
-    { "ReconstructedPoints", static_cast<double>(result.Cleaning.OutputPoints) },
-    { "CellSizeFactor", result.CellSizeFactor },
-    { "OutsideThresholdFactor", result.OutsideThresholdFactor },
-    { "FitsCloud", result.FitsCloud ? 1.0 : 0.0 },
-  };
   const std::pair<const char*, const std::vector<std::string>*> notes[3] = {
-    { "AutomaticChoices", &result.Choices },
-    { "Recoveries", &result.Recoveries },
-    { "Warnings", &result.Warnings },
+    { "AutomaticChoices", &summary.Choices },
+    { "Recoveries", &summary.Recoveries },
+    { "Warnings", &summary.Warnings },
   };
   for (const auto& entry : notes)
   {
@@ -165,25 +135,56 @@ void runSummary(const ReconstructionResult<D>& result, vtkDataObject* image)
     {
       a->InsertNextValue(note);
     }
-    image->GetFieldData()->AddArray(a);
+    fd->AddArray(a);
   }
-  for (const auto& entry : cleaning)
+  // The pre-processing (CloudCleaning.h): counts as doubles (exact below 2^53),
+  // and the parameters used (chosen when automatic: AutomaticParameters.h).
+  const std::pair<const char*, double> scalars[8] = {
+    { "InputPoints", static_cast<double>(summary.Cleaning.InputPoints) },
+    { "OutliersRemoved", static_cast<double>(summary.Cleaning.OutliersRemoved) },
+    { "ThinningCell", summary.Cleaning.ThinningCell },
+    { "ReconstructedPoints", static_cast<double>(summary.Cleaning.OutputPoints) },
+    { "CellSizeFactor", summary.CellSizeFactor },
+    { "OutsideThresholdFactor", summary.OutsideThresholdFactor },
+    { "CloudSpacing", summary.CloudSpacing },
+    { "FitsCloud", summary.FitsCloud ? 1.0 : 0.0 },
+  };
+  for (const auto& entry : scalars)
   {
     vtkNew<vtkDoubleArray> a;
     a->SetName(entry.first);
     a->InsertNextValue(entry.second);
     fd->AddArray(a);
   }
-  fd->AddArray(spacing);
+  vtkNew<vtkIntArray> grids;
+  grids->SetName("RunGridDimensions");
+  grids->SetNumberOfComponents(3);
+  for (const RunSummary& run : summary.Runs)
+  {
+    const int dims[3] = { static_cast<int>(run.GridDimensions[0]), static_cast<int>(run.GridDimensions[1]),
+      static_cast<int>(run.GridDimensions[2]) };
+    grids->InsertNextTypedTuple(dims);
+  }
   fd->AddArray(grids);
-  fd->AddArray(iterations);
-  fd->AddArray(energy);
-  fd->AddArray(cloudError);
-  fd->AddArray(farPoints);
-  fd->AddArray(misfitPoints);
-  fd->AddArray(seconds);
-  fd->AddArray(ghostRows);
-  fd->AddArray(farFeet);
+  const auto& runs = summary.Runs;
+  addPerRun<vtkIntArray>(fd, "RunIterations", runs, [](const RunSummary& r) { return r.Iterations; });
+  addPerRun<vtkDoubleArray>(fd, "RunEnergy", runs, [](const RunSummary& r) { return r.Energy; });
+  addPerRun<vtkDoubleArray>(fd, "RunCloudError", runs, [](const RunSummary& r) { return r.CloudError; });
+  addPerRun<vtkDoubleArray>(fd, "RunFarPoints", runs, [](const RunSummary& r) { return r.FarPoints; });
+  addPerRun<vtkDoubleArray>(fd, "RunMisfitPoints", runs, [](const RunSummary& r) { return r.MisfitPoints; });
+  addPerRun<vtkDoubleArray>(fd, "RunSeconds", runs, [](const RunSummary& r) { return r.Seconds; });
+  addPerRun<vtkIntArray>(fd, "RunGhostRows", runs, [](const RunSummary& r) { return static_cast<int>(r.GhostRows); });
+  // Counts as doubles (exact below 2^53).
+  addPerRun<vtkDoubleArray>(fd, "RunFarFeet", runs, [](const RunSummary& r) { return double(r.FarFeet); });
+  if (!summary.OctreeStorage)
+  {
+    return;
+  }
+  addPerRun<vtkDoubleArray>(fd, "RunStoredNodes", runs, [](const RunSummary& r) { return double(r.StoredNodes); });
+  addPerRun<vtkDoubleArray>(fd, "RunUniformNodes", runs, [](const RunSummary& r) { return double(r.UniformNodes); });
+  addPerRun<vtkDoubleArray>(fd, "RunLeaves", runs, [](const RunSummary& r) { return double(r.Leaves); });
+  addPerRun<vtkDoubleArray>(
+    fd, "RunLargestRankLeaves", runs, [](const RunSummary& r) { return double(r.LargestRankLeaves); });
 }
 
 namespace
@@ -367,10 +368,11 @@ void historyTable(const std::vector<IterationRecord>& history, vtkTable* table)
   table->AddColumn(seconds);
 }
 
-void communicationSummary(int ranks, std::int64_t bytesSent, std::int64_t collectives, vtkDataObject* image)
+void communicationSummary(const ReconstructionSummary& summary, vtkDataObject* image)
 {
-  const std::pair<const char*, double> values[3] = { { "Ranks", static_cast<double>(ranks) },
-    { "RankBytesSent", static_cast<double>(bytesSent) }, { "RankCollectives", static_cast<double>(collectives) } };
+  const std::pair<const char*, double> values[3] = { { "Ranks", static_cast<double>(summary.Ranks) },
+    { "RankBytesSent", static_cast<double>(summary.BytesSent) },
+    { "RankCollectives", static_cast<double>(summary.Collectives) } };
   for (const auto& value : values)
   {
     vtkNew<vtkDoubleArray> array;
@@ -382,8 +384,6 @@ void communicationSummary(int ranks, std::int64_t bytesSent, std::int64_t collec
 
 template void toImage(ReconstructionResult<2>&, double, int, vtkImageData*);
 template void toImage(ReconstructionResult<3>&, double, int, vtkImageData*);
-template void runSummary(const ReconstructionResult<2>&, vtkDataObject*);
-template void runSummary(const ReconstructionResult<3>&, vtkDataObject*);
 
 } // namespace vtkbridge
 } // namespace sltk

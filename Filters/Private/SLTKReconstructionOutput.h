@@ -7,9 +7,8 @@
 /// convergence history table.
 
 #include "sltk/recon/Reconstruction.h"
+#include "sltk/recon/ReconstructionSummary.h"
 #include "sltk/recon/SlabPolicy.h"
-
-#include <cstdint>
 
 class vtkDataObject;
 class vtkImageData;
@@ -47,14 +46,15 @@ constexpr int ImageGhostLevelsAvailable = static_cast<int>(SlabGhostRows) - 1;
 /// RunEnergy (E_2), RunCloudError (Err_P), RunFarPoints (fraction of the points
 /// more than one cell of run 1 from the surface), RunMisfitPoints (... more than two
 /// of the run's cells and than h_P), RunSeconds, RunGhostRows (the
-/// slabs' ghost rows at the run's end; 0 on one rank).
-template <int D>
-void runSummary(const ReconstructionResult<D>& result, vtkDataObject* image);
+/// slabs' ghost rows at the run's end; 0 on one rank), RunFarFeet; with the
+/// octree storage also RunStoredNodes, RunUniformNodes, RunLeaves and
+/// RunLargestRankLeaves (ReconstructionSummary.h).
+void runSummary(const ReconstructionSummary& summary, vtkDataObject* image);
 
 /// The distributed run's traffic as field data of the image: Ranks, and this
 /// rank's RankBytesSent (point to point: the ghost-row exchanges) and
 /// RankCollectives (reductions and agreements) (CountingCommunicator.h).
-void communicationSummary(int ranks, std::int64_t bytesSent, std::int64_t collectives, vtkDataObject* image);
+void communicationSummary(const ReconstructionSummary& summary, vtkDataObject* image);
 
 /// Zero level set of the image's SignedDistance: triangles (3D, flying edges)
 /// or line segments (2D), coincident vertices merged; ghost rows (toImage())
@@ -78,8 +78,6 @@ void historyTable(const std::vector<IterationRecord>& history, vtkTable* table);
 
 extern template void toImage(ReconstructionResult<2>&, double, int, vtkImageData*);
 extern template void toImage(ReconstructionResult<3>&, double, int, vtkImageData*);
-extern template void runSummary(const ReconstructionResult<2>&, vtkDataObject*);
-extern template void runSummary(const ReconstructionResult<3>&, vtkDataObject*);
 
 } // namespace vtkbridge
 } // namespace sltk

@@ -9,6 +9,21 @@
 namespace sltk
 {
 
+Status interpolatorOfCode(int code, InterpolatorKind& kind)
+{
+  if (interpolatorFromCode(code, kind))
+  {
+    return Status::ok();
+  }
+  std::vector<std::string> valid;
+  for (const InterpolatorInfo& info : Interpolators)
+  {
+    valid.push_back(std::to_string(static_cast<int>(info.Kind)) + " (" + info.Label + ")");
+  }
+  return Status::invalidArgument(
+    "Interpolator " + std::to_string(code) + " is not an interpolator: use " + orList(valid));
+}
+
 bool parseInterpolator(const std::string& name, InterpolatorKind& kind)
 {
   const std::string wanted = lowerCase(name);

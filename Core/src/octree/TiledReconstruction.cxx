@@ -275,8 +275,40 @@ void gatherTiles(TiledReconstructionResult<D>& result, const Communicator& comm,
   result.Owners.clear();
 }
 
+template <int D>
+ReconstructionSummary summarize(const TiledReconstructionResult<D>& result)
+{
+  ReconstructionSummary summary = summarize(result.Records);
+  summary.OctreeStorage = true;
+  for (size_t r = 0; r < summary.Runs.size(); ++r)
+  {
+    // Run 1 is uniform (its grid is the coarsest: a leaf per node; the largest rank's, its
+    // slab's, from the history), but for a single run, which is then stored in tiles: every
+    // tiled run has a storage record.
+    const int run = static_cast<int>(r + 1);
+    RunSummary& s = summary.Runs[r];
+    s.UniformNodes = s.StoredNodes = s.Leaves = s.LargestRankLeaves = result.Records.Runs[r].Grid.nodeCount();
+    for (const IterationRecord& it : result.Records.History)
+    {
+      s.LargestRankLeaves = it.Run == run ? it.LargestRankLeaves : s.LargestRankLeaves;
+    }
+    for (const TiledRunRecord& stored : result.Storage)
+    {
+      if (stored.Run == run)
+      {
+        s.StoredNodes = stored.StoredNodes;
+        s.Leaves = stored.Leaves;
+        s.LargestRankLeaves = stored.LargestRankLeaves;
+      }
+    }
+  }
+  return summary;
+}
+
 template Status reconstructTiled(
   const ReconstructionPlan<2>&, const Context&, TiledReconstructionResult<2>&, const Communicator&);
+template ReconstructionSummary summarize(const TiledReconstructionResult<2>&);
+template ReconstructionSummary summarize(const TiledReconstructionResult<3>&);
 template void gatherTiles(TiledReconstructionResult<2>&, const Communicator&, int);
 template void gatherTiles(TiledReconstructionResult<3>&, const Communicator&, int);
 template Index completeTiledDistances(

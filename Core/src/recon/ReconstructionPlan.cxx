@@ -104,6 +104,30 @@ Status validateSchedule(const std::vector<RunParameters>& schedule)
   return Status::ok();
 }
 
+Status validateOptionRanges(const ReconstructionOptions& options)
+{
+  SLTK_RETURN_IF_ERROR(
+    checkOptionRange(InitialGuessRange, static_cast<int>(options.Guess), InitialGuessRange.Property));
+  InterpolatorKind kind{};
+  SLTK_RETURN_IF_ERROR(interpolatorOfCode(static_cast<int>(options.Interpolator), kind));
+  const std::pair<const char*, double> values[] = {
+    { "NumberOfRuns", static_cast<double>(options.Runs) },
+    { "MaximumNumberOfIterations", static_cast<double>(options.MaxIterations) }, { "Tolerance", options.Tolerance },
+    { "Padding", static_cast<double>(options.Padding) }, { "FinalEta", options.FinalEta },
+    { "OutlierDeviations", options.Cleaning.Outliers.Deviations },
+    { "ThinningFactor", options.Cleaning.ThinningFactor }, { "CellSizeFactor", options.CellSizeFactor },
+    { "MaximumLevel", static_cast<double>(options.MaximumLevel) },
+    { "OutsideThresholdFactor", options.OutsideThresholdFactor },
+    { "MemoryBudget",
+      static_cast<double>(options.MemoryBudget) / static_cast<double>(BytesPerMB) }, // as the front ends give it
+  };
+  for (const auto& value : values)
+  {
+    SLTK_RETURN_IF_ERROR(checkOptionRange(*findOptionRange(value.first), value.second, value.first));
+  }
+  return validateSchedule(options.Schedule);
+}
+
 template <int D>
 Status validateReconstructionOptions(const ReconstructionOptions& options)
 {

@@ -4,6 +4,9 @@
 #include "vtkOctreeSDF.h"
 #include "vtkSLLevelSetReconstruct.h"
 
+#include "sltk/recon/ReconstructionOptions.h"
+#include "sltk/recon/ReconstructionSummary.h"
+
 #include "vtkBitArray.h"
 #include "vtkCellData.h"
 #include "vtkCleanPolyData.h"
@@ -54,6 +57,99 @@ vtkSmartPointer<vtkPolyData> cloud(int n, double scale)
   auto poly = vtkSmartPointer<vtkPolyData>::New();
   poly->SetPoints(points);
   return poly;
+}
+
+/// The first value of field array `name` of `data`, or of its tuple `k` (NaN when absent).
+double fieldValue(vtkDataObject* data, const char* name, vtkIdType k = 0)
+{
+  vtkDataArray* a = data ? data->GetFieldData()->GetArray(name) : nullptr;
+  return a && k < a->GetNumberOfTuples() ? a->GetTuple1(k) : std::nan("");
+}
+
+/// The properties read and write Core's options in place (C++: SetOptions, GetOptions)
+/// with vtkSetMacro's semantics, in the property's units; a value Core's types cannot
+/// hold is kept as given and refused when the filter runs.
+void checkOptionProperties()
+{
+  vtkNew<vtkSLLevelSetReconstruct> recon;
+  const sltk::ReconstructionOptions defaults;
+  check(recon->GetNumberOfRuns() == defaults.Runs && recon->GetPadding() == defaults.Padding &&
+      recon->GetTolerance() == defaults.Tolerance && recon->GetFinalEta() == defaults.FinalEta &&
+      recon->GetInterpolator() == static_cast<int>(defaults.Interpolator) && recon->GetMemoryBudget() == 0 &&
+      recon->GetAutomaticCleaning() == defaults.Cleaning.Automatic &&
+      recon->GetOutlierDeviations() == defaults.Cleaning.Outliers.Deviations,
+    "the properties' defaults are Core's");
+  const vtkMTimeType before = recon->GetMTime();
+  recon->SetPadding(recon->GetPadding());
+  recon->SetInterpolator(recon->GetInterpolator());
+  check(recon->GetMTime() == before, "setting a property to its value leaves the filter unmodified");
+  recon->SetPadding(12);
+  recon->SetThinningFactor(1.5);
+  check(recon->GetMTime() > before && recon->GetOptions().Padding == 12 &&
+      recon->GetOptions().Cleaning.ThinningFactor == 1.5,
+    "a property writes Core's options in place");
+  recon->SetMemoryBudget(64);
+  check(recon->GetOptions().MemoryBudget == (std::uint64_t(64) << 20) && recon->GetMemoryBudget() == 64,
+    "MemoryBudget is in MB, Core's in bytes");
+  recon->AddRunParameterValue(1.0);
+  check(recon->GetNumberOfRunParameterValues() == 1 && recon->GetOptions().Schedule.empty(),
+    "a lone RunParameters value waits for its pair");
+  recon->AddRunParameterValue(0.0);
+  check(recon->GetOptions().Schedule.size() == 1 && recon->GetRunEta(0) == 0.0, "a pair is one (p, eta) of Core's");
+  sltk::ReconstructionOptions options;
+  options.CellSizeFactor = 1.5;
+  options.Guess = sltk::InitialGuess::BoundingSphere;
+  options.Cleaning.Automatic = false;
+  options.MinIterations = 5; // no property: C++ only
+  recon->SetOptions(options);
+  check(recon->GetCellSizeFactor() == 1.5 && recon->GetInitialGuess() == vtkSLLevelSetReconstruct::BOUNDING_SPHERE &&
+      !recon->GetAutomaticCleaning() && recon->GetNumberOfRunParameters() == 0 &&
+      recon->GetOptions().MinIterations == 5,
+    "SetOptions replaces every option; the properties read them");
+
+  recon->SetOptions(sltk::ReconstructionOptions{});
+  recon->SetNumberOfRuns(1);
+  recon->SetInputData(cloud(300, 1.0));
+  check(recon->GetExecutive()->Update() == 1 && recon->GetLastSummary(), "a run leaves its summary");
+  const struct
+  {
+    const char* Name;
+    void (vtkSLLevelSetReconstruct::*Set)(int);
+    int (vtkSLLevelSetReconstruct::*Get)();
+    int Bad, Good;
+  } unheld[3] = {
+    { "Interpolator", &vtkSLLevelSetReconstruct::SetInterpolator, &vtkSLLevelSetReconstruct::GetInterpolator, -1, 1 },
+    { "InitialGuess", &vtkSLLevelSetReconstruct::SetInitialGuess, &vtkSLLevelSetReconstruct::GetInitialGuess, 300, 0 },
+    { "MemoryBudget", &vtkSLLevelSetReconstruct::SetMemoryBudget, &vtkSLLevelSetReconstruct::GetMemoryBudget, -5, 0 },
+  };
+  for (const auto& property : unheld)
+  {
+    (recon->*property.Set)(property.Bad);
+    check((recon->*property.Get)() == property.Bad && recon->GetExecutive()->Update() == 0 && !recon->GetLastSummary(),
+      std::string(property.Name) + " outside Core's type is kept as given and refused, with no summary");
+    (recon->*property.Set)(property.Good);
+  }
+  check(recon->GetExecutive()->Update() == 1, "the corrected properties run again");
+}
+
+/// The typed summary (C++: GetLastSummary) holds the values of port 0's field data.
+void checkSummary(vtkSLLevelSetReconstruct* recon, const std::string& what)
+{
+  vtkDataObject* grid = recon->GetOutputDataObject(0);
+  const sltk::ReconstructionSummary* s = recon->GetLastSummary();
+  bool same = s && !s->Runs.empty() && s->CloudSpacing == fieldValue(grid, "CloudSpacing") &&
+    s->CellSizeFactor == fieldValue(grid, "CellSizeFactor") &&
+    static_cast<double>(s->Cleaning.OutputPoints) == fieldValue(grid, "ReconstructedPoints") &&
+    static_cast<double>(s->BytesSent) == fieldValue(grid, "RankBytesSent");
+  for (size_t r = 0; same && r < s->Runs.size(); ++r)
+  {
+    const auto k = static_cast<vtkIdType>(r);
+    const sltk::RunSummary& run = s->Runs[r];
+    same = run.Iterations == fieldValue(grid, "RunIterations", k) &&
+      run.CloudError == fieldValue(grid, "RunCloudError", k) && run.Seconds == fieldValue(grid, "RunSeconds", k) &&
+      (!s->OctreeStorage || static_cast<double>(run.StoredNodes) == fieldValue(grid, "RunStoredNodes", k));
+  }
+  check(same, what + ": the typed summary holds port 0's field data");
 }
 } // namespace
 
@@ -126,6 +222,7 @@ int main(int argc, char* argv[])
     recon->SetNumberOfRuns(2);
     recon->SetInterpolator(vtkSLLevelSetReconstruct::WENO3);
     check(recon->GetExecutive()->Update() == 1, "reconstruction of an 800-point sphere succeeds");
+    checkSummary(recon, "uniform grids");
     auto* image = vtkImageData::SafeDownCast(recon->GetOutputDataObject(0));
     auto* sdf = image ? image->GetPointData()->GetArray("SignedDistance") : nullptr;
     check(sdf != nullptr && image->GetPointData()->GetArray("DistanceToCloud") != nullptr,
@@ -360,7 +457,11 @@ int main(int argc, char* argv[])
     octree->SetNumberOfRuns(9);
     check(octree->GetExecutive()->Update() == 0 && octree->GetOutput() != nullptr,
       "vtkOctreeSDF refuses NumberOfRuns 9; its port 0 is a vtkHyperTreeGrid");
+    octree->SetNumberOfRuns(2);
+    check(octree->GetExecutive()->Update() == 1, "vtkOctreeSDF reconstructs with 2 runs");
+    checkSummary(octree, "octree");
   }
+  checkOptionProperties();
 
   std::cout << (failures == 0 ? "all filter checks passed\n" : "filter checks FAILED\n");
   return failures == 0 ? 0 : 1;

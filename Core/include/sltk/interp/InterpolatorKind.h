@@ -10,6 +10,8 @@
 /// Spatial reconstructions at the feet of the characteristics: Q1 (4.28),
 /// WENO3 (2.69), CWENO and CWENOZ (3.3, Definition 3.1).
 
+#include "sltk/core/Status.h"
+
 #include <array>
 #include <cstdint>
 #include <string>
@@ -64,6 +66,10 @@ inline bool interpolatorFromCode(int code, InterpolatorKind& kind)
   kind = Interpolators[static_cast<std::size_t>(code)].Kind;
   return true;
 }
+
+/// The kind of a filter's Interpolator property (or an options' InterpolatorKind
+/// as a number); refused with the valid codes and their labels when out of range.
+Status interpolatorOfCode(int code, InterpolatorKind& kind);
 
 /// The kind named `name` (command-line name or label, any case); false when unknown.
 bool parseInterpolator(const std::string& name, InterpolatorKind& kind);

@@ -30,8 +30,26 @@
 namespace sltk
 {
 
+/// What a reconstruction reports besides its fields and records, whatever the
+/// dimension (ReconstructionSummary.h's too).
+struct ReconstructionReport
+{
+  double CloudSpacing = 0.0;           ///< h_P (of the cleaned cloud)
+  double CellSizeFactor = 0.0;         ///< C_dx used (chosen when automatic)
+  double OutsideThresholdFactor = 0.0; ///< K_P used (raised when run 1 was restarted)
+  std::vector<std::string> Choices;    ///< the plan's automatic choices and their reasons
+  CloudCleaningReport Cleaning;        ///< what the pre-processing removed and merged
+  std::vector<std::string> Recoveries; ///< runs that lost their zero level set and what was done instead
+  /// What the result does not fit in the cloud (points left far from the
+  /// surface) and the option that may help; empty when it fits.
+  std::vector<std::string> Warnings;
+  /// False when more than FitShare of the points lie more than two finest cells and h_P from
+  /// the surface (StoppingRule.h): the result does not fit the cloud, and Warnings says so first.
+  bool FitsCloud = true;
+};
+
 template <int D>
-struct ReconstructionResult
+struct ReconstructionResult : ReconstructionReport
 {
   GridField<D> SignedDistance; ///< phi of the last run (negative inside), cut at +-gamma far away
   GridField<D> Distance;       ///< d of the last run (4.4.2)
@@ -41,20 +59,8 @@ struct ReconstructionResult
   /// (exact); on one rank the whole grid.
   GridSpec<D> WholeGrid;
   SlabPlan Slab;
-  double CloudSpacing = 0.0;           ///< h_P (of the cleaned cloud)
-  double CellSizeFactor = 0.0;         ///< C_dx used (chosen when automatic)
-  double OutsideThresholdFactor = 0.0; ///< K_P used (raised when run 1 was restarted)
-  std::vector<std::string> Choices;    ///< the plan's automatic choices and their reasons
-  CloudCleaningReport Cleaning;        ///< what the pre-processing removed and merged
   std::vector<RunRecord<D>> Runs;
   std::vector<IterationRecord> History;
-  std::vector<std::string> Recoveries; ///< runs that lost their zero level set and what was done instead
-  /// What the result does not fit in the cloud (points left far from the
-  /// surface) and the option that may help; empty when it fits.
-  std::vector<std::string> Warnings;
-  /// False when more than FitShare of the points lie more than two finest cells from the
-  /// surface (StoppingRule.h): the result does not fit the cloud, and Warnings says so first.
-  bool FitsCloud = true;
 };
 
 /// Runs Algorithm 1. The cloud is validated first, then cleaned when

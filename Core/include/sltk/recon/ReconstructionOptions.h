@@ -9,6 +9,7 @@
 #include "sltk/levelset/ReinitOptions.h"
 #include "sltk/recon/OptionRanges.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace sltk
@@ -21,6 +22,14 @@ enum class InitialGuess : std::uint8_t
   BoundingSphere = 1, ///< a sphere around the cloud (the knot test)
   BoundingEllipsoid = 2
 };
+
+/// InitialGuess's values as a filter property (an enumeration, not a row of
+/// OptionRanges: the plugin XML lists its values).
+constexpr OptionRange InitialGuessRange{ "InitialGuess", 0, 2, false };
+
+/// The unit of MemoryBudget in the front ends (the filters' property, the CLI's
+/// --memory-budget): MB of 2^20 bytes.
+constexpr std::uint64_t BytesPerMB = std::uint64_t(1) << 20;
 
 /// p and eta of one run (Table 4.1).
 struct RunParameters
@@ -75,8 +84,11 @@ struct ReconstructionOptions
   /// discontinuous between cells; for comparison with the thesis.
   bool LeastSquaresQ1 = false;
   InitialGuess Guess = InitialGuess::OutsideMarking;
-  /// Per-run p and eta; empty: Table 4.1. Run r uses entry min(r, size) - 1.
+  /// Per-run p and eta; empty: Table 4.1 with FinalEta. Run r uses entry min(r, size) - 1.
   std::vector<RunParameters> Schedule;
+  /// eta of the runs r >= 3 when Schedule is empty (Table 4.1: 1); larger
+  /// values smooth noisy data (thesis Fig. 4.8, 4.11). A schedule replaces it.
+  double FinalEta = 1.0;
   double BetaFactor = 2.0;  ///< beta = 2 dx (4.4.6)
   double GammaFactor = 4.0; ///< gamma = 4 dx (4.4.6)
   int ReinitDilation = 1;   ///< k of the reinitialisation band (1.53)
@@ -135,7 +147,9 @@ struct ReconstructionOptions
   {
     if (this->Schedule.empty())
     {
-      return table41(run);
+      RunParameters table = table41(run);
+      table.Eta = run >= 3 ? this->FinalEta : table.Eta;
+      return table;
     }
     const size_t i =
       static_cast<size_t>(run) < this->Schedule.size() ? static_cast<size_t>(run) - 1 : this->Schedule.size() - 1;
@@ -164,10 +178,9 @@ struct IterationRecord
   double Seconds = 0.0;   ///< wall time since the run started
 };
 
-template <int D>
-struct RunRecord
+/// One run's figures, whatever the dimension (ReconstructionSummary.h's runs too).
+struct RunFigures
 {
-  GridSpec<D> Grid;
   RunParameters Parameters;
   int Iterations = 0;
   double Energy = 0.0;
@@ -182,6 +195,12 @@ struct RunRecord
   Index MeanBandSize = 0;
   Index GhostRows = 0; ///< on several ranks: each slab's ghost rows (RunSlab.h); 0 on one rank
   Index FarFeet = 0;   ///< on several ranks: feet of the run's steps interpolated by another rank (all ranks')
+};
+
+template <int D>
+struct RunRecord : RunFigures
+{
+  GridSpec<D> Grid;
 };
 
 } // namespace sltk

@@ -77,6 +77,13 @@ struct ReconstructionPlan
 /// call it to refuse a bad schedule before reading a cloud.
 Status validateSchedule(const std::vector<RunParameters>& schedule);
 
+/// Checks the options a user sets against their rows of OptionRanges.h (the
+/// filters' and the CLI's ranges, narrower than what Algorithm 1 accepts),
+/// the enumerations against their values and the schedule: the message names
+/// the first option out of range by its filter property (MemoryBudget in MB)
+/// and its range. The filters call it when they run; nothing is clamped.
+Status validateOptionRanges(const ReconstructionOptions& options);
+
 /// Checks the options of Algorithm 1 (ranges, the schedule, the reinitialisation).
 template <int D>
 Status validateReconstructionOptions(const ReconstructionOptions& options);
