@@ -91,7 +91,10 @@ xyz_to_ply() { # iPSR's input: an ASCII PLY of the first three columns
     awk 'NF >= 3 {print $1, $2, $3}' "$1"; } > "$2"
 }
 
-: > "$out/cases.txt"; : > "$out/commands.txt"
+# Appended, not truncated: a long bench can be run in parts (CASES=...) into one OUTDIR, and the
+# table covers every part; summarize.py keeps the last run of a (cloud, tool). Use a fresh OUTDIR
+# for a new binary.
+touch "$out/cases.txt" "$out/commands.txt"
 for c in "${cases[@]}"; do
   IFS='|' read -r name cloud ref <<< "$c"
   if [ -n "${CASES:-}" ] && [[ " $CASES " != *" $name "* ]]; then continue; fi
@@ -103,6 +106,7 @@ for c in "${cases[@]}"; do
     rm -rf "$base.ply" "$base.score.json" "$base.work"; mkdir -p "$base.work"
     [ "$tool" = ipsr ] && xyz_to_ply "$cloud" "$base.work/cloud.ply"
     echo "$name|$tool|$cmd" >> "$out/commands.txt"
+    echo "$name|$tool|$(date -u +%FT%TZ)|$(uptime)" >> "$out/load.txt"
     cut -d' ' -f1 /proc/loadavg > "$base.load" # the 1-minute load when the run starts: a shared machine
     echo "== $name $tool: $cmd" >&2
     (
