@@ -415,6 +415,10 @@ def hjb_case(name, args, rc, *words):
 
 hjb_case("final-time-1e7", ("hjb", "--preset", "test1", "--n", "41", "--final-time", "1e7"), 1, "more than 1e+06",
          "final time")
+hjb_case("tabulation-1e9-controls", ("hjb", "--fx", "a1", "--fy", "a2", "--fz", "a3", "--controls", "box",
+                                     "--control-dim", "3", "--tabulation", "1000", "--nodes", "21,21,21",
+                                     "--v0", "x*x+y*y+z*z"), 1, "control tabulation", "1e+09 controls",
+         "at most 100 points per parameter")
 hjb_case("courant-1e-9", CUSTOM_2D + ("--v0", "x", "--courant", "1e-9"), 1, "Courant", "1e+09 steps")
 hjb_case("fz-in-2d", CUSTOM_2D + ("--v0", "x", "--fz", "1"), 2, "--fz is given for a 2D problem")
 hjb_case("third-domain-pair", CUSTOM_2D + ("--v0", "x", "--domain", "-1,1,-1,1,-1,1"), 2,

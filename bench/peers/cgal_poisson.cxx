@@ -10,6 +10,8 @@
 // Bench-only: it is not part of SLTK's build (see bench/peers/README.md).
 //
 // usage: cgal_poisson CLOUD.xyz OUT.ply [k]
+#include "ReadXyz.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/compute_average_spacing.h>
@@ -40,22 +42,16 @@ using Concurrency = CGAL::Sequential_tag;
 
 namespace
 {
-// The shared clouds are "x y z" per line; extra columns (e.g. given normals) are ignored so that
-// every tool sees the same unoriented input.
+// The shared clouds are "x y z" per line (the benches' reader, bench/common/ReadXyz.h); extra
+// columns (e.g. given normals) are ignored so that every tool sees the same unoriented input.
 bool readXyz(const std::string& path, std::vector<PointWithNormal>& points)
 {
-  std::ifstream in(path);
-  if (!in)
+  sltk::PointCloud<3> cloud;
+  if (!sltkbench::readXyz(path, cloud))
     return false;
-  std::string line;
-  while (std::getline(in, line))
-  {
-    std::istringstream fields(line);
-    double x, y, z;
-    if (fields >> x >> y >> z)
-      points.emplace_back(Point(x, y, z), Vector(0, 0, 0));
-  }
-  return !points.empty();
+  for (const auto& p : cloud.Points)
+    points.emplace_back(Point(p[0], p[1], p[2]), Vector(0, 0, 0));
+  return true;
 }
 
 double seconds(std::chrono::steady_clock::time_point since)

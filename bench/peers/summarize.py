@@ -8,16 +8,12 @@ it reads NAME.TOOL.rc, .time (/usr/bin/time -v), .load (1-minute load at the sta
 """
 import json
 import os
-import re
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from summary import skipped_notes, timing, write_summary  # noqa: E402
 
-def timing(path):
-    text = open(path).read() if os.path.exists(path) else ""
-    wall = re.search(r"Elapsed \(wall clock\) time.*: (?:(\d+):)?(\d+):([\d.]+)", text)
-    rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)", text)
-    seconds = (int(wall[1] or 0) * 3600 + int(wall[2]) * 60 + float(wall[3])) if wall else None
-    return seconds, (int(rss[1]) / 1024 if rss else None)
+
 
 
 def run(out, name, tool, command, timeout):
@@ -76,14 +72,9 @@ def main(out, timeout="900"):
             name, tool, command = line.rstrip("\n").split("|", 2)
             commands[(name, tool)] = command
     rows = [run(out, name, tool, command, timeout) for (name, tool), command in commands.items()]
-    skipped = os.path.join(out, "skipped.txt")
-    notes = open(skipped).read().splitlines() if os.path.exists(skipped) else []
+    notes = skipped_notes(out)
     md = table(rows) + "".join(f"\n{n}" for n in notes) + ("\n" if notes else "")
-    with open(os.path.join(out, "summary.md"), "w") as fp:
-        fp.write(md)
-    with open(os.path.join(out, "summary.json"), "w") as fp:
-        json.dump({"runs": rows, "skipped": notes}, fp, indent=2)
-    print(md)
+    write_summary(out, md, {"runs": rows, "skipped": notes})
 
 
 if __name__ == "__main__":

@@ -8,8 +8,10 @@ edges of NAME.ply with vtkFeatureEdges (sltk's JSON does not report them).
 """
 import json
 import os
-import re
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from summary import skipped_notes, timing, write_summary  # noqa: E402
 
 from vtkmodules.vtkFiltersCore import vtkFeatureEdges
 from vtkmodules.vtkIOPLY import vtkPLYReader
@@ -32,12 +34,6 @@ def edges(ply):
     return counts
 
 
-def timing(path):
-    text = open(path).read() if os.path.exists(path) else ""
-    wall = re.search(r"Elapsed \(wall clock\) time.*: (?:(\d+):)?(\d+):([\d.]+)", text)
-    rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)", text)
-    seconds = (int(wall[1] or 0) * 3600 + int(wall[2]) * 60 + float(wall[3])) if wall else None
-    return seconds, (int(rss[1]) / 1024 if rss else None)
 
 
 def case(out, line, timeout):
@@ -102,14 +98,9 @@ def table(rows):
 
 def main(out, timeout="900", note=""):
     rows = [case(out, l, timeout) for l in open(os.path.join(out, "cases.txt")) if l.strip()]
-    skipped = os.path.join(out, "skipped.txt")
-    notes = open(skipped).read().splitlines() if os.path.exists(skipped) else []
+    notes = skipped_notes(out)
     md = (f"`{note}`\n\n" if note else "") + table(rows) + "".join(f"\n{n}" for n in notes)
-    with open(os.path.join(out, "summary.md"), "w") as fp:
-        fp.write(md)
-    with open(os.path.join(out, "summary.json"), "w") as fp:
-        json.dump({"command": note, "cases": rows}, fp, indent=2)
-    print(md)
+    write_summary(out, md, {"command": note, "cases": rows})
 
 
 if __name__ == "__main__":

@@ -7,6 +7,7 @@
 #include "sltk/exec/Memory.h"
 
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -201,6 +202,9 @@ Status checkMemory(Index nodes)
   return Status::ok();
 }
 
+/// The most controls a tabulation of A may hold (checkSizesAndTimes).
+constexpr double MaxTabulatedControls = 1e6;
+
 Status checkSizesAndTimes(const HjbExpressionSpec& spec, Index nodes)
 {
   if (!spec.InitialValues.empty())
@@ -240,6 +244,23 @@ Status checkSizesAndTimes(const HjbExpressionSpec& spec, Index nodes)
   {
     return Status::invalidArgument("minimiser options: tabulation points >= 1, tolerance >= 0, iterations >= 0 and "
                                    "warm-start points in 0..15 are needed");
+  }
+  // The tabulation of A (Minimizer.h: TabulationPoints per parameter of A, ControlSet::parameterCount),
+  // scanned whole at every node and stage: beyond MaxTabulatedControls the table alone takes
+  // gigabytes and the scan hours. Refused before anything is allocated, naming the tabulation.
+  const int axes = spec.ControlDimension;
+  const bool boxOrBall = spec.Controls == ControlKind::Box || spec.Controls == ControlKind::Ball;
+  const int parameters = boxOrBall ? axes : spec.Controls == ControlKind::Sphere ? (axes == 2 ? 1 : axes) : 0;
+  const double tabulated = std::pow(static_cast<double>(m.TabulationPoints), parameters);
+  if (tabulated > MaxTabulatedControls)
+  {
+    const int most = static_cast<int>(std::floor(std::pow(MaxTabulatedControls, 1.0 / parameters) + 1e-9));
+    std::ostringstream message;
+    message << "the control tabulation has " << m.TabulationPoints << " points per parameter of A over " << parameters
+            << " parameters, " << tabulated << " controls, more than the " << MaxTabulatedControls
+            << " a node's search scans: tabulate at most " << most
+            << " points per parameter (the local search refines between them)";
+    return Status::invalidArgument(message.str());
   }
   return Status::ok();
 }
