@@ -248,9 +248,7 @@ Status checkSizesAndTimes(const HjbExpressionSpec& spec, Index nodes)
   // The tabulation of A (Minimizer.h: TabulationPoints per parameter of A, ControlSet::parameterCount),
   // scanned whole at every node and stage: beyond MaxTabulatedControls the table alone takes
   // gigabytes and the scan hours. Refused before anything is allocated, naming the tabulation.
-  const int axes = spec.ControlDimension;
-  const bool boxOrBall = spec.Controls == ControlKind::Box || spec.Controls == ControlKind::Ball;
-  const int parameters = boxOrBall ? axes : spec.Controls == ControlKind::Sphere ? (axes == 2 ? 1 : axes) : 0;
+  const int parameters = controlParameterCount(spec.Controls, spec.ControlDimension);
   const double tabulated = std::pow(static_cast<double>(m.TabulationPoints), parameters);
   if (tabulated > MaxTabulatedControls)
   {

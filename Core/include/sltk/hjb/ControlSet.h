@@ -40,6 +40,22 @@ enum class ControlKind : std::uint8_t
   Finite = 4
 };
 
+/// Parameters of the local search over a control set of `kind` in R^m (0: tabulation only):
+/// a box or a ball has m, a circle one angle, a 3D sphere its m coordinates (projected).
+inline int controlParameterCount(ControlKind kind, int m)
+{
+  switch (kind)
+  {
+    case ControlKind::Box:
+    case ControlKind::Ball:
+      return m;
+    case ControlKind::Sphere:
+      return m == 2 ? 1 : m;
+    default:
+      return 0;
+  }
+}
+
 template <int M>
 struct ControlSet
 {
@@ -216,19 +232,7 @@ struct ControlSet
   }
 
   /// Number of parameters of the local search (0: tabulation only).
-  int parameterCount() const
-  {
-    switch (this->Kind)
-    {
-      case ControlKind::Box:
-      case ControlKind::Ball:
-        return M;
-      case ControlKind::Sphere:
-        return M == 2 ? 1 : M;
-      default:
-        return 0;
-    }
-  }
+  int parameterCount() const { return controlParameterCount(this->Kind, M); }
 
   /// True when parameter j is an angle (periodic, unbounded).
   bool isAngle() const { return this->Kind == ControlKind::Sphere && M == 2; }

@@ -208,7 +208,8 @@ Status iterateRun(Band& band, const ReconstructionOptions& options, int run, dou
     record.Energy = energies.empty() ? 0.0 : energies.back();
   }
   band.finish(record, far);
-  record.MisfitPoints = band.farFraction(misfitDistance(dx, cloudSpacing));
+  const double misfit = misfitDistance(dx, cloudSpacing); // often the far-point distance: no second pass then
+  record.MisfitPoints = misfit == far ? record.FarPoints : band.farFraction(misfit);
   detail::warnAboutRun(record, run, cloudSpacing, ctx);
   detail::reportRun(record, run, phases, band.describe(), ctx);
   result.Runs.push_back(record);
