@@ -19,6 +19,8 @@
 #include "sltk/grid/GridField.h"
 #include "sltk/interp/CellCache.h"
 #include "sltk/interp/Interpolator.h"
+#include "sltk/interp/Weno3.h"
+#include "sltk/interp/Weno3Lanes.h"
 #include "sltk/levelset/CutOff.h"
 #include "sltk/levelset/NarrowBand.h"
 
@@ -178,6 +180,61 @@ void joinFarFeet(std::map<Index, ChunkFeet<D>>& farByChunk, FarFeet<D>& far)
 }
 } // namespace detail
 
+namespace detail
+{
+/// The feet of a node interpolated together where the interpolator can
+/// (WENO3: Weno3Lanes.h, the values of Weno3Interpolator bit for bit): every
+/// foot finite and, on a slab window, inside it. tryEval() returns false
+/// otherwise, and for the other interpolators, and the step then takes the
+/// feet one by one.
+template <class Interp, int D>
+struct StepLanes
+{
+  explicit StepLanes(const GridField<D>&) {}
+  template <size_t P>
+  bool tryEval(const GridSpec<D>&, const FarFeet<D>*, const std::array<std::array<double, D>, P>&, double*)
+  {
+    return false;
+  }
+};
+
+template <int D>
+struct StepLanes<Weno3Interpolator<D>, D>
+{
+  explicit StepLanes(const GridField<D>& phi)
+    : Lanes(phi)
+  {
+  }
+
+  template <size_t P>
+  bool tryEval(
+    const GridSpec<D>& spec, const FarFeet<D>* far, const std::array<std::array<double, D>, P>& x, double* values)
+  {
+    static_assert(P == Weno3Lanes<D>::Count, "one lane per foot");
+    std::array<CellLocation<D>, P> at;
+    for (size_t j = 0; j < P; ++j)
+    {
+      for (int a = 0; a < D; ++a)
+      {
+        if (!std::isfinite(x[j][a]))
+        {
+          return false;
+        }
+      }
+      if (far && !footInWindow<Weno3Interpolator<D>>(spec, *far, spec.indexCoordinate(D - 1, x[j][D - 1])))
+      {
+        return false;
+      }
+      at[j] = locate(spec, x[j].data());
+    }
+    this->Lanes.eval(at, values);
+    return true;
+  }
+
+  Weno3Lanes<D> Lanes;
+};
+} // namespace detail
+
 /// The new values of one step on `band` (ascending linear node indices, no
 /// ghosts) into `values` (band order), phi unchanged. phi must carry
 /// Interp::GhostWidth ghost layers, dist at least one; the ghosts of phi are
@@ -216,6 +273,7 @@ Status levelSetStepValues(const Context& ctx, GridField<D>& phi, const GridField
       // CWENO: the polynomial of a cell serves all the feet that fall in it (CellCache.h);
       // Q1/WENO3 prepare cheaply, one cell is enough. Results do not depend on the size.
       CellCache<Interp, detail::IsCwenoInterpolator<Interp>::value ? 1024 : 1> interpolateAt(prototype, phi);
+      detail::StepLanes<Interp, D> lanes(phi); // WENO3: all the feet of a node at once
       ChunkFeet chunkFar;
       double failures = 0.0;
       for (Index k = b; k < e; ++k)
@@ -255,39 +313,45 @@ Status levelSetStepValues(const Context& ctx, GridField<D>& phi, const GridField
           {
             x0[a] = spec.coordinate(a, i[a]) + scale * par.TimeStep * gd[a]; // foot of the advection
           }
-          std::array<double, Points> feet;
-          bool farNode = false;
+          std::array<std::array<double, D>, Points> x;
           for (int j = 0; j < Points; ++j)
           {
-            std::array<double, D> x;
             for (int a = 0; a < D; ++a)
             {
-              x[a] = x0[a];
+              x[j][a] = x0[a];
               for (int m = 0; m < D - 1; ++m)
               {
                 const double xi = ((j >> m) & 1) ? 1.0 : -1.0; // xi_j in {+-1}^(d-1)
-                x[a] += spread * sigma[m][a] * xi;
+                x[j][a] += spread * sigma[m][a] * xi;
               }
             }
-            bool finite = true;
-            for (int a = 0; a < D; ++a)
+          }
+          std::array<double, Points> feet;
+          bool farNode = false;
+          if (!lanes.tryEval(spec, far, x, feet.data()))
+          {
+            for (int j = 0; j < Points; ++j)
             {
-              finite = finite && std::isfinite(x[a]);
+              bool finite = true;
+              for (int a = 0; a < D; ++a)
+              {
+                finite = finite && std::isfinite(x[j][a]);
+              }
+              if (!finite) // a non-finite energy or distance: no cell to interpolate in
+              {
+                feet[j] = std::numeric_limits<double>::quiet_NaN();
+                continue;
+              }
+              if (far && !footInWindow<Interp>(spec, *far, spec.indexCoordinate(D - 1, x[j][D - 1])))
+              {
+                feet[j] = std::numeric_limits<double>::quiet_NaN();
+                chunkFar.Feet.push_back(x[j]);
+                chunkFar.Slots.push_back(static_cast<Index>(chunkFar.Values.size()) + j);
+                farNode = true;
+                continue;
+              }
+              feet[j] = interpolateAt(x[j].data());
             }
-            if (!finite) // a non-finite energy or distance: no cell to interpolate in
-            {
-              feet[j] = std::numeric_limits<double>::quiet_NaN();
-              continue;
-            }
-            if (far && !footInWindow<Interp>(spec, *far, spec.indexCoordinate(D - 1, x[D - 1])))
-            {
-              feet[j] = std::numeric_limits<double>::quiet_NaN();
-              chunkFar.Feet.push_back(x);
-              chunkFar.Slots.push_back(static_cast<Index>(chunkFar.Values.size()) + j);
-              farNode = true;
-              continue;
-            }
-            feet[j] = interpolateAt(x.data());
           }
           if (farNode)
           {
