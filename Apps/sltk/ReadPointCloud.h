@@ -3,9 +3,11 @@
 /// \file ReadPointCloud.h
 /// Reads a point cloud file into a vtkPointSet that the filters take as it is
 /// (one copy of the points), choosing the reader by the file's extension:
-/// .ply .obj .vtp .vtu .vtk through VTK readers, .xyz .txt .csv .pts through a
-/// text parser (first three numbers of each line; extra columns such as normals
-/// are ignored; comment and header lines skipped).
+/// .ply .obj .vtp .vtu .vtk through VTK readers, .xyz .txt .csv .pts through the
+/// filters' text parser, the one of vtkSLPointCloudReader (Filters/Private/SLTKTextCloud.h:
+/// first three numbers of each line; extra columns such as normals are ignored;
+/// comment and header lines skipped). Every file first passes checkCloudFile
+/// (folder, cannot open, 0 bytes).
 
 #include "sltk/core/Status.h"
 

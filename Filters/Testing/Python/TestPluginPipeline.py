@@ -159,4 +159,48 @@ with tempfile.TemporaryDirectory() as folder:
     assert back.GetDataInformation().GetNumberOfCells() == octree.GetDataInformation().GetNumberOfCells()
     assert back.CellData["SignedDistance"].GetRange() == octree.CellData["SignedDistance"].GetRange()
     Delete(back)
+
+# The text clouds of the CLI open from their extension with the plugin's reader (.xyz .pts .txt
+# offer it; .csv stays ParaView's CSV reader's) as points drawn without a Glyph, and reconstruct.
+with tempfile.TemporaryDirectory() as folder:
+    golden = math.pi * (3.0 - math.sqrt(5.0))
+    rows = []
+    for k in range(500):  # a Fibonacci sphere of radius 1
+        z = 1.0 - 2.0 * (k + 0.5) / 500
+        r = math.sqrt(1.0 - z * z)
+        rows.append("%.17g,%.17g,%.17g,0,0,1" % (r * math.cos(golden * k), r * math.sin(golden * k), z))
+    paths = {}
+    for extension in ("xyz", "pts", "txt", "csv"):
+        paths[extension] = os.path.join(folder, "cloud." + extension)
+        with open(paths[extension], "w") as f:
+            f.write("# a sphere\nx,y,z,nx,ny,nz\n" + "\n".join(rows) + "\n")
+    session = servermanager.ActiveConnection.Session
+    factory = servermanager.vtkSMProxyManager.GetProxyManager().GetReaderFactory()
+    for extension, offered in (("xyz", True), ("pts", True), ("txt", True), ("csv", False)):
+        listed = factory.GetReaders(paths[extension], session)
+        names = [listed.GetString(i) for i in range(1, listed.GetNumberOfStrings(), 3)]
+        assert ("CloudTextReader" in names) == offered, (extension, names)
+    text_cloud = OpenDataFile(paths["xyz"])
+    assert text_cloud.GetXMLName() == "CloudTextReader", text_cloud.GetXMLName()
+    assert text_cloud.SMProxy.GetVTKClassName() == "vtkSLPointCloudReader"
+    text_cloud.UpdatePipeline()
+    read = servermanager.Fetch(text_cloud)
+    assert read.GetNumberOfPoints() == 500 and read.GetNumberOfVerts() == 500, (read.GetNumberOfPoints(), read.GetNumberOfVerts())
+    written = [tuple(float(c) for c in row.split(",")[:3]) for row in rows]
+    assert all(read.GetPoint(k) == written[k] for k in range(500)), "the points as written, to the last bit"
+    from_text = SemiLagrangianLevelSetReconstruction(Input=text_cloud, NumberOfRuns=1)
+    from_text.UpdatePipeline()
+    text_surface = servermanager.Fetch(from_text, idx=1)
+    bounds = text_surface.GetBounds()
+    assert text_surface.GetNumberOfPolys() > 100 and all(abs(abs(b) - 1.0) < 0.1 for b in bounds), \
+        (text_surface.GetNumberOfPolys(), bounds)
+    Delete(from_text)
+    # A refused file: the CLI's message (vtkErrorMacro) and no points, never a part of the cloud.
+    bad = os.path.join(folder, "bad.xyz")
+    with open(bad, "w") as f:
+        f.write("\n".join(rows) + "\n0 1 0.02abc\n")
+    text_cloud.FileName = bad
+    text_cloud.UpdatePipeline()
+    assert text_cloud.GetDataInformation().GetNumberOfPoints() == 0
+    Delete(text_cloud)
 print("pvpython plugin pipeline ok")
