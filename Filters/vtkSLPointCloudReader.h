@@ -7,7 +7,9 @@
  * Each line gives a point by its first three numbers, separated by spaces,
  * tabs, commas or semicolons; further columns (normals, colours) are ignored.
  * Blank lines and lines starting with '#' or '/' are skipped, and so is one
- * header line (such as "x,y,z") before the first point.
+ * header line (such as "x,y,z") before the first point. A first line that
+ * holds one whole number is the point count of a Leica .pts file: the file is
+ * refused when it holds another number of points (cut short, or scans joined).
  *
  * Output: a vtkPolyData with the points in double and one vertex cell per
  * point, so that ParaView draws them as points (no Glyph needed); the

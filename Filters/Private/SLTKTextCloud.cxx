@@ -59,6 +59,12 @@ Status readCoordinates(
   }
   return Status::ok();
 }
+
+/// A whole number that can count points: the first line of a Leica .pts file.
+bool isCount(double v)
+{
+  return v >= 0.0 && v < 9.0e15 && v == static_cast<double>(static_cast<long long>(v));
+}
 } // namespace
 
 Status checkCloudFile(const std::string& path)
@@ -94,6 +100,7 @@ Status readTextCloud(const std::string& path, vtkSmartPointer<vtkPoints>& points
   std::string line;
   long long lineNumber = 0;
   bool headerSeen = false;
+  long long announced = -1; // the points a leading count line announces
   while (std::getline(in, line))
   {
     ++lineNumber;
@@ -116,6 +123,11 @@ Status readTextCloud(const std::string& path, vtkSmartPointer<vtkPoints>& points
       headerSeen = true;
       continue; // one header line such as "x,y,z"
     }
+    if (got == 1 && read->GetNumberOfPoints() == 0 && announced < 0 && isCount(x[0]))
+    {
+      announced = static_cast<long long>(x[0]); // a Leica .pts count line
+      continue;
+    }
     if (got < 3)
     {
       return Status::ioError(
@@ -126,6 +138,11 @@ Status readTextCloud(const std::string& path, vtkSmartPointer<vtkPoints>& points
   if (in.bad())
   {
     return Status::ioError("read error in " + path);
+  }
+  if (announced >= 0 && announced != read->GetNumberOfPoints())
+  {
+    return Status::ioError(path + ": its first line announces " + std::to_string(announced) + " points, it holds " +
+      std::to_string(read->GetNumberOfPoints()) + ": is the file cut short (or two scans joined)?");
   }
   points = read.GetPointer();
   return Status::ok();

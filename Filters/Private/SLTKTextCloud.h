@@ -29,6 +29,8 @@ Status checkCloudFile(const std::string& path);
 /// separated by spaces, tabs, commas or semicolons (further columns, such as
 /// normals, are ignored). Blank lines and lines starting with '#' or '/' are
 /// skipped, and so is one header line (no number) before the first point. A
+/// first line holding one whole number is a count (Leica .pts): the file must
+/// then hold that many points ("its first line announces N points..."). A
 /// NUL byte, a token that is not a number among the first three, or fewer than
 /// three numbers fails with "<path>:<line>: ..."; `points` is set only on
 /// success (never a part of the cloud). A file of comments has no points and is

@@ -140,6 +140,13 @@ int main(int argc, char* argv[])
   }
   check(std::string(reader->GetFileName()) == (folder / "good.csv").string(), "GetFileName gives the file set");
 
+  // A Leica .pts file: a count line, then x y z intensity r g b.
+  const std::string leica =
+    writeFile(folder, "scan.pts", "3\n0.5 1.5 2.5 -1773 51 45 58\n1 2 3 -1500 10 20 30\n-4 5e-2 6 0 0 0 0\n");
+  reader->SetFileName(leica.c_str());
+  check(reader->UpdatePiece(0, 1, 0) != 0 && errors->Text.empty(), "a .pts count line is read: " + errors->Text);
+  checkPoints(reader, { { 0.5, 1.5, 2.5 }, { 1.0, 2.0, 3.0 }, { -4.0, 0.05, 6.0 } }, leica);
+
   // Only comments and a header: no points, no error, a warning naming the file.
   const std::string noPoints = writeFile(folder, "header-only.xyz", "# nothing yet\nx y z\n\n");
   reader->SetFileName(noPoints.c_str());
@@ -166,6 +173,10 @@ int main(int argc, char* argv[])
     { "second-header.txt", "x y z\n0 0 0\nx y z\n", { "second-header.txt:3: expected three coordinates", "got 0" } },
     { "bad-last-line.pts", manyPoints + "7 8\n", { "bad-last-line.pts:1001: expected three coordinates per line" } },
     { "empty.xyz", "", { "empty.xyz' is empty (0 bytes): it holds no points" } },
+    { "cut-short.pts", "4\n0 0 0 1\n1 0 0 1\n0 1 0 1\n",
+      { "cut-short.pts: its first line announces 4 points, it holds 3" } },
+    { "count-later.pts", "2\n0 0 0\n1 0 0\n7\n0 1 0\n",
+      { "count-later.pts:4: expected three coordinates per line (x y z), got 1" } },
   };
   for (const RefusedFile& file : refused)
   {
