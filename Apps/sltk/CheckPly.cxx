@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -509,7 +510,114 @@ sltk::Status checkAscii(std::istream& in, const std::string& path, const std::ve
   }
   return sltk::Status::ok();
 }
+/// A scalar of a binary PLY as a double (`p` a scalar property, `bytes` its bytes in the file's order).
+double scalarValue(const unsigned char* bytes, const PlyProperty& p, bool bigEndian)
+{
+  const std::uint64_t value = listCount(bytes, p.Size, bigEndian); // the bits, whatever the host's order
+  if (!p.Integer && p.Size == 4)
+  {
+    const std::uint32_t bits = static_cast<std::uint32_t>(value);
+    float f = 0.0f;
+    std::memcpy(&f, &bits, 4);
+    return f;
+  }
+  if (!p.Integer)
+  {
+    double d = 0.0;
+    std::memcpy(&d, &value, 8);
+    return d;
+  }
+  if (p.Signed && (value >> (8 * p.Size - 1)) != 0)
+  {
+    return p.Size < 8 ? static_cast<double>(static_cast<std::int64_t>(value) - (std::int64_t(1) << (8 * p.Size)))
+                      : static_cast<double>(static_cast<std::int64_t>(value));
+  }
+  return static_cast<double>(value);
+}
+
+/// The x, y, z of the binary vertices that follow the header, read in chunks.
+sltk::Status binaryCoordinates(std::istream& in, const std::string& path, bool bigEndian, const PlyElement& vertex,
+  const int* axis, std::vector<double>& xyz)
+{
+  std::streamoff itemBytes = 0;
+  std::vector<std::streamoff> at;
+  for (const PlyProperty& p : vertex.Properties)
+  {
+    at.push_back(itemBytes);
+    itemBytes += p.Size;
+  }
+  constexpr std::int64_t Chunk = 1 << 16;
+  std::vector<unsigned char> raw(static_cast<size_t>(itemBytes * std::min<std::int64_t>(Chunk, vertex.Count)));
+  for (std::int64_t first = 0; first < vertex.Count; first += Chunk)
+  {
+    const std::int64_t n = std::min(Chunk, vertex.Count - first);
+    if (!in.read(reinterpret_cast<char*>(raw.data()), static_cast<std::streamsize>(n * itemBytes)))
+    {
+      return damaged(path, "it is truncated in its vertices");
+    }
+    for (std::int64_t i = 0; i < n; ++i)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        const PlyProperty& p = vertex.Properties[static_cast<size_t>(axis[a])];
+        xyz[static_cast<size_t>(3 * (first + i) + a)] =
+          scalarValue(raw.data() + i * itemBytes + at[static_cast<size_t>(axis[a])], p, bigEndian);
+      }
+    }
+  }
+  return sltk::Status::ok();
+}
 } // namespace
+
+sltk::Status plyCoordinatesInDouble(const std::string& path, std::vector<double>& xyz)
+{
+  xyz.clear();
+  std::ifstream in(path, std::ios::binary);
+  std::string format;
+  std::vector<PlyElement> elements;
+  SLTK_RETURN_IF_ERROR(readHeader(in, path, format, elements));
+  SLTK_RETURN_IF_ERROR(checkVertices(path, elements)); // the vertex element comes first, with x, y and z
+  const PlyElement& vertex = elements[0];
+  int axis[3] = { -1, -1, -1 };
+  bool wide = format == "ascii"; // VTK's parser reads ASCII numbers with atof into floats
+  for (size_t k = 0; k < vertex.Properties.size(); ++k)
+  {
+    const PlyProperty& p = vertex.Properties[k];
+    for (int a = 0; a < 3; ++a)
+    {
+      if (axis[a] < 0 && p.Name == std::string(1, static_cast<char>('x' + a)))
+      {
+        axis[a] = static_cast<int>(k);
+        wide = wide || p.Size == 8 || (p.Integer && p.Size == 4);
+      }
+    }
+  }
+  if (!wide)
+  {
+    return sltk::Status::ok(); // float (or a short integer) in the file: the reader's floats are exact
+  }
+  xyz.resize(static_cast<size_t>(3 * vertex.Count));
+  if (format != "ascii")
+  {
+    return binaryCoordinates(in, path, format == "binary_big_endian", vertex, axis, xyz);
+  }
+  std::string line;
+  for (std::int64_t i = 0; i < vertex.Count; ++i)
+  {
+    std::getline(in, line);
+    const std::vector<std::string> words = wordsOf(line);
+    for (int a = 0; a < 3; ++a)
+    {
+      double value = 0.0;
+      if (static_cast<size_t>(axis[a]) >= words.size() || !isNumber(words[static_cast<size_t>(axis[a])], value))
+      {
+        return damaged(path, "vertex " + std::to_string(i) + " has no number for its coordinate " + "xyz"[a]);
+      }
+      xyz[static_cast<size_t>(3 * i + a)] = value;
+    }
+  }
+  return sltk::Status::ok();
+}
 
 sltk::Status checkPlyFile(const std::string& path)
 {

@@ -15,6 +15,7 @@
 #include "sltk/core/Status.h"
 
 #include <string>
+#include <vector>
 
 namespace sltkcli
 {
@@ -24,5 +25,12 @@ namespace sltkcli
 /// data the header announces. Otherwise an I/O error naming the file, the
 /// problem and the fix.
 sltk::Status checkPlyFile(const std::string& path);
+
+/// The vertices' x, y, z in double (3 per vertex, in order) when vtkPLYReader,
+/// which stores float, would lose digits of them: the file stores them as
+/// double or 32-bit integers, or as ASCII text. Left empty when the file's own
+/// type is float (the reader's points are then exact). For a file that
+/// checkPlyFile accepted.
+sltk::Status plyCoordinatesInDouble(const std::string& path, std::vector<double>& xyz);
 
 } // namespace sltkcli

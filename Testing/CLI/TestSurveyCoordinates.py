@@ -116,6 +116,28 @@ expect(p.returncode == 2 and "STL stores 32-bit floats" in p.stderr and ".vtp or
        "an STL surface far from the origin is refused with exit 2 and the fix (%d: %s)" % (p.returncode, p.stderr))
 expect(not os.path.exists(os.path.join(tmp, "far.stl")), "no STL file is left")
 
+# A PLY that stores double is read in double (vtkPLYReader stores float, which resolves 1 at 1e7):
+# the far surface is the reference of the same reconstruction at Chamfer 0, and as a cloud it has
+# the near surface's spacing h_P.
+ref_json = os.path.join(tmp, "reference.json")
+p = subprocess.run([sltk, "reconstruct", os.path.join(tmp, "far.xyz"), "--runs", "2", "--interpolator", "q1",
+                    "--quiet", "--reference", outputs["far"]["ply"], "--json", ref_json],
+                   capture_output=True, text=True, timeout=300)
+chamfer = json.load(open(ref_json))["chamfer"] if p.returncode == 0 else None
+expect(chamfer is not None and chamfer <= TOLERANCE,
+       "a double PLY reference far from the origin is read in double (Chamfer %s, %s)" % (chamfer, p.stderr.strip()))
+
+
+def spacing(cloud):
+    p = subprocess.run([sltk, "info", cloud], capture_output=True, text=True, timeout=120)
+    line = next((l for l in p.stdout.splitlines() if l.startswith("h_P")), None)
+    return float(line.split()[1]) if p.returncode == 0 and line else None
+
+
+near_h, far_h = spacing(outputs["near"]["ply"]), spacing(outputs["far"]["ply"])
+expect(near_h is not None and far_h is not None and abs(far_h - near_h) <= 1e-6 * near_h,
+       "a double PLY cloud far from the origin is read in double (h_P %s near, %s far)" % (near_h, far_h))
+
 
 def point_set(points):
     vtk_points = vtkPoints()
