@@ -579,7 +579,7 @@ sltk::Status plyCoordinatesInDouble(const std::string& path, std::vector<double>
   SLTK_RETURN_IF_ERROR(checkVertices(path, elements)); // the vertex element comes first, with x, y and z
   const PlyElement& vertex = elements[0];
   int axis[3] = { -1, -1, -1 };
-  bool wide = format == "ascii"; // VTK's parser reads ASCII numbers with atof into floats
+  bool wide = false; // the declared type decides, in ASCII too ("property float": the file holds floats)
   for (size_t k = 0; k < vertex.Properties.size(); ++k)
   {
     const PlyProperty& p = vertex.Properties[k];
@@ -594,7 +594,7 @@ sltk::Status plyCoordinatesInDouble(const std::string& path, std::vector<double>
   }
   if (!wide)
   {
-    return sltk::Status::ok(); // float (or a short integer) in the file: the reader's floats are exact
+    return sltk::Status::ok(); // float (or a short integer) declared: the reader's floats are the file's values
   }
   xyz.resize(static_cast<size_t>(3 * vertex.Count));
   if (format != "ascii")

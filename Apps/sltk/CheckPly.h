@@ -27,9 +27,9 @@ namespace sltkcli
 sltk::Status checkPlyFile(const std::string& path);
 
 /// The vertices' x, y, z in double (3 per vertex, in order) when vtkPLYReader,
-/// which stores float, would lose digits of them: the file stores them as
-/// double or 32-bit integers, or as ASCII text. Left empty when the file's own
-/// type is float (the reader's points are then exact). For a file that
+/// which stores float, would lose digits of them: the header declares them
+/// double or 32-bit integers (binary or ASCII). Left empty when it declares
+/// float (the reader's points are then the file's values). For a file that
 /// checkPlyFile accepted.
 sltk::Status plyCoordinatesInDouble(const std::string& path, std::vector<double>& xyz);
 
