@@ -161,6 +161,59 @@ TEST(NarrowBand, DilationMatchesBruteForce)
   }
 }
 
+TEST(NarrowBand, Dilation3DWithMoreNodesMatchesBruteForce)
+{
+  // A band and a second list (a slab's ghost-row band) that overlap, one
+  // list out of order: the ascending union of the balls, in the grid.
+  sltk::GridSpec<3> g = sltk::uniformBox<3>(9, -1.0, 1.0);
+  g.Dims[1] = 7;
+  g.Dims[2] = 5;
+  const sltk::GridField<3> index(g, 0);
+  sltk::NodeList band, more;
+  for (sltk::Index n = 0; n < g.nodeCount(); ++n)
+  {
+    if (n % 7 == 0 || n % 11 == 3)
+    {
+      band.push_back(n);
+    }
+    if (n % 13 == 5)
+    {
+      more.insert(more.begin(), n); // descending
+    }
+  }
+  more.push_back(band[3]); // a node of both lists
+  std::vector<std::uint8_t> scratch;
+  for (int k : { 1, 2 })
+  {
+    sltk::NodeList dilated;
+    sltk::dilateBand(g, band, k, scratch, dilated, &more);
+    sltk::NodeList expected;
+    for (sltk::Index n = 0; n < g.nodeCount(); ++n)
+    {
+      const auto i = index.nodeIndex(n);
+      bool near = false;
+      for (const sltk::NodeList* list : { &band, &more })
+      {
+        for (const sltk::Index b : *list)
+        {
+          const auto j = index.nodeIndex(b);
+          sltk::Index r2 = 0;
+          for (int a = 0; a < 3; ++a)
+          {
+            r2 += (i[a] - j[a]) * (i[a] - j[a]);
+          }
+          near = near || r2 <= k * k;
+        }
+      }
+      if (near)
+      {
+        expected.push_back(n);
+      }
+    }
+    EXPECT_EQ(dilated, expected) << "k = " << k;
+  }
+}
+
 TEST(NarrowBand, Dilation3DAtTheGridBoundary)
 {
   sltk::GridSpec<3> g = sltk::uniformBox<3>(6, -1.0, 1.0);

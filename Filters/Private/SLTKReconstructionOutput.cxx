@@ -48,9 +48,11 @@ vtkSmartPointer<vtkDoubleArray> moveNodeValues(GridField<D>& field, Index firstR
   const Index n = rows * rowNodes;
   array->SetNumberOfTuples(n);
   double* out = array->GetPointer(0);
-  for (Index k = 0; k < n; ++k) // x fastest in both layouts
+  const Index lineNodes = field.spec().Dims[0];
+  for (Index k = 0; k < n; k += lineNodes) // x fastest in both layouts: one x line at a time
   {
-    out[k] = field(field.nodeIndex(k + firstRow * rowNodes));
+    const double* line = field.pointer(field.nodeIndex(k + firstRow * rowNodes));
+    std::copy(line, line + lineNodes, out + k);
   }
   field = GridField<D>();
   return array;

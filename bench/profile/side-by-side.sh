@@ -2,7 +2,7 @@
 # Two builds of sltk on one cloud, side by side: `sltk reconstruct CLOUD --verbose` (with the
 # options given, outputs written) alternately with build A and build B, REPEAT times each, so
 # that both see the same machine (noise on a shared 2-core machine is 10-40%). Prints per build
-# the medians of the SL step over all runs, of the reinitialisation, of the wall time and of the
+# the medians of the SL step over all runs, of the reinitialisation, of the band bookkeeping, of the wall time and of the
 # peak memory (/usr/bin/time -v), and whether the two surfaces are byte-identical (an exact change
 # must keep them so). Each build's own libraries are used (LD_LIBRARY_PATH=BUILD/lib), so a copy
 # of an old build dir can be compared with the current one.
@@ -29,16 +29,17 @@ out, repeat, builds, identical = sys.argv[1], int(sys.argv[2]), sys.argv[3:5], s
 def phase(text, name):
     return sum(float(x) for x in re.findall(r"run \d+: \d+ iterations, .*?" + name + r" ([\d.e+-]+) s", text))
 for side, build in zip("ab", builds):
-    step, reinit, wall, rss = [], [], [], []
+    step, reinit, band, wall, rss = [], [], [], [], []
     for r in range(1, repeat + 1):
         text = open(f"{out}/log.{side}.{r}.txt").read()
         step.append(phase(text, "SL step"))
         reinit.append(phase(text, "reinitialisation"))
+        band.append(phase(text, "band"))
         m, s = re.search(r"Elapsed \(wall clock\) time.*: (\d+):([\d.]+)", text).groups()
         wall.append(60 * int(m) + float(s))
         rss.append(int(re.search(r"Maximum resident set size \(kbytes\): (\d+)", text).group(1)) / 1024.0)
     med = statistics.median
-    print(f"{side} {build}: SL step {med(step):.2f} s, reinitialisation {med(reinit):.2f} s, wall {med(wall):.2f} s"
+    print(f"{side} {build}: SL step {med(step):.2f} s, reinitialisation {med(reinit):.2f} s, band {med(band):.2f} s, wall {med(wall):.2f} s"
           f" (runs {', '.join(f'{w:.1f}' for w in wall)}), peak {med(rss):.0f} MB")
 print(f"surfaces byte-identical: {identical}")
 PY

@@ -105,33 +105,55 @@ void PointLocator<D>::search(const std::array<double, D>& x, std::int64_t exclud
       lo[a] = std::max<std::int64_t>(0, centre[a] - ring);
       hi[a] = std::min<std::int64_t>(this->Count[a] - 1, centre[a] + ring);
     }
-    forEachIndexInBox<D>(lo, hi,
-      [&](const std::array<Index, D>& b)
+    const auto visitBucket = [&](const std::array<std::int64_t, D>& b)
+    {
+      const std::int64_t id = this->bucketOf(b);
+      for (std::int64_t p = this->Start[static_cast<size_t>(id)]; p < this->Start[static_cast<size_t>(id) + 1]; ++p)
       {
-        bool onShell = false;
+        const std::int64_t k = this->Points[static_cast<size_t>(p)];
+        if (k == exclude)
+        {
+          continue;
+        }
+        double d2 = 0.0;
         for (int a = 0; a < D; ++a)
         {
-          onShell = onShell || b[a] == centre[a] - ring || b[a] == centre[a] + ring;
+          const double d = this->Cloud->Points[static_cast<size_t>(k)][a] - x[a];
+          d2 += d * d;
         }
-        if (!onShell && ring != 0)
+        visit(k, std::sqrt(d2));
+      }
+    };
+    // The buckets of the ring's shell only (Chebyshev distance `ring` from the
+    // centre's bucket), in the box's order (x fastest): a row along x whose
+    // other coordinates lie inside the shell meets it at its two ends only, so
+    // a ring costs O(ring^(D-1)) buckets, not O(ring^D).
+    std::array<Index, D> rowsLow = lo, rowsHigh = hi;
+    rowsHigh[0] = rowsLow[0]; // one visit per row along x
+    forEachIndexInBox<D>(rowsLow, rowsHigh,
+      [&](const std::array<Index, D>& row)
+      {
+        std::array<std::int64_t, D> b = row;
+        bool rowOnShell = ring == 0;
+        for (int a = 1; a < D; ++a)
         {
+          rowOnShell = rowOnShell || b[a] == centre[a] - ring || b[a] == centre[a] + ring;
+        }
+        if (rowOnShell)
+        {
+          for (b[0] = lo[0]; b[0] <= hi[0]; ++b[0])
+          {
+            visitBucket(b);
+          }
           return;
         }
-        const std::int64_t id = this->bucketOf(b);
-        for (std::int64_t p = this->Start[static_cast<size_t>(id)]; p < this->Start[static_cast<size_t>(id) + 1]; ++p)
+        for (const std::int64_t end : { centre[0] - ring, centre[0] + ring })
         {
-          const std::int64_t k = this->Points[static_cast<size_t>(p)];
-          if (k == exclude)
+          if (end >= lo[0] && end <= hi[0])
           {
-            continue;
+            b[0] = end;
+            visitBucket(b);
           }
-          double d2 = 0.0;
-          for (int a = 0; a < D; ++a)
-          {
-            const double d = this->Cloud->Points[static_cast<size_t>(k)][a] - x[a];
-            d2 += d * d;
-          }
-          visit(k, std::sqrt(d2));
         }
       });
   }

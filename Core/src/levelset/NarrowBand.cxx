@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/levelset/NarrowBand.h"
 
+#include "sltk/grid/NodeIndexer.h"
 #include "sltk/levelset/CutOff.h"
 
 #include <algorithm>
@@ -131,6 +132,7 @@ void dilateBand(const GridSpec<D>& grid, const NodeList& band, int k, std::vecto
     stride[a] = s;
     s *= grid.Dims[a];
   }
+  const NodeIndexer<D> indexer(grid.Dims);
   dilated.clear();
   dilated.reserve(band.size() * 2);
   const auto mark = [&](const Index node)
@@ -139,13 +141,7 @@ void dilateBand(const GridSpec<D>& grid, const NodeList& band, int k, std::vecto
     {
       return; // not a node of this grid
     }
-    std::array<Index, D> i;
-    Index rest = node;
-    for (int a = 0; a < D; ++a)
-    {
-      i[a] = rest % grid.Dims[a];
-      rest /= grid.Dims[a];
-    }
+    const std::array<Index, D> i = indexer(node);
     for (const auto& o : ball)
     {
       bool inside = true;

@@ -190,9 +190,23 @@ private:
   bool classifyNode(Index p, double* block)
   {
     const std::array<Index, D> i = this->Stencil.node(this->Band[p]);
-    this->Stencil.block(i, block);
     this->Offset[p] = this->Phi.offset(i);
-    const std::uint8_t boundary = this->Stencil.interior(i) ? 0 : RoleBoundary;
+    const bool interior = this->Stencil.interior(i);
+    const std::uint8_t boundary = interior ? 0 : RoleBoundary;
+    if (interior)
+    {
+      // Most band nodes are away from the front: their axis neighbours decide
+      // (1.38) and give (1.31); only the front's nodes read the whole 3^D block.
+      double u[ReinitStencil<D>::AxisSize];
+      this->Stencil.axesInterior(this->Phi.storage().data() + this->Offset[p], u);
+      if (!axesAdjacentToInterface<D>(u))
+      {
+        this->Role[p] = RolePde;
+        this->Coefficient[p] = reinitSign(u[0], axesCentralGradientNorm<D>(u, this->InverseSpacing), this->H); // (1.31)
+        return false;
+      }
+    }
+    this->Stencil.block(i, block);
     const bool near = adjacentToInterface<D>(block); // (1.38)
     if (near && this->Options.Method == ReinitMethod::Constrained)
     {

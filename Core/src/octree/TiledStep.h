@@ -66,7 +66,7 @@ double largestFoot(
   {
     const auto i = phi.nodeIndex(k);
     const double d = dist(i);
-    const double scale = cutOff(phi(i), par.Widths) * (par.P == 1.0 ? 1.0 : std::pow(d / par.Energy, par.P - 1.0));
+    const double scale = detail::stepScale(phi(i), d, par);
     const auto gd = detail::centredGradient(dist, dist.pointer(i));
     const auto gp = detail::centredGradient(phi, phi.pointer(i));
     double nd = 0.0, np = 0.0;

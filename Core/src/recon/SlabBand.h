@@ -71,8 +71,7 @@ public:
 
   Status energy(const EnergyOptions& options, EnergyResult& ep)
   {
-    SLTK_RETURN_IF_ERROR(
-      this->Slab.agree(energyFunctional(this->Phi, this->Dist, this->Band, this->Ctx, ep, options)));
+    SLTK_RETURN_IF_ERROR(this->Slab.agree(energyFunctional(this->Phi, this->Dist, this->Band, this->Ctx, ep, options)));
     reduceEnergy(ep, options, this->Slab.comm());
     return Status::ok();
   }
@@ -82,8 +81,8 @@ public:
   double farFraction(double far) const
   {
     const SlabPlan& s = this->Slab.slab();
-    const double count = sumOverPoints<D, Interp>(this->Phi, this->Cloud, this->Ctx, s.Begin, s.End,
-      this->Slab.rows(), [far](double v) { return std::fabs(v) > far ? 1.0 : 0.0; });
+    const double count = sumOverPoints<D, Interp>(this->Phi, this->Cloud, this->Ctx, s.Begin, s.End, this->Slab.rows(),
+      [far](double v) { return std::fabs(v) > far ? 1.0 : 0.0; });
     return this->Slab.sum(count) / static_cast<double>(this->Cloud.size());
   }
 
@@ -95,10 +94,15 @@ public:
       &this->GhostBand);
     this->Slab.keepOwned(this->ReinitBand);
     this->Previous.resize(this->ReinitBand.size());
-    for (size_t k = 0; k < this->ReinitBand.size(); ++k)
-    {
-      this->Previous[k] = this->Phi(this->Phi.nodeIndex(this->ReinitBand[k]));
-    }
+    this->Ctx.parallelFor(0, static_cast<Index>(this->ReinitBand.size()),
+      [&](Index b, Index e)
+      {
+        for (Index k = b; k < e; ++k)
+        {
+          this->Previous[static_cast<size_t>(k)] =
+            this->Phi(this->Phi.nodeIndex(this->ReinitBand[static_cast<size_t>(k)]));
+        }
+      });
     // (4.22)/(4.24); on slabs the feet beyond the window are interpolated by their owners.
     const bool distributed = this->Slab.distributed();
     SLTK_RETURN_IF_ERROR(this->Slab.agree(levelSetStepValues<Interp, D>(
@@ -106,8 +110,8 @@ public:
     if (distributed)
     {
       double feet = 0.0;
-      SLTK_RETURN_IF_ERROR(
-        resolveFarFeet<Interp>(this->Phi, this->Far, this->Slab.whole(), this->Slab.boundaries(), this->Slab.comm(), feet));
+      SLTK_RETURN_IF_ERROR(resolveFarFeet<Interp>(
+        this->Phi, this->Far, this->Slab.whole(), this->Slab.boundaries(), this->Slab.comm(), feet));
       SLTK_RETURN_IF_ERROR(this->Slab.agree(finishFarNodes(this->Far, this->StepScratch)));
       this->FarFeetCount += static_cast<Index>(feet);
     }
@@ -156,8 +160,8 @@ public:
     {
       this->Phi.fillGhosts();
       const SlabPlan& s = this->Slab.slab();
-      record.CloudError = this->Slab.sum(cloudErrorSum<D, Interp>(
-                            this->Phi, this->Cloud, this->Ctx, s.Begin, s.End, this->Slab.rows())) /
+      record.CloudError =
+        this->Slab.sum(cloudErrorSum<D, Interp>(this->Phi, this->Cloud, this->Ctx, s.Begin, s.End, this->Slab.rows())) /
         static_cast<double>(this->Cloud.size());
     }
     record.FarPoints = this->farFraction(far);

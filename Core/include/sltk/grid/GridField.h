@@ -8,6 +8,7 @@
 /// two ghost layers by linear extrapolation).
 
 #include "sltk/grid/GridSpec.h"
+#include "sltk/grid/NodeIndexer.h"
 
 #include <vector>
 
@@ -22,14 +23,12 @@ public:
   static constexpr int Dim = D;
 
   GridField() = default;
-  GridField(const GridSpec<D>& spec, int ghost, T value = T(0))
-  {
-    this->resize(spec, ghost, value);
-  }
+  GridField(const GridSpec<D>& spec, int ghost, T value = T(0)) { this->resize(spec, ghost, value); }
 
   void resize(const GridSpec<D>& spec, int ghost, T value = T(0))
   {
     this->Spec = spec;
+    this->Indexer = NodeIndexer<D>(spec.Dims);
     this->Ghost = ghost;
     Index total = 1;
     for (int a = 0; a < D; ++a)
@@ -68,7 +67,10 @@ public:
   }
 
   T& operator()(const std::array<Index, D>& i) { return this->Values[static_cast<size_t>(this->offset(i))]; }
-  const T& operator()(const std::array<Index, D>& i) const { return this->Values[static_cast<size_t>(this->offset(i))]; }
+  const T& operator()(const std::array<Index, D>& i) const
+  {
+    return this->Values[static_cast<size_t>(this->offset(i))];
+  }
 
   /// Pointer to node i (each i[a] in [-ghost, N + ghost)).
   T* pointer(const std::array<Index, D>& i) { return this->Values.data() + this->offset(i); }
@@ -79,16 +81,7 @@ public:
   const T* origin() const { return this->Values.data() + this->Base; }
 
   /// Multi-index of the k-th interior node in x-fastest order, k in [0, nodeCount).
-  std::array<Index, D> nodeIndex(Index k) const
-  {
-    std::array<Index, D> i{};
-    for (int a = 0; a < D; ++a)
-    {
-      i[a] = k % this->Spec.Dims[a];
-      k /= this->Spec.Dims[a];
-    }
-    return i;
-  }
+  std::array<Index, D> nodeIndex(Index k) const { return this->Indexer(k); }
 
   /// Fills all ghost layers from interior values, axis by axis (so corners
   /// are consistent): periodic copies, or linear extrapolation from the two
@@ -148,6 +141,7 @@ private:
   }
 
   GridSpec<D> Spec{};
+  NodeIndexer<D> Indexer{}; // nodeIndex() without a division per axis
   int Ghost = 0;
   std::array<Index, D> Stride{};
   Index Base = 0;

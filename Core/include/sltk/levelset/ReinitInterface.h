@@ -30,15 +30,29 @@
 namespace sltk
 {
 
-/// (1.38): the node or an axis neighbour is on the front (phi0_i phi0_alpha <= 0).
+/// The node and its axis neighbours out of its 3^D block, in the layout of
+/// ReinitStencil::axes() (u[0] the node, u[1 + 2a] = i - e_a, u[2 + 2a] = i + e_a).
 template <int D>
-inline bool adjacentToInterface(const double* block)
+inline void axesOfBlock(const double* block, double* u)
 {
   constexpr int c = ReinitStencil<D>::Centre;
+  u[0] = block[c];
   for (int a = 0; a < D; ++a)
   {
     const int s = ReinitStencil<D>::blockStride(a);
-    if (block[c] * block[c - s] <= 0.0 || block[c] * block[c + s] <= 0.0)
+    u[1 + 2 * a] = block[c - s];
+    u[2 + 2 * a] = block[c + s];
+  }
+}
+
+/// (1.38) from the axis neighbourhood u (ReinitStencil::axes()): the node or an
+/// axis neighbour is on the front (phi0_i phi0_alpha <= 0).
+template <int D>
+inline bool axesAdjacentToInterface(const double* u)
+{
+  for (int a = 0; a < D; ++a)
+  {
+    if (u[0] * u[1 + 2 * a] <= 0.0 || u[0] * u[2 + 2 * a] <= 0.0)
     {
       return true;
     }
@@ -46,19 +60,35 @@ inline bool adjacentToInterface(const double* block)
   return false;
 }
 
-/// |D phi0| at the node by central differences.
+/// |D phi0| at the node by central differences, from its axis neighbourhood u.
 template <int D>
-inline double centralGradientNorm(const double* block, const double* inverseSpacing)
+inline double axesCentralGradientNorm(const double* u, const double* inverseSpacing)
 {
-  constexpr int c = ReinitStencil<D>::Centre;
   double sum = 0.0;
   for (int a = 0; a < D; ++a)
   {
-    const int s = ReinitStencil<D>::blockStride(a);
-    const double g = 0.5 * (block[c + s] - block[c - s]) * inverseSpacing[a];
+    const double g = 0.5 * (u[2 + 2 * a] - u[1 + 2 * a]) * inverseSpacing[a];
     sum += g * g;
   }
   return std::sqrt(sum);
+}
+
+/// (1.38) from the node's 3^D block.
+template <int D>
+inline bool adjacentToInterface(const double* block)
+{
+  double u[ReinitStencil<D>::AxisSize];
+  axesOfBlock<D>(block, u);
+  return axesAdjacentToInterface<D>(u);
+}
+
+/// |D phi0| at the node by central differences, from its 3^D block.
+template <int D>
+inline double centralGradientNorm(const double* block, const double* inverseSpacing)
+{
+  double u[ReinitStencil<D>::AxisSize];
+  axesOfBlock<D>(block, u);
+  return axesCentralGradientNorm<D>(u, inverseSpacing);
 }
 
 /// Explicit signed distance (1.37) of a node of X, capped by the distance to

@@ -125,6 +125,14 @@ bool footInWindow(const GridSpec<D>& window, const FarFeet<D>& far, double row)
 
 namespace detail
 {
+/// The scale factor with cut-off of (4.32), c(phi) (d / E_p)^(p-1); p = 2 (runs 2
+/// and later of Table 4.1) without a call of pow (pow(x, 1) is x).
+inline double stepScale(double phi, double d, const LevelSetStepParameters& par)
+{
+  const double ratio = d / par.Energy;
+  return cutOff(phi, par.Widths) * (par.P == 1.0 ? 1.0 : (par.P == 2.0 ? ratio : std::pow(ratio, par.P - 1.0)));
+}
+
 /// The advection's direction at a band node: grad d (centred), or grad phi
 /// through a tunnel (4.5.6: DetectTunnels, 0.6 h_P < d < 2 dx and |grad d| < 0.5).
 template <int D, class Vector>
@@ -303,7 +311,7 @@ Status levelSetStepValues(const Context& ctx, GridField<D>& phi, const GridField
         {
           const double d = *pd;
           // scale factor with cut-off (4.32)
-          const double scale = cutOff(*pp, par.Widths) * (par.P == 1.0 ? 1.0 : std::pow(d / par.Energy, par.P - 1.0));
+          const double scale = detail::stepScale(*pp, d, par);
           const auto gd = detail::advectionDirection(dist, pd, gphi, par);
           std::array<std::array<double, D>, D - 1> sigma;
           detail::tangentFrame(gphi, norm, sigma);
