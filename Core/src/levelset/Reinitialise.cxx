@@ -193,36 +193,39 @@ private:
     this->Offset[p] = this->Phi.offset(i);
     const bool interior = this->Stencil.interior(i);
     const std::uint8_t boundary = interior ? 0 : RoleBoundary;
+    // The axis neighbours decide (1.38) and give (1.31); only the front's nodes
+    // need the whole 3^D block, so an interior node away from it reads 1 + 2D values.
+    // (Beyond the grid the block extrapolates, as (1.37) and (1.44) read it.)
+    double u[ReinitStencil<D>::AxisSize];
     if (interior)
     {
-      // Most band nodes are away from the front: their axis neighbours decide
-      // (1.38) and give (1.31); only the front's nodes read the whole 3^D block.
-      double u[ReinitStencil<D>::AxisSize];
       this->Stencil.axesInterior(this->Phi.storage().data() + this->Offset[p], u);
-      if (!axesAdjacentToInterface<D>(u))
-      {
-        this->Role[p] = RolePde;
-        this->Coefficient[p] = reinitSign(u[0], axesCentralGradientNorm<D>(u, this->InverseSpacing), this->H); // (1.31)
-        return false;
-      }
     }
-    this->Stencil.block(i, block);
-    const bool near = adjacentToInterface<D>(block); // (1.38)
-    if (near && this->Options.Method == ReinitMethod::Constrained)
+    else
+    {
+      this->Stencil.block(i, block);
+      axesOfBlock<D>(block, u);
+    }
+    const bool near = axesAdjacentToInterface<D>(u); // (1.38)
+    if (!near || this->Options.Method == ReinitMethod::Plain)
+    {
+      this->Role[p] = RolePde | boundary;
+      this->Coefficient[p] = reinitSign(u[0], axesCentralGradientNorm<D>(u, this->InverseSpacing), this->H); // (1.31)
+      return near;
+    }
+    if (interior)
+    {
+      this->Stencil.block(i, block);
+    }
+    if (this->Options.Method == ReinitMethod::Constrained)
     {
       this->Role[p] = RoleFixed | boundary;
       this->Coefficient[p] = constrainedDistance<D>(this->Stencil, i, block, this->InverseSpacing, this->Spacing);
     }
-    else if (near && this->Options.Method == ReinitMethod::RussoSmereka)
+    else // ReinitMethod::RussoSmereka
     {
       this->Role[p] = RoleRelax | boundary;
       this->Coefficient[p] = interfaceDistance<D>(block, this->InverseSpacing, this->Spacing); // (1.37)
-    }
-    else
-    {
-      this->Role[p] = RolePde | boundary;
-      this->Coefficient[p] = reinitSign(
-        block[ReinitStencil<D>::Centre], centralGradientNorm<D>(block, this->InverseSpacing), this->H); // (1.31)
     }
     return near;
   }

@@ -35,8 +35,6 @@ public:
   {
   }
 
-  Index divisor() const { return this->Divisor; }
-
   /// quotient = k / d, remainder = k % d (C++ semantics for every k).
   void divide(Index k, Index& quotient, Index& remainder) const
   {
