@@ -213,6 +213,16 @@ public:
   ///@}
 
   ///@{
+  /// SeedFarPoints (default off): each run after the first starts from the
+  /// previous run's surface united with balls around the points that run left
+  /// outside by more than a cell and h_P, so thin parts a coarse run lost grow
+  /// back on the finer grids (it can add a piece: the teapot); off: the thesis's transfer.
+  virtual void SetSeedFarPoints(bool value);
+  virtual bool GetSeedFarPoints();
+  vtkBooleanMacro(SeedFarPoints, bool);
+  ///@}
+
+  ///@{
   /// Memory budget of the automatic CellSizeFactor in MB; 0 (default): 1024 MB.
   /// With an explicit CellSizeFactor, 0 means the memory available. Under
   /// several ranks the check sizes the windows of the ranks on each machine

@@ -4,7 +4,7 @@
 # by the semi-Lagrangian level-set method (thesis Algorithm 1, WENO3), written as
 # a signed distance (.vti), a surface (.ply) and a picture (.png).
 # With the default (automatic) options: this bunny is sparse, its ears about one
-# point spacing thick; the first attempt (C_dx = 1) loses them, sees that 2.7% of
+# point spacing thick; the first attempt (C_dx = 1) loses them, sees that 2.6% of
 # the points end far from the surface, and reconstructs again from C_dx = 0.5 with
 # one run fewer (Documentation/Numerics.md, "Automatic parameters").
 set -euo pipefail

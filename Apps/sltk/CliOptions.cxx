@@ -260,6 +260,10 @@ void addPlanOptions(CLI::App* app, sltk::ReconstructionOptions& options)
     "--thesis-stopping", [&options]() { options.FollowFarPoints = false; },
     "stop a run by the energy rule (4.33) alone, even while the surface is\nstill approaching points left far from it");
   app->add_flag_callback(
+    "--seed-far-points", [&options]() { options.SeedFarPoints = true; },
+    "start each run after the first from the previous run's surface united\nwith balls around the points it left "
+    "outside (thin parts a coarse run\nlost grow back; off by default: it can add a piece)");
+  app->add_flag_callback(
     "--no-cleaning", [&options]() { options.Cleaning.Automatic = false; },
     "use the cloud as given (no automatic outlier removal or thinning)");
   addChoice(

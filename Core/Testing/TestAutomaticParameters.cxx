@@ -191,35 +191,6 @@ TEST(AutomaticParameters, DenseCloudIsThinnedToTheGrid)
 
 namespace
 {
-/// A disc of radius 0.5 with a fin 0.5 long and `thickness` thick on its +x side,
-/// its outline sampled every 0.01 (h_P about 0.01; in 2D run 1's cells are
-/// C_dx h_P, Table 4.1).
-sltk::PointCloud<2> discWithFin(double thickness)
-{
-  constexpr double pi = 3.14159265358979323846;
-  const double half = 0.5 * thickness, step = 0.01;
-  sltk::PointCloud<2> cloud;
-  for (int k = 0; k < 314; ++k)
-  {
-    const double a = 2.0 * pi * k / 314.0;
-    const std::array<double, 2> p{ 0.5 * std::cos(a), 0.5 * std::sin(a) };
-    if (!(p[0] > 0.0 && std::fabs(p[1]) < half))
-    {
-      cloud.Points.push_back(p);
-    }
-  }
-  for (double x = 0.5; x < 1.0; x += step)
-  {
-    cloud.Points.push_back({ x, half });
-    cloud.Points.push_back({ x, -half });
-  }
-  for (double y = -half; y <= half; y += step)
-  {
-    cloud.Points.push_back({ 1.0, y });
-  }
-  return cloud;
-}
-
 /// phi at the node nearest to p.
 double phiNear(const sltk::GridField<2>& phi, double x, double y)
 {
@@ -233,29 +204,48 @@ double phiNear(const sltk::GridField<2>& phi, double x, double y)
 TEST(AutomaticParameters, ThinFeatureLostByRunOneIsRecovered)
 {
   sltk::Context ctx;
-  const sltk::PointCloud<2> cloud = discWithFin(0.016);
-  // A fin 1.6 h_P thick. Given C_dx = 1, run 1 (cells of h_P) loses it, the later
-  // runs do not bring it back, and it is said (the far points of the last run).
+  const sltk::PointCloud<2> cloud = sltk::discWithFinCloud(0.016);
+  // A fin 1.6 h_P thick. Given C_dx = 1, run 1 (cells of h_P) loses it; without
+  // the seeds (the thesis's transfer) the later runs do not bring it back, and
+  // it is said (the far points of the last run).
   sltk::ReconstructionOptions given;
   given.CellSizeFactor = 1.0;
+  given.SeedFarPoints = false;
   sltk::ReconstructionResult<2> lost;
   ASSERT_TRUE(sltk::reconstruct(cloud, given, ctx, lost).isOk());
   ASSERT_EQ(lost.Runs.size(), 3u);
   EXPECT_GT(lost.Runs.back().FarPoints, 0.01) << "above the warning threshold";
   EXPECT_GT(phiNear(lost.SignedDistance, 0.75, 0.0), 0.0) << "the fin was expected to be lost at C_dx = 1";
   EXPECT_TRUE(lost.Recoveries.empty()) << "an explicit C_dx is used as given";
-  // Its points lie within 1.6 h_P of the surface: beyond h_P (two finest cells are h_P / 2 here) only
-  // 1.9% of the cloud, under FitShare: a warning with advice, not a result that misses the cloud.
-  EXPECT_GT(lost.Runs.back().MisfitPoints, 0.01);
-  EXPECT_LT(lost.Runs.back().MisfitPoints, sltk::FitShare);
-  EXPECT_TRUE(lost.FitsCloud);
-  ASSERT_EQ(lost.Warnings.size(), 1u) << "the result says what it does not fit, and what may help";
-  EXPECT_NE(lost.Warnings[0].find("try half the C_dx with one run fewer"), std::string::npos) << lost.Warnings[0];
+  // The fin's points lie beyond the last run's band (|phi| cut at gamma = h_P here): they count as
+  // far and as missed (RunIterations.h, FarBandShare), so the result says it does not fit the cloud
+  // first, then what may help.
+  EXPECT_GT(lost.Runs.back().MisfitPoints, sltk::FitShare);
+  EXPECT_FALSE(lost.FitsCloud);
+  ASSERT_EQ(lost.Warnings.size(), 2u) << "the result says what it does not fit, and what may help";
+  EXPECT_NE(lost.Warnings[0].find("does not fit the cloud"), std::string::npos) << lost.Warnings[0];
+  EXPECT_NE(lost.Warnings[1].find("try half the C_dx with one run fewer"), std::string::npos) << lost.Warnings[1];
 
-  // Automatic C_dx: the same first attempt, then half the cell size with one run
-  // fewer, which keeps the fin and ends on the same finest grid.
+  // With the seeds (SeedFarPoints), run 2 starts from run 1's surface united with
+  // balls around the fin's points, and the fin grows back on the same grids.
+  given.SeedFarPoints = true;
+  sltk::ReconstructionResult<2> seeded;
+  ASSERT_TRUE(sltk::reconstruct(cloud, given, ctx, seeded).isOk());
+  ASSERT_EQ(seeded.Runs.size(), 3u);
+  EXPECT_GT(seeded.Runs[0].FarPoints, 0.01) << "run 1 still loses the fin";
+  EXPECT_LT(seeded.Runs.back().FarPoints, 0.01);
+  EXPECT_TRUE(seeded.Recoveries.empty());
+  EXPECT_TRUE(seeded.Warnings.empty()) << seeded.Warnings.front();
+  EXPECT_LT(phiNear(seeded.SignedDistance, 0.75, 0.0), 0.0) << "the fin's middle is inside";
+  EXPECT_GT(phiNear(seeded.SignedDistance, 0.75, 0.1), 0.0) << "beside the fin is outside";
+  EXPECT_EQ(seeded.SignedDistance.spec().Spacing[0], lost.SignedDistance.spec().Spacing[0]);
+
+  // Automatic C_dx without the seeds: the same first attempt, then half the cell
+  // size with one run fewer, which keeps the fin and ends on the same finest grid.
+  sltk::ReconstructionOptions automatic;
+  automatic.SeedFarPoints = false;
   sltk::ReconstructionResult<2> kept;
-  const sltk::Status status = sltk::reconstruct(cloud, sltk::ReconstructionOptions{}, ctx, kept);
+  const sltk::Status status = sltk::reconstruct(cloud, automatic, ctx, kept);
   ASSERT_TRUE(status.isOk()) << status.message();
   ASSERT_EQ(kept.Recoveries.size(), 1u);
   EXPECT_NE(kept.Recoveries[0].find("reconstructed again from C_dx = 0.5"), std::string::npos) << kept.Recoveries[0];
@@ -268,6 +258,16 @@ TEST(AutomaticParameters, ThinFeatureLostByRunOneIsRecovered)
   EXPECT_LT(phiNear(kept.SignedDistance, 0.75, 0.0), 0.0) << "the fin's middle is inside";
   EXPECT_GT(phiNear(kept.SignedDistance, 0.75, 0.1), 0.0) << "beside the fin is outside";
   EXPECT_EQ(kept.SignedDistance.spec().Spacing[0], lost.SignedDistance.spec().Spacing[0]) << "the same finest grid";
+
+  // With the seeds no restart is needed.
+  sltk::ReconstructionOptions seeding;
+  seeding.SeedFarPoints = true;
+  sltk::ReconstructionResult<2> first;
+  ASSERT_TRUE(sltk::reconstruct(cloud, seeding, ctx, first).isOk());
+  EXPECT_TRUE(first.Recoveries.empty()) << first.Recoveries.front();
+  EXPECT_EQ(first.CellSizeFactor, 1.0);
+  EXPECT_LT(first.Runs.back().FarPoints, 0.01);
+  EXPECT_LT(phiNear(first.SignedDistance, 0.75, 0.0), 0.0) << "the fin's middle is inside";
 }
 
 TEST(AutomaticParameters, ResultThatMissesTheCloudSaysSo)

@@ -34,9 +34,17 @@ sltk::PointCloud<2> unevenCircle(int n)
   return cloud;
 }
 
+/// The agreement the header states; a thin part amplifies the last bits (see the fin's test).
+struct Agreement
+{
+  double Phi = 1e-12;        ///< of a cell
+  double CloudError = 1e-12; ///< relative
+};
+
 /// Returns the feet interpolated by another rank over all runs (FarFeetExchange.h).
 template <int D>
-sltk::Index expectSameAsOneRank(const sltk::PointCloud<D>& cloud, const sltk::ReconstructionOptions& options)
+sltk::Index expectSameAsOneRank(
+  const sltk::PointCloud<D>& cloud, const sltk::ReconstructionOptions& options, Agreement agreement = {})
 {
   auto comm = world();
   sltk::ReconstructionPlan<D> plan;
@@ -54,7 +62,8 @@ sltk::Index expectSameAsOneRank(const sltk::PointCloud<D>& cloud, const sltk::Re
   for (size_t r = 0; r < one.Runs.size(); ++r)
   {
     EXPECT_EQ(mine.Runs[r].Iterations, one.Runs[r].Iterations) << "run " << r + 1;
-    EXPECT_NEAR(mine.Runs[r].CloudError, one.Runs[r].CloudError, 1e-12 * one.Runs[r].CloudError) << "run " << r + 1;
+    EXPECT_NEAR(mine.Runs[r].CloudError, one.Runs[r].CloudError, agreement.CloudError * one.Runs[r].CloudError)
+      << "run " << r + 1;
   }
   EXPECT_EQ(mine.History.size(), one.History.size());
   for (size_t k = 0; k < std::min(one.History.size(), mine.History.size()); ++k)
@@ -79,7 +88,7 @@ sltk::Index expectSameAsOneRank(const sltk::PointCloud<D>& cloud, const sltk::Re
       std::max(distGap, std::fabs(mine.Distance(mine.Distance.nodeIndex(k)) - one.Distance(one.Distance.nodeIndex(w))));
   }
   const double dx = whole.Spacing[0];
-  EXPECT_LE(phiGap, 1e-12 * dx) << "rank " << comm->rank() << " of " << comm->size();
+  EXPECT_LE(phiGap, agreement.Phi * dx) << "rank " << comm->rank() << " of " << comm->size();
   EXPECT_LE(distGap, 1e-10 * dx) << "rank " << comm->rank() << " of " << comm->size();
   std::printf("rank %d of %d: rows %lld..%lld, %zu runs, largest gap phi %.3g dx, d %.3g dx\n", comm->rank(),
     comm->size(), static_cast<long long>(slab.Begin), static_cast<long long>(slab.End), one.Runs.size(), phiGap / dx,
@@ -106,6 +115,29 @@ TEST(ReconstructionSlabs, SphereWithTheThesisParametersIsTheOneRankReconstructio
   options.OutsideThresholdFactor = 10.0;
   options.Runs = 2;
   expectSameAsOneRank<3>(sltk::sphereCloud(600), options);
+}
+
+TEST(ReconstructionSlabs, BallsSeededAroundALostFinAreTheOneRankBalls)
+{
+  // Run 1 at C_dx = 1 loses the fin; each rank finds the fin's points in its own
+  // rows and every rank adds all the balls (recon/FarPointSeeds.h). The same
+  // iterations, but a looser agreement than the header's: on 2 and 3 ranks phi
+  // within 1e-6 of a cell and Err_P within 1e-8 of itself (measured; on 4 ranks
+  // 3e-14 of a cell; without the seeds, 2 ranks, 7e-11 of a cell). The fin
+  // amplifies some last-bit difference; its cause is not found yet. The bounds
+  // are ten times the measured ones.
+  const sltk::PointCloud<2> cloud = sltk::discWithFinCloud(0.016);
+  sltk::ReconstructionOptions options;
+  options.CellSizeFactor = 1.0;
+  options.SeedFarPoints = true;
+  Agreement fin;
+  fin.Phi = 1e-5;
+  fin.CloudError = 1e-7;
+  expectSameAsOneRank<2>(cloud, options, fin);
+  sltk::ReconstructionResult<2> one;
+  ASSERT_TRUE(sltk::reconstruct(cloud, options, sltk::Context{}, one).isOk());
+  EXPECT_GT(one.Runs.front().FarPoints, 0.01) << "run 1 was expected to lose the fin";
+  EXPECT_LT(one.Runs.back().FarPoints, 0.01) << "the seeds were expected to bring it back";
 }
 
 TEST(ReconstructionSlabs, FeetBeyondTheGhostRowsAreInterpolatedByTheirOwners)

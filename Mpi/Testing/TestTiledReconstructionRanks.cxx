@@ -155,6 +155,17 @@ TEST(TiledReconstructionRanks, SphereWithTheDefaultsIsTheOneRankReconstruction)
   }
 }
 
+TEST(TiledReconstructionRanks, BallsSeededAroundALostFinAreTheOneRankBalls)
+{
+  // Run 1 at C_dx = 1 loses the fin; run 3's balls come from the tiles of run 2,
+  // each rank's own points (recon/FarPointSeeds.h).
+  sltk::ReconstructionOptions options;
+  options.CellSizeFactor = 1.0;
+  options.OctreeStorage = true;
+  options.SeedFarPoints = true;
+  expectSameAsOneRank<2>(sltk::discWithFinCloud(0.016), options);
+}
+
 TEST(TiledReconstructionRanks, FeetBeyondOneTileReadDeeperGhostLayers)
 {
   // eta = 6 spreads the feet of runs 2 and 3 (4.9) beyond one tile of 8 nodes (p = 1: a stable run).

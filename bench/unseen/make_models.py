@@ -73,6 +73,28 @@ def two_spheres(x, y, z):
     return np.minimum(sphere(x, y, z, (-1.15, 0, 0)), sphere(x, y, z, (1.15, 0, 0)))
 
 
+def capsule(x, y, z, a, b, r):
+    """Distance to the segment a-b minus r: a limb of radius r."""
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    ab = b - a
+    t = np.clip(((x - a[0]) * ab[0] + (y - a[1]) * ab[1] + (z - a[2]) * ab[2]) / ab.dot(ab), 0.0, 1.0)
+    return np.sqrt((x - a[0] - t * ab[0]) ** 2 + (y - a[1] - t * ab[1]) ** 2 + (z - a[2] - t * ab[2]) ** 2) - r
+
+
+def animal(x, y, z):
+    # a four-legged body (an ellipsoid 2.4 x 1 x 1) with a head, legs 0.04 thick and 0.7
+    # long, and two horns 0.03 thick: on the 0.02 grid (h_P about 0.01) 4 and 3 point
+    # spacings, the thin limbs of issue "Real-world clouds"; genus 0
+    body = (np.sqrt((x / 1.2) ** 2 + (y / 0.5) ** 2 + (z / 0.5) ** 2) - 1.0) * 0.5
+    d = smooth_min(body, sphere(x, y, z, (1.3, 0.0, 0.2), 0.32), 0.1)
+    for lx in (-0.8, 0.8):
+        for lz in (-0.25, 0.25):
+            d = smooth_min(d, capsule(x, y, z, (lx, -0.3, lz), (lx, -1.0, lz), 0.02), 0.03)
+    for hz in (-0.12, 0.12):
+        d = smooth_min(d, capsule(x, y, z, (1.35, 0.2, 0.2 + hz), (1.6, 0.75, 0.2 + 2.5 * hz), 0.015), 0.02)
+    return d
+
+
 def contour(f, lo, hi, h):
     """Zero level set of f sampled with spacing h on the box [lo, hi] (shifted by h/pi so that
     no node lies exactly on the surface)."""
@@ -157,6 +179,7 @@ MODELS = {
     "double_torus": (double_torus, (-2.5, -1.5, -0.5), (2.5, 1.5, 0.5), 0.03, 2, 1, None),
     "part3": (part3, (-2.2, -1.0, -0.5), (2.2, 1.0, 0.5), 0.025, 3, 1, None),
     "two_spheres": (two_spheres, (-2.3, -1.2, -1.2), (2.3, 1.2, 1.2), 0.035, 0, 2, None),
+    "animal": (animal, (-1.4, -1.1, -0.65), (1.8, 0.9, 0.65), 0.02, 0, 1, None),
     "torus_cad": (torus, (-1.5, -1.5, -0.5), (1.5, 1.5, 0.5), 0.01, 1, 1, (0.9, None)),
     "part3_cad": (part3, (-2.2, -1.0, -0.5), (2.2, 1.0, 0.5), 0.01, 3, 1, (0.95, 0.3)),
     "part3_cad_vertices": (part3, (-2.2, -1.0, -0.5), (2.2, 1.0, 0.5), 0.01, 3, 1, (0.95, None)),

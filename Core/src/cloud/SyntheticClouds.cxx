@@ -407,4 +407,30 @@ double shapeEnergy(const PointCloud<D>& cloud, const ShapeQuadrature<D>& quadrat
 template double shapeEnergy<2>(const PointCloud<2>&, const ShapeQuadrature<2>&);
 template double shapeEnergy<3>(const PointCloud<3>&, const ShapeQuadrature<3>&);
 
+PointCloud<2> discWithFinCloud(double thickness)
+{
+  constexpr double pi = 3.14159265358979323846;
+  const double half = 0.5 * thickness, step = 0.01;
+  PointCloud<2> cloud;
+  for (int k = 0; k < 314; ++k)
+  {
+    const double a = 2.0 * pi * k / 314.0;
+    const std::array<double, 2> p{ 0.5 * std::cos(a), 0.5 * std::sin(a) };
+    if (!(p[0] > 0.0 && std::fabs(p[1]) < half))
+    {
+      cloud.Points.push_back(p);
+    }
+  }
+  for (double x = 0.5; x < 1.0; x += step)
+  {
+    cloud.Points.push_back({ x, half });
+    cloud.Points.push_back({ x, -half });
+  }
+  for (double y = -half; y <= half; y += step)
+  {
+    cloud.Points.push_back({ 1.0, y });
+  }
+  return cloud;
+}
+
 } // namespace sltk

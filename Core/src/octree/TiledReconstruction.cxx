@@ -94,13 +94,15 @@ public:
     }
     const auto setup = std::chrono::steady_clock::now();
     this->Field = TiledField<D>{};
-    SLTK_RETURN_IF_ERROR(transferToTiles(this->Previous, this->PreviousGamma, this->Grids[static_cast<size_t>(run - 1)],
-      this->Plan, run, this->Ctx, this->Field, this->Distribution));
+    SLTK_RETURN_IF_ERROR(
+      transferToTiles(this->Previous, this->PreviousGamma, run == 2 ? this->First.seeds() : this->Seeds,
+        this->Grids[static_cast<size_t>(run - 1)], this->Plan, run, this->Ctx, this->Field, this->Distribution));
     SLTK_RETURN_IF_ERROR(reinitialiseTransferred(this->Plan, run, this->Ctx, this->Field, this->Distribution));
     std::ostringstream log;
     log << "run " << run << " (tiled): " << this->Distribution.globalTileCount(this->Field) << " tiles of "
         << this->Field.slotCount() << " (" << this->Field.bytes() / 1048576.0 << " MB on this rank), set up in "
-        << detail::secondsSince(setup) << " s";
+        << detail::secondsSince(setup) << " s, " << (run == 2 ? this->First.seeds() : this->Seeds).Centres.size()
+        << " point(s) run " << run - 1 << " left outside seeded back";
     this->Ctx.logger().log(LogLevel::Info, log.str());
     this->Dense = GridField<D>{}; // the previous run is no longer needed
     this->Last = TiledField<D>{};
@@ -118,6 +120,12 @@ public:
     TiledBand<D, Interp> band(this->Plan, run, this->Ctx, this->Field, this->Distribution, storage);
     const Status status =
       iterateRun<D>(band, this->Options, run, this->Plan.CloudSpacing, this->Ctx, records, vanished);
+    this->Seeds = FarPointSeeds<D>{};
+    if (status.isOk() && !vanished && this->Options.SeedFarPoints && run < this->Options.Runs)
+    {
+      const double threshold = seedThreshold(this->Field.grid().Spacing[0], this->Plan.CloudSpacing);
+      this->Seeds = gatherSeeds(this->Plan.Cloud, band.outsidePoints(threshold), threshold, this->Distribution.comm());
+    }
     recordStorage(this->Field, run, storage, this->Distribution, this->Out.Storage);
     return status;
   }
@@ -141,8 +149,8 @@ public:
     {
       // One run: its uniform result, stored in tiles.
       this->gatherFirstRun();
-      SLTK_RETURN_IF_ERROR(transferToTiles(this->Previous, this->PreviousGamma, this->Dense.spec(), this->Plan, 1,
-        this->Ctx, this->Out.Field, this->Distribution));
+      SLTK_RETURN_IF_ERROR(transferToTiles(this->Previous, this->PreviousGamma, FarPointSeeds<D>{}, this->Dense.spec(),
+        this->Plan, 1, this->Ctx, this->Out.Field, this->Distribution));
       recordStorage(this->Out.Field, 1, TiledRunRecord{}, this->Distribution, this->Out.Storage);
     }
     else
@@ -197,6 +205,7 @@ private:
   GridField<D> Dense;           // run 1's phi, whole on every rank, until run 2 is set up
   TiledField<D> Field, Last;    // this run's tiles; the previous run's until this one is set up
   PreviousLevelSet<D> Previous; // what the next run is transferred from
+  FarPointSeeds<D> Seeds;       // what the last tiled run left outside, for the next
   double PreviousGamma = 0.0;
   Index FirstRunLeaves = 0, FirstRunLargestRankLeaves = 0;
 };

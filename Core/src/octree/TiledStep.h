@@ -7,6 +7,7 @@
 /// uniform kernels run on the copy.
 #include "TileDistribution.h"
 #include "sltk/octree/TiledField.h"
+#include "sltk/recon/FarPointSeeds.h"
 #include "sltk/recon/LevelSetStep.h"
 #include "sltk/recon/ReconstructionInterpolator.h"
 
@@ -354,6 +355,13 @@ Status tiledStep(TiledField<D>& field, const std::vector<std::int32_t>& band, co
   return Status::ok();
 }
 
+/// The points a query of cloudErrors() finds outside the zero level set by more than Threshold.
+struct PointsOutside
+{
+  double Threshold = 0.0;
+  std::vector<OutsidePoint> Points;
+};
+
 /// Err_P (4.35) and the far-point fraction: |I[phi](Q)| at every point, the
 /// points grouped by the block of BlockTiles^D tile positions around them,
 /// interpolated on one copy of the block (slots without a tile at their
@@ -362,9 +370,11 @@ Status tiledStep(TiledField<D>& field, const std::vector<std::int32_t>& band, co
 ///
 /// Distributed, a rank takes the points in its own slots; the blocks' sums are
 /// added in block order over every rank (the one-rank order). Collective.
+/// With `outside`, also this rank's points with I[phi](Q) > outside->Threshold
+/// (recon/FarPointSeeds.h), in block order.
 template <class Interp, int D>
 void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double far, const Context& ctx,
-  const TileDistribution<D>& distribution, double& meanError, double& farFraction)
+  const TileDistribution<D>& distribution, double& meanError, double& farFraction, PointsOutside* outside = nullptr)
 {
   const GridSpec<D>& g = field.grid();
   std::vector<std::pair<Index, Index>> keyed; // (block key, point)
@@ -397,6 +407,7 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
   }
   const TileBlocks<D> blocks(field, std::move(keyed));
   std::vector<double> sums(static_cast<size_t>(blocks.count()), 0.0), fars(static_cast<size_t>(blocks.count()), 0.0);
+  std::vector<std::vector<OutsidePoint>> outsideByBlock(outside ? static_cast<size_t>(blocks.count()) : 0);
   ctx.parallelFor(
     0, blocks.count(),
     [&](Index b, Index e)
@@ -409,10 +420,15 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
         Interp interp(s.Phi);
         for (size_t j = blocks.Begin[static_cast<size_t>(block)]; j < blocks.Begin[static_cast<size_t>(block) + 1]; ++j)
         {
-          const double v =
-            std::fabs(interpolate(interp, s.Phi.spec(), cloud.Points[static_cast<size_t>(blocks.Items[j])].data()));
+          const double signedValue =
+            interpolate(interp, s.Phi.spec(), cloud.Points[static_cast<size_t>(blocks.Items[j])].data());
+          const double v = std::fabs(signedValue);
           sums[static_cast<size_t>(block)] += v;
           fars[static_cast<size_t>(block)] += v > far ? 1.0 : 0.0;
+          if (outside && signedValue > outside->Threshold)
+          {
+            outsideByBlock[static_cast<size_t>(block)].push_back({ blocks.Items[j], signedValue });
+          }
         }
       }
     },
@@ -426,6 +442,10 @@ void cloudErrors(const TiledField<D>& field, const PointCloud<D>& cloud, double 
   const std::array<double, 2> total = distribution.orderedSum(std::move(parts), std::array<double, 2>{ sum, farCount });
   meanError = total[0] / static_cast<double>(cloud.size());
   farFraction = total[1] / static_cast<double>(cloud.size());
+  for (const std::vector<OutsidePoint>& points : outsideByBlock)
+  {
+    outside->Points.insert(outside->Points.end(), points.begin(), points.end());
+  }
 }
 
 } // namespace octree

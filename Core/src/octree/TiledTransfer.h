@@ -7,11 +7,14 @@
 #include "PruneTiles.h"
 #include "TileDistribution.h"
 #include "TiledBand.h"
+#include "sltk/core/IndexBox.h"
 #include "sltk/grid/GridField.h"
 #include "sltk/interp/Q1.h"
 #include "sltk/octree/TiledField.h"
+#include "sltk/recon/FarPointSeeds.h"
 #include "sltk/recon/ReconstructionPlan.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -132,6 +135,80 @@ std::array<double, D> slotCentre(const GridSpec<D>& grid, const std::array<Index
   return x;
 }
 
+/// The seeds' balls (recon/FarPointSeeds.h) by slot: the seeds whose ball,
+/// widened by gamma, reaches each slot's nodes (slots in CSR order).
+template <int D>
+class SeedsBySlot
+{
+public:
+  SeedsBySlot(const FarPointSeeds<D>& seeds, const TiledField<D>& field, double gamma)
+    : Seeds(seeds)
+  {
+    if (seeds.empty())
+    {
+      return;
+    }
+    const GridSpec<D>& g = field.grid();
+    const double outer = seeds.Radius + gamma;
+    std::vector<std::pair<Index, std::int32_t>> pairs; // (slot, seed)
+    for (size_t c = 0; c < seeds.Centres.size(); ++c)
+    {
+      std::array<Index, D> lo{}, hi{};
+      for (int a = 0; a < D; ++a)
+      {
+        const double x = seeds.Centres[c][a];
+        lo[a] = std::max<Index>(0, static_cast<Index>(std::ceil(g.indexCoordinate(a, x - outer))) >> TileBits);
+        hi[a] = std::min<Index>(
+          field.slotDims()[a] - 1, static_cast<Index>(std::floor(g.indexCoordinate(a, x + outer))) >> TileBits);
+      }
+      forEachIndexInBox<D>(lo, hi,
+        [&](const std::array<Index, D>& t) { pairs.emplace_back(field.slotIndex(t), static_cast<std::int32_t>(c)); });
+    }
+    std::sort(pairs.begin(), pairs.end());
+    this->First.assign(static_cast<size_t>(field.slotCount()) + 1, 0);
+    for (const auto& [slot, seed] : pairs)
+    {
+      ++this->First[static_cast<size_t>(slot) + 1];
+      this->Items.push_back(seed);
+    }
+    for (size_t s = 1; s < this->First.size(); ++s)
+    {
+      this->First[s] += this->First[s - 1];
+    }
+  }
+
+  /// Whether a seed's ball reaches slot s.
+  bool reaches(Index s) const
+  {
+    return !this->First.empty() && this->First[static_cast<size_t>(s) + 1] > this->First[static_cast<size_t>(s)];
+  }
+
+  /// phi united with the balls that reach slot s, at x.
+  double unite(Index s, const std::array<double, D>& x, double phi) const
+  {
+    if (this->First.empty())
+    {
+      return phi;
+    }
+    for (Index j = this->First[static_cast<size_t>(s)]; j < this->First[static_cast<size_t>(s) + 1]; ++j)
+    {
+      const auto& c = this->Seeds.Centres[static_cast<size_t>(this->Items[static_cast<size_t>(j)])];
+      double r2 = 0.0;
+      for (int a = 0; a < D; ++a)
+      {
+        r2 += (x[a] - c[a]) * (x[a] - c[a]);
+      }
+      phi = std::min(phi, std::sqrt(r2) - this->Seeds.Radius);
+    }
+    return phi;
+  }
+
+private:
+  const FarPointSeeds<D>& Seeds;
+  std::vector<Index> First; // slot s's seeds: Items[First[s] .. First[s + 1])
+  std::vector<std::int32_t> Items;
+};
+
 /// Does nothing with the per-tile state of removed tiles (no state yet).
 constexpr auto NothingToForget = [](const std::vector<std::uint8_t>&) {};
 
@@ -165,19 +242,21 @@ std::vector<std::int32_t> transferOwners(const PreviousLevelSet<D>& previous, co
   return owners;
 }
 
-/// Run r's field from run r-1's level set: tiles around its band,
-/// phi by Q1 cut at +-gamma, d not yet computed (TiledDistances); every other
+/// Run r's field from run r-1's level set: tiles around its band and around
+/// the seeds' balls (recon/FarPointSeeds.h), phi by Q1 united with the balls
+/// and cut at +-gamma, d not yet computed (TiledDistances); every other
 /// slot the side of its centre. Distributed, each rank computes its own slots
 /// (transferOwners), tells the others, and the tiles are then balanced over the
 /// ranks with one ghost layer.
 template <int D>
-Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma, const GridSpec<D>& grid,
-  const ReconstructionPlan<D>& plan, int run, const Context& ctx, TiledField<D>& field,
+Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma, const FarPointSeeds<D>& seeds,
+  const GridSpec<D>& grid, const ReconstructionPlan<D>& plan, int run, const Context& ctx, TiledField<D>& field,
   TileDistribution<D>& distribution)
 {
   const double gamma = plan.Options.GammaFactor * grid.Spacing[0];
   field.reset(grid, gamma);
   std::vector<std::uint8_t> marked(static_cast<size_t>(field.slotCount()), 0);
+  const SeedsBySlot<D> balls(seeds, field, gamma);
   // A node where the transferred phi is inside the new band has a previous
   // band node among the corners of its previous cell (elsewhere Q1 gives
   // +-gamma): within one previous spacing per axis, one node more for the
@@ -204,6 +283,10 @@ Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma
       forEachIndexInBox<D>(
         lo, hi, [&](const std::array<Index, D>& t) { marked[static_cast<size_t>(field.slotIndex(t))] = 1; });
     });
+  for (Index s = 0; s < field.slotCount(); ++s)
+  {
+    marked[static_cast<size_t>(s)] |= balls.reaches(s) ? 1 : 0;
+  }
   distribution.setOwners(field, transferOwners(previous, field, marked, distribution));
   Index count = 0;
   for (Index s = 0; s < field.slotCount(); ++s)
@@ -236,7 +319,15 @@ Status transferToTiles(const PreviousLevelSet<D>& previous, double previousGamma
     }
   }
   const auto transferred = [&](const std::array<Index, D>& i)
-  { return std::min(gamma, std::max(-gamma, previous.at(field.position(i)))); };
+  {
+    std::array<Index, D> t{};
+    for (int a = 0; a < D; ++a)
+    {
+      t[a] = i[a] >> TileBits;
+    }
+    const std::array<double, D> x = field.position(i);
+    return std::min(gamma, std::max(-gamma, balls.unite(field.slotIndex(t), x, previous.at(x))));
+  };
   std::vector<std::int8_t> side(candidates.size(), 0); // -1 / +1: one side throughout; 0: a tile
   ctx.parallelFor(0, static_cast<Index>(candidates.size()),
     [&](Index b, Index e)

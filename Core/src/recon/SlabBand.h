@@ -86,6 +86,13 @@ public:
     return this->Slab.sum(count) / static_cast<double>(this->Cloud.size());
   }
 
+  /// This rank's points (those of its owned cells) with I[phi](Q) > threshold, ascending.
+  std::vector<OutsidePoint> outsidePoints(double threshold) const
+  {
+    const SlabPlan& s = this->Slab.slab();
+    return pointsOutside<D, Interp>(this->Phi, this->Cloud, threshold, s.Begin, s.End, this->Slab.rows());
+  }
+
   Status step(const LevelSetStepParameters& step)
   {
     // The step writes the band, the reinitialisation its dilation (1.53): phi^n there for eps_1 (4.34).

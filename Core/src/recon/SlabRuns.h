@@ -7,16 +7,17 @@
 /// previous run's phi and d interpolated on a later run's grid, and the
 /// iterations on the slab band (SlabBand.h).
 
+#include "sltk/interp/Q1.h"
 #include "sltk/recon/CloudInitialData.h"
 #include "sltk/recon/CloudInitialDataSlabs.h"
 #include "sltk/recon/DistanceFunction.h"
+#include "sltk/recon/FarPointSeeds.h"
 #include "sltk/recon/LocalOffset.h"
-#include "sltk/interp/Q1.h"
 #include "sltk/recon/SlabPolicy.h"
 
-#include "sltk/recon/RunIterations.h"
 #include "RunSlab.h"
 #include "SlabBand.h"
+#include "sltk/recon/RunIterations.h"
 
 #include <algorithm>
 #include <chrono>
@@ -86,9 +87,7 @@ Status cloudInitialDataOn(const ReconstructionPlan<D>& plan, double outsideFacto
   io.Ghost = PhiGhost;
   const double threshold = outsideFactor * plan.CloudSpacing;
   const auto phi0 = [&](const GridField<D>& u)
-  {
-    return cloudInitialDataSlabs(u, threshold, slab.slab(), slab.rows(), slab.comm(), ctx, phi, io);
-  };
+  { return cloudInitialDataSlabs(u, threshold, slab.slab(), slab.rows(), slab.comm(), ctx, phi, io); };
   if (plan.Sparsity.empty())
   {
     return phi0(dist);
@@ -106,8 +105,8 @@ Status cloudInitialDataOn(const ReconstructionPlan<D>& plan, double outsideFacto
 /// runs from the previous result; cut (1.49) and made a distance near the front.
 template <int D>
 Status initialData(const ReconstructionPlan<D>& plan, double outsideFactor, const GridField<D>& dist,
-  const GridField<D>* previous, const RunSlab<D>* previousSlab, const RunSlab<D>& slab, const Context& ctx,
-  GridField<D>& phi)
+  const GridField<D>* previous, const RunSlab<D>* previousSlab, const FarPointSeeds<D>& seeds, const RunSlab<D>& slab,
+  const Context& ctx, GridField<D>& phi)
 {
   const ReconstructionOptions& options = plan.Options;
   const GridSpec<D> grid = slab.window();
@@ -115,6 +114,12 @@ Status initialData(const ReconstructionPlan<D>& plan, double outsideFactor, cons
   if (previous)
   {
     SLTK_RETURN_IF_ERROR(transfer(*previous, *previousSlab, slab, ctx, phi));
+    if (!seeds.empty()) // what the previous run lost (FarPointSeeds.h)
+    {
+      const SlabPlan& s = slab.slab();
+      addSeedBalls(seeds, gamma, s.Begin - s.First, s.End - s.First, ctx, phi);
+      slab.exchange(phi);
+    }
   }
   else if (plan.InitialEllipsoid)
   {
@@ -139,7 +144,6 @@ Status initialData(const ReconstructionPlan<D>& plan, double outsideFactor, cons
   phi.fillGhosts();
   return Status::ok();
 }
-
 
 /// The uniform storage of the runs (RunLoop.h's `Runs`): phi and d of the
 /// current run and of the previous one on this rank's slabs.
@@ -182,10 +186,14 @@ public:
     }
     const double distanceSeconds = detail::secondsSince(setup);
     SLTK_RETURN_IF_ERROR(initialData(this->Plan, outsideFactor, this->Dist, run > 1 ? &this->Previous : nullptr,
-      run > 1 ? &this->PreviousSlab : nullptr, this->Slab, this->Ctx, this->Phi));
+      run > 1 ? &this->PreviousSlab : nullptr, this->Seeds, this->Slab, this->Ctx, this->Phi));
     std::ostringstream log;
     log << "run " << run << ": grid " << grid.nodeCount() << " nodes, distance " << distanceSeconds
         << " s, initial data " << detail::secondsSince(setup) - distanceSeconds << " s";
+    if (run > 1)
+    {
+      log << ", " << this->Seeds.Centres.size() << " point(s) run " << run - 1 << " left outside seeded back";
+    }
     if (this->Slab.distributed())
     {
       const SlabPlan& s = this->Slab.slab();
@@ -198,13 +206,23 @@ public:
 
   Status iterate(int run, ReconstructionResult<D>& result, bool& vanished)
   {
-    SlabBand<D, Interp> band(this->Plan.Cloud, this->Options, this->Ctx, this->Exact, this->Slab, this->Phi, this->Dist);
+    SlabBand<D, Interp> band(
+      this->Plan.Cloud, this->Options, this->Ctx, this->Exact, this->Slab, this->Phi, this->Dist);
     const Status status = iterateRun<D>(band, this->Options, run, this->Plan.CloudSpacing, this->Ctx, result, vanished);
+    this->Seeds = FarPointSeeds<D>{};
+    if (status.isOk() && !vanished && this->Options.SeedFarPoints && run < this->Options.Runs)
+    {
+      const double threshold = seedThreshold(band.grid().Spacing[0], this->Plan.CloudSpacing);
+      this->Seeds = gatherSeeds(this->Plan.Cloud, band.outsidePoints(threshold), threshold, this->Slab.comm());
+    }
     // d was made exact where each rank's band reached: the ghost rows take the
     // owners' values (the next run interpolates them; the blocks share a row).
     this->Slab.exchange(this->Dist);
     return status;
   }
+
+  /// The balls the next run adds: the points this run left outside (empty after the last run).
+  const FarPointSeeds<D>& seeds() const { return this->Seeds; }
 
   /// This run's result becomes the previous run's (the next run's cut follows its band).
   void advance(int run)
@@ -246,6 +264,7 @@ private:
   ExactDistanceCache<D> Exact; // one for all runs
   GridField<D> Phi, Previous, Dist, PreviousDist;
   RunSlab<D> Slab, PreviousSlab;
+  FarPointSeeds<D> Seeds; // what the last run left outside, for the next (FarPointSeeds.h)
 };
 
 } // namespace sltk

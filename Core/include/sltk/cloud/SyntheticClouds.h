@@ -10,6 +10,7 @@
 ///    (icosphereCloud, 4.5.4's 2562-point sphere); sphereSdf;
 ///  - Cube&Spheres (4.5.4): CubeSpheres, cloud and SDF;
 ///  - any closed polygon sampled every h (polygonCloud);
+///  - a disc with a thin fin (discWithFinCloud), a part coarse runs lose;
 ///  - Gaussian noise on a cloud (the "10% noise" tests, Fig. 4.8, Fig. 4.11).
 /// Used by tests, benchmarks and examples.
 
@@ -50,6 +51,12 @@ inline PointCloud<3> sphereCloud(int n, double r = 1.0, std::array<double, 3> c 
   }
   return cloud;
 }
+
+/// The circle of radius 0.5 (314 points) with a fin along +x to x = 1 of the
+/// given thickness: its two sides and its end sampled every 0.01, the circle's
+/// points inside the fin left out. h_P is about 0.01, so a fin of 0.016 is 1.6
+/// h_P thick: run 1 at C_dx = 1 loses it (recon/FarPointSeeds.h).
+PointCloud<2> discWithFinCloud(double thickness);
 
 /// Signed distance to the circle of radius r centred at c.
 double circleSdf(const std::array<double, 2>& x, double r = 1.0, const std::array<double, 2>& c = { 0.0, 0.0 });

@@ -110,6 +110,12 @@ struct ReconstructionOptions
   /// 10% over the last EnergyWindow iterations, the run goes on (up to
   /// MaxIterations). False: the thesis's rule alone.
   bool FollowFarPoints = true;
+  /// Beyond the thesis, opt-in: each run after the first starts from the
+  /// previous run's surface united with balls around the points that run left
+  /// outside by more than a cell and h_P (recon/FarPointSeeds.h): thin parts a
+  /// coarse run lost grow back on the finer grids. Off by default: on the
+  /// teapot it adds a piece (Documentation/Numerics.md). False: the thesis's transfer.
+  bool SeedFarPoints = false;
   /// Bytes; 0: AutomaticMemoryBudget (1 GiB) when C_dx is automatic, the memory available otherwise.
   std::uint64_t MemoryBudget = 0;
   /// The ranks the grids are split over (the front ends set it from their

@@ -64,11 +64,21 @@ inline LevelSetStepParameters runStepParameters(
 }
 
 /// A point is far from run `run`'s surface beyond one cell of run 1, C_dx h_P
-/// (4.36), and at least h_P (StoppingRule.h).
+/// (4.36), and at least h_P (StoppingRule.h). phi is cut at +-gamma (1.49), and
+/// from run 3 on one run-1 cell is gamma exactly (gamma = 4 dx): a point beyond
+/// the band reads |I[phi](Q)| = gamma at most and counts as far only by the
+/// interpolator's overshoot. Counting it (a threshold just below gamma) made the
+/// teapot's spout restart into 5 pieces (Documentation/Numerics.md, "Points
+/// beyond the band"), so the far points keep this definition for now; the
+/// misfit (below) counts them.
 inline double farPointDistance(double dx, int run, double cloudSpacing)
 {
   return std::max(dx * std::ldexp(1.0, run - 1), cloudSpacing);
 }
+
+/// The misfit's threshold (misfitDistance) stays below gamma: at C_dx <= 1 two
+/// finest cells and h_P reach gamma, and a point beyond the band would never count.
+constexpr double FarBandShare = 0.999;
 
 namespace detail
 {
@@ -208,7 +218,8 @@ Status iterateRun(Band& band, const ReconstructionOptions& options, int run, dou
     record.Energy = energies.empty() ? 0.0 : energies.back();
   }
   band.finish(record, far);
-  const double misfit = misfitDistance(dx, cloudSpacing); // often the far-point distance: no second pass then
+  // Often the far-point distance: no second pass then.
+  const double misfit = std::min(misfitDistance(dx, cloudSpacing), FarBandShare * options.GammaFactor * dx);
   record.MisfitPoints = misfit == far ? record.FarPoints : band.farFraction(misfit);
   detail::warnAboutRun(record, run, cloudSpacing, ctx);
   detail::reportRun(record, run, phases, band.describe(), ctx);

@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file FarPointSeeds.h
+/// Beyond the thesis (ReconstructionOptions::SeedFarPoints): a later run
+/// regrows what a coarser run lost. A run whose cells are too large for a
+/// thin part (an ear's tip, a limb, a handle) lets the flow (4.22) shrink it
+/// away; the next run, on cells half as large, starts from that surface and
+/// the energy (4.29) alone does not grow it back. So the points the previous
+/// run left outside its surface, farther than one of its cells and than h_P
+/// (seedThreshold), each put a ball of one previous cell back into the
+/// transferred level set: phi = min(phi, |x - Q| - r), the union of the
+/// inside with the balls (1.46)-(1.49) on the finer grid, which then flows
+/// onto the points as any initial surface. The points are found where each
+/// storage holds phi (each rank its own) and gathered in the order of the
+/// cloud, so every rank adds the same balls.
+
+#include "sltk/cloud/PointCloud.h"
+#include "sltk/core/IndexBox.h"
+#include "sltk/exec/Communicator.h"
+#include "sltk/exec/Context.h"
+#include "sltk/grid/GridField.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace sltk
+{
+
+/// The balls a run adds to the transferred level set: centres (unit-box units) and one radius.
+template <int D>
+struct FarPointSeeds
+{
+  std::vector<std::array<double, D>> Centres;
+  double Radius = 0.0;
+
+  bool empty() const { return this->Centres.empty(); }
+};
+
+/// A point seeds a ball when I[phi](Q) exceeds this: one cell of the run that
+/// left it and h_P (nearer than the cloud's spacing a distance is the sampling's
+/// own scatter, misfitDistance in StoppingRule.h).
+inline double seedThreshold(double dx, double cloudSpacing)
+{
+  return std::max(dx, cloudSpacing);
+}
+
+/// The balls' radius over the threshold: the nearest seeds (I[phi](Q) just
+/// above it) reach half a threshold into the surface, and a chain of seeds
+/// sampled at h_P <= threshold overlaps.
+constexpr double SeedRadiusFactor = 1.5;
+
+/// A point outside the surface and I[phi] there.
+struct OutsidePoint
+{
+  Index Point = 0;
+  double Value = 0.0;
+};
+
+namespace detail
+{
+inline Index findRoot(std::vector<Index>& parent, Index i)
+{
+  while (parent[static_cast<size_t>(i)] != i)
+  {
+    parent[static_cast<size_t>(i)] = parent[static_cast<size_t>(parent[static_cast<size_t>(i)])];
+    i = parent[static_cast<size_t>(i)];
+  }
+  return i;
+}
+
+/// Which of the points (ascending) keep their ball: those whose balls connect,
+/// through overlapping balls, to one that reaches into the surface (I[phi](Q) < r).
+/// A ball alone in the open (a stray point, an isolated sample of a part too thin
+/// for the grids) would otherwise become a piece of its own.
+template <int D>
+std::vector<bool> attachedToSurface(const PointCloud<D>& cloud, const std::vector<OutsidePoint>& points, double radius)
+{
+  const double cell = 2.0 * radius;
+  std::map<std::array<Index, D>, std::vector<Index>> buckets;
+  const auto bucketOf = [&](const std::array<double, D>& x)
+  {
+    std::array<Index, D> b{};
+    for (int a = 0; a < D; ++a)
+    {
+      b[a] = static_cast<Index>(std::floor(x[a] / cell));
+    }
+    return b;
+  };
+  const auto at = [&](Index j) -> const std::array<double, D>&
+  { return cloud.Points[static_cast<size_t>(points[static_cast<size_t>(j)].Point)]; };
+  const Index n = static_cast<Index>(points.size());
+  for (Index j = 0; j < n; ++j)
+  {
+    buckets[bucketOf(at(j))].push_back(j);
+  }
+  std::vector<Index> parent(static_cast<size_t>(n));
+  for (Index j = 0; j < n; ++j)
+  {
+    parent[static_cast<size_t>(j)] = j;
+  }
+  for (Index j = 0; j < n; ++j)
+  {
+    std::array<Index, D> lo = bucketOf(at(j)), hi = lo;
+    for (int a = 0; a < D; ++a)
+    {
+      --lo[a];
+      ++hi[a];
+    }
+    forEachIndexInBox<D>(lo, hi,
+      [&](const std::array<Index, D>& b)
+      {
+        const auto found = buckets.find(b);
+        if (found == buckets.end())
+        {
+          return;
+        }
+        for (Index k : found->second)
+        {
+          double d2 = 0.0;
+          for (int a = 0; a < D; ++a)
+          {
+            d2 += (at(j)[a] - at(k)[a]) * (at(j)[a] - at(k)[a]);
+          }
+          if (k > j && d2 < cell * cell)
+          {
+            parent[static_cast<size_t>(findRoot(parent, j))] = findRoot(parent, k);
+          }
+        }
+      });
+  }
+  std::vector<bool> rooted(static_cast<size_t>(n), false), kept(static_cast<size_t>(n));
+  for (Index j = 0; j < n; ++j)
+  {
+    if (points[static_cast<size_t>(j)].Value < radius)
+    {
+      rooted[static_cast<size_t>(findRoot(parent, j))] = true;
+    }
+  }
+  for (Index j = 0; j < n; ++j)
+  {
+    kept[static_cast<size_t>(j)] = rooted[static_cast<size_t>(findRoot(parent, j))];
+  }
+  return kept;
+}
+} // namespace detail
+
+/// The seeds from the points `local` that this rank found outside by more than
+/// `threshold` (seedThreshold): gathered over the ranks in the cloud's order,
+/// each with a ball of SeedRadiusFactor thresholds, those not attached to the
+/// surface dropped (detail::attachedToSurface). Collective.
+template <int D>
+FarPointSeeds<D> gatherSeeds(
+  const PointCloud<D>& cloud, const std::vector<OutsidePoint>& local, double threshold, const Communicator& comm)
+{
+  std::vector<OutsidePoint> all = comm.size() > 1 ? comm.allGatherV(local) : local;
+  std::sort(all.begin(), all.end(), [](const OutsidePoint& a, const OutsidePoint& b) { return a.Point < b.Point; });
+  FarPointSeeds<D> seeds;
+  seeds.Radius = SeedRadiusFactor * threshold;
+  const std::vector<bool> kept = detail::attachedToSurface(cloud, all, seeds.Radius);
+  for (size_t j = 0; j < all.size(); ++j)
+  {
+    if (kept[j])
+    {
+      seeds.Centres.push_back(cloud.Points[static_cast<size_t>(all[j].Point)]);
+    }
+  }
+  return seeds;
+}
+
+/// phi = min(phi, |x - Q| - r) at the nodes of phi's rows [firstRow, endRow)
+/// along the last axis (a slab's owned rows; its ghost rows then come from
+/// their owners) within r + `reach` of a seed Q: nodes farther are left alone,
+/// which changes nothing once phi is cut at `reach` (1.49). The rows are
+/// shared out over the threads; the result does not depend on the order.
+template <int D>
+void addSeedBalls(
+  const FarPointSeeds<D>& seeds, double reach, Index firstRow, Index endRow, const Context& ctx, GridField<D>& phi)
+{
+  if (seeds.empty())
+  {
+    return;
+  }
+  const GridSpec<D>& g = phi.spec();
+  const double outer = seeds.Radius + reach;
+  ctx.parallelFor(
+    firstRow, endRow,
+    [&](Index firstRow, Index endRow)
+    {
+      for (const std::array<double, D>& c : seeds.Centres)
+      {
+        std::array<Index, D> lo{}, hi{};
+        bool empty = false;
+        for (int a = 0; a < D; ++a)
+        {
+          const Index top = a == D - 1 ? endRow - 1 : g.Dims[a] - 1;
+          const Index bottom = a == D - 1 ? firstRow : 0;
+          lo[a] = std::max<Index>(bottom, static_cast<Index>(std::ceil(g.indexCoordinate(a, c[a] - outer))));
+          hi[a] = std::min<Index>(top, static_cast<Index>(std::floor(g.indexCoordinate(a, c[a] + outer))));
+          empty = empty || lo[a] > hi[a];
+        }
+        if (empty)
+        {
+          continue;
+        }
+        forEachIndexInBox<D>(lo, hi,
+          [&](const std::array<Index, D>& i)
+          {
+            double r2 = 0.0;
+            for (int a = 0; a < D; ++a)
+            {
+              const double t = g.coordinate(a, i[a]) - c[a];
+              r2 += t * t;
+            }
+            double& v = phi(i);
+            v = std::min(v, std::sqrt(r2) - seeds.Radius);
+          });
+      }
+    },
+    1);
+}
+
+} // namespace sltk
