@@ -101,8 +101,12 @@ public:
     std::ostringstream log;
     log << "run " << run << " (tiled): " << this->Distribution.globalTileCount(this->Field) << " tiles of "
         << this->Field.slotCount() << " (" << this->Field.bytes() / 1048576.0 << " MB on this rank), set up in "
-        << detail::secondsSince(setup) << " s, " << (run == 2 ? this->First.seeds() : this->Seeds).Centres.size()
-        << " point(s) run " << run - 1 << " left outside seeded back";
+        << detail::secondsSince(setup) << " s";
+    if (this->Options.SeedFarPoints)
+    {
+      log << ", " << (run == 2 ? this->First.seeds() : this->Seeds).Centres.size() << " point(s) run " << run - 1
+          << " left outside seeded back";
+    }
     this->Ctx.logger().log(LogLevel::Info, log.str());
     this->Dense = GridField<D>{}; // the previous run is no longer needed
     this->Last = TiledField<D>{};

@@ -190,7 +190,7 @@ public:
     std::ostringstream log;
     log << "run " << run << ": grid " << grid.nodeCount() << " nodes, distance " << distanceSeconds
         << " s, initial data " << detail::secondsSince(setup) - distanceSeconds << " s";
-    if (run > 1)
+    if (run > 1 && this->Options.SeedFarPoints)
     {
       log << ", " << this->Seeds.Centres.size() << " point(s) run " << run - 1 << " left outside seeded back";
     }
