@@ -93,10 +93,10 @@ public:
       return this->First.setUp(1, outsideFactor);
     }
     const auto setup = std::chrono::steady_clock::now();
+    const FarPointSeeds<D>& seeds = run == 2 ? this->First.seeds() : this->Seeds;
     this->Field = TiledField<D>{};
-    SLTK_RETURN_IF_ERROR(
-      transferToTiles(this->Previous, this->PreviousGamma, run == 2 ? this->First.seeds() : this->Seeds,
-        this->Grids[static_cast<size_t>(run - 1)], this->Plan, run, this->Ctx, this->Field, this->Distribution));
+    SLTK_RETURN_IF_ERROR(transferToTiles(this->Previous, this->PreviousGamma, seeds,
+      this->Grids[static_cast<size_t>(run - 1)], this->Plan, run, this->Ctx, this->Field, this->Distribution));
     SLTK_RETURN_IF_ERROR(reinitialiseTransferred(this->Plan, run, this->Ctx, this->Field, this->Distribution));
     std::ostringstream log;
     log << "run " << run << " (tiled): " << this->Distribution.globalTileCount(this->Field) << " tiles of "
@@ -104,8 +104,7 @@ public:
         << detail::secondsSince(setup) << " s";
     if (this->Options.SeedFarPoints)
     {
-      log << ", " << (run == 2 ? this->First.seeds() : this->Seeds).Centres.size() << " point(s) run " << run - 1
-          << " left outside seeded back";
+      log << ", " << seeds.Centres.size() << " point(s) run " << run - 1 << " left outside seeded back";
     }
     this->Ctx.logger().log(LogLevel::Info, log.str());
     this->Dense = GridField<D>{}; // the previous run is no longer needed
@@ -124,12 +123,8 @@ public:
     TiledBand<D, Interp> band(this->Plan, run, this->Ctx, this->Field, this->Distribution, storage);
     const Status status =
       iterateRun<D>(band, this->Options, run, this->Plan.CloudSpacing, this->Ctx, records, vanished);
-    this->Seeds = FarPointSeeds<D>{};
-    if (status.isOk() && !vanished && this->Options.SeedFarPoints && run < this->Options.Runs)
-    {
-      const double threshold = seedThreshold(this->Field.grid().Spacing[0], this->Plan.CloudSpacing);
-      this->Seeds = gatherSeeds(this->Plan.Cloud, band.outsidePoints(threshold), threshold, this->Distribution.comm());
-    }
+    this->Seeds = seedsAfterRun(band, this->Plan.Cloud, this->Plan.CloudSpacing, this->Options, run,
+      status.isOk() && !vanished, this->Distribution.comm());
     recordStorage(this->Field, run, storage, this->Distribution, this->Out.Storage);
     return status;
   }

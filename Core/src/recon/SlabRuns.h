@@ -209,12 +209,8 @@ public:
     SlabBand<D, Interp> band(
       this->Plan.Cloud, this->Options, this->Ctx, this->Exact, this->Slab, this->Phi, this->Dist);
     const Status status = iterateRun<D>(band, this->Options, run, this->Plan.CloudSpacing, this->Ctx, result, vanished);
-    this->Seeds = FarPointSeeds<D>{};
-    if (status.isOk() && !vanished && this->Options.SeedFarPoints && run < this->Options.Runs)
-    {
-      const double threshold = seedThreshold(band.grid().Spacing[0], this->Plan.CloudSpacing);
-      this->Seeds = gatherSeeds(this->Plan.Cloud, band.outsidePoints(threshold), threshold, this->Slab.comm());
-    }
+    this->Seeds = seedsAfterRun(band, this->Plan.Cloud, this->Plan.CloudSpacing, this->Options, run,
+      status.isOk() && !vanished, this->Slab.comm());
     // d was made exact where each rank's band reached: the ghost rows take the
     // owners' values (the next run interpolates them; the blocks share a row).
     this->Slab.exchange(this->Dist);

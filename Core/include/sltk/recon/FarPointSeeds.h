@@ -1,24 +1,25 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file FarPointSeeds.h
-/// Beyond the thesis (ReconstructionOptions::SeedFarPoints): a later run
-/// regrows what a coarser run lost. A run whose cells are too large for a
-/// thin part (an ear's tip, a limb, a handle) lets the flow (4.22) shrink it
-/// away; the next run, on cells half as large, starts from that surface and
-/// the energy (4.29) alone does not grow it back. So the points the previous
-/// run left outside its surface, farther than one of its cells and than h_P
-/// (seedThreshold), each put a ball of one previous cell back into the
-/// transferred level set: phi = min(phi, |x - Q| - r), the union of the
-/// inside with the balls (1.46)-(1.49) on the finer grid, which then flows
-/// onto the points as any initial surface. The points are found where each
+/// Beyond the thesis, opt-in (ReconstructionOptions::SeedFarPoints): a later
+/// run regrows what a coarser run lost. A run whose cells are too large for a
+/// thin part (an ear's tip, a limb) lets the flow (4.22) shrink it away; the
+/// next run, on cells half as large, starts from that surface and the energy
+/// (4.29) alone does not grow it back. So the points the previous run left
+/// outside its surface by more than t (seedThreshold) put balls of radius
+/// SeedRadiusFactor t back into the transferred level set: phi = min(phi,
+/// |x - Q| - r), the union of the inside with the balls (1.46)-(1.49) on the
+/// finer grid, which then flows onto the points as any initial surface; balls
+/// not attached to the surface are dropped. The points are found where each
 /// storage holds phi (each rank its own) and gathered in the order of the
-/// cloud, so every rank adds the same balls.
+/// cloud, so every rank adds the same balls (Documentation/Numerics.md).
 
 #include "sltk/cloud/PointCloud.h"
 #include "sltk/core/IndexBox.h"
 #include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
+#include "sltk/recon/ReconstructionOptions.h"
 
 #include <algorithm>
 #include <array>
@@ -168,6 +169,22 @@ FarPointSeeds<D> gatherSeeds(
     }
   }
   return seeds;
+}
+
+/// The seeds run `run` leaves for the next, from `band` (a storage's band:
+/// grid() and outsidePoints(threshold), this rank's points): none after the
+/// last run, after a run that failed (`ran` false) or with SeedFarPoints off.
+/// Collective.
+template <int D, class Band>
+FarPointSeeds<D> seedsAfterRun(const Band& band, const PointCloud<D>& cloud, double cloudSpacing,
+  const ReconstructionOptions& options, int run, bool ran, const Communicator& comm)
+{
+  if (!ran || !options.SeedFarPoints || run >= options.Runs)
+  {
+    return {};
+  }
+  const double threshold = seedThreshold(band.grid().Spacing[0], cloudSpacing);
+  return gatherSeeds(cloud, band.outsidePoints(threshold), threshold, comm);
 }
 
 /// phi = min(phi, |x - Q| - r) at the nodes of phi's rows [firstRow, endRow)
