@@ -204,7 +204,7 @@ void addSeedBalls(
   const double outer = seeds.Radius + reach;
   ctx.parallelFor(
     firstRow, endRow,
-    [&](Index firstRow, Index endRow)
+    [&](Index chunkBegin, Index chunkEnd)
     {
       for (const std::array<double, D>& c : seeds.Centres)
       {
@@ -212,8 +212,8 @@ void addSeedBalls(
         bool empty = false;
         for (int a = 0; a < D; ++a)
         {
-          const Index top = a == D - 1 ? endRow - 1 : g.Dims[a] - 1;
-          const Index bottom = a == D - 1 ? firstRow : 0;
+          const Index top = a == D - 1 ? chunkEnd - 1 : g.Dims[a] - 1;
+          const Index bottom = a == D - 1 ? chunkBegin : 0;
           lo[a] = std::max<Index>(bottom, static_cast<Index>(std::ceil(g.indexCoordinate(a, c[a] - outer))));
           hi[a] = std::min<Index>(top, static_cast<Index>(std::floor(g.indexCoordinate(a, c[a] + outer))));
           empty = empty || lo[a] > hi[a];
