@@ -208,7 +208,7 @@ nlohmann::ordered_json printRuns(const sltk::ReconstructionSummary& summary, int
       { "grid", { static_cast<long long>(g[0]), static_cast<long long>(g[1]), static_cast<long long>(g[2]) } },
       { "iterations", static_cast<long long>(run.Iterations) }, { "energy", run.Energy },
       { "err_cloud", run.CloudError }, { "far_points", run.FarPoints }, { "misfit_points", run.MisfitPoints },
-      { "seconds", run.Seconds } });
+      { "merged_nodes", static_cast<long long>(run.MergedNodes) }, { "seconds", run.Seconds } });
     if (ranks > 1)
     {
       runRecords.back()["ghost_rows"] = static_cast<long long>(run.GhostRows);
@@ -545,7 +545,8 @@ Command addReconstructCommand(CLI::App& sltk)
     ->add_option("--json", command->Json,
       "summary: points, points_reconstructed, outliers_removed, cdx, kp,\n"
       "automatic_choices, recoveries, warnings, fits_cloud, seconds, peak_memory_mb, ranks,\nsurface_pieces, "
-      "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points, misfit_points; --octree: "
+      "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points, misfit_points, merged_nodes; "
+      "--octree: "
       "stored_nodes, "
       "uniform_nodes, leaves]")
     ->option_text("FILE");

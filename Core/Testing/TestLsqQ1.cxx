@@ -173,3 +173,20 @@ TEST(LsqQ1, JumpsWhereTheNearestNodeChanges)
   EXPECT_NEAR(jump, -1.5 * h * h * h, 1e-7);
   EXPECT_GT(std::fabs(jump), 1e-3);
 }
+
+TEST(LsqQ1, ReadStraightFromTheFieldItGivesTheCachedValuesBitForBit)
+{
+  // The level-set step reads the 3^D nodes around each foot's nearest node
+  // (evalAt, LevelSetStep.h) instead of caching the cell's 4^D (eval).
+  const auto g = sltk::uniformBox<3>(9, -1.0, 1.0);
+  const auto u = sltk::sampleField(g, 2, [](const double* x) { return std::sin(3.0 * x[0]) * std::exp(x[1] - x[2]); });
+  sltk::LsqQ1Interpolator<3> cached(u);
+  const auto around = sltk::stencilOffsets<3, 3>(u.strides(), -1);
+  for (int s = 0; s < 500; ++s)
+  {
+    const double x[3] = { 0.99 * std::sin(s * 1.7), 0.99 * std::cos(s * 0.3 + 0.4), 0.99 * std::sin(s * 2.3 + 1.0) };
+    const auto loc = sltk::locate(g, x);
+    cached.prepare(loc.Cell);
+    EXPECT_EQ(sltk::LsqQ1Interpolator<3>::evalAt(u, around, loc), cached.eval(loc.Local)) << "sample " << s;
+  }
+}

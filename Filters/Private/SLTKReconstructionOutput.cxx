@@ -178,6 +178,7 @@ void runSummary(const ReconstructionSummary& summary, vtkDataObject* image)
   addPerRun<vtkIntArray>(fd, "RunGhostRows", runs, [](const RunSummary& r) { return static_cast<int>(r.GhostRows); });
   // Counts as doubles (exact below 2^53).
   addPerRun<vtkDoubleArray>(fd, "RunFarFeet", runs, [](const RunSummary& r) { return double(r.FarFeet); });
+  addPerRun<vtkDoubleArray>(fd, "RunMergedNodes", runs, [](const RunSummary& r) { return double(r.MergedNodes); });
   if (!summary.OctreeStorage)
   {
     return;

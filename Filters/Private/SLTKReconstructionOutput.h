@@ -46,7 +46,8 @@ constexpr int ImageGhostLevelsAvailable = static_cast<int>(SlabGhostRows) - 1;
 /// RunEnergy (E_2), RunCloudError (Err_P), RunFarPoints (fraction of the points
 /// more than one cell of run 1 from the surface), RunMisfitPoints (... more than two
 /// of the run's cells and than h_P), RunSeconds, RunGhostRows (the
-/// slabs' ghost rows at the run's end; 0 on one rank), RunFarFeet; with the
+/// slabs' ghost rows at the run's end; 0 on one rank), RunFarFeet, RunMergedNodes
+/// (single-node specks merged, levelset/IsolatedNodes.h); with the
 /// octree storage also RunStoredNodes, RunUniformNodes, RunLeaves and
 /// RunLargestRankLeaves (ReconstructionSummary.h).
 void runSummary(const ReconstructionSummary& summary, vtkDataObject* image);

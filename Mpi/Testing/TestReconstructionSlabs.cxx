@@ -140,6 +140,29 @@ TEST(ReconstructionSlabs, BallsSeededAroundALostFinAreTheOneRankBalls)
   EXPECT_LT(one.Runs.back().FarPoints, 0.01) << "the seeds were expected to bring it back";
 }
 
+TEST(ReconstructionSlabs, SingleNodeSpecksAreMergedAsOnOneRank)
+{
+  // With the thesis's least-squares Q1 (5.5), run 2 of this noisy circle leaves
+  // one node whose sign differs from its four neighbours' (levelset/IsolatedNodes.h);
+  // each rank merges those of its owned rows, reading its ghost rows.
+  const sltk::PointCloud<2> cloud = sltk::withGaussianNoise(sltk::circleCloud(300), 0.01, 3);
+  sltk::ReconstructionOptions options;
+  options.LeastSquaresQ1 = true;
+  expectSameAsOneRank<2>(cloud, options);
+  sltk::ReconstructionResult<2> one, mine;
+  ASSERT_TRUE(sltk::reconstruct(cloud, options, sltk::Context{}, one).isOk());
+  sltk::ReconstructionPlan<2> plan;
+  ASSERT_TRUE(sltk::planReconstruction(cloud, options, sltk::Context{}, plan).isOk());
+  ASSERT_TRUE(sltk::reconstruct(plan, sltk::Context{}, mine, *world()).isOk());
+  sltk::Index merged = 0;
+  for (size_t r = 0; r < one.Runs.size() && r < mine.Runs.size(); ++r)
+  {
+    merged += one.Runs[r].MergedNodes;
+    EXPECT_EQ(mine.Runs[r].MergedNodes, one.Runs[r].MergedNodes) << "run " << r + 1;
+  }
+  EXPECT_GT(merged, 0) << "the test expects a speck to merge";
+}
+
 TEST(ReconstructionSlabs, FeetBeyondTheGhostRowsAreInterpolatedByTheirOwners)
 {
   // eta = 3 in run 1 spreads the feet (4.9) over 8 rows, more than the 6 ghost rows hold

@@ -166,6 +166,27 @@ TEST(TiledReconstructionRanks, BallsSeededAroundALostFinAreTheOneRankBalls)
   expectSameAsOneRank<2>(sltk::discWithFinCloud(0.016), options);
 }
 
+TEST(TiledReconstructionRanks, SingleNodeSpecksAreMergedAsOnOneRank)
+{
+  // Run 2 of this noisy circle with the least-squares Q1 (5.5) leaves one single-node speck
+  // (levelset/IsolatedNodes.h); a rank reads the neighbours in its ghost tiles.
+  const sltk::PointCloud<2> cloud = sltk::withGaussianNoise(sltk::circleCloud(300), 0.01, 3);
+  sltk::ReconstructionOptions options;
+  options.OctreeStorage = true;
+  options.LeastSquaresQ1 = true;
+  expectSameAsOneRank<2>(cloud, options);
+  sltk::ReconstructionPlan<2> plan;
+  ASSERT_TRUE(sltk::planReconstruction(cloud, options, sltk::Context{}, plan).isOk());
+  sltk::TiledReconstructionResult<2> mine;
+  ASSERT_TRUE(sltk::reconstructTiled(plan, sltk::Context{}, mine, *world()).isOk());
+  sltk::Index merged = 0;
+  for (const auto& run : mine.Records.Runs)
+  {
+    merged += run.MergedNodes;
+  }
+  EXPECT_EQ(merged, 1) << "the one-rank run merges one speck";
+}
+
 TEST(TiledReconstructionRanks, FeetBeyondOneTileReadDeeperGhostLayers)
 {
   // eta = 6 spreads the feet of runs 2 and 3 (4.9) beyond one tile of 8 nodes (p = 1: a stable run).

@@ -14,6 +14,7 @@
 #include "TiledReinitialise.h"
 #include "TiledStep.h"
 #include "sltk/exec/Memory.h"
+#include "sltk/levelset/IsolatedNodes.h"
 #include "sltk/octree/TiledReconstruction.h"
 #include "sltk/recon/EnergyFunctional.h"
 #include "sltk/recon/Reconstruction.h"
@@ -335,6 +336,50 @@ public:
     it.LargestRankLeaves = counts.LargestRankLeaves;
     it.UniformNodes = this->Field.grid().nodeCount();
     return !this->Distribution.agree(interrupted ? Status::aborted() : Status::ok()).isOk();
+  }
+
+  /// Gives the single-node specks (IsolatedNodes.h) of this rank's tiles their
+  /// neighbours' mean (neighbours in other tiles read through the slots, the
+  /// ghosts' faces held by the last exchange), ghosts exchanged after; returns
+  /// their count over every rank. Node Node of a change is tile id * Nodes + local node.
+  Index mergeIsolatedNodes()
+  {
+    TiledField<D>& field = this->Field;
+    std::vector<NodeChange> changes;
+    for (std::int32_t id = 0; id < field.tileCount(); ++id)
+    {
+      if (!this->Distribution.owns(field, id))
+      {
+        continue;
+      }
+      const double* p = field.phi(id);
+      for (Index k = 0; k < TiledField<D>::Nodes; ++k)
+      {
+        std::array<Index, D> i = field.node(id, k);
+        bool interior = std::fabs(p[k]) < field.gamma();
+        for (int a = 0; a < D; ++a)
+        {
+          interior = interior && i[a] > 0 && i[a] + 1 < field.grid().Dims[a];
+        }
+        const auto at = [&](int a, int side)
+        {
+          std::array<Index, D> n = i;
+          n[a] += side;
+          return field.value(n);
+        };
+        double merged = 0.0;
+        if (interior && isolatedNodeValue<D>(p[k], at, merged))
+        {
+          changes.push_back({ id * TiledField<D>::Nodes + k, merged });
+        }
+      }
+    }
+    for (const NodeChange& c : changes)
+    {
+      field.phi(static_cast<std::int32_t>(c.Node / TiledField<D>::Nodes))[c.Node % TiledField<D>::Nodes] = c.Value;
+    }
+    this->Distribution.exchange(field, false);
+    return static_cast<Index>(this->Distribution.comm().allReduce(static_cast<double>(changes.size()), ReduceOp::Sum));
   }
 
   void finish(RunRecord<D>& record, double far) const

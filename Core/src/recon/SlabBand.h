@@ -7,6 +7,7 @@
 /// every update and the feet beyond the window answered by their owners
 /// (FarFeetExchange.h).
 
+#include "sltk/levelset/IsolatedNodes.h"
 #include "sltk/levelset/NarrowBand.h"
 #include "sltk/levelset/Reinitialise.h"
 #include "sltk/levelset/ReinitialiseSlabs.h"
@@ -157,6 +158,18 @@ public:
     it.CloudError = sums[2] / static_cast<double>(this->Cloud.size());
     it.BandSize = static_cast<Index>(sums[3]);
     return sums[4] > 0.0;
+  }
+
+  /// Gives the band's single-node specks (IsolatedNodes.h) their neighbours'
+  /// mean, ghost rows exchanged after; returns their count over every rank.
+  Index mergeIsolatedNodes()
+  {
+    std::vector<NodeChange> changes;
+    findIsolatedNodes(this->Phi, this->Band, changes);
+    applyNodeChanges(this->Phi, changes);
+    this->Slab.exchange(this->Phi);
+    this->Phi.fillGhosts();
+    return static_cast<Index>(this->Slab.sum(static_cast<double>(changes.size())));
   }
 
   void finish(RunRecord<D>& record, double far)

@@ -386,6 +386,10 @@ public:
     return !this->Tree.communicator().agree(interrupted ? Status::aborted() : Status::ok()).isOk();
   }
 
+  /// The thesis's cell-centred scheme is kept as the thesis runs it (a
+  /// comparison): its leaves' values are not merged (IsolatedNodes.h).
+  Index mergeIsolatedNodes() { return 0; }
+
   void finish(RunRecord<D>& record, double far) const
   {
     const CellCloudErrors e = this->errors(far);

@@ -43,6 +43,7 @@ class LsqQ1Interpolator
 public:
   static constexpr int Dim = D;
   static constexpr int GhostWidth = 2; ///< the nearest node's neighbours: nodes -1..2 of the cell
+  static constexpr int Neighbours = ipow(3, D);
 
   explicit LsqQ1Interpolator(const GridField<D, double>& field)
     : Stencil(field, -1) // stencil digit 0..3 is node -1..2 along each axis
@@ -57,31 +58,76 @@ public:
   /// p_i(x') of the corner i nearest to local coordinates t in [0, 1]^D.
   double eval(const std::array<double, D>& t) const
   {
-    // The corner: node k_a = round(t_a) of the cell along each axis; x'_a = t_a - k_a.
-    int first = 0, stride = 1;
-    std::array<double, D> x{};
-    for (int a = 0; a < D; ++a)
-    {
-      const int k = t[a] >= 0.5 ? 1 : 0;
-      x[a] = t[a] - k;
-      first += k * stride; // its neighbourhood's digits k_a .. k_a + 2
-      stride *= 4;
-    }
-    // Its 3^D neighbourhood, x fastest.
-    double full[Neighbours], average[Neighbours];
+    // The corner: node k_a = round(t_a) of the cell along each axis; its neighbourhood's digits k_a .. k_a + 2.
+    const Nearest near = nearest(t);
+    double around[Neighbours];
     for (int c = 0; c < Neighbours; ++c)
     {
-      int rest = c, digit = first, place = 1;
+      int rest = c, digit = near.First, place = 1;
       for (int a = 0; a < D; ++a)
       {
         digit += (rest % 3) * place;
         rest /= 3;
         place *= 4;
       }
-      full[c] = average[c] = this->Stencil[digit];
+      around[c] = this->Stencil[digit];
+    }
+    return fit(around, near.X);
+  }
+
+  /// The same value at `loc` read straight from `field` (no 4^D cache: the 3^D
+  /// nodes around the nearest corner only), `around` being
+  /// stencilOffsets<D, 3>(field.strides(), -1). The step's feet (LevelSetStep.h).
+  static double evalAt(
+    const GridField<D, double>& field, const std::array<Index, Neighbours>& around, const CellLocation<D>& loc)
+  {
+    const Nearest near = nearest(loc.Local);
+    std::array<Index, D> node = loc.Cell;
+    for (int a = 0; a < D; ++a)
+    {
+      node[a] += near.Corner[a];
+    }
+    const double* p = field.pointer(node);
+    double values[Neighbours];
+    for (int c = 0; c < Neighbours; ++c)
+    {
+      values[c] = p[around[c]];
+    }
+    return fit(values, near.X);
+  }
+
+private:
+  struct Nearest
+  {
+    std::array<int, D> Corner{}; ///< k_a in {0, 1}
+    std::array<double, D> X{};   ///< x'_a = t_a - k_a
+    int First = 0;               ///< the 4^D stencil's digit of the corner's neighbourhood's first node
+  };
+
+  static Nearest nearest(const std::array<double, D>& t)
+  {
+    Nearest n;
+    int stride = 1;
+    for (int a = 0; a < D; ++a)
+    {
+      n.Corner[a] = t[a] >= 0.5 ? 1 : 0;
+      n.X[a] = t[a] - n.Corner[a];
+      n.First += n.Corner[a] * stride;
+      stride *= 4;
+    }
+    return n;
+  }
+
+  /// p_i(x') from the 3^D values around node i (x fastest): the tensor product
+  /// of the header, collapsing the last axis first (its triples sit at stride 3^a).
+  static double fit(const double (&around)[Neighbours], const std::array<double, D>& x)
+  {
+    double full[Neighbours], average[Neighbours];
+    for (int c = 0; c < Neighbours; ++c)
+    {
+      full[c] = average[c] = around[c];
     }
     const double centre = full[Neighbours / 2];
-    // Collapse the last axis first: the triples of axis a sit at stride 3^a.
     int n = Neighbours;
     for (int a = D - 1; a >= 0; --a)
     {
@@ -95,9 +141,6 @@ public:
     }
     return full[0] - average[0] + centre;
   }
-
-private:
-  static constexpr int Neighbours = ipow(3, D);
 
   StencilCache<D, 4> Stencil;
 };

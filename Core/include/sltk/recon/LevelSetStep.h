@@ -19,6 +19,7 @@
 #include "sltk/grid/GridField.h"
 #include "sltk/interp/CellCache.h"
 #include "sltk/interp/Interpolator.h"
+#include "sltk/interp/LsqQ1.h"
 #include "sltk/interp/Weno3.h"
 #include "sltk/interp/Weno3Lanes.h"
 #include "sltk/levelset/CutOff.h"
@@ -190,11 +191,35 @@ void joinFarFeet(std::map<Index, ChunkFeet<D>>& farByChunk, FarFeet<D>& far)
 
 namespace detail
 {
+/// The cells of a node's feet `x` when every foot is finite and, on a slab
+/// window (`far`), inside it; false otherwise (StepLanes).
+template <class Interp, int D, size_t P>
+bool locateFeet(const GridSpec<D>& spec, const FarFeet<D>* far, const std::array<std::array<double, D>, P>& x,
+  std::array<CellLocation<D>, P>& at)
+{
+  for (size_t j = 0; j < P; ++j)
+  {
+    for (int a = 0; a < D; ++a)
+    {
+      if (!std::isfinite(x[j][a]))
+      {
+        return false;
+      }
+    }
+    if (far && !footInWindow<Interp>(spec, *far, spec.indexCoordinate(D - 1, x[j][D - 1])))
+    {
+      return false;
+    }
+    at[j] = locate(spec, x[j].data());
+  }
+  return true;
+}
+
 /// The feet of a node interpolated together where the interpolator can
-/// (WENO3: Weno3Lanes.h, the values of Weno3Interpolator bit for bit): every
-/// foot finite and, on a slab window, inside it. tryEval() returns false
-/// otherwise, and for the other interpolators, and the step then takes the
-/// feet one by one.
+/// (WENO3: Weno3Lanes.h; the least-squares Q1: straight from phi, LsqQ1.h; the
+/// values of the interpolator bit for bit): every foot finite and, on a slab
+/// window, inside it. tryEval() returns false otherwise, and for the other
+/// interpolators, and the step then takes the feet one by one.
 template <class Interp, int D>
 struct StepLanes
 {
@@ -220,26 +245,46 @@ struct StepLanes<Weno3Interpolator<D>, D>
   {
     static_assert(P == Weno3Lanes<D>::Count, "one lane per foot");
     std::array<CellLocation<D>, P> at;
-    for (size_t j = 0; j < P; ++j)
+    if (!locateFeet<Weno3Interpolator<D>, D>(spec, far, x, at))
     {
-      for (int a = 0; a < D; ++a)
-      {
-        if (!std::isfinite(x[j][a]))
-        {
-          return false;
-        }
-      }
-      if (far && !footInWindow<Weno3Interpolator<D>>(spec, *far, spec.indexCoordinate(D - 1, x[j][D - 1])))
-      {
-        return false;
-      }
-      at[j] = locate(spec, x[j].data());
+      return false;
     }
     this->Lanes.eval(at, values);
     return true;
   }
 
   Weno3Lanes<D> Lanes;
+};
+
+/// The least-squares Q1 reads the 3^D nodes around each foot's nearest node
+/// only, where its cache (StencilCache) would read the 4^D around the cell.
+template <int D>
+struct StepLanes<LsqQ1Interpolator<D>, D>
+{
+  explicit StepLanes(const GridField<D>& phi)
+    : Phi(phi)
+    , Around(stencilOffsets<D, 3>(phi.strides(), -1))
+  {
+  }
+
+  template <size_t P>
+  bool tryEval(
+    const GridSpec<D>& spec, const FarFeet<D>* far, const std::array<std::array<double, D>, P>& x, double* values)
+  {
+    std::array<CellLocation<D>, P> at;
+    if (!locateFeet<LsqQ1Interpolator<D>, D>(spec, far, x, at))
+    {
+      return false;
+    }
+    for (size_t j = 0; j < P; ++j)
+    {
+      values[j] = LsqQ1Interpolator<D>::evalAt(this->Phi, this->Around, at[j]);
+    }
+    return true;
+  }
+
+  const GridField<D>& Phi;
+  std::array<Index, LsqQ1Interpolator<D>::Neighbours> Around;
 };
 } // namespace detail
 

@@ -201,6 +201,8 @@ struct RunFigures
   Index MeanBandSize = 0;
   Index GhostRows = 0; ///< on several ranks: each slab's ghost rows (RunSlab.h); 0 on one rank
   Index FarFeet = 0;   ///< on several ranks: feet of the run's steps interpolated by another rank (all ranks')
+  /// Single-node specks of the run's result given their neighbours' mean (levelset/IsolatedNodes.h)
+  Index MergedNodes = 0;
 };
 
 template <int D>

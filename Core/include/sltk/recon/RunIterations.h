@@ -25,6 +25,9 @@
 ///  - `bool measure(IterationRecord&, bool interrupted)`: eps_1 (4.34), Err_P
 ///    (4.35), the band size and the storage's counts; true when any rank was
 ///    interrupted;
+///  - `Index mergeIsolatedNodes()`: gives the single-node specks of the run's
+///    result their neighbours' mean (levelset/IsolatedNodes.h), ghosts
+///    exchanged; returns their count over every rank;
 ///  - `void finish(RunRecord<D>&, double far)`: the far-point share after the
 ///    last iteration (and Err_P when no iteration ran);
 ///  - `std::string describe() const`: the storage's part of the run's report.
@@ -116,6 +119,10 @@ void reportRun(
       << ", Err_P = " << record.CloudError << ", " << record.Seconds << " s (band " << p.Band << " s, energy "
       << p.Energy << " s, SL step " << p.Step << " s, reinitialisation " << p.Reinitialisation << " s, metrics "
       << p.Metrics << " s)" << storage;
+  if (record.MergedNodes > 0)
+  {
+    log << "; " << record.MergedNodes << " single-node specks merged";
+  }
   ctx.logger().log(LogLevel::Info, log.str());
 }
 } // namespace detail
@@ -217,6 +224,7 @@ Status iterateRun(Band& band, const ReconstructionOptions& options, int run, dou
   {
     record.Energy = energies.empty() ? 0.0 : energies.back();
   }
+  record.MergedNodes = band.mergeIsolatedNodes(); // below the grid's resolution (IsolatedNodes.h)
   band.finish(record, far);
   // Often the far-point distance: no second pass then.
   const double misfit = std::min(misfitDistance(dx, cloudSpacing), FarBandShare * options.GammaFactor * dx);
