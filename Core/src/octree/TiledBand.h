@@ -341,7 +341,7 @@ public:
   /// Gives the single-node specks (IsolatedNodes.h) of this rank's tiles their
   /// neighbours' mean (neighbours in other tiles read through the slots, the
   /// ghosts' faces held by the last exchange), ghosts exchanged after; returns
-  /// their count over every rank. Node Node of a change is tile id * Nodes + local node.
+  /// their count over every rank. A change's Node is tile id * Nodes + the tile's node.
   Index mergeIsolatedNodes()
   {
     TiledField<D>& field = this->Field;
@@ -355,11 +355,14 @@ public:
       const double* p = field.phi(id);
       for (Index k = 0; k < TiledField<D>::Nodes; ++k)
       {
-        std::array<Index, D> i = field.node(id, k);
-        bool interior = std::fabs(p[k]) < field.gamma();
-        for (int a = 0; a < D; ++a)
+        if (!(std::fabs(p[k]) < field.gamma())) // a speck lies in the band (1.48)
         {
-          interior = interior && i[a] > 0 && i[a] + 1 < field.grid().Dims[a];
+          continue;
+        }
+        const std::array<Index, D> i = field.node(id, k);
+        if (!hasAllAxisNeighbours<D>(i, field.grid().Dims))
+        {
+          continue;
         }
         const auto at = [&](int a, int side)
         {
@@ -368,7 +371,7 @@ public:
           return field.value(n);
         };
         double merged = 0.0;
-        if (interior && isolatedNodeValue<D>(p[k], at, merged))
+        if (isolatedNodeValue<D>(p[k], at, merged))
         {
           changes.push_back({ id * TiledField<D>::Nodes + k, merged });
         }

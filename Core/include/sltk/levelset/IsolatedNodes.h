@@ -52,6 +52,20 @@ bool isolatedNodeValue(double value, At&& at, double& merged)
   return true;
 }
 
+/// Whether node i has both axis neighbours along every axis within a grid of `dims` nodes.
+template <int D>
+bool hasAllAxisNeighbours(const std::array<Index, D>& i, const std::array<Index, D>& dims)
+{
+  for (int a = 0; a < D; ++a)
+  {
+    if (i[a] <= 0 || i[a] + 1 >= dims[a])
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 /// A node to change and its new value.
 struct NodeChange
 {
@@ -71,12 +85,7 @@ void findIsolatedNodes(const GridField<D>& phi, const NodeList& nodes, std::vect
   for (const Index k : nodes)
   {
     const std::array<Index, D> i = phi.nodeIndex(k);
-    bool interior = true;
-    for (int a = 0; a < D; ++a)
-    {
-      interior = interior && i[a] > 0 && i[a] + 1 < dims[a];
-    }
-    if (!interior)
+    if (!hasAllAxisNeighbours<D>(i, dims))
     {
       continue;
     }
