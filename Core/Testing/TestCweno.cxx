@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -486,8 +487,8 @@ TEST(Cweno, NoNewExtremaAcrossKinkAndJumpIn1D)
   const double capZ = relativeOvershoot<1, CwenoVariant::CwenoZ>(41, cap<1>, 32);
   const double ballCw = relativeOvershoot<1, CwenoVariant::Cweno>(41, ball<1>, 32);
   const double ballZ = relativeOvershoot<1, CwenoVariant::CwenoZ>(41, ball<1>, 32);
-  std::cout << std::scientific << std::setprecision(2) << "    1D cap: overshoot CWENO " << capCw << ", CWENOZ "
-            << capZ << "; 1D jump: CWENO " << ballCw << ", CWENOZ " << ballZ << "\n";
+  std::cout << std::scientific << std::setprecision(2) << "    1D cap: overshoot CWENO " << capCw << ", CWENOZ " << capZ
+            << "; 1D jump: CWENO " << ballCw << ", CWENOZ " << ballZ << "\n";
   EXPECT_LT(capCw, 1e-6);
   EXPECT_LT(capZ, 1e-6);
   EXPECT_LT(ballCw, 1e-6);
@@ -656,6 +657,93 @@ TEST(Cweno, IndicatorMatricesMatchThesisAppendix2D)
   EXPECT_NEAR(a(opt, 5, 6), -2958593. / 25200, 1e-9);
   // With the cell diameter (the scaling used by CwenoInterpolator, Documentation/Numerics.md):
   EXPECT_NEAR(dataForm<2>(3, std::sqrt(2.0))[16 * 10 + 10], 4112. / 45, 1e-11);
+}
+
+TEST(Cweno, LineCoefficientsAreTheInverseVandermondeMatrices)
+{
+  // 3.3.1 on t = -1, 0, 1, 2: rows are the coefficients of t^j, columns the data.
+  const double cubic[4][4] = { { 0, 1, 0, 0 }, { -1. / 3, -0.5, 1, -1. / 6 }, { 0.5, -1, 0.5, 0 },
+    { -1. / 6, 0.5, -0.5, 1. / 6 } };
+  const double left[3][4] = { { 0, 1, 0, 0 }, { -0.5, 0, 0.5, 0 }, { 0.5, -1, 0.5, 0 } };
+  const double right[3][4] = { { 0, 1, 0, 0 }, { 0, -1.5, 2, -0.5 }, { 0, 0.5, -1, 0.5 } };
+  for (int c = 0; c < 4; ++c)
+  {
+    double e[4] = {};
+    e[c] = 1.0;
+    double q[4];
+    double l[3];
+    double r[3];
+    sltk::cweno::optimalCoefficients<1>(e, q);
+    sltk::cweno::octantCoefficients<1>(e, 0, l);
+    sltk::cweno::octantCoefficients<1>(e, 1, r);
+    for (int j = 0; j < 4; ++j)
+    {
+      EXPECT_NEAR(q[j], cubic[j][c], 1e-15) << "Q, t^" << j << ", data " << c;
+      if (j < 3)
+      {
+        EXPECT_NEAR(l[j], left[j][c], 1e-15) << "P_L, t^" << j << ", data " << c;
+        EXPECT_NEAR(r[j], right[j][c], 1e-15) << "P_R, t^" << j << ", data " << c;
+      }
+    }
+  }
+}
+
+namespace
+{
+/// The fast evaluations of IndicatorForm (active monomials, lanes) against z^T M z with the dense M.
+template <int D, int N>
+void checkIndicatorEvaluation()
+{
+  using Form = sltk::cweno::IndicatorForm<D, N>;
+  std::array<double, D> spacing{};
+  for (int a = 0; a < D; ++a)
+  {
+    spacing[a] = 0.1 + 0.05 * a;
+  }
+  const Form form(spacing, 0.2);
+  std::mt19937 gen(11u + D + N);
+  constexpr int lanes = 3;
+  std::vector<double> z(static_cast<size_t>(Form::Size) * lanes);
+  for (double& v : z)
+  {
+    v = std::uniform_real_distribution<double>(-1.0, 1.0)(gen);
+  }
+  constexpr auto active = Form::activeMonomials();
+  std::vector<double> y(static_cast<size_t>(Form::ActiveCount) * lanes);
+  for (int i = 0; i < Form::ActiveCount; ++i)
+  {
+    for (int l = 0; l < lanes; ++l)
+    {
+      y[static_cast<size_t>(i * lanes + l)] = z[static_cast<size_t>(l * Form::Size + active[i])];
+    }
+  }
+  double osc[lanes];
+  form.template ofActiveLanes<lanes>(y.data(), osc);
+  for (int l = 0; l < lanes; ++l)
+  {
+    const double* zl = z.data() + static_cast<size_t>(l) * Form::Size;
+    double dense = 0.0;
+    for (int p = 0; p < Form::Size; ++p)
+    {
+      for (int q = 0; q < Form::Size; ++q)
+      {
+        dense += zl[p] * form.entry(p, q) * zl[q];
+      }
+    }
+    EXPECT_NEAR(form(zl), dense, 1e-12 * std::fabs(dense)) << D << "D, N = " << N;
+    EXPECT_EQ(osc[l], form(zl)) << D << "D, N = " << N << ": a lane must equal the single evaluation";
+  }
+}
+} // namespace
+
+TEST(Cweno, IndicatorFormEvaluationsMatchTheDenseMatrix)
+{
+  checkIndicatorEvaluation<1, 3>();
+  checkIndicatorEvaluation<1, 4>();
+  checkIndicatorEvaluation<2, 3>();
+  checkIndicatorEvaluation<2, 4>();
+  checkIndicatorEvaluation<3, 3>();
+  checkIndicatorEvaluation<3, 4>();
 }
 
 // --- (5) convergence condition (3.31): |I_r - I_1| <= C_r max |second increments| ---------------

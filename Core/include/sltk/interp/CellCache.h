@@ -19,10 +19,10 @@
 #include "sltk/interp/Cweno.h"
 #include "sltk/interp/Interpolator.h"
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <type_traits>
 #include <vector>
 
@@ -78,7 +78,8 @@ public:
     }
     if constexpr (StoresPolynomials)
     {
-      this->Coefficients.resize(static_cast<size_t>(K) * Interp::Size);
+      // Not zeroed: an entry is read only after its key was set and its polynomial built.
+      this->Coefficients.reset(new double[static_cast<size_t>(K) * Interp::Size]);
     }
   }
 
@@ -103,9 +104,7 @@ public:
         ++this->Builds;
         if constexpr (StoresPolynomials)
         {
-          this->Slots[0].prepare(loc.Cell);
-          const auto& c = this->Slots[0].coefficients();
-          std::copy(c.begin(), c.end(), this->Coefficients.begin() + static_cast<std::ptrdiff_t>(s) * Interp::Size);
+          this->Slots[0].build(loc.Cell, this->Coefficients.get() + static_cast<size_t>(s) * Interp::Size);
         }
         else
         {
@@ -115,7 +114,7 @@ public:
       if constexpr (StoresPolynomials)
       {
         // CwenoInterpolator::eval() on the stored coefficients.
-        return cweno::evalTensor<Dim, 4>(this->Coefficients.data() + static_cast<size_t>(s) * Interp::Size, loc.Local);
+        return cweno::evalTensor<Dim, 4>(this->Coefficients.get() + static_cast<size_t>(s) * Interp::Size, loc.Local);
       }
       else
       {
@@ -158,7 +157,7 @@ public:
 private:
   const GridSpec<Dim>* Spec;
   std::vector<Interp> Slots;
-  std::vector<double> Coefficients;
+  std::unique_ptr<double[]> Coefficients;
   std::array<Index, K> Keys{};
   std::array<Index, Dim> KeyStride{};
   int Last = 0;

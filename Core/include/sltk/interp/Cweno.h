@@ -60,50 +60,53 @@ public:
   /// Builds the reconstruction polynomial of the cell (lower corner index `cell`).
   void prepare(const std::array<Index, D>& cell)
   {
+    this->build(cell, this->Coef.data());
+    this->Prepared.set(cell);
+  }
+
+  /// prepare() writing the Size coefficients of P_rec to `coef` instead
+  /// (CellCache.h stores them); weights() and indicators() are this cell's.
+  void build(const std::array<Index, D>& cell, double* coef)
+  {
     const double* p = this->Field->pointer(cell);
     double u[Size];
     for (int q = 0; q < Size; ++q)
     {
       u[q] = p[this->StencilOffset[q]];
     }
-    double opt[Size];
-    cweno::optimalCoefficients<D>(u, opt);
+    // The 1D coefficients of every line, from which all 1 + 2^D polynomials are read.
+    double table[cweno::TableSize<D>];
+    cweno::stencilTable<D>(u, table);
     if constexpr (V == CwenoVariant::Optimal)
     {
       this->Omega = cweno::LinearWeights<D>::values();
       for (int q = 0; q < Size; ++q)
       {
-        this->Coef[q] = opt[q];
+        coef[q] = table[OptimalIndex[q]];
       }
     }
     else
     {
-      double low[Octants][LowSize];
-      this->Osc[0] = this->OptimalForm(opt); // (3.12)
-      for (int k = 0; k < Octants; ++k)
-      {
-        cweno::octantCoefficients<D>(u, k, low[k]);
-        this->Osc[1 + k] = this->OctantForm(low[k]);
-      }
+      this->computeIndicators(table);
       this->Omega = cweno::nonlinearWeights<D, V>(this->Osc, this->Epsilon);
-      // (3.11) + (3.15)/(3.16) folded into one set of coefficients.
+      // (3.11) + (3.15)/(3.16) folded into one set of coefficients:
+      // P_rec = (omega_0 / d_0) P_opt + sum_k (omega_k - omega_0 d_k / d_0) P_k.
       constexpr double d0 = cweno::LinearWeights<D>::Optimal;
       constexpr double dk = cweno::LinearWeights<D>::Octant;
       const double scale = this->Omega[0] / d0;
       for (int q = 0; q < Size; ++q)
       {
-        this->Coef[q] = scale * opt[q];
+        coef[q] = scale * table[OptimalIndex[q]];
       }
       for (int k = 0; k < Octants; ++k)
       {
         const double beta = this->Omega[1 + k] - scale * dk;
         for (int q = 0; q < LowSize; ++q)
         {
-          this->Coef[cweno::quadraticToCubicIndex<D>(q)] += beta * low[k][q];
+          coef[cweno::quadraticToCubicIndex<D>(q)] += beta * table[OctantIndex[k][q]];
         }
       }
     }
-    this->Prepared.set(cell);
   }
 
   void prepareIfNeeded(const std::array<Index, D>& cell)
@@ -139,9 +142,45 @@ public:
   }
 
 private:
+  using OptimalIndicator = cweno::IndicatorForm<D, 4>;
+  using OctantIndicator = cweno::IndicatorForm<D, 3>;
+  static constexpr std::array<int, Size> OptimalIndex = cweno::optimalIndices<D>();
+  static constexpr std::array<std::array<int, LowSize>, Octants> OctantIndex = []
+  {
+    std::array<std::array<int, LowSize>, Octants> index{};
+    for (int k = 0; k < Octants; ++k)
+    {
+      index[k] = cweno::octantIndices<D>(k);
+    }
+    return index;
+  }();
+
+  /// The indicators (3.12) of P_opt and of the 2^D octant polynomials, from the
+  /// table entries of their monomials of degree >= 2; the octants side by side.
+  void computeIndicators(const double* table)
+  {
+    constexpr auto optActive = OptimalIndicator::activeMonomials();
+    constexpr auto lowActive = OctantIndicator::activeMonomials();
+    double y[OptimalIndicator::ActiveCount];
+    for (int i = 0; i < OptimalIndicator::ActiveCount; ++i)
+    {
+      y[i] = table[OptimalIndex[optActive[i]]];
+    }
+    this->Osc[0] = this->OptimalForm.ofActive(y);
+    double low[OctantIndicator::ActiveCount * Octants];
+    for (int i = 0; i < OctantIndicator::ActiveCount; ++i)
+    {
+      for (int k = 0; k < Octants; ++k)
+      {
+        low[i * Octants + k] = table[OctantIndex[k][lowActive[i]]];
+      }
+    }
+    this->OctantForm.template ofActiveLanes<Octants>(low, this->Osc.data() + 1);
+  }
+
   const GridField<D, double>* Field;
-  cweno::IndicatorForm<D, 4> OptimalForm;
-  cweno::IndicatorForm<D, 3> OctantForm;
+  OptimalIndicator OptimalForm;
+  OctantIndicator OctantForm;
   double Epsilon = 0.0;
   std::array<Index, Size> StencilOffset{};
   std::array<double, Size> Coef{};

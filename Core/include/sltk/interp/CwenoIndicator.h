@@ -21,6 +21,7 @@
 
 #include "sltk/interp/CwenoPolynomial.h"
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -44,6 +45,18 @@ inline double derivativeIntegral(int a, int j, int k)
     fk *= static_cast<double>(k - m);
   }
   return fj * fk / static_cast<double>(j + k - 2 * a + 1);
+}
+
+/// Total degree of monomial p of the N^D layout (CwenoPolynomial.h).
+template <int D, int N>
+constexpr int monomialDegree(int p)
+{
+  int order = 0;
+  for (int a = 0; a < D; ++a, p /= N)
+  {
+    order += p % N;
+  }
+  return order;
 }
 
 /// The quadratic form OSC = z^T M z of polynomials with N coefficients per axis
@@ -115,64 +128,108 @@ public:
     this->pack();
   }
 
+  /// Monomials of total degree >= 2: the rows of M that are not zero (the
+  /// others have no derivative of order >= 2), in increasing index order.
+  static constexpr int ActiveCount = []
+  {
+    int count = 0;
+    for (int p = 0; p < Size; ++p)
+    {
+      count += monomialDegree<D, N>(p) >= 2 ? 1 : 0;
+    }
+    return count;
+  }();
+  static constexpr std::array<int, ActiveCount> activeMonomials()
+  {
+    std::array<int, ActiveCount> active{};
+    for (int p = 0, i = 0; p < Size; ++p)
+    {
+      if (monomialDegree<D, N>(p) >= 2)
+      {
+        active[i++] = p;
+      }
+    }
+    return active;
+  }
+
   /// OSC[P] = z^T M z for the coefficients z (Size values).
   double operator()(const double* z) const
   {
-    // Upper triangle of the active rows (monomials of total degree >= 2; the others
-    // have no derivative of order >= 2), off-diagonal entries doubled: about 40% of
-    // the dense cost in 3D.
-    double y[Size];
-    for (int i = 0; i < this->ActiveCount; ++i)
+    constexpr std::array<int, ActiveCount> active = activeMonomials();
+    double y[ActiveCount];
+    for (int i = 0; i < ActiveCount; ++i)
     {
-      y[i] = z[this->Active[i]];
+      y[i] = z[active[i]];
     }
-    const double* m = this->Packed.data();
-    double s = 0.0;
-    for (int i = 0; i < this->ActiveCount; ++i)
+    return this->ofActive(y);
+  }
+
+  /// OSC[P] from the coefficients y of the active monomials only (activeMonomials() order).
+  double ofActive(const double* y) const
+  {
+    double osc = 0.0;
+    this->ofActiveLanes<1>(y, &osc);
+    return osc;
+  }
+
+  /// OSC of L polynomials at once, y[i * L + l] the active coefficient i of
+  /// polynomial l, into osc[l]: s = sum_i y_i r_i with r_i = sum_{j >= i} U_ij y_j,
+  /// U the upper triangle of M on the active monomials, off-diagonal entries doubled.
+  /// The r_i are accumulated column by column, all in registers once the loops
+  /// are unrolled (no horizontal sums, no serial chain through memory); each
+  /// polynomial gets the same operations in the same order, one per lane.
+  template <int L>
+  void ofActiveLanes(const double* y, double* osc) const
+  {
+    const double* u = this->Upper.data();
+    double r[ActiveCount][L] = {};
+#pragma GCC unroll 16
+    for (int j = 0; j < ActiveCount; ++j)
     {
-      double row = 0.0;
-      for (int j = i; j < this->ActiveCount; ++j)
+      const double* column = u + j * (j + 1) / 2; // U_0j .. U_jj
+#pragma GCC unroll 16
+      for (int i = 0; i <= j; ++i)
       {
-        row += *m++ * y[j];
+        for (int l = 0; l < L; ++l)
+        {
+          r[i][l] += column[i] * y[j * L + l];
+        }
       }
-      s += y[i] * row;
     }
-    return s;
+    for (int l = 0; l < L; ++l)
+    {
+      double s = 0.0;
+#pragma GCC unroll 16
+      for (int i = 0; i < ActiveCount; ++i)
+      {
+        s += y[i * L + l] * r[i][l];
+      }
+      osc[l] = s;
+    }
   }
 
   /// M_pq (for tests and for printing the Appendix matrices).
-  double entry(int p, int q) const { return this->Matrix[static_cast<size_t>(p) * Size + q]; }
+  double entry(int p, int q) const
+  {
+    return this->Matrix[static_cast<size_t>(p) * Size + q];
+  }
 
 private:
   void pack()
   {
-    this->ActiveCount = 0;
-    for (int p = 0; p < Size; ++p)
+    constexpr std::array<int, ActiveCount> active = activeMonomials();
+    this->Upper.clear();
+    for (int j = 0; j < ActiveCount; ++j)
     {
-      bool active = false;
-      for (int q = 0; q < Size; ++q)
+      for (int i = 0; i <= j; ++i)
       {
-        active = active || this->entry(p, q) != 0.0;
-      }
-      if (active)
-      {
-        this->Active[this->ActiveCount++] = p;
-      }
-    }
-    this->Packed.clear();
-    for (int i = 0; i < this->ActiveCount; ++i)
-    {
-      for (int j = i; j < this->ActiveCount; ++j)
-      {
-        this->Packed.push_back((i == j ? 1.0 : 2.0) * this->entry(this->Active[i], this->Active[j]));
+        this->Upper.push_back((i == j ? 1.0 : 2.0) * this->entry(active[i], active[j]));
       }
     }
   }
 
-  std::vector<double> Matrix;     ///< dense M, row-major
-  std::vector<double> Packed;     ///< upper triangle of the active block, off-diagonal doubled
-  std::array<int, Size> Active{}; ///< indices of the non-zero rows of M
-  int ActiveCount = 0;
+  std::vector<double> Matrix; ///< dense M, row-major
+  std::vector<double> Upper;  ///< U: upper triangle of the active block, off-diagonal doubled, packed by columns
 };
 
 } // namespace cweno

@@ -8,8 +8,17 @@
 /// its N^D monomial coefficients c[j_0 + N j_1 + N^2 j_2] of t_0^j_0 t_1^j_1 t_2^j_2
 /// (x fastest, like GridField and the data vector U of (3.26)).
 ///
-/// The 1D matrices are the inverse Vandermonde matrices printed by
-/// bench/derive/derive_cweno.py; D-dimensional interpolation is their tensor product.
+/// All 1 + 2^D polynomials of a cell come from one table (stencilTable()): along
+/// each axis, the four values (a, b, c, d) at t = -1, 0, 1, 2 give the seven 1D
+/// coefficients of LineCoefficient, shared by the cubic Q and the parabolas P_L,
+/// P_R of 3.3.1 (the inverse Vandermonde matrices printed by
+/// bench/derive/derive_cweno.py, written with the second increments
+/// e_L = a - 2b + c, e_R = b - 2c + d):
+///   Q   = b + (c - b - e_L/2 - (e_R - e_L)/6) t + e_L/2 t^2 + (e_R - e_L)/6 t^3,
+///   P_L = b + (c - b - e_L/2) t + e_L/2 t^2,       (t = -1, 0, 1)
+///   P_R = b + (c - b - e_R/2) t + e_R/2 t^2.       (t = 0, 1, 2)
+/// D-dimensional interpolation is their tensor product, so the coefficients of
+/// every polynomial are entries of the 7^D tensor of the 1D coefficients.
 
 #include "sltk/interp/Interpolator.h"
 
@@ -22,108 +31,160 @@ namespace cweno
 
 using sltk::ipow;
 
-/// Data -> coefficient matrices of 1D interpolation (rows: coefficient of t^j,
-/// columns: data in increasing t).
-struct Stencil1D
+/// The seven 1D coefficients of one line of the stencil (table entries along one axis).
+enum LineCoefficient : int
 {
-  /// Cubic Q of 3.3.1 on t = -1, 0, 1, 2.
-  static constexpr double Cubic[4][4] = {
-    { 0.0, 1.0, 0.0, 0.0 },
-    { -1.0 / 3.0, -0.5, 1.0, -1.0 / 6.0 },
-    { 0.5, -1.0, 0.5, 0.0 },
-    { -1.0 / 6.0, 0.5, -0.5, 1.0 / 6.0 },
-  };
-  /// Parabolas of 3.3.1: [0] P_L on t = -1, 0, 1 (low side), [1] P_R on t = 0, 1, 2 (high side).
-  static constexpr double Quadratic[2][3][3] = {
-    {
-      { 0.0, 1.0, 0.0 },
-      { -0.5, 0.0, 0.5 },
-      { 0.5, -1.0, 0.5 },
-    },
-    {
-      { 1.0, 0.0, 0.0 },
-      { -1.5, 2.0, -0.5 },
-      { 0.5, -1.0, 0.5 },
-    },
-  };
+  Value = 0,  ///< b: the t^0 coefficient of Q, P_L and P_R
+  Cubic1 = 1, ///< the t coefficient of Q
+  Second = 2, ///< e_L / 2: the t^2 coefficient of Q and of P_L
+  Cubic3 = 3, ///< (e_R - e_L) / 6: the t^3 coefficient of Q
+  Left1 = 4,  ///< the t coefficient of P_L
+  Right1 = 5, ///< the t coefficient of P_R
+  Right2 = 6, ///< e_R / 2: the t^2 coefficient of P_R
+  LineCount = 7
 };
 
-/// In place: replaces every line of an N^D tensor (x fastest) along axis a by Mat[a] * line,
-/// for all axes; Mat[a] points to an N x N row-major matrix.
-template <int D, int N>
-inline void transformAlongAxes(double* v, const double* const (&mat)[D])
+/// Table entry of the coefficient of t^j, per polynomial: [0] Q, [1] P_L, [2] P_R.
+constexpr int LineIndex[3][4] = {
+  { Value, Cubic1, Second, Cubic3 },
+  { Value, Left1, Second, -1 },
+  { Value, Right1, Right2, -1 },
+};
+
+/// The seven coefficients of the line (a, b, c, d) at t = -1, 0, 1, 2, into out[o * stride].
+inline void lineCoefficients(double a, double b, double c, double d, double* out, int stride)
 {
-  constexpr int size = ipow(N, D);
-  int stride = 1;
+  const double eL = a - 2.0 * b + c; // second increments of the two parabolas
+  const double eR = b - 2.0 * c + d;
+  const double jump = c - b;
+  const double second = 0.5 * eL;
+  const double cubic3 = (eR - eL) * (1.0 / 6.0);
+  const double right2 = 0.5 * eR;
+  const double left1 = jump - second;
+  out[Value * stride] = b;
+  out[Cubic1 * stride] = left1 - cubic3;
+  out[Second * stride] = second;
+  out[Cubic3 * stride] = cubic3;
+  out[Left1 * stride] = left1;
+  out[Right1 * stride] = jump - right2;
+  out[Right2 * stride] = right2;
+}
+
+/// Size of the table of a D-dimensional stencil.
+template <int D>
+constexpr int TableSize = ipow(LineCount, D);
+
+namespace detail
+{
+/// One axis of stencilTable(): the lines along axis A of a tensor whose axes
+/// below A already hold the 7 coefficients and the others the 4 values.
+template <int D, int A>
+inline void tablePass(const double* in, double* out)
+{
+  constexpr int lower = ipow(LineCount, A); // stride of axis A
+  constexpr int upper = ipow(4, D - 1 - A);
+  for (int h = 0; h < upper; ++h)
+  {
+    const double* src = in + h * 4 * lower;
+    double* dst = out + h * LineCount * lower;
+    for (int l = 0; l < lower; ++l) // consecutive lines: vectorisable
+    {
+      lineCoefficients(src[l], src[l + lower], src[l + 2 * lower], src[l + 3 * lower], dst + l, lower);
+    }
+  }
+}
+
+template <int D, int A>
+inline void tablePasses(const double* in, double* table)
+{
+  if constexpr (A == D - 1)
+  {
+    tablePass<D, A>(in, table);
+  }
+  else
+  {
+    double next[ipow(LineCount, A + 1) * ipow(4, D - 1 - A)];
+    tablePass<D, A>(in, next);
+    tablePasses<D, A + 1>(next, table);
+  }
+}
+} // namespace detail
+
+/// The 7^D tensor of 1D coefficients (LineCoefficient along each axis, x
+/// fastest) of the 4^D stencil data u (x fastest, t = -1..2 per axis).
+template <int D>
+inline void stencilTable(const double* u, double* table)
+{
+  detail::tablePasses<D, 0>(u, table);
+}
+
+/// Table entries of the N^D coefficients of a polynomial whose axis a is
+/// polynomial kind[a] of LineIndex (N = 4: the cubic on every axis, N = 3: parabolas).
+template <int D, int N>
+constexpr std::array<int, ipow(N, D)> tableIndices(const std::array<int, D>& kind)
+{
+  std::array<int, ipow(N, D)> index{};
+  for (int p = 0; p < ipow(N, D); ++p)
+  {
+    int rest = p;
+    int at = 0;
+    for (int a = 0, stride = 1; a < D; ++a, stride *= LineCount)
+    {
+      at += LineIndex[kind[a]][rest % N] * stride;
+      rest /= N;
+    }
+    index[p] = at;
+  }
+  return index;
+}
+
+/// Table entries of the optimal polynomial's 4^D coefficients (tensor cubic).
+template <int D>
+constexpr std::array<int, ipow(4, D)> optimalIndices()
+{
+  return tableIndices<D, 4>(std::array<int, D>{}); // kind 0: Q on every axis
+}
+
+/// Table entries of the 3^D coefficients of the low-degree polynomial of one
+/// octant: the tensor quadratic on the 3^D sub-stencil whose nodes along axis a
+/// are t = 0, 1, 2 (P_R) if bit a of `octant` is set (east / north / top) and
+/// t = -1, 0, 1 (P_L) otherwise. 1D: octant 0 = P_L, 1 = P_R; 2D: 0 = sw, 1 = se, 2 = nw, 3 = ne.
+template <int D>
+constexpr std::array<int, ipow(3, D)> octantIndices(int octant)
+{
+  std::array<int, D> kind{};
   for (int a = 0; a < D; ++a)
   {
-    const double* m = mat[a];
-    for (int outer = 0; outer < size; outer += stride * N)
-    {
-      for (int inner = 0; inner < stride; ++inner)
-      {
-        double* line = v + outer + inner;
-        double in[N];
-        for (int k = 0; k < N; ++k)
-        {
-          in[k] = line[k * stride];
-        }
-        for (int j = 0; j < N; ++j)
-        {
-          double s = 0.0;
-          for (int k = 0; k < N; ++k)
-          {
-            s += m[j * N + k] * in[k];
-          }
-          line[j * stride] = s;
-        }
-      }
-    }
-    stride *= N;
+    kind[a] = 1 + ((octant >> a) & 1);
   }
+  return tableIndices<D, 3>(kind);
 }
 
 /// Coefficients z (4^D) of the optimal polynomial: the tensor cubic (bicubic,
-/// tricubic) interpolating the 4^D stencil data u (x fastest, t = -1..2 per axis).
+/// tricubic) interpolating the 4^D stencil data u.
 template <int D>
 inline void optimalCoefficients(const double* u, double* z)
 {
+  double table[TableSize<D>];
+  stencilTable<D>(u, table);
+  constexpr std::array<int, ipow(4, D)> index = optimalIndices<D>();
   for (int p = 0; p < ipow(4, D); ++p)
   {
-    z[p] = u[p];
+    z[p] = table[index[p]];
   }
-  const double* mats[D];
-  for (int a = 0; a < D; ++a)
-  {
-    mats[a] = &Stencil1D::Cubic[0][0];
-  }
-  transformAlongAxes<D, 4>(z, mats);
 }
 
-/// Coefficients z (3^D) of the low-degree polynomial of one octant: the tensor
-/// quadratic interpolating the 3^D sub-stencil whose nodes along axis a are
-/// t = 0, 1, 2 if bit a of `octant` is set (east / north / top) and t = -1, 0, 1
-/// otherwise. 1D: octant 0 = P_L, 1 = P_R; 2D: 0 = sw, 1 = se, 2 = nw, 3 = ne.
+/// Coefficients z (3^D) of the low-degree polynomial of one octant (octantIndices()).
 template <int D>
 inline void octantCoefficients(const double* u, int octant, double* z)
 {
+  double table[TableSize<D>];
+  stencilTable<D>(u, table);
+  const std::array<int, ipow(3, D)> index = octantIndices<D>(octant);
   for (int q = 0; q < ipow(3, D); ++q)
   {
-    int rest = q;
-    int src = 0;
-    for (int a = 0, stride = 1; a < D; ++a, stride *= 4)
-    {
-      src += (rest % 3 + ((octant >> a) & 1)) * stride;
-      rest /= 3;
-    }
-    z[q] = u[src];
+    z[q] = table[index[q]];
   }
-  const double* mats[D];
-  for (int a = 0; a < D; ++a)
-  {
-    mats[a] = &Stencil1D::Quadratic[(octant >> a) & 1][0][0];
-  }
-  transformAlongAxes<D, 3>(z, mats);
 }
 
 /// Index in the 4^D layout of coefficient q of the 3^D layout (same monomial).

@@ -97,9 +97,10 @@ inline std::array<double, LinearWeights<D>::Count> nonlinearWeights(
   {
     sum += w[k];
   }
+  const double inverse = 1.0 / sum;
   for (int k = 0; k < count; ++k)
   {
-    w[k] /= sum;
+    w[k] *= inverse;
   }
   return w;
 }
