@@ -5,6 +5,7 @@
 // for 4 ranks sharing one; the windows it sizes are the boundaries the slabs
 // are cut at.
 #include "sltk/cloud/SyntheticClouds.h"
+#include "sltk/recon/AutomaticParameters.h"
 #include "sltk/recon/ReconstructionPlan.h"
 #include "sltk/recon/SlabPolicy.h"
 
@@ -48,6 +49,37 @@ TEST(SlabPolicy, MemoryCheckSizesTheWindowsOfTheRanksOnThisMachine)
   EXPECT_EQ(crowded.code(), sltk::StatusCode::OutOfMemory);
   EXPECT_NE(crowded.message().find("4 rank(s) on this machine"), std::string::npos) << crowded.message();
   EXPECT_NE(crowded.message().find("C_dx >="), std::string::npos) << crowded.message();
+}
+
+TEST(SlabPolicy, AutomaticCellSizePlansTheSameGridsForAnyRanksOnThisMachine)
+{
+  // No options: C_dx is the smallest whose finest grid fits the automatic 1 GiB
+  // (AutomaticParameters.h), about 27M nodes here. Four ranks on this machine hold
+  // more than that in their windows with ghost rows; the automatic budget chose
+  // the grids and is not a limit, so they run the one-rank grids (issue: mpirun
+  // -np 4 on the merged scans was refused).
+  const sltk::PointCloud<3> cloud = sltk::sphereCloud(20000);
+  sltk::ReconstructionOptions options;
+  options.Guess = sltk::InitialGuess::BoundingSphere; // K_P plays no part in the grids' size
+  sltk::ReconstructionPlan<3> one, four;
+  ASSERT_TRUE(sltk::planReconstruction(cloud, options, {}, one).isOk());
+  ASSERT_GT(one.Options.CellSizeFactor, 1.0) << "the budget must bind for this test to say anything";
+  options.Ranks = 4;
+  options.RanksHere = 4;
+  const sltk::Status planned = sltk::planReconstruction(cloud, options, {}, four);
+  ASSERT_TRUE(planned.isOk()) << planned.message();
+  EXPECT_EQ(four.Options.CellSizeFactor, one.Options.CellSizeFactor);
+  ASSERT_EQ(four.Grids.Runs.size(), one.Grids.Runs.size());
+  for (size_t r = 0; r < one.Grids.Runs.size(); ++r)
+  {
+    EXPECT_EQ(four.Grids.Runs[r].Dims, one.Grids.Runs[r].Dims) << "run " << r + 1;
+  }
+  // The same budget given as a limit, with the same C_dx, refuses the four windows.
+  options.CellSizeFactor = one.Options.CellSizeFactor;
+  options.MemoryBudget = sltk::AutomaticMemoryBudget;
+  sltk::ReconstructionPlan<3> limited;
+  const sltk::Status refused = sltk::planReconstruction(cloud, options, {}, limited);
+  EXPECT_EQ(refused.code(), sltk::StatusCode::OutOfMemory) << "the case the automatic budget refused";
 }
 
 TEST(SlabPolicy, WindowsAreTheOwnedRowsAndTheirGhostRows)

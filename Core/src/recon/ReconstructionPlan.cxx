@@ -396,6 +396,7 @@ Status planReconstruction(
   }
   plan.Options.MemoryBudget = po.MemoryBudget;
   plan.AutomaticCellSize = automaticCellSize;
+  plan.BudgetIsAutomatic = automaticCellSize && !options.MemoryBudget;
   // Run 1 must hold the initial surface (at the K_P of a restart, when automatic).
   plan.FirstRunReach =
     initialReach(bounds, sparsest * std::max(farDistance, roomFactor * plan.CloudSpacing), plan.InitialEllipsoid);
@@ -412,8 +413,10 @@ namespace
 {
 /// The memory check of grids split over plan.Options.Ranks ranks: the largest
 /// window of every run (SlabPolicy.h, the boundaries RunSlab.h will cut) times
-/// the ranks on this machine, against the budget (given, or the memory
-/// available), naming the C_dx that would fit.
+/// the ranks on this machine, against the budget given, or else the memory
+/// available, naming the C_dx that would fit. The automatic budget is not a
+/// limit here: it chose the whole grid's C_dx as on one rank (so any rank count
+/// runs the same grids), and the windows with their ghost rows hold more.
 template <int D>
 Status checkSlabMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor, GridPlan<D>& grids)
 {
@@ -431,8 +434,9 @@ Status checkSlabMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor,
             : largestSlabWindowNodes(grids.Runs[r], boundaries));
     whole = std::max(whole, static_cast<double>(grids.Runs[r].nodeCount()));
   }
-  const double budget = plan.Options.MemoryBudget ? static_cast<double>(plan.Options.MemoryBudget)
-                                                  : static_cast<double>(availableMemoryBytes());
+  const double budget = plan.Options.MemoryBudget && !plan.BudgetIsAutomatic
+    ? static_cast<double>(plan.Options.MemoryBudget)
+    : static_cast<double>(availableMemoryBytes());
   const double need = window * here * ReconstructionBytesPerNode;
   if (budget > 0.0 && need > budget)
   {

@@ -117,6 +117,8 @@ struct ReconstructionOptions
   /// teapot it adds a piece (Documentation/Numerics.md). False: the thesis's transfer.
   bool SeedFarPoints = false;
   /// Bytes; 0: AutomaticMemoryBudget (1 GiB) when C_dx is automatic, the memory available otherwise.
+  /// The automatic 1 GiB sizes the whole grid (its C_dx); split over ranks, their windows are
+  /// checked against the memory available.
   std::uint64_t MemoryBudget = 0;
   /// The ranks the grids are split over (the front ends set it from their
   /// communicator) and how many of them share this machine's memory

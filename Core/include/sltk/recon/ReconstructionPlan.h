@@ -55,6 +55,7 @@ struct ReconstructionPlan
   GridPlan<D> Grids;                              ///< unit-box grids of runs 1..R
   std::vector<double> Sparsity;                   ///< rho per point of Cloud (LocalOffset); empty: uniform K_P h_P
   bool AutomaticCellSize = false;                 ///< C_dx was chosen (the reconstruction may refine it)
+  bool BudgetIsAutomatic = false;                 ///< Options.MemoryBudget sized the automatic C_dx; not a limit
   double FirstRunReach = 0.0;                     ///< how far outside the cloud's box run 1's surface may lie
 
   ReconstructionPlan() = default;
