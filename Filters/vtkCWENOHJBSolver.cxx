@@ -176,7 +176,7 @@ int vtkCWENOHJBSolver::BuildSolver(vtkInformation* inInfo, vtkImageData* values,
     return 0;
   }
   sltk::InterpolatorKind interpolator{};
-  status = sltk::interpolatorOfCode(this->Interpolator, interpolator);
+  status = sltk::hjbInterpolatorOfCode(this->Interpolator, interpolator);
   if (!status.isOk())
   {
     vtkErrorMacro(<< status.message());

@@ -205,7 +205,6 @@ SLTK_OPTION_PROPERTY(RemoveOutliers, bool, Cleaning.RemoveOutliers)
 SLTK_OPTION_PROPERTY(OutlierDeviations, double, Cleaning.Outliers.Deviations)
 SLTK_OPTION_PROPERTY(ThinningFactor, double, Cleaning.ThinningFactor)
 SLTK_OPTION_PROPERTY(DetectTunnels, bool, DetectTunnels)
-SLTK_OPTION_PROPERTY(LeastSquaresQ1, bool, LeastSquaresQ1)
 SLTK_OPTION_PROPERTY(OctreeStorage, bool, OctreeStorage)
 #undef SLTK_OPTION_PROPERTY
 
@@ -303,7 +302,8 @@ namespace
 static_assert(vtkSLLevelSetReconstruct::Q1 == static_cast<int>(sltk::InterpolatorKind::Q1) &&
     vtkSLLevelSetReconstruct::WENO3 == static_cast<int>(sltk::InterpolatorKind::Weno3) &&
     vtkSLLevelSetReconstruct::CWENO == static_cast<int>(sltk::InterpolatorKind::Cweno) &&
-    vtkSLLevelSetReconstruct::CWENOZ == static_cast<int>(sltk::InterpolatorKind::CwenoZ),
+    vtkSLLevelSetReconstruct::CWENOZ == static_cast<int>(sltk::InterpolatorKind::CwenoZ) &&
+    vtkSLLevelSetReconstruct::LEAST_SQUARES_Q1 == static_cast<int>(sltk::InterpolatorKind::LeastSquaresQ1),
   "the filter's InterpolatorType names the registry's codes (InterpolatorKind.h)");
 
 constexpr int EveryGhostLevel = 32; // ParaView asks for 1, some filters 2-3
@@ -708,7 +708,6 @@ void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
   os << (this->GetNumberOfRunParameterValues() == 0 ? " none (Table 4.1)\n" : "\n");
   os << indent << "RemoveOutliers: " << this->GetRemoveOutliers() << "\n";
   os << indent << "DetectTunnels: " << this->GetDetectTunnels() << "\n";
-  os << indent << "LeastSquaresQ1: " << this->GetLeastSquaresQ1() << "\n";
   os << indent << "OctreeStorage: " << this->GetOctreeStorage() << "\n";
   os << indent << "GenerateHyperTreeGrid: " << this->GenerateHyperTreeGrid << "\n";
   os << indent << "OutlierDeviations: " << this->GetOutlierDeviations() << "\n";

@@ -135,8 +135,7 @@ void runCase(const std::string& name, const sltk::PointCloud<D>& cloud, const Ex
     options.Guess = sltk::InitialGuess::BoundingSphere;
     options.OutsideThresholdFactor = args.OutsideFactor;
     options.OctreeStorage = true;
-    options.LeastSquaresQ1 = interp == "lsq-q1"; // the thesis's own (5.5): LsqQ1.h
-    if (!options.LeastSquaresQ1 && !sltk::parseInterpolator(interp, options.Interpolator))
+    if (!sltk::parseInterpolator(interp, options.Interpolator)) // lsq-q1: the thesis's own (5.5), LsqQ1.h
     {
       std::fprintf(stderr, "unknown interpolator %s\n", interp.c_str());
       return;

@@ -51,7 +51,7 @@ using sltkbench::formatValue;
 using sltkbench::ThesisTables;
 using Json = nlohmann::json;
 
-constexpr int KindCount = sltk::interpolatorCount();
+constexpr int KindCount = static_cast<int>(sltk::HjbInterpolators.size());
 constexpr auto Weno3 = static_cast<size_t>(sltk::InterpolatorKind::Weno3);
 using PerKind = std::array<bool, KindCount>; // indexed by InterpolatorKind
 
@@ -176,7 +176,7 @@ std::array<Measure, KindCount> runAll(
   };
   for (int r = 0; r < repeat; ++r)
   {
-    for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
+    for (const sltk::InterpolatorInfo& info : sltk::HjbInterpolators)
     {
       const auto m = static_cast<size_t>(info.Kind);
       if (enabled[m])
@@ -294,7 +294,7 @@ void runTable(const ThesisTables& tables, const TestSpec& spec, const Config& cf
     }
     const auto m = runAll<D>(problem, setup, cfg.Repeat, cfg.Interps, ctx);
     all.emplace_back(n, m);
-    for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
+    for (const sltk::InterpolatorInfo& info : sltk::HjbInterpolators)
     {
       const auto k = static_cast<size_t>(info.Kind);
       if (!cfg.Interps[k])
@@ -342,7 +342,7 @@ void runTable(const ThesisTables& tables, const TestSpec& spec, const Config& cf
       "%7s | %-6s | %10s %10s | %10s %10s\n", "N", "interp", "min ours", "max ours", "min thesis", "max thesis");
     for (const auto& entry : all)
     {
-      for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
+      for (const sltk::InterpolatorInfo& info : sltk::HjbInterpolators)
       {
         const auto k = static_cast<size_t>(info.Kind);
         if (!cfg.Interps[k])
@@ -374,7 +374,7 @@ int main(int argc, char** argv)
   app.add_option("--cache", cfg.Cache, "cells per thread chunk (0: automatic)")->capture_default_str();
   app.add_option("--warm", cfg.Warm, "warm tabulation points (-1: the preset's; 0: off)")->capture_default_str();
   app.add_option("--interp", interps,
-    "comma list of " + sltk::interpolatorNameList() + " (weno: weno3; default weno3,cweno,cwenoz)");
+    "comma list of " + sltk::hjbInterpolatorNameList() + " (weno: weno3; default weno3,cweno,cwenoz)");
   app.add_option("--tables", cfg.Tables, "thesis_tables.json")->capture_default_str();
   if (const auto exit = sltkbench::parseCommandLine(app, argc, argv))
   {
@@ -387,10 +387,10 @@ int main(int argc, char** argv)
     for (const std::string& name : sltkbench::splitList(interps))
     {
       sltk::InterpolatorKind kind;
-      if (!sltkbench::parseBenchInterpolator(name, kind))
+      if (!sltkbench::parseBenchInterpolator(name, kind) || !sltk::offeredByHjb(kind))
       {
         std::fprintf(
-          stderr, "--interp: unknown interpolator %s (%s)\n", name.c_str(), sltk::interpolatorNameList().c_str());
+          stderr, "--interp: unknown interpolator %s (%s)\n", name.c_str(), sltk::hjbInterpolatorNameList().c_str());
         return 2;
       }
       cfg.Interps[static_cast<size_t>(kind)] = true;

@@ -126,7 +126,7 @@ double median(std::vector<double> v)
 }
 
 // Kernels: the registry's, in its order; a new kind is measured and printed without a change here.
-constexpr int KernelCount = sltk::interpolatorCount();
+constexpr int KernelCount = static_cast<int>(sltk::HjbInterpolators.size());
 constexpr auto Weno = static_cast<size_t>(sltk::InterpolatorKind::Weno3);
 
 /// One timing of the interpolator of `kind` on `u`.
@@ -157,7 +157,7 @@ void runDimension(sltk::Index n, long totalEvals, int reps)
     std::vector<double> runs[KernelCount];
     for (int r = 0; r < reps; ++r)
     {
-      for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
+      for (const sltk::InterpolatorInfo& info : sltk::HjbInterpolators)
       {
         runs[static_cast<size_t>(info.Kind)].push_back(timeKind<D>(info.Kind, u, w, cells, evals));
       }
@@ -167,7 +167,7 @@ void runDimension(sltk::Index n, long totalEvals, int reps)
     {
       seconds[k] = median(runs[k]);
     }
-    for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
+    for (const sltk::InterpolatorInfo& info : sltk::HjbInterpolators)
     {
       const auto k = static_cast<size_t>(info.Kind);
       const double count = double(cells) * evals;

@@ -188,7 +188,7 @@ void runCase(const std::string& name, const sltk::PointCloud<D>& cloud, const Ex
   options.Guess = sltk::InitialGuess::BoundingSphere;
   options.OutsideThresholdFactor = args.OutsideFactor;
   options.OctreeStorage = true;
-  options.LeastSquaresQ1 = true; // the tiled band with the thesis's interpolation (5.5)
+  options.Interpolator = sltk::InterpolatorKind::LeastSquaresQ1; // the tiled band with the thesis's interpolation (5.5)
   sltk::ReconstructionPlan<D> plan;
   sltk::Status status = sltk::planReconstruction(cloud, options, ctx, plan);
   Chapter5Grid level;

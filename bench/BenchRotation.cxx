@@ -35,7 +35,7 @@ namespace
 {
 using sltkbench::formatValue;
 
-constexpr int KindCount = sltk::interpolatorCount();
+constexpr int KindCount = static_cast<int>(sltk::HjbInterpolators.size());
 constexpr auto Weno3 = static_cast<size_t>(sltk::InterpolatorKind::Weno3);
 const char* const ErrTable = "table_3_1_test1_errors";
 const char* const CpuTable = "table_3_2_test1_cpu_s";
@@ -116,7 +116,7 @@ template <class Block>
 void printTable(const std::vector<sltk::Index>& ns, const char* columns, Block&& block)
 {
   std::printf("%6s", "N");
-  for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
+  for (const sltk::InterpolatorInfo& info : sltk::HjbInterpolators)
   {
     std::printf(" | %-8s %s", info.Label, columns);
   }
@@ -124,7 +124,7 @@ void printTable(const std::vector<sltk::Index>& ns, const char* columns, Block&&
   for (size_t l = 0; l < ns.size(); ++l)
   {
     std::printf("%6lld", static_cast<long long>(ns[l]));
-    for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
+    for (const sltk::InterpolatorInfo& info : sltk::HjbInterpolators)
     {
       std::printf(" | %8s %s", "", block(l, info.Kind).c_str());
     }
@@ -161,7 +161,7 @@ int main(int argc, char** argv)
   std::vector<Result> res[KindCount];
   for (const sltk::Index n : ns)
   {
-    for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
+    for (const sltk::InterpolatorInfo& info : sltk::HjbInterpolators)
     {
       res[static_cast<size_t>(info.Kind)].push_back(
         sltk::withInterpolator<2>(info.Kind, [&](auto tag) { return runTest1<typename decltype(tag)::type>(n, ctx); }));

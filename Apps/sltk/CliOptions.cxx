@@ -164,42 +164,26 @@ CLI::Option* addChoice(CLI::App* app, const std::string& name, const std::string
 }
 
 CLI::Option* addInterpolatorOption(
-  CLI::App* app, sltk::InterpolatorKind& kind, const std::string& defaultName, bool* leastSquares)
+  CLI::App* app, sltk::InterpolatorKind& kind, const std::string& defaultName, bool hjb)
 {
-  constexpr const char* LeastSquaresName = "lsq-q1";
   std::string description = "spatial reconstruction at the feet of the characteristics (default " + defaultName + "):";
   std::vector<std::string> names;
   for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
   {
-    description += std::string("\n  ") + info.Name + ": " + info.Description;
-    names.emplace_back(info.Name);
+    if (!hjb || sltk::offeredByHjb(info.Kind))
+    {
+      description += std::string("\n  ") + info.Name + ": " + info.Description;
+      names.emplace_back(info.Name);
+    }
   }
-  if (leastSquares)
-  {
-    description += std::string("\n  ") + LeastSquaresName +
-      ": the thesis's chapter 5 least-squares Q1 (5.5), the nearest node's,\n    discontinuous between cells (for "
-      "comparison)";
-    names.emplace_back(LeastSquaresName);
-  }
-  const auto isLeastSquares = [leastSquares](const std::string& text)
-  { return leastSquares && sltk::lowerCase(text) == LeastSquaresName; };
-  const auto known = [isLeastSquares](const std::string& text)
+  const auto known = [hjb](const std::string& text)
   {
     sltk::InterpolatorKind parsed;
-    return isLeastSquares(text) || sltk::parseInterpolator(text, parsed);
+    return sltk::parseInterpolator(text, parsed) && (!hjb || sltk::offeredByHjb(parsed));
   };
   return app
     ->add_option_function<std::string>(
-      "--interpolator",
-      [&kind, leastSquares, isLeastSquares](const std::string& text)
-      {
-        if (leastSquares)
-        {
-          *leastSquares = isLeastSquares(text);
-        }
-        sltk::parseInterpolator(text, kind);
-      },
-      description)
+      "--interpolator", [&kind](const std::string& text) { sltk::parseInterpolator(text, kind); }, description)
     ->check(namedCheck("interpolator", known, sltk::orList(names)))
     ->option_text("NAME");
 }

@@ -38,11 +38,10 @@ CLI::Option* addNumberList(CLI::App* app, const std::string& name, std::vector<d
 CLI::Option* addChoice(CLI::App* app, const std::string& name, const std::string& what,
   const std::vector<std::string>& names, const std::function<void(size_t)>& chosen, const std::string& description);
 
-/// --interpolator NAME: a name (or label) of the registry, its list and descriptions in the help;
-/// with `leastSquares` (the reconstruction) also "lsq-q1", which sets it (the thesis's chapter 5
-/// scheme, ReconstructionOptions::LeastSquaresQ1).
+/// --interpolator NAME: a name (or label) of the registry, its list and descriptions in the help:
+/// every kind for the reconstruction, the ones the HJB solver offers (offeredByHjb) for `sltk hjb`.
 CLI::Option* addInterpolatorOption(
-  CLI::App* app, sltk::InterpolatorKind& kind, const std::string& defaultName, bool* leastSquares = nullptr);
+  CLI::App* app, sltk::InterpolatorKind& kind, const std::string& defaultName, bool hjb);
 
 /// --threads T (>= 0; default 0: all).
 CLI::Option* addThreadsOption(CLI::App* app, int& threads);

@@ -550,7 +550,7 @@ Command addReconstructCommand(CLI::App& sltk)
       "stored_nodes, "
       "uniform_nodes, leaves]")
     ->option_text("FILE");
-  addInterpolatorOption(app, o.Interpolator, "weno3", &o.LeastSquaresQ1);
+  addInterpolatorOption(app, o.Interpolator, "weno3", false);
   addPlanOptions(app, o);
   app->get_option("--cdx")->check(withinRange("CellSizeFactor"));
   app->get_option("--kp")->check(withinRange("OutsideThresholdFactor"));

@@ -249,13 +249,26 @@ TEST(HjbExpressionSolver, ThreeDimensionalTransportWithControls)
   EXPECT_LT(r.LinfError, 2e-2) << "L1 " << r.L1Error;
 }
 
+TEST(HjbPresetSolver, PresetSolverRefusesTheReconstructionsOwnInterpolator)
+{
+  sltk::PresetRunOptions o;
+  o.Preset = sltk::HjbPreset::Test1Rotation;
+  o.Nodes = 11;
+  o.Interpolator = sltk::InterpolatorKind::LeastSquaresQ1;
+  std::unique_ptr<sltk::HjbSolver> solver;
+  const sltk::Status s = sltk::makePresetSolver(o, solver);
+  EXPECT_EQ(s.code(), sltk::StatusCode::InvalidArgument);
+  EXPECT_NE(s.message().find("the reconstruction's only"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("CWENOZ"), std::string::npos) << "names the ones it offers: " << s.message();
+}
+
 TEST(HjbPresetSolver, EveryPresetStepsWithEveryInterpolator)
 {
   // Each preset is compiled for its setup's RK order only (PresetRun.cxx): all
   // of them build and step, with the values staying finite.
   for (int p = 1; p <= 5; ++p)
   {
-    for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
+    for (const sltk::InterpolatorInfo& info : sltk::HjbInterpolators)
     {
       sltk::PresetRunOptions o;
       o.Preset = static_cast<sltk::HjbPreset>(p);

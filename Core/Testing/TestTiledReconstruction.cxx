@@ -183,7 +183,7 @@ TEST(TiledReconstruction, CircleAgreesWithTheUniformVersionWithTheThesisLeastSqu
 {
   // The chapter 5 interpolation (5.5, LsqQ1.h) through both storages' dispatch.
   sltk::ReconstructionOptions options = sltk::ReconstructionOptions::thesis();
-  options.LeastSquaresQ1 = true;
+  options.Interpolator = sltk::InterpolatorKind::LeastSquaresQ1;
   compareWithUniform<2>(sltk::circleCloud(64), options, 1.2);
 }
 

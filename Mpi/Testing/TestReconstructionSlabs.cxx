@@ -147,7 +147,7 @@ TEST(ReconstructionSlabs, SingleNodeSpecksAreMergedAsOnOneRank)
   // each rank merges those of its owned rows, reading its ghost rows.
   const sltk::PointCloud<2> cloud = sltk::withGaussianNoise(sltk::circleCloud(300), 0.01, 3);
   sltk::ReconstructionOptions options;
-  options.LeastSquaresQ1 = true;
+  options.Interpolator = sltk::InterpolatorKind::LeastSquaresQ1;
   expectSameAsOneRank<2>(cloud, options);
   sltk::ReconstructionResult<2> one, mine;
   ASSERT_TRUE(sltk::reconstruct(cloud, options, sltk::Context{}, one).isOk());

@@ -173,7 +173,7 @@ TEST(TiledReconstructionRanks, SingleNodeSpecksAreMergedAsOnOneRank)
   const sltk::PointCloud<2> cloud = sltk::withGaussianNoise(sltk::circleCloud(300), 0.01, 3);
   sltk::ReconstructionOptions options;
   options.OctreeStorage = true;
-  options.LeastSquaresQ1 = true;
+  options.Interpolator = sltk::InterpolatorKind::LeastSquaresQ1;
   expectSameAsOneRank<2>(cloud, options);
   sltk::ReconstructionPlan<2> plan;
   ASSERT_TRUE(sltk::planReconstruction(cloud, options, sltk::Context{}, plan).isOk());

@@ -198,7 +198,7 @@ Status makeExpressionSolverOfControls(
   problem.Feedback = ExpressionArgmin<D, M>{ in.Expressions };
   solver = makeHjbSolverOf<Problem>(spec.Interpolator, problem, in.Grid, in.Options, in.Steps, in.Dt, in.Reachable,
     in.Expressions->HasExact, spec.InitialValues);
-  return solver ? Status::ok() : Status::invalidArgument("unknown interpolator");
+  return madeHjbSolver(solver, spec.Interpolator);
 }
 
 /// Declares (extern) or defines (in its translation unit) the instantiation for (D, M).

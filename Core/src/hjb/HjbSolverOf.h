@@ -208,13 +208,25 @@ private:
   HjbArgmins Argmins; ///< warm starts of the minimiser (MinimizerOptions::WarmTabulationPoints)
 };
 
-/// Builds the solver for the interpolator chosen at run time.
+/// Builds the solver for the interpolator chosen at run time; null for a kind
+/// the HJB solver does not offer (offeredByHjb).
 template <class Problem, class... Args>
 std::unique_ptr<HjbSolver> makeHjbSolverOf(InterpolatorKind kind, Args&&... args)
 {
+  if (!offeredByHjb(kind))
+  {
+    return nullptr;
+  }
   return withInterpolator<Problem::Dim>(kind,
     [&](auto tag) -> std::unique_ptr<HjbSolver>
     { return std::make_unique<HjbSolverOf<typename decltype(tag)::type, Problem>>(std::forward<Args>(args)...); });
+}
+
+/// The status of a makeHjbSolverOf call: a null solver is a kind the HJB solver does not offer.
+inline Status madeHjbSolver(const std::unique_ptr<HjbSolver>& solver, InterpolatorKind kind)
+{
+  InterpolatorKind checked = kind;
+  return solver ? Status::ok() : hjbInterpolatorOfCode(static_cast<int>(kind), checked);
 }
 
 } // namespace sltk

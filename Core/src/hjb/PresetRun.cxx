@@ -71,7 +71,7 @@ Status presetSolver(const Problem& base, HjbSetup<Problem::Dim> setup, const Pre
   const bool reachable = options.Preset == HjbPreset::Test5Zermelo;
   solver = makeHjbSolverOf<Fixed>(
     options.Interpolator, problem, setup.Grid, setup.Options, steps, dt, reachable, Problem::HasExact);
-  return solver ? Status::ok() : Status::invalidArgument("unknown interpolator");
+  return madeHjbSolver(solver, options.Interpolator);
 }
 /// Slabs of the preset's grid over `comm` (DistributedHjbSolver.h); `speed`
 /// bounds |f_D| along the last axis over the domain and the controls.

@@ -346,9 +346,9 @@ int main(int argc, char* argv[])
       "GenerateHyperTreeGrid off: no trees, the run summary and the same surface");
     recon->GenerateHyperTreeGridOn();
     recon->OctreeStorageOff();
-    // LeastSquaresQ1: the thesis's chapter 5 interpolation (5.5) at the feet; its own result, watertight.
-    recon->LeastSquaresQ1On();
-    check(recon->GetExecutive()->Update() == 1, "LeastSquaresQ1: the sphere is reconstructed");
+    // LEAST_SQUARES_Q1: the thesis's chapter 5 interpolation (5.5) at the feet; its own result, watertight.
+    recon->SetInterpolator(vtkSLLevelSetReconstruct::LEAST_SQUARES_Q1);
+    check(recon->GetExecutive()->Update() == 1, "LEAST_SQUARES_Q1: the sphere is reconstructed");
     {
       auto* lsqTable = vtkTable::SafeDownCast(recon->GetOutputDataObject(2));
       const vtkIdType rows = lsqTable ? lsqTable->GetNumberOfRows() : 0;
@@ -362,10 +362,10 @@ int main(int argc, char* argv[])
       lsqOpen->Update();
       check(lsqCloudError > 0.0 && lsqCloudError < 0.05 && lsqCloudError != uniformCloudError &&
           lsqOpen->GetOutput()->GetNumberOfCells() == 0,
-        "LeastSquaresQ1: Err_P " + std::to_string(lsqCloudError) + " (WENO3 " + std::to_string(uniformCloudError) +
+        "LEAST_SQUARES_Q1: Err_P " + std::to_string(lsqCloudError) + " (WENO3 " + std::to_string(uniformCloudError) +
           "), no boundary or non-manifold edge");
     }
-    recon->LeastSquaresQ1Off();
+    recon->SetInterpolator(vtkSLLevelSetReconstruct::WENO3);
     recon->SetNumberOfRuns(99);
     check(recon->GetNumberOfRuns() == 99 && recon->GetExecutive()->Update() == 0,
       "NumberOfRuns outside 1-6 is refused, not clamped");
@@ -431,6 +431,8 @@ int main(int argc, char* argv[])
     badHjb->SetInterpolator(-1);
     badHjb->UpdateWholeExtent();
     check(badHjb->GetExecutive()->Update() == 0, "the HJB solver refuses an Interpolator outside the registry");
+    badHjb->SetInterpolator(vtkSLLevelSetReconstruct::LEAST_SQUARES_Q1);
+    check(badHjb->GetExecutive()->Update() == 0, "the HJB solver refuses the reconstruction's own interpolator");
   }
 
   // Octree: always the octree (TestOctreeSDF.cxx checks its outputs).

@@ -11,6 +11,8 @@
 #include "sltk/interp/Q1.h"
 #include "sltk/interp/Weno3.h"
 
+#include <cassert>
+
 namespace sltk
 {
 
@@ -21,10 +23,13 @@ struct InterpolatorTag
 };
 
 /// f(InterpolatorTag<I>{}) for the class I of `kind` in dimension D; every branch must return the same type.
+/// The kinds every solver offers (offeredByHjb); the reconstruction dispatches its own
+/// (ReconstructionInterpolator.h), and the HJB solver refuses it before (hjbInterpolatorOfCode).
 template <int D, class F>
 decltype(auto) withInterpolator(InterpolatorKind kind, F&& f)
 {
-  static_assert(interpolatorCount() == 4, "a new InterpolatorKind needs its case here");
+  static_assert(interpolatorCount() == 5, "a new InterpolatorKind needs its case here");
+  assert(offeredByHjb(kind));
   switch (kind)
   {
     case InterpolatorKind::Q1:
@@ -34,6 +39,7 @@ decltype(auto) withInterpolator(InterpolatorKind kind, F&& f)
     case InterpolatorKind::Cweno:
       return f(InterpolatorTag<CwenoInterpolator<D>>{});
     case InterpolatorKind::CwenoZ:
+    case InterpolatorKind::LeastSquaresQ1:
       break;
   }
   return f(InterpolatorTag<CwenoZInterpolator<D>>{});

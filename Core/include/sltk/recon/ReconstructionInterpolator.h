@@ -1,12 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// \file ReconstructionInterpolator.h
-/// The reconstruction's compile-time dispatch to its interpolator: the kind
-/// the options name (Interpolators.h), or the thesis's chapter 5 least squares
-/// Q1 (5.5, LsqQ1.h) when ReconstructionOptions::LeastSquaresQ1 asks for the
-/// side-by-side with the thesis's adaptive scheme. Only the reconstruction
-/// offers the latter (the HJB solver does not), so it is not an
-/// InterpolatorKind.
+/// The reconstruction's compile-time dispatch to its interpolator: the kinds
+/// every solver offers (Interpolators.h), and the thesis's chapter 5
+/// least-squares Q1 (5.5, LsqQ1.h), which only the reconstruction offers.
 
 #include "sltk/interp/Interpolators.h"
 #include "sltk/interp/LsqQ1.h"
@@ -21,7 +18,7 @@ namespace sltk
 template <int D, class F>
 decltype(auto) withReconstructionInterpolator(const ReconstructionOptions& options, F&& f)
 {
-  if (options.LeastSquaresQ1)
+  if (options.Interpolator == InterpolatorKind::LeastSquaresQ1)
   {
     return f(InterpolatorTag<LsqQ1Interpolator<D>>{});
   }

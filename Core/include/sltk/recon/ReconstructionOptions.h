@@ -78,11 +78,9 @@ struct ReconstructionOptions
   int MinIterations = 10;  ///< iterations forced before (4.33) may stop a run
   double Tolerance = 1e-4; ///< threshold of Delta_E (4.33)
   int EnergyWindow = 10;   ///< k = min(n, EnergyWindow) of (4.33)
+  /// At the feet (4.22)/(4.24): WENO3, the thesis's chapter 4 choice, or any kind
+  /// of InterpolatorKind.h, the chapter 5 least-squares Q1 (5.5, LsqQ1.h) included.
   InterpolatorKind Interpolator = InterpolatorKind::Weno3;
-  /// The thesis's chapter 5 interpolation instead of Interpolator: the nearest
-  /// node's least-squares Q1 with the centre constraint (5.5, LsqQ1.h),
-  /// discontinuous between cells; for comparison with the thesis.
-  bool LeastSquaresQ1 = false;
   InitialGuess Guess = InitialGuess::OutsideMarking;
   /// Per-run p and eta; empty: Table 4.1 with FinalEta. Run r uses entry min(r, size) - 1.
   std::vector<RunParameters> Schedule;
@@ -148,6 +146,7 @@ struct ReconstructionOptions
     o.Cleaning.Automatic = false;
     o.LocalOffset = false;
     o.FollowFarPoints = false;
+    o.Interpolator = InterpolatorKind::Weno3; // chapter 4's
     return o;
   }
 
