@@ -17,6 +17,7 @@ import hashlib
 import math
 import os
 import signal
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -547,7 +548,12 @@ def main():
     name = sys.argv[1]
     t = Sandbox()
     CASES[name](t)
-    return 0 if t.finish(name) else 1
+    passed = t.finish(name)
+    if passed:
+        shutil.rmtree(t.dir, ignore_errors=True)  # a failed case keeps its folder to look at
+    else:
+        print("the case's files: " + t.dir)
+    return 0 if passed else 1
 
 
 if __name__ == "__main__":
