@@ -5,6 +5,7 @@ import json
 import math
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -312,4 +313,6 @@ expect(rc1 == 0 and rc2 == 0 and st.get("l1_error") is not None and sp.get("l1_e
        % (st.get("l1_error"), sp.get("l1_error"), err1.strip(), err2.strip()))
 expect(not [f for f in os.listdir(tmp) if ".part" in f], "no temporary files are left behind")
 
-sys.exit(1 if failures else 0)
+if failures:
+    sys.exit("%d failure(s); the files: %s" % (len(failures), tmp))
+shutil.rmtree(tmp, ignore_errors=True)

@@ -9,6 +9,7 @@ import json
 import math
 import os
 import struct
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -138,6 +139,15 @@ near_h, far_h = spacing(outputs["near"]["ply"]), spacing(outputs["far"]["ply"])
 expect(near_h is not None and far_h is not None and abs(far_h - near_h) <= 1e-6 * near_h,
        "a double PLY cloud far from the origin is read in double (h_P %s near, %s far)" % (near_h, far_h))
 
+# An OBJ cloud is text: read in double (VTK's OBJ reader keeps double points), the same h_P moved.
+for name, points in (("near", near), ("far", far)):
+    with open(os.path.join(tmp, name + ".obj"), "w") as f:
+        for p in points:
+            f.write("v %r %r %r\n" % p)
+near_h, far_h = spacing(os.path.join(tmp, "near.obj")), spacing(os.path.join(tmp, "far.obj"))
+expect(near_h is not None and far_h is not None and abs(far_h - near_h) <= 1e-6 * near_h,
+       "an OBJ cloud far from the origin is read in double (h_P %s near, %s far)" % (near_h, far_h))
+
 
 def point_set(points):
     vtk_points = vtkPoints()
@@ -187,4 +197,5 @@ for axis, get in enumerate(("GetXCoordinates", "GetYCoordinates", "GetZCoordinat
            "vtkOctreeSDF: the grid's %s moved" % get[3])
 
 if failures:
-    sys.exit("%d failure(s)" % len(failures))
+    sys.exit("%d failure(s); the files: %s" % (len(failures), tmp))
+shutil.rmtree(tmp, ignore_errors=True)
