@@ -213,12 +213,27 @@ SLTK_OPTION_PROPERTY(OctreeStorage, bool, OctreeStorage)
 void vtkSLLevelSetReconstruct::SetInterpolator(int code)
 {
   setConverted(this, this->GetInterpolator(), code, this->Impl->Interpolator,
-    [this](int c) { return sltk::interpolatorFromCode(c, this->Impl->Options.Interpolator); });
+    [this](int c)
+    {
+      sltk::InterpolatorKind kind{};
+      if (c == AUTOMATIC)
+      {
+        this->Impl->Options.Interpolator.reset();
+        return true;
+      }
+      if (!sltk::interpolatorFromCode(c, kind))
+      {
+        return false;
+      }
+      this->Impl->Options.Interpolator = kind;
+      return true;
+    });
 }
 
 int vtkSLLevelSetReconstruct::GetInterpolator()
 {
-  return this->Impl->Interpolator.value_or(static_cast<int>(this->Impl->Options.Interpolator));
+  const std::optional<sltk::InterpolatorKind>& kind = this->Impl->Options.Interpolator;
+  return this->Impl->Interpolator.value_or(kind ? static_cast<int>(*kind) : AUTOMATIC);
 }
 
 void vtkSLLevelSetReconstruct::SetInitialGuess(int code)
@@ -684,7 +699,10 @@ void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   sltk::InterpolatorKind kind{};
   os << indent << "Interpolator: "
-     << (sltk::interpolatorFromCode(this->GetInterpolator(), kind) ? sltk::interpolatorInfo(kind).Label : "?") << "\n";
+     << (this->GetInterpolator() == AUTOMATIC                           ? "Automatic"
+            : sltk::interpolatorFromCode(this->GetInterpolator(), kind) ? sltk::interpolatorInfo(kind).Label
+                                                                        : "?")
+     << "\n";
   os << indent << "NumberOfRuns: " << this->GetNumberOfRuns() << "\n";
   os << indent << "CellSizeFactor: " << this->GetCellSizeFactor() << "\n";
   os << indent << "MaximumLevel: " << this->GetMaximumLevel() << "\n";

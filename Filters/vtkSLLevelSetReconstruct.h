@@ -85,6 +85,7 @@ public:
   /// Spatial reconstruction used at the feet of the characteristics.
   enum InterpolatorType
   {
+    AUTOMATIC = -1,      ///< LEAST_SQUARES_Q1 on a cloud whose noise is below 0.08 h_P, else WENO3 (logged)
     Q1 = 0,              ///< multilinear (4.28)
     WENO3 = 1,           ///< dimension-split WENO3 (2.65)-(2.76)
     CWENO = 2,           ///< central WENO (3.10)-(3.28)
@@ -95,6 +96,9 @@ public:
   ///@{
   /// Interpolator (default WENO3, the thesis's choice for laser scans): an
   /// InterpolatorType value; RequestData refuses any other value with an error.
+  /// AUTOMATIC measures the cloud's noise (field data CloudNoise, in h_P) and
+  /// takes LEAST_SQUARES_Q1 below 0.08, WENO3 otherwise (field data
+  /// Interpolator: the code used).
   /// LEAST_SQUARES_Q1 is the nearest node's Q1 polynomial fitted by least squares
   /// to its 3^D - 1 neighbours with the centre constraint (5.5); measured against
   /// WENO3 in Documentation/Profile.md.

@@ -135,7 +135,9 @@ void runCase(const std::string& name, const sltk::PointCloud<D>& cloud, const Ex
     options.Guess = sltk::InitialGuess::BoundingSphere;
     options.OutsideThresholdFactor = args.OutsideFactor;
     options.OctreeStorage = true;
-    if (!sltk::parseInterpolator(interp, options.Interpolator)) // lsq-q1: the thesis's own (5.5), LsqQ1.h
+    sltk::InterpolatorKind kind{};
+    options.Interpolator = sltk::parseInterpolator(interp, kind) ? std::optional(kind) : std::nullopt;
+    if (!options.Interpolator) // lsq-q1: the thesis's own (5.5), LsqQ1.h
     {
       std::fprintf(stderr, "unknown interpolator %s\n", interp.c_str());
       return;

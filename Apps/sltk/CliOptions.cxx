@@ -163,11 +163,21 @@ CLI::Option* addChoice(CLI::App* app, const std::string& name, const std::string
     ->check(namedCheck(what, known, sltk::orList(names)));
 }
 
-CLI::Option* addInterpolatorOption(
-  CLI::App* app, sltk::InterpolatorKind& kind, const std::string& defaultName, bool hjb)
+namespace
 {
-  std::string description = "spatial reconstruction at the feet of the characteristics (default " + defaultName + "):";
+/// --interpolator NAME with `automatic` (the reconstruction's "auto") or without it (the HJB solver's kinds).
+CLI::Option* addInterpolatorChoice(CLI::App* app, const std::string& defaultText, bool hjb, bool automatic,
+  const std::function<void(std::optional<sltk::InterpolatorKind>)>& chosen)
+{
+  constexpr const char* AutomaticName = "auto";
+  std::string description = "spatial reconstruction at the feet of the characteristics (default " + defaultText + "):";
   std::vector<std::string> names;
+  if (automatic)
+  {
+    description += std::string("\n  ") + AutomaticName +
+      ": lsq-q1 on a cloud whose noise is below 0.08 h_P, else weno3\n    (the choice and the noise are logged)";
+    names.emplace_back(AutomaticName);
+  }
   for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
   {
     if (!hjb || sltk::offeredByHjb(info.Kind))
@@ -176,16 +186,42 @@ CLI::Option* addInterpolatorOption(
       names.emplace_back(info.Name);
     }
   }
-  const auto known = [hjb](const std::string& text)
+  const auto isAutomatic = [automatic](const std::string& text)
+  { return automatic && sltk::lowerCase(text) == AutomaticName; };
+  const auto known = [hjb, isAutomatic](const std::string& text)
   {
     sltk::InterpolatorKind parsed;
-    return sltk::parseInterpolator(text, parsed) && (!hjb || sltk::offeredByHjb(parsed));
+    return isAutomatic(text) || (sltk::parseInterpolator(text, parsed) && (!hjb || sltk::offeredByHjb(parsed)));
   };
   return app
     ->add_option_function<std::string>(
-      "--interpolator", [&kind](const std::string& text) { sltk::parseInterpolator(text, kind); }, description)
+      "--interpolator",
+      [chosen, isAutomatic](const std::string& text)
+      {
+        sltk::InterpolatorKind kind{};
+        if (!isAutomatic(text) && sltk::parseInterpolator(text, kind))
+        {
+          chosen(kind);
+          return;
+        }
+        chosen(std::nullopt);
+      },
+      description)
     ->check(namedCheck("interpolator", known, sltk::orList(names)))
     ->option_text("NAME");
+}
+} // namespace
+
+CLI::Option* addInterpolatorOption(CLI::App* app, sltk::InterpolatorKind& kind, const std::string& defaultName)
+{
+  return addInterpolatorChoice(app, defaultName, true, false,
+    [&kind](std::optional<sltk::InterpolatorKind> chosen) { kind = chosen.value_or(kind); });
+}
+
+CLI::Option* addReconstructionInterpolatorOption(CLI::App* app, std::optional<sltk::InterpolatorKind>& kind)
+{
+  return addInterpolatorChoice(
+    app, "weno3", false, true, [&kind](std::optional<sltk::InterpolatorKind> chosen) { kind = chosen; });
 }
 
 CLI::Option* addThreadsOption(CLI::App* app, int& threads)

@@ -14,6 +14,7 @@
 
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,10 +39,13 @@ CLI::Option* addNumberList(CLI::App* app, const std::string& name, std::vector<d
 CLI::Option* addChoice(CLI::App* app, const std::string& name, const std::string& what,
   const std::vector<std::string>& names, const std::function<void(size_t)>& chosen, const std::string& description);
 
-/// --interpolator NAME: a name (or label) of the registry, its list and descriptions in the help:
-/// every kind for the reconstruction, the ones the HJB solver offers (offeredByHjb) for `sltk hjb`.
-CLI::Option* addInterpolatorOption(
-  CLI::App* app, sltk::InterpolatorKind& kind, const std::string& defaultName, bool hjb);
+/// `sltk hjb --interpolator NAME`: a name (or label) of the kinds the HJB solver offers
+/// (offeredByHjb), their list and descriptions in the help.
+CLI::Option* addInterpolatorOption(CLI::App* app, sltk::InterpolatorKind& kind, const std::string& defaultName);
+
+/// `sltk reconstruct --interpolator NAME`: every kind of the registry, or "auto"
+/// (empty: ReconstructionOptions::Interpolator chosen from the cloud's noise).
+CLI::Option* addReconstructionInterpolatorOption(CLI::App* app, std::optional<sltk::InterpolatorKind>& kind);
 
 /// --threads T (>= 0; default 0: all).
 CLI::Option* addThreadsOption(CLI::App* app, int& threads);

@@ -217,7 +217,7 @@ Command addHjbCommand(CLI::App& sltk)
     "dt = L dx, L in [0, 100] (default 0: the preset's; custom: 1,\ndx the smallest spacing)")
     ->check(withinRange("CourantNumber"))
     ->option_text("L");
-  addInterpolatorOption(app, command->Interpolator, "cwenoz", true);
+  addInterpolatorOption(app, command->Interpolator, "cwenoz");
   addThreadsOption(app, command->Threads);
   app->add_flag("--quiet", command->Quiet, "no progress bar");
   app

@@ -486,6 +486,8 @@ int Reconstruct::run() const
       { "thinning_cell", result.Cleaning.ThinningCell },
       { "points_reconstructed", static_cast<long long>(result.Cleaning.OutputPoints) }, { "h_P", result.CloudSpacing },
       { "cdx", result.CellSizeFactor }, { "kp", result.OutsideThresholdFactor },
+      { "interpolator", sltk::interpolatorInfo(result.Interpolator).Name },
+      { "noise", result.CloudNoise >= 0.0 ? nlohmann::ordered_json(result.CloudNoise) : nlohmann::ordered_json() },
       { "automatic_choices", result.Choices }, { "recoveries", result.Recoveries }, { "warnings", result.Warnings },
       { "fits_cloud", fits }, { "seconds", seconds }, { "peak_memory_mb", peakMb }, { "ranks", ranks },
       { "bytes_sent_max", bytesSent }, { "collectives", collectives },
@@ -550,7 +552,7 @@ Command addReconstructCommand(CLI::App& sltk)
       "stored_nodes, "
       "uniform_nodes, leaves]")
     ->option_text("FILE");
-  addInterpolatorOption(app, o.Interpolator, "weno3", false);
+  addReconstructionInterpolatorOption(app, o.Interpolator);
   addPlanOptions(app, o);
   app->get_option("--cdx")->check(withinRange("CellSizeFactor"));
   app->get_option("--kp")->check(withinRange("OutsideThresholdFactor"));

@@ -53,7 +53,10 @@ inline bool interpolatorOf(const std::string& name, sltk::InterpolatorKind& kind
 /// "unknown interpolator NAME" and returns false for an unknown name.
 inline bool selectInterpolator(const std::string& name, sltk::ReconstructionOptions& options, std::string& thesisKey)
 {
-  if (!interpolatorOf(name, options.Interpolator, thesisKey))
+  sltk::InterpolatorKind kind{};
+  const bool known = interpolatorOf(name, kind, thesisKey);
+  options.Interpolator = kind;
+  if (!known)
   {
     std::printf("unknown interpolator %s\n", name.c_str());
     return false;

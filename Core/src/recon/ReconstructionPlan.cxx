@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/recon/ReconstructionPlan.h"
 
+#include "sltk/cloud/CloudNoise.h"
 #include "sltk/cloud/CloudSpacing.h"
 #include "sltk/cloud/CloudThickness.h"
 #include "sltk/cloud/CloudThinning.h"
@@ -109,7 +110,10 @@ Status validateOptionRanges(const ReconstructionOptions& options)
   SLTK_RETURN_IF_ERROR(
     checkOptionRange(InitialGuessRange, static_cast<int>(options.Guess), InitialGuessRange.Property));
   InterpolatorKind kind{};
-  SLTK_RETURN_IF_ERROR(interpolatorOfCode(static_cast<int>(options.Interpolator), kind));
+  if (options.Interpolator)
+  {
+    SLTK_RETURN_IF_ERROR(interpolatorOfCode(static_cast<int>(*options.Interpolator), kind));
+  }
   const std::pair<const char*, double> values[] = {
     { "NumberOfRuns", static_cast<double>(options.Runs) },
     { "MaximumNumberOfIterations", static_cast<double>(options.MaxIterations) }, { "Tolerance", options.Tolerance },
@@ -255,6 +259,34 @@ Status withFittingLevel(const ReconstructionPlan<D>& plan, const Status& refusal
   return Status::outOfMemory(m.str());
 }
 
+/// An automatic interpolator from the cloud's noise, measured before any thinning
+/// (AutomaticParameters.h, AutomaticInterpolatorNoise).
+template <int D>
+Status chooseInterpolator(ReconstructionPlan<D>& plan, const Context& ctx)
+{
+  plan.CloudNoise = -1.0;
+  if (plan.Options.Interpolator)
+  {
+    return Status::ok();
+  }
+  double noise = 0.0;
+  if (!cloudNoise(*plan.Locator, plan.CloudSpacing, ctx, noise).isOk())
+  {
+    plan.Options.Interpolator = InterpolatorKind::Weno3; // too few points to tell
+    plan.Choices.push_back("interpolator weno3: too few points to measure the noise");
+    return Status::ok();
+  }
+  plan.CloudNoise = noise;
+  const bool clean = noise < AutomaticInterpolatorNoise;
+  plan.Options.Interpolator = clean ? InterpolatorKind::LeastSquaresQ1 : InterpolatorKind::Weno3;
+  plan.Choices.push_back(std::string("interpolator ") + interpolatorInfo(*plan.Options.Interpolator).Name +
+    ": the cloud's noise is " + number(noise) + " h_P, " + (clean ? "below " : "not below ") +
+    number(AutomaticInterpolatorNoise) + " h_P" +
+    (clean ? " (the least-squares Q1 (5.5); --interpolator weno3 for the thesis's)"
+           : " (WENO3 damps the noise the least-squares Q1 follows)"));
+  return Status::ok();
+}
+
 /// An automatic C_dx: 1, or the smallest that fits the budget (AutomaticParameters.h).
 template <int D>
 Status chooseCellSize(ReconstructionPlan<D>& plan, const GridPlanOptions& po)
@@ -319,6 +351,7 @@ Status planReconstruction(
       " points removed (3 sigma; --no-cleaning keeps them)");
   }
   SLTK_RETURN_IF_ERROR(locate(std::move(cloud), plan, ctx));
+  SLTK_RETURN_IF_ERROR(chooseInterpolator(plan, ctx));
 
   const bool automaticCellSize = !(options.CellSizeFactor > 0.0) && options.MaximumLevel == 0;
   if (options.MaximumLevel > 0)

@@ -242,6 +242,8 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
   records.CloudSpacing = plan.userCloudSpacing();
   records.Cleaning = plan.Cleaning;
   records.Choices = plan.Choices;
+  records.Interpolator = plan.Options.Interpolator.value_or(InterpolatorKind::Weno3);
+  records.CloudNoise = plan.CloudNoise;
   recordsToUser(plan.Box, records);
   return status;
 }

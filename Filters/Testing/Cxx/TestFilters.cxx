@@ -75,7 +75,7 @@ void checkOptionProperties()
   const sltk::ReconstructionOptions defaults;
   check(recon->GetNumberOfRuns() == defaults.Runs && recon->GetPadding() == defaults.Padding &&
       recon->GetTolerance() == defaults.Tolerance && recon->GetFinalEta() == defaults.FinalEta &&
-      recon->GetInterpolator() == static_cast<int>(defaults.Interpolator) && recon->GetMemoryBudget() == 0 &&
+      recon->GetInterpolator() == static_cast<int>(*defaults.Interpolator) && recon->GetMemoryBudget() == 0 &&
       recon->GetAutomaticCleaning() == defaults.Cleaning.Automatic &&
       recon->GetOutlierDeviations() == defaults.Cleaning.Outliers.Deviations,
     "the properties' defaults are Core's");
@@ -118,7 +118,8 @@ void checkOptionProperties()
     int (vtkSLLevelSetReconstruct::*Get)();
     int Bad, Good;
   } unheld[3] = {
-    { "Interpolator", &vtkSLLevelSetReconstruct::SetInterpolator, &vtkSLLevelSetReconstruct::GetInterpolator, -1, 1 },
+    { "Interpolator", &vtkSLLevelSetReconstruct::SetInterpolator, &vtkSLLevelSetReconstruct::GetInterpolator, -2,
+      1 }, // -1: AUTOMATIC
     { "InitialGuess", &vtkSLLevelSetReconstruct::SetInitialGuess, &vtkSLLevelSetReconstruct::GetInitialGuess, 300, 0 },
     { "MemoryBudget", &vtkSLLevelSetReconstruct::SetMemoryBudget, &vtkSLLevelSetReconstruct::GetMemoryBudget, -5, 0 },
   };

@@ -44,6 +44,17 @@ constexpr std::uint64_t AutomaticMemoryBudget = std::uint64_t(1) << 30;
 /// the value chosen by hand on the merged Stanford bunny scans.
 constexpr double AutomaticThinningFactor = 2.5;
 
+/// The automatic interpolator (ReconstructionOptions::Interpolator empty): the
+/// least-squares Q1 (5.5) on a cloud whose noise (CloudNoise.h, in h_P) is below
+/// this, WENO3 otherwise. Measured with no options (Documentation/Profile.md): the
+/// least squares is 0.46-0.86 of WENO3's Chamfer distance on the clean shared clouds
+/// (noise 0.00-0.04) and on the merged scans with their noise projected away, 1.02
+/// on the bunny with noise of 0.1 h_P (noise 0.11), 1.14 and 1.16 at 0.27 and on
+/// the merged scans (0.38): its linear fit damps no grid-scale bump at the points,
+/// where the model's own smoothing vanishes (d = 0 in (4.24)). The value lies
+/// between the two groups, with WENO3 where a cloud is in doubt.
+constexpr double AutomaticInterpolatorNoise = 0.08;
+
 /// The K_P tried, from the thesis's default 2 to 32.
 const std::vector<double>& outsideFactorLadder();
 

@@ -36,8 +36,8 @@ Status locallyScaledDistance(const GridField<D, double>& distance, const PointLo
 /// locallyScaledDistance is its one-rank call (wholeSlab).
 template <int D>
 Status locallyScaledDistanceSlabs(const GridField<D, double>& distance, const PointLocator<D>& locator,
-  const std::vector<double>& sparsity, double reach, const SlabPlan& slab, const Communicator& comm,
-  const Context& ctx, GridField<D, double>& scaled);
+  const std::vector<double>& sparsity, double reach, const SlabPlan& slab, const Communicator& comm, const Context& ctx,
+  GridField<D, double>& scaled);
 
 extern template Status locallyScaledDistance(const GridField<2, double>&, const PointLocator<2>&,
   const std::vector<double>&, double, const Context&, GridField<2, double>&);

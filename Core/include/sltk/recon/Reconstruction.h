@@ -34,9 +34,11 @@ namespace sltk
 /// dimension (ReconstructionSummary.h's too).
 struct ReconstructionReport
 {
-  double CloudSpacing = 0.0;           ///< h_P (of the cleaned cloud)
-  double CellSizeFactor = 0.0;         ///< C_dx used (chosen when automatic)
-  double OutsideThresholdFactor = 0.0; ///< K_P used (raised when run 1 was restarted)
+  double CloudSpacing = 0.0;                               ///< h_P (of the cleaned cloud)
+  double CellSizeFactor = 0.0;                             ///< C_dx used (chosen when automatic)
+  double OutsideThresholdFactor = 0.0;                     ///< K_P used (raised when run 1 was restarted)
+  InterpolatorKind Interpolator = InterpolatorKind::Weno3; ///< at the feet (chosen when automatic)
+  double CloudNoise = -1.0; ///< the cloud's noise in h_P (CloudNoise.h) when it chose the interpolator; else < 0
   std::vector<std::string> Choices;    ///< the plan's automatic choices and their reasons
   CloudCleaningReport Cleaning;        ///< what the pre-processing removed and merged
   std::vector<std::string> Recoveries; ///< runs that lost their zero level set and what was done instead

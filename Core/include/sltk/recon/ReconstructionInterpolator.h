@@ -18,11 +18,13 @@ namespace sltk
 template <int D, class F>
 decltype(auto) withReconstructionInterpolator(const ReconstructionOptions& options, F&& f)
 {
-  if (options.Interpolator == InterpolatorKind::LeastSquaresQ1)
+  // The plan (ReconstructionPlan.h) has chosen an automatic interpolator before any run.
+  const InterpolatorKind kind = options.Interpolator.value_or(InterpolatorKind::Weno3);
+  if (kind == InterpolatorKind::LeastSquaresQ1)
   {
     return f(InterpolatorTag<LsqQ1Interpolator<D>>{});
   }
-  return withInterpolator<D>(options.Interpolator, std::forward<F>(f));
+  return withInterpolator<D>(kind, std::forward<F>(f));
 }
 
 } // namespace sltk

@@ -51,12 +51,13 @@ struct ReconstructionPlan
   CloudCleaningReport Cleaning;                   ///< what the cleaning removed and merged
   std::unique_ptr<const PointLocator<D>> Locator; ///< on Cloud
   double CloudSpacing = 0.0;                      ///< h_P (4.36) of Cloud, unit-box units
-  std::optional<Ellipsoid<D>> InitialEllipsoid;   ///< run 1's surface for InitialGuess sphere/ellipsoid
-  GridPlan<D> Grids;                              ///< unit-box grids of runs 1..R
-  std::vector<double> Sparsity;                   ///< rho per point of Cloud (LocalOffset); empty: uniform K_P h_P
-  bool AutomaticCellSize = false;                 ///< C_dx was chosen (the reconstruction may refine it)
-  bool BudgetIsAutomatic = false;                 ///< Options.MemoryBudget sized the automatic C_dx; not a limit
-  double FirstRunReach = 0.0;                     ///< how far outside the cloud's box run 1's surface may lie
+  double CloudNoise = -1.0; ///< the cloud's noise in h_P before any thinning (CloudNoise.h); < 0: not measured
+  std::optional<Ellipsoid<D>> InitialEllipsoid; ///< run 1's surface for InitialGuess sphere/ellipsoid
+  GridPlan<D> Grids;                            ///< unit-box grids of runs 1..R
+  std::vector<double> Sparsity;                 ///< rho per point of Cloud (LocalOffset); empty: uniform K_P h_P
+  bool AutomaticCellSize = false;               ///< C_dx was chosen (the reconstruction may refine it)
+  bool BudgetIsAutomatic = false;               ///< Options.MemoryBudget sized the automatic C_dx; not a limit
+  double FirstRunReach = 0.0;                   ///< how far outside the cloud's box run 1's surface may lie
 
   ReconstructionPlan() = default;
   ReconstructionPlan(const ReconstructionPlan&) = delete; // the locator points at Cloud
