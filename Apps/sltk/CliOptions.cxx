@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "CliOptions.h"
 
+#include "sltk/recon/AutomaticParameters.h"
 #include "sltk/recon/OptionRanges.h"
 
 #include "sltk/core/LowerCase.h"
@@ -165,33 +166,36 @@ CLI::Option* addChoice(CLI::App* app, const std::string& name, const std::string
 
 namespace
 {
-/// --interpolator NAME with `automatic` (the reconstruction's "auto") or without it (the HJB solver's kinds).
-CLI::Option* addInterpolatorChoice(CLI::App* app, const std::string& defaultText, bool hjb, bool automatic,
+/// --interpolator NAME: the reconstruction's (every kind, and "auto") or the HJB solver's kinds.
+CLI::Option* addInterpolatorChoice(CLI::App* app, const std::string& defaultText, bool reconstruction,
   const std::function<void(std::optional<sltk::InterpolatorKind>)>& chosen)
 {
   constexpr const char* AutomaticName = "auto";
   std::string description = "spatial reconstruction at the feet of the characteristics (default " + defaultText + "):";
   std::vector<std::string> names;
-  if (automatic)
+  if (reconstruction)
   {
-    description += std::string("\n  ") + AutomaticName +
-      ": lsq-q1 on a cloud whose noise is below 0.08 h_P, else weno3\n    (the choice and the noise are logged)";
+    std::ostringstream line;
+    line << "\n  " << AutomaticName << ": lsq-q1 on a cloud whose noise is below " << sltk::AutomaticInterpolatorNoise
+         << " h_P, else weno3\n    (the choice and the noise are logged)";
+    description += line.str();
     names.emplace_back(AutomaticName);
   }
   for (const sltk::InterpolatorInfo& info : sltk::Interpolators)
   {
-    if (!hjb || sltk::offeredByHjb(info.Kind))
+    if (reconstruction || sltk::offeredByHjb(info.Kind))
     {
       description += std::string("\n  ") + info.Name + ": " + info.Description;
       names.emplace_back(info.Name);
     }
   }
-  const auto isAutomatic = [automatic](const std::string& text)
-  { return automatic && sltk::lowerCase(text) == AutomaticName; };
-  const auto known = [hjb, isAutomatic](const std::string& text)
+  const auto isAutomatic = [reconstruction](const std::string& text)
+  { return reconstruction && sltk::lowerCase(text) == AutomaticName; };
+  const auto known = [reconstruction, isAutomatic](const std::string& text)
   {
     sltk::InterpolatorKind parsed;
-    return isAutomatic(text) || (sltk::parseInterpolator(text, parsed) && (!hjb || sltk::offeredByHjb(parsed)));
+    return isAutomatic(text) ||
+      (sltk::parseInterpolator(text, parsed) && (reconstruction || sltk::offeredByHjb(parsed)));
   };
   return app
     ->add_option_function<std::string>(
@@ -214,14 +218,14 @@ CLI::Option* addInterpolatorChoice(CLI::App* app, const std::string& defaultText
 
 CLI::Option* addInterpolatorOption(CLI::App* app, sltk::InterpolatorKind& kind, const std::string& defaultName)
 {
-  return addInterpolatorChoice(app, defaultName, true, false,
-    [&kind](std::optional<sltk::InterpolatorKind> chosen) { kind = chosen.value_or(kind); });
+  return addInterpolatorChoice(
+    app, defaultName, false, [&kind](std::optional<sltk::InterpolatorKind> chosen) { kind = chosen.value_or(kind); });
 }
 
 CLI::Option* addReconstructionInterpolatorOption(CLI::App* app, std::optional<sltk::InterpolatorKind>& kind)
 {
   return addInterpolatorChoice(
-    app, "weno3", false, true, [&kind](std::optional<sltk::InterpolatorKind> chosen) { kind = chosen; });
+    app, "weno3", true, [&kind](std::optional<sltk::InterpolatorKind> chosen) { kind = chosen; });
 }
 
 CLI::Option* addThreadsOption(CLI::App* app, int& threads)
