@@ -94,10 +94,10 @@ public:
   };
 
   ///@{
-  /// Interpolator (default WENO3, the thesis's choice for laser scans): an
-  /// InterpolatorType value; RequestData refuses any other value with an error.
-  /// AUTOMATIC measures the cloud's noise (field data CloudNoise, in h_P) and
-  /// takes LEAST_SQUARES_Q1 below 0.08, WENO3 otherwise (field data
+  /// Interpolator (default AUTOMATIC): an InterpolatorType value; RequestData
+  /// refuses any other value with an error. AUTOMATIC measures the cloud's noise
+  /// (field data CloudNoise, in h_P) and takes LEAST_SQUARES_Q1 below 0.08,
+  /// WENO3 (the thesis's choice for laser scans) otherwise (field data
   /// Interpolator: the code used).
   /// LEAST_SQUARES_Q1 is the nearest node's Q1 polynomial fitted by least squares
   /// to its 3^D - 1 neighbours with the centre constraint (5.5); measured against

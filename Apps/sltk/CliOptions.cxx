@@ -225,7 +225,7 @@ CLI::Option* addInterpolatorOption(CLI::App* app, sltk::InterpolatorKind& kind, 
 CLI::Option* addReconstructionInterpolatorOption(CLI::App* app, std::optional<sltk::InterpolatorKind>& kind)
 {
   return addInterpolatorChoice(
-    app, "weno3", true, [&kind](std::optional<sltk::InterpolatorKind> chosen) { kind = chosen; });
+    app, "auto", true, [&kind](std::optional<sltk::InterpolatorKind> chosen) { kind = chosen; });
 }
 
 CLI::Option* addThreadsOption(CLI::App* app, int& threads)

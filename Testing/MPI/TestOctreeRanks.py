@@ -76,7 +76,8 @@ for piece in pieces:
     owners_seen |= owners
     near = [(p, size, c) for _, lev, p, size, c in found if lev == 3 and abs(p) < 2 * size]
     worst = max(abs(p - (math.hypot(*c) - 1.0)) / size for p, size, c in near)
-    assert near and worst < 0.5, "the sphere's signed distance near the front (%d leaves, %g cells)" % (len(near), worst)
+    # 0.5 cells with WENO3, 0.52 with the automatic least-squares Q1 (TestOctreeSDF.cxx)
+    assert near and worst < 0.6, "the sphere's signed distance near the front (%d leaves, %g cells)" % (len(near), worst)
     owned += len(found)
 assert owners_seen == {0, 1}, owners_seen
 assert owned == global_leaves, "the ranks' leaves add up to GlobalLeaves: %d vs %d" % (owned, global_leaves)

@@ -123,8 +123,11 @@ public:
     TiledBand<D, Interp> band(this->Plan, run, this->Ctx, this->Field, this->Distribution, storage);
     const Status status =
       iterateRun<D>(band, this->Options, run, this->Plan.CloudSpacing, this->Ctx, records, vanished);
-    this->Seeds = seedsAfterRun(band, this->Plan.Cloud, this->Plan.CloudSpacing, this->Options, run,
-      status.isOk() && !vanished, this->Distribution.comm());
+    const bool ran = status.isOk() && !vanished;
+    this->Seeds = seedsAfterRun(
+      band, this->Plan.Cloud, this->Plan.CloudSpacing, this->Options, run, ran, this->Distribution.comm());
+    records.MissedPlaces = missedPlacesAfterRun(band, this->Plan.Cloud, this->Plan.CloudSpacing, this->Options, run,
+      ran, records.Runs, this->Distribution.comm());
     recordStorage(this->Field, run, storage, this->Distribution, this->Out.Storage);
     return status;
   }

@@ -209,8 +209,11 @@ public:
     SlabBand<D, Interp> band(
       this->Plan.Cloud, this->Options, this->Ctx, this->Exact, this->Slab, this->Phi, this->Dist);
     const Status status = iterateRun<D>(band, this->Options, run, this->Plan.CloudSpacing, this->Ctx, result, vanished);
-    this->Seeds = seedsAfterRun(band, this->Plan.Cloud, this->Plan.CloudSpacing, this->Options, run,
-      status.isOk() && !vanished, this->Slab.comm());
+    const bool ran = status.isOk() && !vanished;
+    this->Seeds =
+      seedsAfterRun(band, this->Plan.Cloud, this->Plan.CloudSpacing, this->Options, run, ran, this->Slab.comm());
+    result.MissedPlaces = missedPlacesAfterRun(
+      band, this->Plan.Cloud, this->Plan.CloudSpacing, this->Options, run, ran, result.Runs, this->Slab.comm());
     // d was made exact where each rank's band reached: the ghost rows take the
     // owners' values (the next run interpolates them; the blocks share a row).
     this->Slab.exchange(this->Dist);

@@ -75,7 +75,7 @@ void checkOptionProperties()
   const sltk::ReconstructionOptions defaults;
   check(recon->GetNumberOfRuns() == defaults.Runs && recon->GetPadding() == defaults.Padding &&
       recon->GetTolerance() == defaults.Tolerance && recon->GetFinalEta() == defaults.FinalEta &&
-      recon->GetInterpolator() == static_cast<int>(*defaults.Interpolator) && recon->GetMemoryBudget() == 0 &&
+      !defaults.Interpolator && recon->GetInterpolator() == vtkSLLevelSetReconstruct::AUTOMATIC && recon->GetMemoryBudget() == 0 &&
       recon->GetAutomaticCleaning() == defaults.Cleaning.Automatic &&
       recon->GetOutlierDeviations() == defaults.Cleaning.Outliers.Deviations,
     "the properties' defaults are Core's");

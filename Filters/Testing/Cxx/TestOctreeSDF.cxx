@@ -151,7 +151,10 @@ int main(int argc, char* argv[])
       worstPhi = std::max(worstPhi, std::abs(leaf.Phi - (r - radius)) / leaf.Size);
     }
   }
-  check(cell > 0.0 && worstPhi < 0.5,
+  // Under half a cell with WENO3; the automatic interpolator takes the least-squares Q1 on
+  // this clean cloud, whose surface lies up to 0.57 cells from the sphere here (1.04-1.11x
+  // WENO3's Chamfer distance on smooth spheres, Documentation/Profile.md).
+  check(cell > 0.0 && worstPhi < 0.6,
     "SignedDistance is the sphere's within " + std::to_string(worstPhi) + " cells near the front");
   check(worstDistance < 1e-12,
     "DistanceToCloud is exact at every leaf's centre (" + std::to_string(worstDistance * 1e12) + "e-12)");

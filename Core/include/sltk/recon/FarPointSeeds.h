@@ -15,16 +15,15 @@
 /// cloud, so every rank adds the same balls (Documentation/Numerics.md).
 
 #include "sltk/cloud/PointCloud.h"
-#include "sltk/core/IndexBox.h"
 #include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
+#include "sltk/recon/PointClusters.h"
 #include "sltk/recon/ReconstructionOptions.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include <vector>
 
 namespace sltk
@@ -53,25 +52,8 @@ inline double seedThreshold(double dx, double cloudSpacing)
 /// sampled at h_P <= threshold overlaps.
 constexpr double SeedRadiusFactor = 1.5;
 
-/// A point outside the surface and I[phi] there.
-struct OutsidePoint
-{
-  Index Point = 0;
-  double Value = 0.0;
-};
-
 namespace detail
 {
-inline Index findRoot(std::vector<Index>& parent, Index i)
-{
-  while (parent[static_cast<size_t>(i)] != i)
-  {
-    parent[static_cast<size_t>(i)] = parent[static_cast<size_t>(parent[static_cast<size_t>(i)])];
-    i = parent[static_cast<size_t>(i)];
-  }
-  return i;
-}
-
 /// Which of the points (ascending) keep their ball: those whose balls connect,
 /// through overlapping balls, to one that reaches into the surface (I[phi](Q) < r).
 /// A ball alone in the open (a stray point, an isolated sample of a part too thin
@@ -79,70 +61,19 @@ inline Index findRoot(std::vector<Index>& parent, Index i)
 template <int D>
 std::vector<bool> attachedToSurface(const PointCloud<D>& cloud, const std::vector<OutsidePoint>& points, double radius)
 {
-  const double cell = 2.0 * radius;
-  std::map<std::array<Index, D>, std::vector<Index>> buckets;
-  const auto bucketOf = [&](const std::array<double, D>& x)
+  const std::vector<Index> group = pointGroups(cloud, points, 2.0 * radius);
+  const size_t n = points.size();
+  std::vector<bool> rooted(n, false), kept(n);
+  for (size_t j = 0; j < n; ++j)
   {
-    std::array<Index, D> b{};
-    for (int a = 0; a < D; ++a)
+    if (points[j].Value < radius)
     {
-      b[a] = static_cast<Index>(std::floor(x[a] / cell));
-    }
-    return b;
-  };
-  const auto at = [&](Index j) -> const std::array<double, D>&
-  { return cloud.Points[static_cast<size_t>(points[static_cast<size_t>(j)].Point)]; };
-  const Index n = static_cast<Index>(points.size());
-  for (Index j = 0; j < n; ++j)
-  {
-    buckets[bucketOf(at(j))].push_back(j);
-  }
-  std::vector<Index> parent(static_cast<size_t>(n));
-  for (Index j = 0; j < n; ++j)
-  {
-    parent[static_cast<size_t>(j)] = j;
-  }
-  for (Index j = 0; j < n; ++j)
-  {
-    std::array<Index, D> lo = bucketOf(at(j)), hi = lo;
-    for (int a = 0; a < D; ++a)
-    {
-      --lo[a];
-      ++hi[a];
-    }
-    forEachIndexInBox<D>(lo, hi,
-      [&](const std::array<Index, D>& b)
-      {
-        const auto found = buckets.find(b);
-        if (found == buckets.end())
-        {
-          return;
-        }
-        for (Index k : found->second)
-        {
-          double d2 = 0.0;
-          for (int a = 0; a < D; ++a)
-          {
-            d2 += (at(j)[a] - at(k)[a]) * (at(j)[a] - at(k)[a]);
-          }
-          if (k > j && d2 < cell * cell)
-          {
-            parent[static_cast<size_t>(findRoot(parent, j))] = findRoot(parent, k);
-          }
-        }
-      });
-  }
-  std::vector<bool> rooted(static_cast<size_t>(n), false), kept(static_cast<size_t>(n));
-  for (Index j = 0; j < n; ++j)
-  {
-    if (points[static_cast<size_t>(j)].Value < radius)
-    {
-      rooted[static_cast<size_t>(findRoot(parent, j))] = true;
+      rooted[static_cast<size_t>(group[j])] = true;
     }
   }
-  for (Index j = 0; j < n; ++j)
+  for (size_t j = 0; j < n; ++j)
   {
-    kept[static_cast<size_t>(j)] = rooted[static_cast<size_t>(findRoot(parent, j))];
+    kept[j] = rooted[static_cast<size_t>(group[j])];
   }
   return kept;
 }

@@ -19,6 +19,7 @@
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
 #include "sltk/grid/Slabs.h"
+#include "sltk/recon/MissedPlaces.h"
 #include "sltk/recon/ReconstructionOptions.h"
 #include "sltk/recon/ReconstructionPlan.h"
 
@@ -63,6 +64,9 @@ struct ReconstructionResult : ReconstructionReport
   SlabPlan Slab;
   std::vector<RunRecord<D>> Runs;
   std::vector<IterationRecord> History;
+  /// When the result does not fit the cloud: where the points it misses lie, the
+  /// largest groups first (MissedPlaces.h); empty when it fits.
+  std::vector<MissedPlace<D>> MissedPlaces;
 };
 
 /// Runs Algorithm 1. The cloud is validated first, then cleaned when
@@ -107,6 +111,12 @@ void recordsToUser(const UnitBox<D>& box, ReconstructionResult<D>& result)
     run.Grid = box.toUser(run.Grid);
     run.Energy *= energyScale;
     run.CloudError *= box.Scale;
+  }
+  for (auto& place : result.MissedPlaces)
+  {
+    place.Centre = box.toUser(place.Centre);
+    place.Lower = box.toUser(place.Lower);
+    place.Upper = box.toUser(place.Upper);
   }
 }
 

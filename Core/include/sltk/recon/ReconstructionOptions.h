@@ -79,12 +79,12 @@ struct ReconstructionOptions
   int MinIterations = 10;  ///< iterations forced before (4.33) may stop a run
   double Tolerance = 1e-4; ///< threshold of Delta_E (4.33)
   int EnergyWindow = 10;   ///< k = min(n, EnergyWindow) of (4.33)
-  /// At the feet (4.22)/(4.24): WENO3 (the default, the thesis's chapter 4
-  /// choice) or any kind of InterpolatorKind.h, the chapter 5 least-squares Q1
-  /// (5.5, LsqQ1.h) included. Empty (opt-in): automatic, the least-squares Q1 on
-  /// a cloud whose noise is below AutomaticInterpolatorNoise, else WENO3
-  /// (AutomaticParameters.h); the plan holds the kind chosen.
-  std::optional<InterpolatorKind> Interpolator = InterpolatorKind::Weno3;
+  /// At the feet (4.22)/(4.24). Empty (the default): automatic, the chapter 5
+  /// least-squares Q1 (5.5, LsqQ1.h) on a cloud whose noise is below
+  /// AutomaticInterpolatorNoise, else WENO3, the thesis's chapter 4 choice for
+  /// laser scans (AutomaticParameters.h; measured in Documentation/Profile.md);
+  /// the plan holds the kind chosen. Or any kind of InterpolatorKind.h.
+  std::optional<InterpolatorKind> Interpolator;
   InitialGuess Guess = InitialGuess::OutsideMarking;
   /// Per-run p and eta; empty: Table 4.1 with FinalEta. Run r uses entry min(r, size) - 1.
   std::vector<RunParameters> Schedule;

@@ -79,10 +79,6 @@ inline double farPointDistance(double dx, int run, double cloudSpacing)
   return std::max(dx * std::ldexp(1.0, run - 1), cloudSpacing);
 }
 
-/// The misfit's threshold (misfitDistance) stays below gamma: at C_dx <= 1 two
-/// finest cells and h_P reach gamma, and a point beyond the band would never count.
-constexpr double FarBandShare = 0.999;
-
 namespace detail
 {
 inline double secondsSince(std::chrono::steady_clock::time_point start)
@@ -227,7 +223,7 @@ Status iterateRun(Band& band, const ReconstructionOptions& options, int run, dou
   record.MergedNodes = band.mergeIsolatedNodes(); // below the grid's resolution (IsolatedNodes.h)
   band.finish(record, far);
   // Often the far-point distance: no second pass then.
-  const double misfit = std::min(misfitDistance(dx, cloudSpacing), FarBandShare * options.GammaFactor * dx);
+  const double misfit = misfitThreshold(dx, cloudSpacing, options.GammaFactor);
   record.MisfitPoints = misfit == far ? record.FarPoints : band.farFraction(misfit);
   detail::warnAboutRun(record, run, cloudSpacing, ctx);
   detail::reportRun(record, run, phases, band.describe(), ctx);

@@ -34,6 +34,17 @@ inline double misfitDistance(double dx, double cloudSpacing)
   return std::max(2.0 * dx, cloudSpacing);
 }
 
+/// The misfit's threshold (misfitDistance) stays below gamma: at C_dx <= 1 two
+/// finest cells and h_P reach gamma, and a point beyond the band would never count.
+constexpr double FarBandShare = 0.999;
+
+/// Beyond this from a run's zero level set (cells dx, band half-width gammaFactor dx)
+/// a point is missed (RunRecord::MisfitPoints).
+inline double misfitThreshold(double dx, double cloudSpacing, double gammaFactor)
+{
+  return std::min(misfitDistance(dx, cloudSpacing), FarBandShare * gammaFactor * dx);
+}
+
 /// ReconstructionOptions::FollowFarPoints: the relative fall of the far-point
 /// fraction over one energy window that keeps a stalled run going.
 constexpr double FarPointProgress = 0.1;

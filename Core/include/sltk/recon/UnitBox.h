@@ -44,15 +44,22 @@ struct UnitBox
     }
   }
 
+  /// A position back in the user's units.
+  std::array<double, D> toUser(std::array<double, D> p) const
+  {
+    for (int a = 0; a < D; ++a)
+    {
+      p[a] = this->Centre[a] + this->Scale * p[a];
+    }
+    return p;
+  }
+
   /// Moves the points of `cloud` back to the user's units, in place.
   void toUser(PointCloud<D>& cloud) const
   {
     for (auto& p : cloud.Points)
     {
-      for (int a = 0; a < D; ++a)
-      {
-        p[a] = this->Centre[a] + this->Scale * p[a];
-      }
+      p = this->toUser(p);
     }
   }
 

@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file PointClusters.h
+/// The points a run's surface leaves outside, grouped by proximity: the far-point
+/// seeds keep the groups attached to the surface (FarPointSeeds.h), and a result
+/// that does not fit its cloud says where its missed groups lie (MissedPlaces.h).
+
+#include "sltk/cloud/PointCloud.h"
+#include "sltk/core/IndexBox.h"
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace sltk
+{
+
+/// A point outside the surface and I[phi] there.
+struct OutsidePoint
+{
+  Index Point = 0;
+  double Value = 0.0;
+};
+
+namespace detail
+{
+inline Index findRoot(std::vector<Index>& parent, Index i)
+{
+  while (parent[static_cast<size_t>(i)] != i)
+  {
+    parent[static_cast<size_t>(i)] = parent[static_cast<size_t>(parent[static_cast<size_t>(i)])];
+    i = parent[static_cast<size_t>(i)];
+  }
+  return i;
+}
+} // namespace detail
+
+/// The groups of `points` (indices into `cloud`): two points closer than `link` are
+/// in one group, and so, through chains of such pairs, are their groups. Returns,
+/// for every entry of `points`, the entry that stands for its group (a union-find
+/// over buckets of edge `link`); the same for any order of the ranks' points once
+/// they are sorted by index.
+template <int D>
+std::vector<Index> pointGroups(const PointCloud<D>& cloud, const std::vector<OutsidePoint>& points, double link)
+{
+  std::map<std::array<Index, D>, std::vector<Index>> buckets;
+  const auto bucketOf = [&](const std::array<double, D>& x)
+  {
+    std::array<Index, D> b{};
+    for (int a = 0; a < D; ++a)
+    {
+      b[a] = static_cast<Index>(std::floor(x[a] / link));
+    }
+    return b;
+  };
+  const auto at = [&](Index j) -> const std::array<double, D>&
+  { return cloud.Points[static_cast<size_t>(points[static_cast<size_t>(j)].Point)]; };
+  const Index n = static_cast<Index>(points.size());
+  for (Index j = 0; j < n; ++j)
+  {
+    buckets[bucketOf(at(j))].push_back(j);
+  }
+  std::vector<Index> parent(static_cast<size_t>(n));
+  for (Index j = 0; j < n; ++j)
+  {
+    parent[static_cast<size_t>(j)] = j;
+  }
+  for (Index j = 0; j < n; ++j)
+  {
+    std::array<Index, D> lo = bucketOf(at(j)), hi = lo;
+    for (int a = 0; a < D; ++a)
+    {
+      --lo[a];
+      ++hi[a];
+    }
+    forEachIndexInBox<D>(lo, hi,
+      [&](const std::array<Index, D>& b)
+      {
+        const auto found = buckets.find(b);
+        if (found == buckets.end())
+        {
+          return;
+        }
+        for (Index k : found->second)
+        {
+          double d2 = 0.0;
+          for (int a = 0; a < D; ++a)
+          {
+            d2 += (at(j)[a] - at(k)[a]) * (at(j)[a] - at(k)[a]);
+          }
+          if (k > j && d2 < link * link)
+          {
+            parent[static_cast<size_t>(detail::findRoot(parent, j))] = detail::findRoot(parent, k);
+          }
+        }
+      });
+  }
+  std::vector<Index> group(static_cast<size_t>(n));
+  for (Index j = 0; j < n; ++j)
+  {
+    group[static_cast<size_t>(j)] = detail::findRoot(parent, j);
+  }
+  return group;
+}
+
+} // namespace sltk
