@@ -9,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace
 {
@@ -58,6 +60,64 @@ TEST(AutomaticParameters, BottleneckAnswersEveryMarking)
     {
       ASSERT_EQ(external[k] != 0, bottleneck[k] >= t) << "node " << k << " at threshold " << t;
     }
+  }
+}
+
+TEST(AutomaticParameters, BottleneckIsTheWidestPathsFixedPoint)
+{
+  // Every value, bit for bit, against the relaxation b(n) = max(b(n), min(d(n), b(m)))
+  // over axis neighbours m until nothing changes; d with many ties and a few +infinity.
+  sltk::GridSpec<3> g = cubeGrid(9, 1.0);
+  g.Dims = { 13, 11, 9 };
+  sltk::GridField<3, double> d(g, 0, 0.0);
+  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
+  {
+    const unsigned h = static_cast<unsigned>(k) * 2654435761u;
+    d(d.nodeIndex(k)) = h % 53 == 0 ? HUGE_VAL : 0.125 * static_cast<double>((h >> 7) % 9);
+  }
+  std::vector<double> bottleneck;
+  ASSERT_TRUE(sltk::outsideBottleneck(d, sltk::Context{}, bottleneck).isOk());
+  std::vector<double> reference(static_cast<size_t>(g.nodeCount()), -HUGE_VAL);
+  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
+  {
+    const auto i = d.nodeIndex(k);
+    for (int a = 0; a < 3; ++a)
+    {
+      reference[static_cast<size_t>(k)] =
+        i[a] == 0 || i[a] == g.Dims[a] - 1 ? HUGE_VAL : reference[static_cast<size_t>(k)];
+    }
+  }
+  const sltk::Index stride[3] = { 1, g.Dims[0], g.Dims[0] * g.Dims[1] };
+  for (bool changed = true; changed;)
+  {
+    changed = false;
+    for (sltk::Index k = 0; k < g.nodeCount(); ++k)
+    {
+      const auto i = d.nodeIndex(k);
+      for (int a = 0; a < 3; ++a)
+      {
+        for (int side : { -1, 1 })
+        {
+          auto n = i;
+          n[a] += side;
+          if (n[a] < 0 || n[a] >= g.Dims[a])
+          {
+            continue;
+          }
+          const double through = std::min(d(n), reference[static_cast<size_t>(k)]);
+          double& b = reference[static_cast<size_t>(k + side * stride[a])];
+          if (through > b)
+          {
+            b = through;
+            changed = true;
+          }
+        }
+      }
+    }
+  }
+  for (size_t k = 0; k < reference.size(); ++k)
+  {
+    ASSERT_EQ(bottleneck[k], reference[k]) << "node " << k;
   }
 }
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -23,72 +24,142 @@ Status markExternal(const GridField<D, double>& distance, double threshold, cons
   return markExternalSlabs(distance, threshold, wholeSlab(rows), rows, serialCommunicator(), ctx, external, rounds);
 }
 
-template <int D>
-Status outsideBottleneck(const GridField<D, double>& distance, const Context& ctx, std::vector<double>& bottleneck)
+namespace
 {
-  // The widest paths from the boundary, widest first (Dijkstra's order with
-  // max-min for plus-min): a node is final when it leaves the queue, so each
-  // is expanded once, O(n log n), where repeated passes along the axes need
-  // as many rounds as the widest paths turn. The values are the d of the
-  // nodes or +infinity, chosen by comparisons only: the fixed point of the
-  // passes, bit for bit.
+/// outsideBottleneck() with node ids of type Id (32 bits when the grid allows:
+/// half the memory of the forest).
+template <int D, class Id>
+Status widestWayOut(const GridField<D, double>& distance, const Context& ctx, std::vector<double>& bottleneck)
+{
+  // The nodes are added in decreasing order of d to a disjoint-set forest of
+  // the nodes with d >= t (union by rank, path halving): when a component
+  // first touches the boundary at level t = d of the node that joins it,
+  // every node of it has a path out whose minimum is t and none whose
+  // minimum is larger, so its bottleneck is t. The closed components keep
+  // their nodes in a circular list (joined in O(1)) for that moment; each
+  // node is assigned once. The values are the d of the nodes or +infinity,
+  // chosen by comparisons only: those of the widest paths, bit for bit
+  // (ties in d give the same t whatever their order).
   const GridSpec<D>& g = distance.spec();
+  const Index nodes = g.nodeCount();
   const double inf = std::numeric_limits<double>::infinity();
-  bottleneck.assign(static_cast<size_t>(g.nodeCount()), -inf);
-  using Entry = std::pair<double, Index>; // (width, node)
-  std::vector<Entry> heap;
-  for (Index k = 0; k < g.nodeCount(); ++k)
+  constexpr Id Inactive = std::numeric_limits<Id>::max(), Boundary = Inactive - 1; // parent of a node not in the forest
+  std::vector<Id> parent(static_cast<size_t>(nodes), Inactive), order;
+  bottleneck.resize(static_cast<size_t>(nodes));
+  for (Index k = 0; k < nodes; ++k)
   {
-    if (onBoundary<D>(distance.nodeIndex(k), g, 0, g.Dims[D - 1]))
+    const std::array<Index, D> i = distance.nodeIndex(k);
+    const double d = distance(i);
+    const bool edge = onBoundary<D>(i, g, 0, g.Dims[D - 1]);
+    bottleneck[static_cast<size_t>(k)] = edge ? inf : d; // the sort's keys, then the result
+    parent[static_cast<size_t>(k)] = edge ? Boundary : Inactive;
+    if (!edge && !std::isnan(d)) // a NaN is never reached (the widest paths compare it false)
     {
-      bottleneck[static_cast<size_t>(k)] = inf;
-      heap.emplace_back(inf, k);
+      order.push_back(static_cast<Id>(k));
     }
   }
+  std::sort(order.begin(), order.end(), [&](Id p, Id q) { return bottleneck[p] > bottleneck[q]; });
+  for (const Id v : order)
+  {
+    bottleneck[v] = -inf; // not reached yet
+  }
+  std::vector<Id> next(static_cast<size_t>(nodes));
+  std::vector<std::uint8_t> rank(static_cast<size_t>(nodes), 0), open(static_cast<size_t>(nodes), 0);
+  const auto find = [&](Id x)
+  {
+    while (parent[x] != x)
+    {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  };
+  const auto assign = [&](Id root, double t)
+  {
+    Id m = root;
+    do
+    {
+      bottleneck[m] = t;
+      m = next[m];
+    } while (m != root);
+  };
+  const auto unite = [&](Id x, Id y)
+  {
+    if (!open[x] && !open[y])
+    {
+      std::swap(next[x], next[y]); // one circle of both
+    }
+    if (rank[x] < rank[y])
+    {
+      std::swap(x, y);
+    }
+    rank[x] = static_cast<std::uint8_t>(rank[x] + (rank[x] == rank[y] ? 1 : 0));
+    parent[y] = x;
+    open[x] = open[x] | open[y];
+    return x;
+  };
   std::array<Index, D> nodeStride{};
   for (Index a = 0, stride = 1; a < D; stride *= g.Dims[a], ++a)
   {
     nodeStride[a] = stride;
   }
-  std::make_heap(heap.begin(), heap.end());
-  Index expanded = 0;
-  while (!heap.empty())
+  Index added = 0;
+  for (const Id v : order)
   {
-    std::pop_heap(heap.begin(), heap.end());
-    const auto [width, node] = heap.back();
-    heap.pop_back();
-    if (width < bottleneck[static_cast<size_t>(node)])
-    {
-      continue; // a stale entry: the node left the queue wider
-    }
-    const std::array<Index, D> i = distance.nodeIndex(node);
+    const std::array<Index, D> i = distance.nodeIndex(static_cast<Index>(v));
+    const double t = distance(i);
+    parent[v] = v;
+    next[v] = v;
+    Id root = v;
+    bool touches = false;
     for (int a = 0; a < D; ++a)
     {
       for (const int side : { -1, 1 })
       {
-        const Index j = i[a] + side;
-        if (j < 0 || j >= g.Dims[a])
+        if (i[a] + side < 0 || i[a] + side >= g.Dims[a])
         {
           continue;
         }
-        const Index next = node + side * nodeStride[a];
-        std::array<Index, D> n = i;
-        n[a] = j;
-        const double through = std::min(distance(n), width);
-        if (through > bottleneck[static_cast<size_t>(next)])
+        const Id n = static_cast<Id>(static_cast<Index>(v) + side * nodeStride[a]);
+        touches = touches || parent[n] == Boundary;
+        if (parent[n] == Boundary || parent[n] == Inactive)
         {
-          bottleneck[static_cast<size_t>(next)] = through;
-          heap.emplace_back(through, next);
-          std::push_heap(heap.begin(), heap.end());
+          continue;
         }
+        const Id r = find(n);
+        if (r == root)
+        {
+          continue;
+        }
+        if (open[r] != open[root])
+        {
+          assign(open[r] ? root : r, t); // a closed component joins an open one at level t
+        }
+        root = unite(root, r);
       }
     }
-    if (++expanded % (Index(1) << 20) == 0 && ctx.interrupter().wasInterrupted())
+    if (touches && !open[root])
+    {
+      assign(root, t);
+      open[root] = 1;
+    }
+    if (++added % (Index(1) << 20) == 0 && ctx.interrupter().wasInterrupted())
     {
       return Status::aborted();
     }
   }
   return Status::ok();
+}
+} // namespace
+
+template <int D>
+Status outsideBottleneck(const GridField<D, double>& distance, const Context& ctx, std::vector<double>& bottleneck)
+{
+  if (distance.spec().nodeCount() < static_cast<Index>(std::numeric_limits<std::uint32_t>::max()))
+  {
+    return widestWayOut<D, std::uint32_t>(distance, ctx, bottleneck);
+  }
+  return widestWayOut<D, std::uint64_t>(distance, ctx, bottleneck);
 }
 
 template <int D>

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace sltk
 {
@@ -75,13 +77,13 @@ Status queryNearCloud(const GridField<D, double>& distance, const PointLocator<D
   // down the steepest descent of d (the axis neighbour with the smallest d, which
   // is nearer the same points), in increasing order of d.
   rho.resize(g, 0, largest);
-  order.clear();
+  std::vector<std::pair<double, Index>> byDistance; // (d, node): sorted without a look-up a comparison
   for (Index k = 0; k < nodes; ++k)
   {
     const double d = distance(distance.nodeIndex(k));
     if (d >= near && d < reach)
     {
-      order.push_back(k);
+      byDistance.emplace_back(d, k);
     }
   }
   ctx.parallelFor(0, nodes,
@@ -101,12 +103,13 @@ Status queryNearCloud(const GridField<D, double>& distance, const PointLocator<D
         }
       }
     });
-  std::sort(order.begin(), order.end(),
-    [&](Index p, Index q)
-    {
-      const double dp = distance(distance.nodeIndex(p)), dq = distance(distance.nodeIndex(q));
-      return dp < dq || (dp == dq && p < q);
-    });
+  // Increasing d, ties by node index: a total order, so the same list whatever the sort.
+  std::sort(byDistance.begin(), byDistance.end());
+  order.resize(byDistance.size());
+  for (size_t j = 0; j < byDistance.size(); ++j)
+  {
+    order[j] = byDistance[j].second;
+  }
   return Status::ok();
 }
 
@@ -132,8 +135,8 @@ template <int D>
 Status locallyScaledDistance(const GridField<D, double>& distance, const PointLocator<D>& locator,
   const std::vector<double>& sparsity, double reach, const Context& ctx, GridField<D, double>& scaled)
 {
-  return locallyScaledDistanceSlabs(distance, locator, sparsity, reach, wholeSlab(distance.spec().Dims[D - 1]),
-    serialCommunicator(), ctx, scaled);
+  return locallyScaledDistanceSlabs(
+    distance, locator, sparsity, reach, wholeSlab(distance.spec().Dims[D - 1]), serialCommunicator(), ctx, scaled);
 }
 
 template <int D>

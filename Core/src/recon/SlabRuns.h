@@ -59,21 +59,8 @@ Status transfer(
     : Status::invalidArgument("the previous run's slab does not cover this run's owned rows (rank " +
         std::to_string(slab.comm().rank()) + "): run on fewer ranks");
   SLTK_RETURN_IF_ERROR(slab.agree(covered));
-  ctx.parallelFor(b, e,
-    [&](Index first, Index stop)
-    {
-      Q1Interpolator<D> interp(from);
-      for (Index k = first; k < stop; ++k)
-      {
-        const auto i = to.nodeIndex(k);
-        double x[D];
-        for (int a = 0; a < D; ++a)
-        {
-          x[a] = grid.coordinate(a, i[a]);
-        }
-        to(i) = interpolate(interp, from.spec(), x);
-      }
-    });
+  const Index nx = grid.Dims[0]; // the owned rows are whole x lines
+  q1Resample(from, b / nx, e / nx, ctx, to);
   slab.exchange(to);
   return Status::ok();
 }

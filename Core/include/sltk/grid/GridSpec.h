@@ -120,6 +120,41 @@ struct CellLocation
   std::array<double, D> Local{};
 };
 
+/// Locates the coordinate x along one axis: the cell index and the local
+/// coordinate in [0, 1] of locate() below (the axes are independent, so a
+/// grid-to-grid resampling can tabulate them once per axis).
+template <int D>
+inline void locateAxis(const GridSpec<D>& g, int a, double x, Index& cell, double& local)
+{
+  const double n = static_cast<double>(g.Dims[a]);
+  double s = g.indexCoordinate(a, x);
+  if (g.Bounds[a] == Boundary::Periodic)
+  {
+    s = s - n * std::floor(s / n);
+    if (s >= n) // rounding of the wrap
+    {
+      s = 0.0;
+    }
+  }
+  else
+  {
+    s = s < 0.0 ? 0.0 : (s > n - 1.0 ? n - 1.0 : s);
+  }
+  const double r = std::nearbyint(s);
+  if (std::fabs(s - r) < 1e-10)
+  {
+    s = r;
+  }
+  const Index lastCell = g.Bounds[a] == Boundary::Periodic ? g.Dims[a] - 1 : g.Dims[a] - 2;
+  Index c = static_cast<Index>(std::floor(s));
+  if (c > lastCell)
+  {
+    c = lastCell;
+  }
+  cell = c;
+  local = s - static_cast<double>(c);
+}
+
 /// Locates x in the grid. Extrapolate axes clip x onto [x_0, x_{N-1}]
 /// (feet outside the domain go to the boundary cell, thesis 3.5); periodic
 /// axes wrap x into [x_0, x_0 + N dx). Exact at nodes: a point within
@@ -130,33 +165,7 @@ inline CellLocation<D> locate(const GridSpec<D>& g, const double* x)
   CellLocation<D> loc;
   for (int a = 0; a < D; ++a)
   {
-    const double n = static_cast<double>(g.Dims[a]);
-    double s = g.indexCoordinate(a, x[a]);
-    if (g.Bounds[a] == Boundary::Periodic)
-    {
-      s = s - n * std::floor(s / n);
-      if (s >= n) // rounding of the wrap
-      {
-        s = 0.0;
-      }
-    }
-    else
-    {
-      s = s < 0.0 ? 0.0 : (s > n - 1.0 ? n - 1.0 : s);
-    }
-    const double r = std::nearbyint(s);
-    if (std::fabs(s - r) < 1e-10)
-    {
-      s = r;
-    }
-    const Index lastCell = g.Bounds[a] == Boundary::Periodic ? g.Dims[a] - 1 : g.Dims[a] - 2;
-    Index c = static_cast<Index>(std::floor(s));
-    if (c > lastCell)
-    {
-      c = lastCell;
-    }
-    loc.Cell[a] = c;
-    loc.Local[a] = s - static_cast<double>(c);
+    locateAxis(g, a, x[a], loc.Cell[a], loc.Local[a]);
   }
   return loc;
 }

@@ -4,12 +4,31 @@
 /// Multilinear (Q1) interpolation, thesis (4.28): the tensor product of 1D
 /// linear interpolation on the 2^D nodes of the cell.
 
+#include "sltk/exec/Context.h"
 #include "sltk/interp/Interpolator.h"
 
 #include <vector>
 
 namespace sltk
 {
+
+/// (4.28) from the 2^D corner values v of a cell (corner c: bit a of c is the
+/// offset along axis a) at local coordinates t: one axis collapsed at a time,
+/// axis 0 first (exact for multilinear data, no branching). Overwrites v.
+template <int D>
+inline double q1Collapse(double* v, const std::array<double, D>& t)
+{
+  int n = 1 << D;
+  for (int a = 0; a < D; ++a)
+  {
+    n >>= 1;
+    for (int c = 0; c < n; ++c)
+    {
+      v[c] = v[2 * c] + t[a] * (v[2 * c + 1] - v[2 * c]);
+    }
+  }
+  return v[0];
+}
 
 template <int D>
 class Q1Interpolator
@@ -35,17 +54,7 @@ public:
     {
       v[c] = this->Corner[c];
     }
-    // Collapse one axis at a time: exact for multilinear data, no branching.
-    int n = 1 << D;
-    for (int a = 0; a < D; ++a)
-    {
-      n >>= 1;
-      for (int c = 0; c < n; ++c)
-      {
-        v[c] = v[2 * c] + t[a] * (v[2 * c + 1] - v[2 * c]);
-      }
-    }
-    return v[0];
+    return q1Collapse<D>(v, t);
   }
 
 private:
@@ -99,6 +108,56 @@ void q1AtSubcellCentres(const double* corner, int R, std::vector<double>& scratc
     }
     out.swap(scratch);
   }
+}
+
+/// `from` interpolated by (4.28) at the nodes of `to`'s grid on the x lines
+/// [firstLine, endLine) (line l holds the nodes l N_0 .. l N_0 + N_0 - 1), bit
+/// for bit interpolate(Q1Interpolator(from), from.spec(), x) node by node. The
+/// cell and local coordinate along an axis depend on the node's index along
+/// that axis only (locateAxis), so they are tabulated once per axis rather
+/// than located per node (a division, a floor and a rounding per axis): the
+/// transfer of phi and d between runs visits every node of the finer grid.
+template <int D>
+void q1Resample(
+  const GridField<D, double>& from, Index firstLine, Index endLine, const Context& ctx, GridField<D, double>& to)
+{
+  const GridSpec<D>& g = to.spec();
+  std::array<std::vector<Index>, D> cell;
+  std::array<std::vector<double>, D> local;
+  for (int a = 0; a < D; ++a)
+  {
+    cell[a].resize(static_cast<size_t>(g.Dims[a]));
+    local[a].resize(static_cast<size_t>(g.Dims[a]));
+    for (Index i = 0; i < g.Dims[a]; ++i)
+    {
+      locateAxis(from.spec(), a, g.coordinate(a, i), cell[a][static_cast<size_t>(i)], local[a][static_cast<size_t>(i)]);
+    }
+  }
+  const Index nx = g.Dims[0], sx = to.strides()[0];
+  ctx.parallelFor(firstLine, endLine,
+    [&](Index b, Index e)
+    {
+      std::array<Index, D> c{};
+      std::array<double, D> t{};
+      double corner[1 << D];
+      for (Index l = b; l < e; ++l)
+      {
+        const std::array<Index, D> i = to.nodeIndex(l * nx);
+        for (int a = 1; a < D; ++a)
+        {
+          c[a] = cell[a][static_cast<size_t>(i[a])];
+          t[a] = local[a][static_cast<size_t>(i[a])];
+        }
+        double* out = to.pointer(i);
+        for (Index x = 0; x < nx; ++x)
+        {
+          c[0] = cell[0][static_cast<size_t>(x)];
+          t[0] = local[0][static_cast<size_t>(x)];
+          cellCorners<D>(from, c, corner);
+          out[x * sx] = q1Collapse<D>(corner, t);
+        }
+      }
+    });
 }
 
 } // namespace sltk

@@ -57,8 +57,10 @@ Status markExternal(const GridField<D, double>& distance, double threshold, cons
 /// axis-aligned node paths from the grid's boundary of the minimum of d along
 /// the path (+infinity on the boundary). markExternal with threshold t marks
 /// exactly the nodes with bottleneck >= t, so one computation answers every
-/// K_P at once (AutomaticParameters.h). Computed widest path first, once
-/// per node (O(n log n), one thread).
+/// K_P at once (AutomaticParameters.h). Computed by adding the nodes in
+/// decreasing order of d to the components they join, each node assigned when
+/// its component first reaches the boundary (O(n log n) for the sort, one
+/// thread).
 template <int D>
 Status outsideBottleneck(const GridField<D, double>& distance, const Context& ctx, std::vector<double>& bottleneck);
 
