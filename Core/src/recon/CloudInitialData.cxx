@@ -2,6 +2,7 @@
 #include "sltk/recon/CloudInitialData.h"
 
 #include "ExternalMarking.h"
+#include "sltk/core/DisjointSets.h"
 #include "sltk/recon/CloudInitialDataSlabs.h"
 
 #include <algorithm>
@@ -65,15 +66,6 @@ Status widestWayOut(const GridField<D, double>& distance, const Context& ctx, st
   }
   std::vector<Id> next(static_cast<size_t>(nodes));
   std::vector<std::uint8_t> rank(static_cast<size_t>(nodes), 0), open(static_cast<size_t>(nodes), 0);
-  const auto find = [&](Id x)
-  {
-    while (parent[x] != x)
-    {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  };
   const auto assign = [&](Id root, double t)
   {
     Id m = root;
@@ -126,7 +118,7 @@ Status widestWayOut(const GridField<D, double>& distance, const Context& ctx, st
         {
           continue;
         }
-        const Id r = find(n);
+        const Id r = findRoot(parent, n);
         if (r == root)
         {
           continue;

@@ -6,6 +6,7 @@
 /// that does not fit its cloud says where its missed groups lie (MissedPlaces.h).
 
 #include "sltk/cloud/PointCloud.h"
+#include "sltk/core/DisjointSets.h"
 #include "sltk/core/IndexBox.h"
 
 #include <array>
@@ -22,19 +23,6 @@ struct OutsidePoint
   Index Point = 0;
   double Value = 0.0;
 };
-
-namespace detail
-{
-inline Index findRoot(std::vector<Index>& parent, Index i)
-{
-  while (parent[static_cast<size_t>(i)] != i)
-  {
-    parent[static_cast<size_t>(i)] = parent[static_cast<size_t>(parent[static_cast<size_t>(i)])];
-    i = parent[static_cast<size_t>(i)];
-  }
-  return i;
-}
-} // namespace detail
 
 /// The groups of `points` (indices into `cloud`): two points closer than `link` are
 /// in one group, and so, through chains of such pairs, are their groups. Returns,
@@ -91,7 +79,7 @@ std::vector<Index> pointGroups(const PointCloud<D>& cloud, const std::vector<Out
           }
           if (k > j && d2 < link * link)
           {
-            parent[static_cast<size_t>(detail::findRoot(parent, j))] = detail::findRoot(parent, k);
+            parent[static_cast<size_t>(findRoot(parent, j))] = findRoot(parent, k);
           }
         }
       });
@@ -99,7 +87,7 @@ std::vector<Index> pointGroups(const PointCloud<D>& cloud, const std::vector<Out
   std::vector<Index> group(static_cast<size_t>(n));
   for (Index j = 0; j < n; ++j)
   {
-    group[static_cast<size_t>(j)] = detail::findRoot(parent, j);
+    group[static_cast<size_t>(j)] = findRoot(parent, j);
   }
   return group;
 }
