@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SurfacePieces.h"
 
+#include "sltk/core/DisjointSets.h"
+
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
-#include <vtkNew.h>
 #include <vtkPolyData.h>
-#include <vtkPolyDataConnectivityFilter.h>
+#include <vtkSmartPointer.h>
 
 #include <algorithm>
 #include <utility>
@@ -13,6 +14,94 @@
 
 namespace sltkcli
 {
+namespace
+{
+/// Visits every cell of one of the surface's cell arrays as (count, ids).
+template <class Visit>
+void forEachCell(vtkCellArray* cells, Visit&& visit)
+{
+  if (!cells)
+  {
+    return;
+  }
+  const auto it = vtk::TakeSmartPointer(cells->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    visit(n, ids);
+  }
+}
+
+/// The connected pieces of the cells (two cells sharing a point are one piece),
+/// as vtkPolyDataConnectivityFilter's "all regions" counts them, by a
+/// disjoint-set forest over the points instead of a copy of every region.
+long long countPieces(vtkPolyData* surface)
+{
+  std::vector<vtkIdType> parent(static_cast<size_t>(surface->GetNumberOfPoints()));
+  std::vector<char> used(parent.size(), 0);
+  for (size_t k = 0; k < parent.size(); ++k)
+  {
+    parent[k] = static_cast<vtkIdType>(k);
+  }
+  const auto join = [&](vtkIdType n, const vtkIdType* ids)
+  {
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      used[static_cast<size_t>(ids[k])] = 1;
+      const vtkIdType a = sltk::findRoot(parent, ids[0]), b = sltk::findRoot(parent, ids[k]);
+      parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
+    }
+  };
+  for (vtkCellArray* cells : { surface->GetVerts(), surface->GetLines(), surface->GetPolys(), surface->GetStrips() })
+  {
+    forEachCell(cells, join);
+  }
+  long long pieces = 0;
+  for (size_t k = 0; k < parent.size(); ++k)
+  {
+    pieces += used[k] && parent[k] == static_cast<vtkIdType>(k) ? 1 : 0;
+  }
+  return pieces;
+}
+
+/// The polygons' undirected edges, each counted once: every edge listed at its
+/// smaller end (a compressed adjacency), each end's short list sorted.
+long long countPolygonEdges(vtkPolyData* surface)
+{
+  const size_t points = static_cast<size_t>(surface->GetNumberOfPoints());
+  std::vector<vtkIdType> first(points + 1, 0);
+  const auto eachEdge = [&](auto&& edge)
+  {
+    forEachCell(surface->GetPolys(),
+      [&](vtkIdType n, const vtkIdType* ids)
+      {
+        for (vtkIdType k = 0; k < n; ++k)
+        {
+          const vtkIdType a = ids[k], b = ids[(k + 1) % n];
+          edge(std::min(a, b), std::max(a, b));
+        }
+      });
+  };
+  eachEdge([&](vtkIdType low, vtkIdType) { ++first[static_cast<size_t>(low) + 1]; });
+  for (size_t k = 0; k < points; ++k)
+  {
+    first[k + 1] += first[k];
+  }
+  std::vector<vtkIdType> other(static_cast<size_t>(first[points]));
+  std::vector<vtkIdType> fill(first.begin(), first.end() - 1);
+  eachEdge([&](vtkIdType low, vtkIdType high) { other[static_cast<size_t>(fill[static_cast<size_t>(low)]++)] = high; });
+  long long edges = 0;
+  for (size_t k = 0; k < points; ++k)
+  {
+    const auto begin = other.begin() + first[k], end = other.begin() + first[k + 1];
+    std::sort(begin, end);
+    edges += std::unique(begin, end) - begin;
+  }
+  return edges;
+}
+} // namespace
 
 SurfaceTopology surfaceTopology(vtkPolyData* surface)
 {
@@ -21,28 +110,8 @@ SurfaceTopology surfaceTopology(vtkPolyData* surface)
   {
     return t;
   }
-  vtkNew<vtkPolyDataConnectivityFilter> connectivity;
-  connectivity->SetInputData(surface);
-  connectivity->SetExtractionModeToAllRegions();
-  connectivity->Update();
-  t.Pieces = connectivity->GetNumberOfExtractedRegions();
-  // Undirected polygon edges, counted once each (sorted pairs: cheaper than vtkExtractEdges).
-  std::vector<std::pair<vtkIdType, vtkIdType>> edges;
-  const auto polys = vtk::TakeSmartPointer(surface->GetPolys()->NewIterator());
-  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
-  {
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    polys->GetCurrentCell(n, ids);
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      const vtkIdType a = ids[k], b = ids[(k + 1) % n];
-      edges.emplace_back(std::min(a, b), std::max(a, b));
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  const auto unique = std::unique(edges.begin(), edges.end()) - edges.begin();
-  t.Euler = static_cast<long long>(surface->GetNumberOfPoints()) - static_cast<long long>(unique) +
+  t.Pieces = countPieces(surface);
+  t.Euler = static_cast<long long>(surface->GetNumberOfPoints()) - countPolygonEdges(surface) +
     static_cast<long long>(surface->GetNumberOfPolys());
   return t;
 }

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace
 {
 /// [-2, 2]^2 with n nodes per axis.
@@ -101,4 +103,29 @@ TEST(GridSpec, LocateWrapsPeriodicAxes)
   auto loc3 = sltk::locate(g, period);
   EXPECT_EQ(loc3.Cell[0], 0);
   EXPECT_EQ(loc3.Local[0], 0.0);
+}
+
+TEST(GridSpec, FloorToIndexIsFloor)
+{
+  const double values[] = { 0.0, -0.0, 0.5, 1.0, 1.0 - 1e-16, -1e-300, -0.5, -1.0, -1.0 - 2e-16, 2.5, -2.5, 1e15 + 0.5,
+    -1e15 - 0.5, 123456.999999, std::nextafter(3.0, 0.0) };
+  for (const double v : values)
+  {
+    EXPECT_EQ(sltk::floorToIndex(v), static_cast<sltk::Index>(std::floor(v))) << v;
+  }
+}
+
+TEST(GridSpec, LocateSnapsWithinTheToleranceOfANodeOnly)
+{
+  // The snap reads floor(s + 0.5): the same node as nearbyint within 1e-10, no snap at a tie.
+  const auto g = sltk::uniformBox<1>(11, 0.0, 1.0);
+  for (const double s : { 3.0 + 5e-11, 3.0 - 5e-11, 3.5, 2.5, 3.0 + 2e-10, 0.0, 10.0 - 3e-11 })
+  {
+    const double x[1] = { s / 10.0 };
+    const auto loc = sltk::locate(g, x);
+    const double nearest = std::nearbyint(g.indexCoordinate(0, x[0]));
+    const double t = g.indexCoordinate(0, x[0]);
+    const double snapped = std::fabs(t - nearest) < 1e-10 ? nearest : t;
+    EXPECT_EQ(static_cast<double>(loc.Cell[0]) + loc.Local[0], snapped) << s;
+  }
 }

@@ -84,7 +84,10 @@ void PointLocator<D>::search(const std::array<double, D>& x, std::int64_t exclud
   for (int a = 0; a < D; ++a)
   {
     const double s = (x[a] - this->Bounds.Min[a]) / this->Size;
-    centre[a] = std::min(this->Count[a] - 1, std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor(s))));
+    // floor(s) clamped to the buckets, compared as a double first (no library call, no overflow)
+    centre[a] = !(s >= 0.0)
+      ? 0
+      : (s >= static_cast<double>(this->Count[a] - 1) ? this->Count[a] - 1 : static_cast<std::int64_t>(s));
   }
   std::int64_t maxRing = 0;
   for (int a = 0; a < D; ++a)

@@ -140,13 +140,15 @@ inline void locateAxis(const GridSpec<D>& g, int a, double x, Index& cell, doubl
   {
     s = s < 0.0 ? 0.0 : (s > n - 1.0 ? n - 1.0 : s);
   }
-  const double r = std::nearbyint(s);
+  // The node nearest to s (s >= 0 here): floor(s + 0.5) snaps exactly where
+  // nearbyint(s) would, since a tie lies 0.5 from both candidates.
+  const double r = static_cast<double>(floorToIndex(s + 0.5));
   if (std::fabs(s - r) < 1e-10)
   {
     s = r;
   }
   const Index lastCell = g.Bounds[a] == Boundary::Periodic ? g.Dims[a] - 1 : g.Dims[a] - 2;
-  Index c = static_cast<Index>(std::floor(s));
+  Index c = floorToIndex(s);
   if (c > lastCell)
   {
     c = lastCell;

@@ -120,16 +120,19 @@ private:
 
   /// p_i(x') from the 3^D values around node i (x fastest): the tensor product
   /// of the header, collapsing the last axis first (its triples sit at stride 3^a).
+  /// On the first axis both products collapse the same triples, so the average's
+  /// first pass is the full product's mean of each triple (the same division).
   static double fit(const double (&around)[Neighbours], const std::array<double, D>& x)
   {
-    double full[Neighbours], average[Neighbours];
-    for (int c = 0; c < Neighbours; ++c)
+    double full[Neighbours / 3], average[Neighbours / 3];
+    int n = Neighbours / 3;
+    for (int c = 0; c < n; ++c)
     {
-      full[c] = average[c] = around[c];
+      const double mean = (around[c] + around[c + n] + around[c + 2 * n]) / 3.0;
+      full[c] = mean + x[D - 1] * 0.5 * (around[c + 2 * n] - around[c]);
+      average[c] = mean;
     }
-    const double centre = full[Neighbours / 2];
-    int n = Neighbours;
-    for (int a = D - 1; a >= 0; --a)
+    for (int a = D - 2; a >= 0; --a)
     {
       n /= 3;
       for (int c = 0; c < n; ++c)
@@ -139,7 +142,7 @@ private:
         average[c] = (average[c] + average[c + n] + average[c + 2 * n]) / 3.0;
       }
     }
-    return full[0] - average[0] + centre;
+    return full[0] - average[0] + around[Neighbours / 2];
   }
 
   StencilCache<D, 4> Stencil;
