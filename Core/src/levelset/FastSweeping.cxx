@@ -2,8 +2,11 @@
 #include "sltk/levelset/FastSweeping.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <thread>
 
 namespace sltk
 {
@@ -66,6 +69,138 @@ double godunovEikonal(const double* a, const double* h, int dims)
   return godunovUpdate(a, h, w, dims);
 }
 
+namespace
+{
+/// One Gauss-Seidel sweep of a 3D (or one-layer 2D) grid in one of the 2^D
+/// orders, with the locks of Bak, McLaughlin and Renzi (2010): a node is
+/// recomputed only when a neighbour changed since its last update. Skipped
+/// updates would reproduce the value already applied, so the result is that
+/// of the plain method.
+template <int D>
+struct Sweeper
+{
+  Index N[3] = { 1, 1, 1 };      ///< nodes per axis (2D: one layer along z)
+  Index Stride[3] = { 0, 0, 0 }; ///< storage strides
+  Index NodeStep[3] = { 1, 1, 1 };
+  double H[3] = { 1.0, 1.0, 1.0 };
+  double W[3] = { 1.0, 1.0, 1.0 }; ///< 1 / h^2
+  double* U = nullptr;
+  const std::uint8_t* Frozen = nullptr;
+  /// The locks, relaxed atomics: with two threads on neighbouring planes both may
+  /// unlock one node (to the same value).
+  std::unique_ptr<std::atomic<std::uint8_t>[]> Live;
+
+  void unlock(Index node) const { this->Live[node].store(!this->Frozen[node], std::memory_order_relaxed); }
+
+  /// The x line j of sweep-order plane kk in sweep order `back`; returns the
+  /// largest decrease.
+  double line(const bool* back, Index kk, Index jj) const
+  {
+    const double inf = std::numeric_limits<double>::infinity();
+    const Index k = back[2] ? this->N[2] - 1 - kk : kk;
+    const Index j = back[1] ? this->N[1] - 1 - jj : jj;
+    const Index lineNode = this->N[0] * (j + this->N[1] * k);
+    double* row = this->U + j * this->Stride[1] + k * this->Stride[2];
+    double change = 0.0;
+    for (Index ii = 0; ii < this->N[0]; ++ii)
+    {
+      const Index i = back[0] ? this->N[0] - 1 - ii : ii;
+      const Index node = lineNode + i;
+      if (!this->Live[node].load(std::memory_order_relaxed))
+      {
+        continue;
+      }
+      this->Live[node].store(0, std::memory_order_relaxed);
+      double* q = row + i * this->Stride[0];
+      const Index idx[3] = { i, j, k };
+      double nb[3] = { inf, inf, inf };
+      for (int a = 0; a < D; ++a)
+      {
+        const double lo = idx[a] > 0 ? q[-this->Stride[a]] : inf;
+        const double hi = idx[a] < this->N[a] - 1 ? q[this->Stride[a]] : inf;
+        nb[a] = std::min(lo, hi);
+      }
+      const double v = godunovUpdate(nb, this->H, this->W, D);
+      if (v < *q)
+      {
+        change = std::max(change, std::isfinite(*q) ? *q - v : inf);
+        *q = v;
+        for (int a = 0; a < D; ++a)
+        {
+          if (idx[a] > 0)
+          {
+            this->unlock(node - this->NodeStep[a]);
+          }
+          if (idx[a] < this->N[a] - 1)
+          {
+            this->unlock(node + this->NodeStep[a]);
+          }
+        }
+      }
+    }
+    return change;
+  }
+
+  double serialSweep(const bool* back) const
+  {
+    double change = 0.0;
+    for (Index kk = 0; kk < this->N[2]; ++kk)
+    {
+      for (Index jj = 0; jj < this->N[1]; ++jj)
+      {
+        change = std::max(change, this->line(back, kk, jj));
+      }
+    }
+    return change;
+  }
+
+  /// The same sweep on two threads, bit for bit: thread t takes the planes
+  /// kk = t, t + 2, ... of the sweep order, and line j of plane kk starts once
+  /// line j of plane kk - 1 is done. Each node then reads the neighbours the
+  /// serial order shows it: plane kk - 1's line j already swept, plane kk + 1's
+  /// not yet (its line j waits for this one), and its own plane's lines in order.
+  double pipelinedSweep(const bool* back, const Context& ctx) const
+  {
+    // One cache line per plane's counter, published every few lines: a line whose
+    // nodes are locked takes less time than a cache line's trip between cores.
+    constexpr Index PublishEvery = 8;
+    struct alignas(64) Progress
+    {
+      std::atomic<Index> LinesDone{ 0 };
+    };
+    std::unique_ptr<Progress[]> planes(new Progress[static_cast<size_t>(this->N[2])]);
+    double change[2] = { 0.0, 0.0 };
+    ctx.parallelFor(
+      0, 2,
+      [&](Index first, Index)
+      {
+        for (Index kk = first; kk < this->N[2]; kk += 2)
+        {
+          Index seen = kk > 0 ? 0 : this->N[1]; // lines of plane kk - 1 known to be done
+          for (Index jj = 0; jj < this->N[1]; ++jj)
+          {
+            for (int spin = 0; seen <= jj; ++spin)
+            {
+              seen = planes[kk - 1].LinesDone.load(std::memory_order_acquire);
+              if (spin > 64)
+              {
+                std::this_thread::yield(); // the other thread may share this core (oversubscribed ranks)
+              }
+            }
+            change[first] = std::max(change[first], this->line(back, kk, jj));
+            if ((jj + 1) % PublishEvery == 0 || jj + 1 == this->N[1])
+            {
+              planes[kk].LinesDone.store(jj + 1, std::memory_order_release);
+            }
+          }
+        }
+      },
+      1);
+    return std::max(change[0], change[1]);
+  }
+};
+} // namespace
+
 template <int D>
 Status fastSweep(GridField<D, double>& u, const std::vector<std::uint8_t>& frozen, const Context& ctx,
   const FastSweepingOptions& options, FastSweepingReport* report)
@@ -76,33 +211,28 @@ Status fastSweep(GridField<D, double>& u, const std::vector<std::uint8_t>& froze
     return Status::invalidArgument("fast sweeping: the frozen mask must have one entry per grid node");
   }
   // Treat 2D as 3D with one layer: n = 1 and no neighbours along z.
-  Index n[3] = { 1, 1, 1 };
-  Index s[3] = { 0, 0, 0 };
-  double h[3] = { 1.0, 1.0, 1.0 };
-  double w[3] = { 1.0, 1.0, 1.0 };
+  Sweeper<D> sweeper;
   double minH = std::numeric_limits<double>::infinity();
   for (int a = 0; a < D; ++a)
   {
-    n[a] = g.Dims[a];
-    s[a] = u.strides()[a];
-    h[a] = g.Spacing[a];
-    w[a] = 1.0 / (h[a] * h[a]);
-    minH = std::min(minH, h[a]);
+    sweeper.N[a] = g.Dims[a];
+    sweeper.Stride[a] = u.strides()[a];
+    sweeper.H[a] = g.Spacing[a];
+    sweeper.W[a] = 1.0 / (sweeper.H[a] * sweeper.H[a]);
+    minH = std::min(minH, sweeper.H[a]);
   }
-  const double inf = std::numeric_limits<double>::infinity();
-  const double tolerance = options.Tolerance * minH;
-  double* p = u.origin();
-  const std::uint8_t* fixedNode = frozen.data();
-  // Locking (Bak, McLaughlin and Renzi 2010): a node is recomputed only when a
-  // neighbour changed since its last update. Skipped updates would reproduce
-  // the value already applied, so the result is that of the plain method.
-  std::vector<std::uint8_t> active(frozen.size());
+  sweeper.NodeStep[1] = sweeper.N[0];
+  sweeper.NodeStep[2] = sweeper.N[0] * sweeper.N[1];
+  sweeper.U = u.origin();
+  sweeper.Frozen = frozen.data();
+  sweeper.Live.reset(new std::atomic<std::uint8_t>[frozen.size()]);
   for (size_t k = 0; k < frozen.size(); ++k)
   {
-    active[k] = frozen[k] ? 0 : 1;
+    sweeper.Live[k].store(frozen[k] ? 0 : 1, std::memory_order_relaxed);
   }
-  std::uint8_t* live = active.data();
-  const Index nodeStep[3] = { 1, n[0], n[0] * n[1] };
+  // Two threads only when two run at once (a pool with a worker) and there are planes to share.
+  const bool pipelined = ctx.Executor && ctx.Executor->size() >= 2 && sweeper.N[2] >= 2;
+  const double tolerance = options.Tolerance * minH;
   FastSweepingReport local;
   for (int cycle = 0; cycle < options.MaxCycles; ++cycle)
   {
@@ -110,52 +240,7 @@ Status fastSweep(GridField<D, double>& u, const std::vector<std::uint8_t>& froze
     for (int order = 0; order < (1 << D); ++order)
     {
       const bool back[3] = { (order & 1) != 0, (order & 2) != 0, (order & 4) != 0 };
-      for (Index kk = 0; kk < n[2]; ++kk)
-      {
-        const Index k = back[2] ? n[2] - 1 - kk : kk;
-        for (Index jj = 0; jj < n[1]; ++jj)
-        {
-          const Index j = back[1] ? n[1] - 1 - jj : jj;
-          const Index lineNode = n[0] * (j + n[1] * k);
-          const Index lineOffset = j * s[1] + k * s[2];
-          for (Index ii = 0; ii < n[0]; ++ii)
-          {
-            const Index i = back[0] ? n[0] - 1 - ii : ii;
-            const Index node = lineNode + i;
-            if (!live[node])
-            {
-              continue;
-            }
-            live[node] = 0;
-            double* q = p + lineOffset + i * s[0];
-            const Index idx[3] = { i, j, k };
-            double nb[3];
-            for (int a = 0; a < D; ++a)
-            {
-              const double lo = idx[a] > 0 ? q[-s[a]] : inf;
-              const double hi = idx[a] < n[a] - 1 ? q[s[a]] : inf;
-              nb[a] = std::min(lo, hi);
-            }
-            const double v = godunovUpdate(nb, h, w, D);
-            if (v < *q)
-            {
-              change = std::max(change, std::isfinite(*q) ? *q - v : inf);
-              *q = v;
-              for (int a = 0; a < D; ++a)
-              {
-                if (idx[a] > 0)
-                {
-                  live[node - nodeStep[a]] = !fixedNode[node - nodeStep[a]];
-                }
-                if (idx[a] < n[a] - 1)
-                {
-                  live[node + nodeStep[a]] = !fixedNode[node + nodeStep[a]];
-                }
-              }
-            }
-          }
-        }
-      }
+      change = std::max(change, pipelined ? sweeper.pipelinedSweep(back, ctx) : sweeper.serialSweep(back));
     }
     local.Cycles = cycle + 1;
     local.LastChange = change;

@@ -39,7 +39,9 @@ void filterBand(
 /// (or empty: it is then allocated); it is returned all zero. Indices
 /// outside the grid are ignored. `more` (optional) dilates with the band, e.g.
 /// a slab's ghost-row band (its nodes may repeat the band's). Work
-/// O(band * k^D), serial: marking is cheap next to the reinitialisation it feeds.
+/// O(band * k^D) plus one pass over the grid's x lines (the marks are read back
+/// in ascending order between each line's first and last), serial: marking is
+/// cheap next to the reinitialisation it feeds.
 template <int D>
 void dilateBand(const GridSpec<D>& grid, const NodeList& band, int k, std::vector<std::uint8_t>& scratch,
   NodeList& dilated, const NodeList* more = nullptr);

@@ -191,11 +191,10 @@ void joinFarFeet(std::map<Index, ChunkFeet<D>>& farByChunk, FarFeet<D>& far)
 
 namespace detail
 {
-/// The cells of a node's feet `x` when every foot is finite and, on a slab
-/// window (`far`), inside it; false otherwise (StepLanes).
+/// Whether every foot of a node, `x`, is finite and, on a slab window (`far`),
+/// inside it (StepLanes).
 template <class Interp, int D, size_t P>
-bool locateFeet(const GridSpec<D>& spec, const FarFeet<D>* far, const std::array<std::array<double, D>, P>& x,
-  std::array<CellLocation<D>, P>& at)
+bool feetInWindow(const GridSpec<D>& spec, const FarFeet<D>* far, const std::array<std::array<double, D>, P>& x)
 {
   for (size_t j = 0; j < P; ++j)
   {
@@ -210,7 +209,6 @@ bool locateFeet(const GridSpec<D>& spec, const FarFeet<D>* far, const std::array
     {
       return false;
     }
-    at[j] = locate(spec, x[j].data());
   }
   return true;
 }
@@ -244,10 +242,14 @@ struct StepLanes<Weno3Interpolator<D>, D>
     const GridSpec<D>& spec, const FarFeet<D>* far, const std::array<std::array<double, D>, P>& x, double* values)
   {
     static_assert(P == Weno3Lanes<D>::Count, "one lane per foot");
-    std::array<CellLocation<D>, P> at;
-    if (!locateFeet<Weno3Interpolator<D>, D>(spec, far, x, at))
+    if (!feetInWindow<Weno3Interpolator<D>, D>(spec, far, x))
     {
       return false;
+    }
+    std::array<CellLocation<D>, P> at;
+    for (size_t j = 0; j < P; ++j)
+    {
+      at[j] = locate(spec, x[j].data());
     }
     this->Lanes.eval(at, values);
     return true;
@@ -271,14 +273,13 @@ struct StepLanes<LsqQ1Interpolator<D>, D>
   bool tryEval(
     const GridSpec<D>& spec, const FarFeet<D>* far, const std::array<std::array<double, D>, P>& x, double* values)
   {
-    std::array<CellLocation<D>, P> at;
-    if (!locateFeet<LsqQ1Interpolator<D>, D>(spec, far, x, at))
+    if (!feetInWindow<LsqQ1Interpolator<D>, D>(spec, far, x))
     {
       return false;
     }
     for (size_t j = 0; j < P; ++j)
     {
-      values[j] = LsqQ1Interpolator<D>::evalAt(this->Phi, this->Around, at[j]);
+      values[j] = LsqQ1Interpolator<D>::evalAt(this->Phi, this->Around, locate(spec, x[j].data()));
     }
     return true;
   }
