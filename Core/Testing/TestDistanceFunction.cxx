@@ -61,6 +61,25 @@ void errors(const sltk::PointCloud<D>& cloud, const sltk::GridField<D, double>& 
     }
   }
 }
+/// Fixed random data for the sweeps: about one node in `every` frozen at a value in
+/// [0, 1), the others at infinity (a linear congruential sequence from `seed`).
+template <int D>
+std::vector<std::uint8_t> freezeRandomNodes(sltk::GridField<D, double>& u, std::uint64_t seed, std::uint64_t every)
+{
+  std::vector<std::uint8_t> frozen(static_cast<size_t>(u.spec().nodeCount()), 0);
+  std::uint64_t state = seed;
+  for (sltk::Index k = 0; k < u.spec().nodeCount(); ++k)
+  {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    if ((state >> 33) % every == 0)
+    {
+      frozen[static_cast<size_t>(k)] = 1;
+      u(u.nodeIndex(k)) = static_cast<double>((state >> 40) % 1000) * 1e-3;
+    }
+  }
+  return frozen;
+}
+
 } // namespace
 
 TEST(DistanceFunction, GodunovUpdateSolvesTheDiscreteEikonal)
@@ -213,17 +232,7 @@ TEST(DistanceFunction, LockedSweepingEqualsPlainGaussSeidel)
   g.Dims = { 37, 29 };
   g.Spacing = { 0.1, 0.07 };
   sltk::GridField<2, double> u(g, 1, std::numeric_limits<double>::infinity());
-  std::vector<std::uint8_t> frozen(static_cast<size_t>(g.nodeCount()), 0);
-  std::uint64_t state = 12345;
-  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
-  {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    if ((state >> 33) % 23 == 0)
-    {
-      frozen[static_cast<size_t>(k)] = 1;
-      u(u.nodeIndex(k)) = static_cast<double>((state >> 40) % 1000) * 1e-3;
-    }
-  }
+  const std::vector<std::uint8_t> frozen = freezeRandomNodes(u, 12345, 23);
   sltk::GridField<2, double> plain = u;
   sltk::FastSweepingOptions options;
   options.Tolerance = 0.0;
@@ -274,17 +283,7 @@ TEST(DistanceFunction, TwoThreadSweepsEqualTheSerialOnesBitForBit)
   g.Dims = { 23, 17, 29 };
   g.Spacing = { 0.1, 0.07, 0.13 };
   sltk::GridField<3, double> serial(g, 1, std::numeric_limits<double>::infinity());
-  std::vector<std::uint8_t> frozen(static_cast<size_t>(g.nodeCount()), 0);
-  std::uint64_t state = 987654321;
-  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
-  {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    if ((state >> 33) % 97 == 0)
-    {
-      frozen[static_cast<size_t>(k)] = 1;
-      serial(serial.nodeIndex(k)) = static_cast<double>((state >> 40) % 1000) * 1e-3;
-    }
-  }
+  const std::vector<std::uint8_t> frozen = freezeRandomNodes(serial, 987654321, 97);
   sltk::GridField<3, double> threaded = serial;
   sltk::FastSweepingOptions options;
   options.Tolerance = 0.0;
