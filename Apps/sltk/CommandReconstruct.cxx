@@ -17,6 +17,7 @@
 #include "WriteSurface.h"
 
 #include "sltk/exec/Memory.h"
+#include "sltk/exec/ThreadPool.h"
 #include "sltk/interp/InterpolatorKind.h"
 #include "sltk/recon/ReconstructionPlan.h"
 #include "sltk/recon/ReconstructionSummary.h"
@@ -31,6 +32,7 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSLLevelSetReconstruct.h>
+#include <vtkSMPTools.h>
 #include <vtkSmartPointer.h>
 #include <vtkTable.h>
 #include <vtkTrivialProducer.h>
@@ -40,6 +42,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <sstream>
 #include <vector>
@@ -294,6 +297,20 @@ std::string Reconstruct::problemBeforeWork(bool pieces, vtkPolyData* reference, 
   return "";
 }
 
+/// VTK's threaded filters (flying edges, the surface's nearest cloud points) on as
+/// many threads as Core's pool (sltk::threadsPerRank): the Debian build's default
+/// backend is Sequential, which left both phases on one core. STDThread, unless the
+/// user chose a backend by VTK_SMP_BACKEND_IN_USE; the surfaces are the same bytes.
+void useVtkThreads(int requested)
+{
+  if (!std::getenv("VTK_SMP_BACKEND_IN_USE"))
+  {
+    vtkSMPTools::SetBackend("STDThread");
+  }
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  vtkSMPTools::Initialize(sltk::threadsPerRank(requested, controller ? controller->GetNumberOfProcesses() : 1));
+}
+
 /// The filter of the options: the octree's (vtkSLLevelSetReconstruct with
 /// OctreeStorage always on) for --octree.
 vtkSmartPointer<vtkSLLevelSetReconstruct> Reconstruct::makeFilter(vtkPointSet* cloud) const
@@ -304,6 +321,7 @@ vtkSmartPointer<vtkSLLevelSetReconstruct> Reconstruct::makeFilter(vtkPointSet* c
   filter->SetInputData(cloud);
   filter->SetOptions(this->Options);                         // every flag of the plan is a field of Core's options
   filter->SetNumberOfThreads(this->Threads);                 // the filter shares the cores among the ranks
+  useVtkThreads(this->Threads);                              // and VTK's own filters the same threads
   filter->SetGenerateHyperTreeGrid(this->given("--output")); // the trees only for -o FILE.htg
   return filter;
 }
