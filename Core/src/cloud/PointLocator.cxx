@@ -63,6 +63,11 @@ PointLocator<D>::PointLocator(const PointCloud<D>& cloud, double pointsPerBucket
   {
     this->Points[static_cast<size_t>(fill[static_cast<size_t>(bucket[k])]++)] = static_cast<std::int64_t>(k);
   }
+  this->Coordinates.resize(cloud.Points.size());
+  for (size_t p = 0; p < this->Points.size(); ++p)
+  {
+    this->Coordinates[p] = cloud.Points[static_cast<size_t>(this->Points[p])];
+  }
 }
 
 template <int D>
@@ -121,7 +126,7 @@ void PointLocator<D>::search(const std::array<double, D>& x, std::int64_t exclud
         double d2 = 0.0;
         for (int a = 0; a < D; ++a)
         {
-          const double d = this->Cloud->Points[static_cast<size_t>(k)][a] - x[a];
+          const double d = this->Coordinates[static_cast<size_t>(p)][a] - x[a];
           d2 += d * d;
         }
         visit(k, std::sqrt(d2));

@@ -52,6 +52,9 @@ private:
   std::array<std::int64_t, D> Count{};
   std::vector<std::int64_t> Start;  ///< CSR offsets, one per bucket + 1
   std::vector<std::int64_t> Points; ///< point indices grouped by bucket
+  /// Their coordinates in the same order: a bucket's candidates are read from
+  /// consecutive memory, not gathered from the cloud by index.
+  std::vector<std::array<double, D>> Coordinates;
 };
 
 extern template class PointLocator<2>;
