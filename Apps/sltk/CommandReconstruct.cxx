@@ -507,8 +507,9 @@ int Reconstruct::run() const
       { "interpolator", sltk::interpolatorInfo(result.Interpolator).Name },
       { "noise", result.CloudNoise >= 0.0 ? nlohmann::ordered_json(result.CloudNoise) : nlohmann::ordered_json() },
       { "automatic_choices", result.Choices }, { "recoveries", result.Recoveries }, { "warnings", result.Warnings },
-      { "fits_cloud", fits }, { "seconds", seconds }, { "peak_memory_mb", peakMb }, { "ranks", ranks },
-      { "bytes_sent_max", bytesSent }, { "collectives", collectives },
+      { "fits_cloud", fits }, { "pieces", static_cast<long long>(result.Pieces) },
+      { "cloud_components", static_cast<long long>(result.CloudComponents) }, { "seconds", seconds },
+      { "peak_memory_mb", peakMb }, { "ranks", ranks }, { "bytes_sent_max", bytesSent }, { "collectives", collectives },
       { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) }, { "surface_pieces", topology.Pieces },
       { "euler_characteristic", planar ? nlohmann::ordered_json() : nlohmann::ordered_json(topology.Euler) },
       { "runs", runRecords } };
@@ -564,7 +565,8 @@ Command addReconstructCommand(CLI::App& sltk)
   app
     ->add_option("--json", command->Json,
       "summary: points, points_reconstructed, outliers_removed, cdx, kp,\n"
-      "automatic_choices, recoveries, warnings, fits_cloud, seconds, peak_memory_mb, ranks,\nsurface_pieces, "
+      "automatic_choices, recoveries, warnings, fits_cloud, pieces (components of the\ninside), cloud_components "
+      "(the cloud's, points within 4 h_P linked),\nseconds, peak_memory_mb, ranks, surface_pieces, "
       "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points, misfit_points, merged_nodes; "
       "--octree: "
       "stored_nodes, "

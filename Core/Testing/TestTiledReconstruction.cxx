@@ -25,6 +25,8 @@ void compareWithUniform(const sltk::PointCloud<D>& cloud, sltk::ReconstructionOp
   const sltk::Status status = sltk::reconstructTiled(plan, ctx, tiled);
   ASSERT_TRUE(status.isOk()) << status.message();
   ASSERT_EQ(tiled.Records.Runs.size(), uniform.Runs.size());
+  EXPECT_EQ(tiled.Records.Pieces, uniform.Pieces) << "the tiles' pieces (InsideComponents.h) are the grid's";
+  EXPECT_EQ(tiled.Records.CloudComponents, uniform.CloudComponents);
   for (size_t r = 0; r < uniform.Runs.size(); ++r)
   {
     std::cout << "run " << r + 1 << ": uniform " << uniform.Runs[r].Iterations << " iterations, Err_P "

@@ -141,15 +141,19 @@ void runSummary(const ReconstructionSummary& summary, vtkDataObject* image)
   }
   // The pre-processing (CloudCleaning.h): counts as doubles (exact below 2^53),
   // and the parameters used (chosen when automatic: AutomaticParameters.h).
-  const std::pair<const char*, double> scalars[10] = {
+  const std::pair<const char*, double> scalars[12] = {
     { "InputPoints", static_cast<double>(summary.Cleaning.InputPoints) },
     { "OutliersRemoved", static_cast<double>(summary.Cleaning.OutliersRemoved) },
     { "ThinningCell", summary.Cleaning.ThinningCell },
     { "ReconstructedPoints", static_cast<double>(summary.Cleaning.OutputPoints) },
-    { "CellSizeFactor", summary.CellSizeFactor }, { "OutsideThresholdFactor", summary.OutsideThresholdFactor },
-    { "CloudSpacing", summary.CloudSpacing }, { "FitsCloud", summary.FitsCloud ? 1.0 : 0.0 },
+    { "CellSizeFactor", summary.CellSizeFactor },
+    { "OutsideThresholdFactor", summary.OutsideThresholdFactor },
+    { "CloudSpacing", summary.CloudSpacing },
+    { "FitsCloud", summary.FitsCloud ? 1.0 : 0.0 },
     { "Interpolator", static_cast<double>(summary.Interpolator) }, // the filter's InterpolatorType code
     { "CloudNoise", summary.CloudNoise },                          // < 0: not measured (given)
+    { "Pieces", static_cast<double>(summary.Pieces) },             // InsideComponents.h
+    { "CloudComponents", static_cast<double>(summary.CloudComponents) },
   };
   for (const auto& entry : scalars)
   {

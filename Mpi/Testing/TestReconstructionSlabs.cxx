@@ -10,12 +10,14 @@
 // 1.2e-12) (Documentation/Distributed.md).
 #include "MpiWorld.h"
 #include "sltk/cloud/SyntheticClouds.h"
+#include "sltk/recon/InsideComponents.h"
 #include "sltk/recon/Reconstruction.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
 
 namespace
@@ -65,6 +67,12 @@ sltk::Index expectSameAsOneRank(
     EXPECT_NEAR(mine.Runs[r].CloudError, one.Runs[r].CloudError, agreement.CloudError * one.Runs[r].CloudError)
       << "run " << r + 1;
   }
+  // The pieces (InsideComponents.h: labelled per slab, merged over the ranks) and the
+  // cloud's components are the one rank's.
+  EXPECT_GE(one.Pieces, 1);
+  EXPECT_EQ(mine.Pieces, one.Pieces);
+  EXPECT_EQ(mine.CloudComponents, one.CloudComponents);
+  EXPECT_EQ(mine.FitsCloud, one.FitsCloud);
   EXPECT_EQ(mine.History.size(), one.History.size());
   for (size_t k = 0; k < std::min(one.History.size(), mine.History.size()); ++k)
   {
@@ -90,9 +98,10 @@ sltk::Index expectSameAsOneRank(
   const double dx = whole.Spacing[0];
   EXPECT_LE(phiGap, agreement.Phi * dx) << "rank " << comm->rank() << " of " << comm->size();
   EXPECT_LE(distGap, 1e-10 * dx) << "rank " << comm->rank() << " of " << comm->size();
-  std::printf("rank %d of %d: rows %lld..%lld, %zu runs, largest gap phi %.3g dx, d %.3g dx\n", comm->rank(),
-    comm->size(), static_cast<long long>(slab.Begin), static_cast<long long>(slab.End), one.Runs.size(), phiGap / dx,
-    distGap / dx);
+  std::printf("rank %d of %d: rows %lld..%lld, %zu runs, largest gap phi %.3g dx, d %.3g dx, %lld piece(s), %zu "
+              "recoveries\n",
+    comm->rank(), comm->size(), static_cast<long long>(slab.Begin), static_cast<long long>(slab.End), one.Runs.size(),
+    phiGap / dx, distGap / dx, static_cast<long long>(mine.Pieces), mine.Recoveries.size());
   sltk::Index farFeet = 0;
   for (const auto& run : mine.Runs)
   {
@@ -215,4 +224,64 @@ TEST(ReconstructionSlabs, RanksWithDifferentCloudsAreRefusedTogether)
   const sltk::Status status = sltk::reconstruct(plan, sltk::Context{}, result, *comm);
   EXPECT_EQ(status.code(), sltk::StatusCode::InvalidArgument) << status.message();
   EXPECT_NE(status.message().find("different clouds"), std::string::npos) << status.message();
+}
+
+TEST(ReconstructionSlabs, TwoCirclesAreTwoPiecesOnEveryRank)
+{
+  // Side by side along the slabs' axis, so that both pieces cross slab boundaries.
+  sltk::PointCloud<2> cloud = sltk::circleCloud(96, 0.6, { 0.0, -0.9 });
+  for (const auto& p : sltk::circleCloud(96, 0.6, { 0.0, 0.9 }).Points)
+  {
+    cloud.Points.push_back(p);
+  }
+  expectSameAsOneRank<2>(cloud, sltk::ReconstructionOptions{});
+  sltk::ReconstructionPlan<2> plan;
+  ASSERT_TRUE(sltk::planReconstruction(cloud, sltk::ReconstructionOptions{}, sltk::Context{}, plan).isOk());
+  sltk::ReconstructionResult<2> mine;
+  ASSERT_TRUE(sltk::reconstruct(plan, sltk::Context{}, mine, *world()).isOk());
+  EXPECT_EQ(mine.Pieces, 2);
+  EXPECT_EQ(mine.CloudComponents, 2);
+  EXPECT_TRUE(mine.FitsCloud);
+}
+
+TEST(ReconstructionSlabs, InsideComponentsAreTheOneRankCount)
+{
+  // Random inside nodes (many components crossing the slab boundaries, some several
+  // times): each rank labels its rows and the ranks merge what joins across them
+  // (InsideComponents.h); the count is the whole field's on one rank.
+  auto comm = world();
+  for (unsigned seed = 1; seed <= 3; ++seed)
+  {
+    sltk::GridSpec<3> grid;
+    grid.Dims = { 15, 12, 16 };
+    grid.Spacing = { 1.0, 1.0, 1.0 };
+    sltk::GridField<3> whole;
+    whole.resize(grid, 2, 1.0);
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (sltk::Index k = 0; k < grid.nodeCount(); ++k)
+    {
+      whole(whole.nodeIndex(k)) = u(random) < 0.3 ? -1.0 : 1.0;
+    }
+    sltk::SlabPlan all;
+    all.End = all.Stop = grid.Dims[2];
+    const std::int64_t one =
+      sltk::insideComponents<3>(sltk::SlabNodes<3>(whole, grid, all, 0), sltk::serialCommunicator());
+    sltk::SlabPlan slab;
+    slab.Begin = sltk::evenSlabBegin(grid.Dims[2], comm->rank(), comm->size());
+    slab.End = sltk::evenSlabBegin(grid.Dims[2], comm->rank() + 1, comm->size());
+    slab.First = std::max<sltk::Index>(slab.Begin - 1, 0);
+    slab.Stop = std::min(slab.End + 1, grid.Dims[2]);
+    sltk::GridSpec<3> window = grid;
+    window.Dims[2] = slab.windowRows();
+    sltk::GridField<3> mine;
+    mine.resize(window, 2, 1.0);
+    for (sltk::Index k = 0; k < window.nodeCount(); ++k)
+    {
+      std::array<sltk::Index, 3> i = mine.nodeIndex(k);
+      mine(i) = whole({ i[0], i[1], i[2] + slab.First });
+    }
+    EXPECT_EQ(sltk::insideComponents<3>(sltk::SlabNodes<3>(mine, grid, slab, comm->rank()), *comm), one)
+      << "seed " << seed << ", rank " << comm->rank() << " of " << comm->size();
+  }
 }

@@ -6,6 +6,7 @@
 #include "TiledBand.h"
 #include "TiledTransfer.h"
 #include "sltk/grid/SlabExchange.h"
+#include "sltk/recon/InsideComponents.h"
 #include "sltk/recon/ReconstructionInterpolator.h"
 #include "sltk/recon/RunIterations.h"
 
@@ -63,6 +64,43 @@ Status reinitialiseTransferred(const ReconstructionPlan<D>& plan, int run, const
   reinit.markBand(field, band, plan.Options.ReinitDilation, ctx, distribution);
   return distribution.agree(reinit.run(field, plan.Options.Reinit, ctx, distribution));
 }
+
+/// The nodes of a tiled result for insideComponents(): every line, the nodes of this
+/// rank's slots (their phi, or the slot's side), runs broken at the tiles' edges so that
+/// a neighbour's run lies in one tile, held here as a ghost (TileDistribution.h).
+template <int D>
+class TiledNodes
+{
+public:
+  TiledNodes(const TiledField<D>& field, const std::vector<std::int32_t>& owners, int rank)
+    : Field(field)
+    , Owners(owners)
+    , Rank(rank)
+  {
+  }
+  const std::array<Index, D>& dims() const { return this->Field.grid().Dims; }
+  void lines(Index& first, Index& end) const
+  {
+    first = 0;
+    end = this->Field.grid().nodeCount() / this->dims()[0];
+  }
+  int owner(const std::array<Index, D>& i) const
+  {
+    std::array<Index, D> t{};
+    for (int a = 0; a < D; ++a)
+    {
+      t[a] = i[a] >> TileBits;
+    }
+    return this->Owners.empty() ? this->Rank : this->Owners[static_cast<size_t>(this->Field.slotIndex(t))];
+  }
+  bool inside(const std::array<Index, D>& i) const { return this->Field.value(i) < 0.0; }
+  Index period() const { return TileEdge; }
+
+private:
+  const TiledField<D>& Field;
+  const std::vector<std::int32_t>& Owners;
+  const int Rank;
+};
 
 /// The tiled storage of the runs (recon/RunLoop.h's `Runs`): run 1 on the
 /// uniform grid, split in slabs over the ranks (recon/SlabRuns.h), then
@@ -164,6 +202,13 @@ public:
   }
 
   void keepFailed(int, ReconstructionResult<D>&) {}
+
+  /// The pieces of the kept result (InsideComponents.h).
+  std::int64_t pieces(const ReconstructionResult<D>&) const
+  {
+    const Communicator& comm = this->Distribution.comm();
+    return insideComponents<D>(TiledNodes<D>(this->Out.Field, this->Out.Owners, comm.rank()), comm);
+  }
 
   Status keepPrevious(int run, ReconstructionResult<D>&)
   {

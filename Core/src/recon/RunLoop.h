@@ -18,16 +18,21 @@
 ///    this run's; `void keepFailed(int run, ReconstructionResult<D>&)` keeps
 ///    what a failed run reached, where the storage can;
 ///  - `Status keepPrevious(int run, ReconstructionResult<D>&)`: the result is
-///    the previous run's (or the reason the storage no longer holds it).
+///    the previous run's (or the reason the storage no longer holds it);
+///  - `std::int64_t pieces(const ReconstructionResult<D>&)`: the kept result's
+///    pieces (InsideComponents.h).
 
 #include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 #include "sltk/recon/AutomaticParameters.h"
+#include "sltk/recon/PointClusters.h"
 #include "sltk/recon/Reconstruction.h"
+#include "sltk/recon/RunIterations.h"
 #include "sltk/recon/StoppingRule.h"
 #include "sltk/recon/StrayPoints.h"
 
 #include <algorithm>
+#include <chrono>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -87,6 +92,21 @@ void recover(const std::string& what, const Context& ctx, ReconstructionResult<D
   ctx.logger().log(LogLevel::Warning, what);
   result.Recoveries.push_back(what);
 }
+
+/// `kept` (a storage's keepCurrent or keepPrevious), with the kept result's pieces counted.
+template <int D, class Runs>
+Status countPieces(const Status& kept, const Runs& runs, const Context& ctx, ReconstructionResult<D>& result)
+{
+  if (kept.isOk())
+  {
+    const auto start = std::chrono::steady_clock::now();
+    result.Pieces = runs.pieces(result);
+    ctx.logger().log(LogLevel::Info,
+      "the result has " + std::to_string(result.Pieces) + " piece(s) (components of phi < 0), counted in " +
+        std::to_string(secondsSince(start)) + " s");
+  }
+  return kept;
+}
 } // namespace detail
 
 /// Runs 1..options.Runs of Algorithm 1 with `options` (the plan's, or a finer
@@ -129,7 +149,7 @@ Status runAlgorithm1(Runs& runs, const ReconstructionPlan<D>& plan, const Recons
     if (vanished && run > 1)
     {
       // Keep the last run that held a surface rather than fail (its grid is coarser).
-      const Status kept = runs.keepPrevious(run, result);
+      const Status kept = detail::countPieces(runs.keepPrevious(run, result), runs, ctx, result);
       if (kept.isOk())
       {
         detail::recover("run " + std::to_string(run) + " lost its zero level set; the result is run " +
@@ -156,7 +176,7 @@ Status runAlgorithm1(Runs& runs, const ReconstructionPlan<D>& plan, const Recons
       runs.advance(run);
     }
   }
-  return runs.keepCurrent(options.Runs, result);
+  return detail::countPieces(runs.keepCurrent(options.Runs, result), runs, ctx, result);
 }
 
 /// Every rank must hold the same plan, made from the whole cloud (each rank's
@@ -206,12 +226,45 @@ inline bool lostThinFeatures(const RunFigures& last)
   return last.FarPoints > FarPointWarning || last.MisfitPoints > FitShare;
 }
 
+/// "the result has N pieces where the cloud has M connected component(s) at 4 h_P (L)"
+/// (PieceLinkFactor, L in the user's units).
+template <int D>
+std::string piecesAgainstComponents(const ReconstructionPlan<D>& plan, std::int64_t pieces, Index components)
+{
+  std::ostringstream text;
+  text.precision(3);
+  text << "the result has " << pieces << " pieces where the cloud has " << components << " connected component(s) at "
+       << PieceLinkFactor << " h_P (" << PieceLinkFactor * plan.userCloudSpacing() << ")";
+  return text.str();
+}
+
+/// The honest outcome when the result has more pieces than the cloud has components
+/// (Documentation/Numerics.md, "Pieces against the cloud's components"): FitsCloud is
+/// false and the statement comes first, with advice that is not what just ran (`ran`).
+template <int D>
+void statePieces(const ReconstructionPlan<D>& plan, const ReconstructionOptions& ran, Index components,
+  const Context& ctx, ReconstructionResult<D>& records)
+{
+  std::ostringstream statement;
+  statement.precision(3);
+  statement << piecesAgainstComponents(plan, records.Pieces, components)
+            << ": parts thinner than the cells broke apart; a C_dx below the " << ran.CellSizeFactor
+            << " that ran (--cdx" << (ran.OctreeStorage ? "" : ", with --octree for the memory") << ")"
+            << (ran.Interpolator == InterpolatorKind::LeastSquaresQ1 ? " or --interpolator weno3" : "")
+            << " may keep them";
+  records.FitsCloud = false;
+  records.Warnings.insert(records.Warnings.begin(), statement.str());
+  ctx.logger().log(LogLevel::Warning, statement.str());
+}
+
 /// Algorithm 1 on the plan with every recovery: `runWith(options, grids)`
 /// runs it (runAlgorithm1 on a fresh storage, filling `records`) with the
 /// plan's options; when C_dx was chosen automatically and the last run lost
 /// thin features (lostThinFeatures), it runs again from
-/// half the C_dx with one run fewer, which ends on the same finest grid. The
-/// records are returned in the user's units (recordsToUser), with the plan's
+/// half the C_dx with one run fewer, which ends on the same finest grid; when the
+/// automatic interpolator chose the least-squares Q1 and the result has more pieces
+/// than the cloud has components (PieceLinkFactor), again with WENO3 on the same grids.
+/// The records are returned in the user's units (recordsToUser), with the plan's
 /// choices; the storage's fields are left in unit-box units.
 template <int D, class RunWith>
 Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Context& ctx, const Communicator& comm,
@@ -231,6 +284,18 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
     records.OutsideThresholdFactor = options.OutsideThresholdFactor;
     records.CellSizeFactor = options.CellSizeFactor;
     return runWith(options, grids);
+  };
+  // A run again after `what`, the recoveries so far kept first.
+  const auto again =
+    [&](const ReconstructionOptions& options, const std::vector<GridSpec<D>>& grids, const std::string& what)
+  {
+    ctx.logger().log(LogLevel::Warning, what);
+    std::vector<std::string> recoveries = std::move(records.Recoveries);
+    recoveries.push_back(what);
+    records = ReconstructionResult<D>{};
+    const Status rerun = start(options, grids);
+    records.Recoveries.insert(records.Recoveries.begin(), recoveries.begin(), recoveries.end());
+    return rerun;
   };
   Status status = start(plan.Options, plan.Grids.Runs);
   ReconstructionOptions finer = plan.Options;
@@ -257,13 +322,23 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
     what << " with C_dx = " << plan.Options.CellSizeFactor
          << ": reconstructed again from C_dx = " << finer.CellSizeFactor << " with " << finer.Runs
          << " run(s), which end on the same finest grid";
-    ctx.logger().log(LogLevel::Warning, what.str());
-    std::vector<std::string> recoveries = std::move(records.Recoveries);
-    recoveries.push_back(what.str());
-    records = ReconstructionResult<D>{};
-    status = start(finer, finerGrids.Runs);
-    records.Recoveries.insert(records.Recoveries.begin(), recoveries.begin(), recoveries.end());
+    status = again(finer, finerGrids.Runs, what.str());
     restarted = true;
+  }
+  ReconstructionOptions ran = restarted ? finer : plan.Options;
+  const auto counting = std::chrono::steady_clock::now();
+  const Index components = cloudComponents(plan.Cloud, PieceLinkFactor * plan.CloudSpacing);
+  ctx.logger().log(LogLevel::Info,
+    "the cloud has " + std::to_string(components) + " connected component(s) at 4 h_P, counted in " +
+      std::to_string(detail::secondsSince(counting)) + " s");
+  if (status.isOk() && records.Pieces > components && plan.CloudNoise >= 0.0 &&
+    ran.Interpolator == InterpolatorKind::LeastSquaresQ1)
+  {
+    // The automatic least-squares Q1 let thin parts break apart: WENO3 on the same grids.
+    ran.Interpolator = InterpolatorKind::Weno3;
+    status = again(ran, restarted ? finerGrids.Runs : plan.Grids.Runs,
+      piecesAgainstComponents(plan, records.Pieces, components) +
+        " with the automatic interpolator lsq-q1: reconstructed again with weno3 on the same grids");
   }
   if (status.isOk() && !records.Runs.empty() && records.Runs.back().FarPoints > FarPointWarning)
   {
@@ -293,10 +368,15 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
     records.Warnings.insert(records.Warnings.begin(), statement.str());
     ctx.logger().log(LogLevel::Warning, statement.str());
   }
+  if (status.isOk() && records.Pieces > components)
+  {
+    statePieces(plan, ran, components, ctx, records);
+  }
+  records.CloudComponents = components;
   records.CloudSpacing = plan.userCloudSpacing();
   records.Cleaning = plan.Cleaning;
   records.Choices = plan.Choices;
-  records.Interpolator = plan.Options.Interpolator.value_or(InterpolatorKind::Weno3);
+  records.Interpolator = ran.Interpolator.value_or(InterpolatorKind::Weno3);
   records.CloudNoise = plan.CloudNoise;
   recordsToUser(plan.Box, records);
   return status;

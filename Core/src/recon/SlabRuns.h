@@ -12,6 +12,7 @@
 #include "sltk/recon/CloudInitialDataSlabs.h"
 #include "sltk/recon/DistanceFunction.h"
 #include "sltk/recon/FarPointSeeds.h"
+#include "sltk/recon/InsideComponents.h"
 #include "sltk/recon/LocalOffset.h"
 #include "sltk/recon/SlabPolicy.h"
 
@@ -226,6 +227,13 @@ public:
     return Status::ok();
   }
   void keepFailed(int run, ReconstructionResult<D>& result) { this->keepCurrent(run, result); }
+
+  /// The pieces of the kept result (InsideComponents.h).
+  std::int64_t pieces(const ReconstructionResult<D>& result) const
+  {
+    const Communicator& comm = this->Slab.comm();
+    return insideComponents<D>(SlabNodes<D>(result.SignedDistance, result.WholeGrid, result.Slab, comm.rank()), comm);
+  }
 
   /// The result is the previous run's, on its grid.
   Status keepPrevious(int, ReconstructionResult<D>& result)

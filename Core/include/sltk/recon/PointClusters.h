@@ -9,6 +9,7 @@
 #include "sltk/core/DisjointSets.h"
 #include "sltk/core/IndexBox.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -90,6 +91,22 @@ std::vector<Index> pointGroups(const PointCloud<D>& cloud, const std::vector<Out
     group[static_cast<size_t>(j)] = findRoot(parent, j);
   }
   return group;
+}
+
+/// The cloud's connected components when two points closer than `link` are linked
+/// (pointGroups over every point): what the result's pieces are compared with
+/// (Documentation/Numerics.md, "Pieces against the cloud's components").
+template <int D>
+Index cloudComponents(const PointCloud<D>& cloud, double link)
+{
+  std::vector<OutsidePoint> all(cloud.Points.size());
+  for (size_t k = 0; k < all.size(); ++k)
+  {
+    all[k].Point = static_cast<Index>(k);
+  }
+  std::vector<Index> groups = pointGroups<D>(cloud, all, link);
+  std::sort(groups.begin(), groups.end());
+  return static_cast<Index>(std::unique(groups.begin(), groups.end()) - groups.begin());
 }
 
 } // namespace sltk

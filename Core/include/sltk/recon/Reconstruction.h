@@ -24,6 +24,7 @@
 #include "sltk/recon/ReconstructionPlan.h"
 
 #include <cmath>
+#include <cstdint>
 
 #include <string>
 #include <vector>
@@ -47,8 +48,15 @@ struct ReconstructionReport
   /// surface) and the option that may help; empty when it fits.
   std::vector<std::string> Warnings;
   /// False when more than FitShare of the points lie more than two finest cells and h_P from
-  /// the surface (StoppingRule.h): the result does not fit the cloud, and Warnings says so first.
+  /// the surface (StoppingRule.h), or when the result has more Pieces than CloudComponents:
+  /// the result does not fit the cloud, and Warnings says so first.
   bool FitsCloud = true;
+  /// The result's pieces: the connected components of {phi < 0} on the last run's grid
+  /// (InsideComponents.h); -1 when not counted (the reconstruction failed).
+  std::int64_t Pieces = -1;
+  /// The cloud's connected components when points closer than PieceLinkFactor h_P are
+  /// linked (PointClusters.h, cloudComponents); -1 when not counted.
+  std::int64_t CloudComponents = -1;
 };
 
 template <int D>
