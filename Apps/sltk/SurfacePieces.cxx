@@ -39,19 +39,14 @@ void forEachCell(vtkCellArray* cells, Visit&& visit)
 /// disjoint-set forest over the points instead of a copy of every region.
 long long countPieces(vtkPolyData* surface)
 {
-  std::vector<vtkIdType> parent(static_cast<size_t>(surface->GetNumberOfPoints()));
+  std::vector<vtkIdType> parent = sltk::singletonForest<vtkIdType>(static_cast<size_t>(surface->GetNumberOfPoints()));
   std::vector<char> used(parent.size(), 0);
-  for (size_t k = 0; k < parent.size(); ++k)
-  {
-    parent[k] = static_cast<vtkIdType>(k);
-  }
   const auto join = [&](vtkIdType n, const vtkIdType* ids)
   {
     for (vtkIdType k = 0; k < n; ++k)
     {
       used[static_cast<size_t>(ids[k])] = 1;
-      const vtkIdType a = sltk::findRoot(parent, ids[0]), b = sltk::findRoot(parent, ids[k]);
-      parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
+      sltk::unite(parent, ids[k], ids[0]);
     }
   };
   for (vtkCellArray* cells : { surface->GetVerts(), surface->GetLines(), surface->GetPolys(), surface->GetStrips() })

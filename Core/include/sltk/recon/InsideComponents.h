@@ -212,7 +212,7 @@ private:
     const auto found =
       std::upper_bound(first, last, i[0], [](Index x, const InsideRun& r) { return x < static_cast<Index>(r.X1); });
     const Index other = static_cast<Index>(found - this->Runs.begin());
-    this->Parent[static_cast<size_t>(findRoot(this->Parent, k))] = findRoot(this->Parent, other);
+    unite(this->Parent, k, other);
   }
 
   const Nodes& N;
@@ -249,14 +249,10 @@ std::int64_t insideComponents(const Nodes& nodes, const Communicator& comm)
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   const auto at = [&](Index id)
   { return static_cast<Index>(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin()); };
-  std::vector<Index> parent(ids.size());
-  for (size_t k = 0; k < parent.size(); ++k)
-  {
-    parent[k] = static_cast<Index>(k);
-  }
+  std::vector<Index> parent = singletonForest<Index>(ids.size());
   for (const auto& p : pairs)
   {
-    parent[static_cast<size_t>(findRoot(parent, at(p[0])))] = findRoot(parent, at(p[1]));
+    unite(parent, at(p[0]), at(p[1]));
   }
   std::vector<Index> distinct;
   for (Index r : roots)

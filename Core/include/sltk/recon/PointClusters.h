@@ -50,11 +50,7 @@ std::vector<Index> pointGroups(const PointCloud<D>& cloud, const std::vector<Out
   {
     buckets[bucketOf(at(j))].push_back(j);
   }
-  std::vector<Index> parent(static_cast<size_t>(n));
-  for (Index j = 0; j < n; ++j)
-  {
-    parent[static_cast<size_t>(j)] = j;
-  }
+  std::vector<Index> parent = singletonForest<Index>(static_cast<size_t>(n));
   for (Index j = 0; j < n; ++j)
   {
     std::array<Index, D> lo = bucketOf(at(j)), hi = lo;
@@ -80,7 +76,7 @@ std::vector<Index> pointGroups(const PointCloud<D>& cloud, const std::vector<Out
           }
           if (k > j && d2 < link * link)
           {
-            parent[static_cast<size_t>(findRoot(parent, j))] = findRoot(parent, k);
+            unite(parent, j, k);
           }
         }
       });
