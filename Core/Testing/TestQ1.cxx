@@ -102,3 +102,30 @@ TEST(Q1, ResampleIsInterpolateBitForBit)
     ASSERT_EQ(to(i), expected) << "node " << k;
   }
 }
+
+TEST(Q1, SubcellCentresAreEvalBitForBit)
+{
+  // The energy's subcell centres (4.30), R a compile-time constant or a variable, against eval() at each centre.
+  auto g = grid<3>(6);
+  auto u = sample(g, [](const double* x) { return std::sin(3 * x[0]) * std::exp(x[1]) + x[2] * x[2]; });
+  sltk::Q1Interpolator<3> q(u);
+  const std::array<sltk::Index, 3> cell = { 2, 1, 3 };
+  q.prepare(cell);
+  double corner[8];
+  sltk::cellCorners<3>(u, cell, corner);
+  auto expectEval = [&](const double* values, int R)
+  {
+    for (int k = 0; k < R * R * R; ++k)
+    {
+      const double inv = 1.0 / R; // the centres (m + 1/2) / R as the energy computes them
+      const std::array<double, 3> t = { (k % R + 0.5) * inv, (k / R % R + 0.5) * inv, (k / (R * R) + 0.5) * inv };
+      ASSERT_EQ(values[k], q.eval(t)) << "R " << R << ", centre " << k;
+    }
+  };
+  std::vector<double> buffers(4 * sltk::q1SubcellBuffer<3>(5));
+  expectEval(
+    sltk::q1AtSubcellCentres<3>(corner, std::integral_constant<int, 5>{}, buffers.data(), buffers.data() + 125), 5);
+  expectEval(sltk::q1AtSubcellCentres<3>(corner, 5, buffers.data() + 250, buffers.data() + 375), 5);
+  expectEval(sltk::q1AtSubcellCentres<3>(corner, 1, buffers.data(), buffers.data() + 8), 1);
+  expectEval(sltk::q1AtSubcellCentres<3>(corner, 3, buffers.data(), buffers.data() + 27), 3);
+}

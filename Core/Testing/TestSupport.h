@@ -14,6 +14,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstring>
+#include <random>
 
 namespace sltktest
 {
@@ -74,6 +76,46 @@ void expectNodalValuesExactly(Interp& interp, const sltk::GridSpec<D>& g, const 
     const auto x = nodeCoordinates<D>(g, i);
     EXPECT_EQ(sltk::interpolate(interp, g, x.data()), u(i)) << "node " << k;
   }
+}
+
+/// The lanes of `lanes` (Weno3Lanes, LsqQ1Lanes: eval() and the portable
+/// evalAny()) against `expected(location)` one foot at a time, bit for bit, at
+/// `trials` random groups of feet on g: a quarter of the groups on nodes, a
+/// quarter half-way between two nodes, the rest over and beyond the box.
+/// Returns the number of lanes that differ.
+template <int D, class Lanes, class Expected>
+int lanesMismatches(const sltk::GridSpec<D>& g, const Lanes& lanes, Expected expected, int trials)
+{
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.3, 1.5);
+  std::uniform_int_distribution<int> node(0, static_cast<int>(g.Dims[0]) - 2);
+  constexpr int Count = Lanes::Count;
+  int mismatches = 0;
+  for (int trial = 0; trial < trials; ++trial)
+  {
+    std::array<sltk::CellLocation<D>, Count> at;
+    for (int l = 0; l < Count; ++l)
+    {
+      double x[D];
+      for (int a = 0; a < D; ++a)
+      {
+        const int k = node(rng);
+        x[a] = trial % 4 == 0 ? g.coordinate(a, k)
+                              : (trial % 4 == 1 ? 0.5 * (g.coordinate(a, k) + g.coordinate(a, k + 1)) : u(rng));
+      }
+      at[l] = sltk::locate(g, x);
+    }
+    double values[Count], portable[Count];
+    lanes.eval(at, values);
+    lanes.evalAny(at, portable);
+    for (int l = 0; l < Count; ++l)
+    {
+      const double e = expected(at[l]);
+      mismatches += std::memcmp(&e, &values[l], sizeof(double)) == 0 ? 0 : 1;
+      mismatches += std::memcmp(&e, &portable[l], sizeof(double)) == 0 ? 0 : 1;
+    }
+  }
+  return mismatches;
 }
 
 } // namespace sltktest

@@ -7,16 +7,15 @@
 
 #include "sltk/grid/SampleField.h"
 
+#include "TestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
-#include <random>
 
 namespace
 {
-/// Compares the lanes with one interpolator per foot at `trials` random
-/// groups of feet (a quarter of them on nodes), over and beyond the box.
+/// Compares the lanes with one interpolator per foot (sltktest::lanesMismatches).
 template <int D, class F>
 void expectBitwiseEqual(F f, int trials)
 {
@@ -28,35 +27,15 @@ void expectBitwiseEqual(F f, int trials)
   sltk::GridField<D> field = sltk::sampleField(g, sltk::Weno3Interpolator<D>::GhostWidth, f);
   sltk::Weno3Interpolator<D> one(field);
   const sltk::Weno3Lanes<D> lanes(field);
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-1.3, 1.5);
-  std::uniform_int_distribution<int> node(0, 12);
-  constexpr int Count = sltk::Weno3Lanes<D>::Count;
-  int mismatches = 0;
-  for (int trial = 0; trial < trials; ++trial)
-  {
-    std::array<sltk::CellLocation<D>, Count> at;
-    for (int l = 0; l < Count; ++l)
-    {
-      double x[D];
-      for (int a = 0; a < D; ++a)
-      {
-        x[a] = trial % 4 == 0 ? g.coordinate(a, node(rng)) : u(rng);
-      }
-      at[l] = sltk::locate(g, x);
-    }
-    double values[Count], portable[Count];
-    lanes.eval(at, values);
-    lanes.evalAny(at, portable); // the lanes without AVX2
-    for (int l = 0; l < Count; ++l)
-    {
-      one.prepare(at[l].Cell);
-      const double expected = one.eval(at[l].Local);
-      mismatches += std::memcmp(&expected, &values[l], sizeof(double)) == 0 ? 0 : 1;
-      mismatches += std::memcmp(&expected, &portable[l], sizeof(double)) == 0 ? 0 : 1;
-    }
-  }
-  EXPECT_EQ(mismatches, 0);
+  EXPECT_EQ(sltktest::lanesMismatches<D>(
+              g, lanes,
+              [&](const sltk::CellLocation<D>& at)
+              {
+                one.prepare(at.Cell);
+                return one.eval(at.Local);
+              },
+              trials),
+    0);
 }
 } // namespace
 

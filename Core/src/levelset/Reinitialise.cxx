@@ -9,8 +9,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <new>
 #include <string>
+
+// The lanes' helpers and BandSolver::stepLanes are always inlined (into the
+// AVX2 function where they take four lanes), so the vector ABI of their
+// signatures never applies.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
 
 namespace sltk
 {
@@ -33,6 +41,36 @@ constexpr Index PrefetchDistance = 16;
 inline double maxOrNaN(double a, double b)
 {
   return b > a || std::isnan(b) ? b : a;
+}
+
+/// values[offset[l] + shift] for the L band nodes of a group, one per lane.
+template <int L>
+lanes::Lanes<L> gatherLanes(const double* values, const Index* offset, Index shift);
+template <>
+SLTK_LANES_INLINE lanes::Lanes<2> gatherLanes<2>(const double* values, const Index* offset, Index shift)
+{
+  return lanes::Lanes<2>{ values[offset[0] + shift], values[offset[1] + shift] };
+}
+template <>
+SLTK_LANES_INLINE lanes::Lanes<4> gatherLanes<4>(const double* values, const Index* offset, Index shift)
+{
+  return lanes::Lanes<4>{ values[offset[0] + shift], values[offset[1] + shift], values[offset[2] + shift],
+    values[offset[3] + shift] };
+}
+
+/// True (all ones) in the lanes whose node has role `kind`.
+template <int L>
+lanes::Mask<L> kindLanes(const std::uint8_t* role, std::uint8_t kind);
+template <>
+SLTK_LANES_INLINE lanes::Mask<2> kindLanes<2>(const std::uint8_t* role, std::uint8_t kind)
+{
+  return lanes::Mask<2>{ (role[0] & RoleKind) == kind ? -1LL : 0LL, (role[1] & RoleKind) == kind ? -1LL : 0LL };
+}
+template <>
+SLTK_LANES_INLINE lanes::Mask<4> kindLanes<4>(const std::uint8_t* role, std::uint8_t kind)
+{
+  return lanes::Mask<4>{ (role[0] & RoleKind) == kind ? -1LL : 0LL, (role[1] & RoleKind) == kind ? -1LL : 0LL,
+    (role[2] & RoleKind) == kind ? -1LL : 0LL, (role[3] & RoleKind) == kind ? -1LL : 0LL };
 }
 
 /// Per-band-node state of one reinitialise() call: 25 bytes per node.
@@ -122,45 +160,25 @@ public:
   /// One Jacobi pseudo-time step over the band; returns the largest |change|.
   double step()
   {
-    // Raw pointers: the loops below then keep them in registers.
     double* values = this->Phi.storage().data();
-    const Index farStride = this->Phi.strides()[D - 1];
     const Index* offset = this->Offset.data();
     const std::uint8_t* role = this->Role.data();
-    const double* coefficient = this->Coefficient.data();
-    double* next = this->Next.data();
+    const double* next = this->Next.data();
     double* chunkChange = this->ChunkChange.data();
     this->Ctx.parallelFor(
       0, this->Size,
       [&](Index b, Index e)
       {
-        double u[ReinitStencil<D>::AxisSize];
         double change = 0.0;
-        for (Index p = b; p < e; ++p)
-        {
-#if defined(__GNUC__)
-          // The upper neighbour along the slowest axis is the first touch of its
-          // cache line: fetch it ahead (the loop is bound by these misses).
-          if (p + PrefetchDistance < e)
-          {
-            __builtin_prefetch(values + offset[p + PrefetchDistance] + farStride);
-          }
+        Index p = b;
+#if defined(SLTK_LANES_AVX2)
+        p = lanes::hasAvx2() ? this->stepLanesAvx2(b, e, change) : this->stepLanes<2>(b, e, change);
+#else
+        p = this->stepLanes<2>(b, e, change);
 #endif
-          if ((role[p] & RoleKind) == RoleFixed)
-          {
-            continue;
-          }
-          if (role[p] & RoleBoundary)
-          {
-            this->Stencil.axes(this->Stencil.node(this->Band[p]), u);
-          }
-          else
-          {
-            this->Stencil.axesInterior(values + offset[p], u);
-          }
-          const double v = this->update(role[p] & RoleKind, coefficient[p], u);
-          next[p] = v;
-          change = maxOrNaN(change, std::fabs(v - u[0]));
+        for (; p < e; ++p)
+        {
+          this->stepNode(p, change);
         }
         chunkChange[b / Grain] = change;
       },
@@ -230,17 +248,109 @@ private:
     return near;
   }
 
-  /// New value of a non-fixed node from its axis neighbourhood u.
-  double update(std::uint8_t kind, double coefficient, const double* u) const
+  /// The pseudo-time step of band node p into Next[p], its |change| into `change`.
+  void stepNode(Index p, double& change)
   {
-    if (kind == RolePde)
+    const std::uint8_t kind = this->Role[p] & RoleKind;
+    if (kind == RoleFixed)
     {
-      return reinitStep<D>(this->Options.Scheme, u, this->InverseSpacing, coefficient, this->Dtau); // (1.32)/(1.35)
+      return;
     }
-    // Russo-Smereka (1.36): phi - dtau/dx (S(phi0) |phi| - d), S(phi0) the sign of d (1.37).
-    const double sign = coefficient > 0.0 ? 1.0 : (coefficient < 0.0 ? -1.0 : 0.0);
-    return u[0] - this->Options.Courant * (sign * std::fabs(u[0]) - coefficient);
+    double u[ReinitStencil<D>::AxisSize];
+    if (this->Role[p] & RoleBoundary)
+    {
+      this->Stencil.axes(this->Stencil.node(this->Band[p]), u);
+    }
+    else
+    {
+      this->Stencil.axesInterior(this->Phi.storage().data() + this->Offset[p], u);
+    }
+    const double c = this->Coefficient[p];
+    const double v = kind == RolePde
+      ? reinitStep<D>(this->Options.Scheme, u, this->InverseSpacing, c, this->Dtau) // (1.32)/(1.35)
+      : russoSmerekaStep(u[0], c, this->Options.Courant);                           // (1.36)
+    this->Next[p] = v;
+    change = maxOrNaN(change, std::fabs(v - u[0]));
   }
+
+  /// stepNode() for the band nodes [b, e) L at a time, one per lane (Lanes.h;
+  /// the same values bit for bit: the schemes are templates of ReinitScheme.h),
+  /// a group with a node next to the grid's end node by node; returns where
+  /// the groups stopped.
+  template <int L>
+  SLTK_LANES_INLINE Index stepLanes(Index b, Index e, double& change)
+  {
+    using Vec = lanes::Lanes<L>;
+    using Mask = lanes::Mask<L>;
+    const double* values = this->Phi.storage().data();
+    const auto& strides = this->Phi.strides();
+    const Index* offset = this->Offset.data();
+    const std::uint8_t* role = this->Role.data();
+    const bool relaxing = this->Options.Method == ReinitMethod::RussoSmereka;
+    Vec largest{};
+    Index p = b;
+    for (; p + L <= e; p += L)
+    {
+      std::uint8_t boundary = 0;
+      for (int l = 0; l < L; ++l)
+      {
+#if defined(__GNUC__)
+        // The upper neighbour along the slowest axis is the first touch of its
+        // cache line: fetch it ahead (the loop is bound by these misses).
+        if (p + l + PrefetchDistance < e)
+        {
+          __builtin_prefetch(values + offset[p + l + PrefetchDistance] + strides[D - 1]);
+        }
+#endif
+        boundary |= role[p + l] & RoleBoundary;
+      }
+      if (boundary)
+      {
+        for (int l = 0; l < L; ++l)
+        {
+          this->stepNode(p + l, change);
+        }
+        continue;
+      }
+      Vec u[ReinitStencil<D>::AxisSize];
+      u[0] = gatherLanes<L>(values, offset + p, 0);
+      for (int a = 0; a < D; ++a)
+      {
+        u[1 + 2 * a] = gatherLanes<L>(values, offset + p, -strides[a]);
+        u[2 + 2 * a] = gatherLanes<L>(values, offset + p, strides[a]);
+      }
+      Vec c;
+      std::memcpy(&c, this->Coefficient.data() + p, sizeof(Vec));
+      Vec v;
+      reinitStep<D>(this->Options.Scheme, u, this->InverseSpacing, c, this->Dtau, v); // (1.32)/(1.35)
+      if (relaxing)
+      {
+        Vec relaxed;
+        russoSmerekaStep(u[0], c, this->Options.Courant, relaxed); // (1.36)
+        v = kindLanes<L>(role + p, RoleRelax) ? relaxed : v;
+      }
+      std::memcpy(this->Next.data() + p, &v, sizeof(Vec));
+      Vec moved;
+      lanes::absOf(v - u[0], moved);
+      moved = kindLanes<L>(role + p, RoleFixed) ? Vec{} : moved;
+      const Mask larger = (moved > largest) | (moved != moved); // maxOrNaN
+      largest = larger ? moved : largest;
+    }
+    double each[L];
+    std::memcpy(each, &largest, sizeof(Vec));
+    for (int l = 0; l < L; ++l)
+    {
+      change = maxOrNaN(change, each[l]);
+    }
+    return p;
+  }
+
+#if defined(SLTK_LANES_AVX2)
+  SLTK_LANES_AVX2_TARGET Index stepLanesAvx2(Index b, Index e, double& change)
+  {
+    return this->stepLanes<4>(b, e, change);
+  }
+#endif
 
   GridField<D>& Phi;
   const ReinitStencil<D> Stencil;

@@ -189,8 +189,7 @@ public:
             double v = u[0];
             if (options.Method == ReinitMethod::RussoSmereka && this->Relax[static_cast<size_t>(n)])
             {
-              const double sign = c > 0.0 ? 1.0 : (c < 0.0 ? -1.0 : 0.0);
-              v = u[0] - options.Courant * (sign * std::fabs(u[0]) - c); // (1.36)
+              v = russoSmerekaStep(u[0], c, options.Courant); // (1.36)
             }
             else
             {

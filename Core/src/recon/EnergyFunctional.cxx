@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace sltk
@@ -12,6 +14,21 @@ namespace sltk
 
 namespace
 {
+/// Index of the lowest set bit of bits != 0.
+inline int lowestBit(std::uint64_t bits)
+{
+#if defined(__GNUC__)
+  return __builtin_ctzll(bits);
+#else
+  int k = 0;
+  for (; !(bits & 1); bits >>= 1)
+  {
+    ++k;
+  }
+  return k;
+#endif
+}
+
 inline double powAbs(double v, double p)
 {
   const double a = std::fabs(v);
@@ -33,6 +50,9 @@ struct PowerSums
   PowerSums scaled(double w) const { return { this->First * w, this->Second * w }; }
 };
 
+/// The refinement R of (4.30) compiled for (EnergyOptions' default); others run the same code with R a variable.
+constexpr int DefaultRefinement = 5;
+
 /// Per-chunk evaluator: Q1 interpolators of phi and d (4.28) and the cell rules.
 template <int D>
 class CellEnergy
@@ -46,6 +66,7 @@ public:
     , Q(options.SecondP)
     , R(options.Refinement)
   {
+    this->Buffers.resize(4 * static_cast<size_t>(q1SubcellBuffer<D>(std::max(1, this->R))));
     const GridSpec<D>& g = phi.spec();
     double diagonal2 = 0.0;
     double volume = 1.0;
@@ -176,23 +197,44 @@ private:
   }
 
   /// (4.30): subcells whose Q1 centre value satisfies |phi| < sqrt(3)/2 dx'.
-  /// phi and d at the R^D centres by one separable pass each (q1AtSubcellCentres,
-  /// bitwise Q1Interpolator::eval), summed in the order m_0 fastest.
   PowerSums subcells(const std::array<Index, D>& cell, bool& front)
   {
+    return this->R == DefaultRefinement
+      ? this->subcellsOf(cell, std::integral_constant<int, DefaultRefinement>{}, front)
+      : this->subcellsOf(cell, this->R, front);
+  }
+
+  /// subcells() with R an int or a compile-time constant (q1AtSubcellCentres):
+  /// phi and d at the R^D centres by one separable pass each (bitwise
+  /// Q1Interpolator::eval), summed in the order m_0 fastest.
+  template <class Refinement>
+  PowerSums subcellsOf(const std::array<Index, D>& cell, Refinement refinement, bool& front)
+  {
+    const int r = static_cast<int>(refinement);
+    const size_t buffer = static_cast<size_t>(q1SubcellBuffer<D>(r));
+    double* buffers = this->Buffers.data();
     double corner[1 << D];
     cellCorners<D>(this->Phi, cell, corner);
-    q1AtSubcellCentres<D>(corner, this->R, this->Scratch, this->PhiAtCentres);
+    const double* phi = q1AtSubcellCentres<D>(corner, refinement, buffers, buffers + buffer);
     cellCorners<D>(this->Distance, cell, corner);
-    q1AtSubcellCentres<D>(corner, this->R, this->Scratch, this->DistanceAtCentres);
+    const double* d = q1AtSubcellCentres<D>(corner, refinement, buffers + 2 * buffer, buffers + 3 * buffer);
+    // The centres on the front as bits, 64 at a time (a pass without branches),
+    // then their sums in the order m_0 fastest, as a loop over every centre adds them.
+    const int centres = ipow(r, D);
     PowerSums sum;
-    for (size_t k = 0; k < this->PhiAtCentres.size(); ++k)
+    for (int first = 0; first < centres; first += 64)
     {
-      if (std::fabs(this->PhiAtCentres[k]) < this->HalfDiagonal)
+      const int count = std::min(64, centres - first);
+      std::uint64_t near = 0;
+      for (int k = 0; k < count; ++k)
       {
-        const double d = this->DistanceAtCentres[k];
-        sum.First += powAbs(d, this->P);
-        sum.Second += this->Q > 0.0 ? powAbs(d, this->Q) : 0.0;
+        near |= static_cast<std::uint64_t>(std::fabs(phi[first + k]) < this->HalfDiagonal) << k;
+      }
+      for (; near != 0; near &= near - 1)
+      {
+        const double dk = d[first + lowestBit(near)];
+        sum.First += powAbs(dk, this->P);
+        sum.Second += this->Q > 0.0 ? powAbs(dk, this->Q) : 0.0;
         front = true;
       }
     }
@@ -201,8 +243,8 @@ private:
 
   const GridField<D, double>& Phi;
   const GridField<D, double>& Distance;
-  Q1Interpolator<D> DistanceQ1;                                 // (4.29), 2D
-  std::vector<double> Scratch, PhiAtCentres, DistanceAtCentres; // (4.30), 3D
+  Q1Interpolator<D> DistanceQ1; // (4.29), 2D
+  std::vector<double> Buffers;  // (4.30), 3D: q1AtSubcellCentres's two pairs of buffers
   double P;
   double Q;
   int R;

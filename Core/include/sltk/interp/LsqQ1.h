@@ -30,12 +30,45 @@
 /// (Documentation/Octree.md).
 
 #include "sltk/interp/Interpolator.h"
+#include "sltk/interp/Lanes.h"
 
 #include <array>
 #include <cassert>
 
 namespace sltk
 {
+
+/// p_i(x') from the 3^D values around node i (x fastest): the tensor product
+/// of the header, collapsing the last axis first (its triples sit at stride 3^a).
+/// On the first axis both products collapse the same triples, so the average's
+/// first pass is the full product's mean of each triple (the same division).
+/// V is double, or a vector of lanes that each make these operations in this
+/// order (LsqQ1Lanes.h), into `out` (vectors by reference: returned by value
+/// they would change the ABI).
+template <int D, class V>
+SLTK_LANES_INLINE void lsqQ1Fit(const V* around, const V* x, V& out)
+{
+  constexpr int Neighbours = ipow(3, D);
+  V full[Neighbours / 3], average[Neighbours / 3];
+  int n = Neighbours / 3;
+  for (int c = 0; c < n; ++c)
+  {
+    const V mean = (around[c] + around[c + n] + around[c + 2 * n]) / 3.0;
+    full[c] = mean + x[D - 1] * 0.5 * (around[c + 2 * n] - around[c]);
+    average[c] = mean;
+  }
+  for (int a = D - 2; a >= 0; --a)
+  {
+    n /= 3;
+    for (int c = 0; c < n; ++c)
+    {
+      const V line = full[c] + full[c + n] + full[c + 2 * n];
+      full[c] = line / 3.0 + x[a] * 0.5 * (full[c + 2 * n] - full[c]);
+      average[c] = (average[c] + average[c + n] + average[c + 2 * n]) / 3.0;
+    }
+  }
+  out = full[0] - average[0] + around[Neighbours / 2];
+}
 
 template <int D>
 class LsqQ1Interpolator
@@ -72,7 +105,9 @@ public:
       }
       around[c] = this->Stencil[digit];
     }
-    return fit(around, near.X);
+    double value = 0.0;
+    lsqQ1Fit<D>(around, near.X.data(), value);
+    return value;
   }
 
   /// The same value at `loc` read straight from `field` (no 4^D cache: the 3^D
@@ -93,10 +128,12 @@ public:
     {
       values[c] = p[around[c]];
     }
-    return fit(values, near.X);
+    double value = 0.0;
+    lsqQ1Fit<D>(values, near.X.data(), value);
+    return value;
   }
 
-private:
+  /// The node of the cell nearest to local coordinates t, and t from it.
   struct Nearest
   {
     std::array<int, D> Corner{}; ///< k_a in {0, 1}
@@ -118,33 +155,7 @@ private:
     return n;
   }
 
-  /// p_i(x') from the 3^D values around node i (x fastest): the tensor product
-  /// of the header, collapsing the last axis first (its triples sit at stride 3^a).
-  /// On the first axis both products collapse the same triples, so the average's
-  /// first pass is the full product's mean of each triple (the same division).
-  static double fit(const double (&around)[Neighbours], const std::array<double, D>& x)
-  {
-    double full[Neighbours / 3], average[Neighbours / 3];
-    int n = Neighbours / 3;
-    for (int c = 0; c < n; ++c)
-    {
-      const double mean = (around[c] + around[c + n] + around[c + 2 * n]) / 3.0;
-      full[c] = mean + x[D - 1] * 0.5 * (around[c + 2 * n] - around[c]);
-      average[c] = mean;
-    }
-    for (int a = D - 2; a >= 0; --a)
-    {
-      n /= 3;
-      for (int c = 0; c < n; ++c)
-      {
-        const double line = full[c] + full[c + n] + full[c + 2 * n];
-        full[c] = line / 3.0 + x[a] * 0.5 * (full[c + 2 * n] - full[c]);
-        average[c] = (average[c] + average[c + n] + average[c + 2 * n]) / 3.0;
-      }
-    }
-    return full[0] - average[0] + around[Neighbours / 2];
-  }
-
+private:
   StencilCache<D, 4> Stencil;
 };
 

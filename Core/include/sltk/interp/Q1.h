@@ -7,6 +7,9 @@
 #include "sltk/exec/Context.h"
 #include "sltk/interp/Interpolator.h"
 
+#include <algorithm>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace sltk
@@ -78,36 +81,60 @@ void cellCorners(const GridField<D, double>& field, const std::array<Index, D>& 
   }
 }
 
-/// Q1Interpolator::eval at the centres t_a = (m_a + 1/2) / R of the R^D
-/// subcells of a cell with corner values `corner`, into `out` (m_0 fastest),
-/// bit for bit: the same collapses, axis 0 first, each made once for all the
-/// subcells that share it (R^D + ... + R 2^(D-1) linear interpolations
-/// instead of (2^D - 1) R^D). `scratch` is reused between calls.
+/// The doubles each buffer of q1AtSubcellCentres holds: max(R^D, 2^D).
 template <int D>
-void q1AtSubcellCentres(const double* corner, int R, std::vector<double>& scratch, std::vector<double>& out)
+constexpr int q1SubcellBuffer(int R)
 {
-  const double inv = 1.0 / R;
-  out.assign(corner, corner + (1 << D));
-  Index prefixes = 1; // R^a subcell coordinates m_0 .. m_(a-1) collapsed so far
-  for (int a = 0, width = 1 << D; a < D; ++a, width >>= 1, prefixes *= R)
+  return ipow(R, D) > (1 << D) ? ipow(R, D) : (1 << D);
+}
+
+/// One axis of q1AtSubcellCentres: the `prefixes` groups of `width` values in
+/// `from` collapsed at the R centres of the axis into `to` (distinct buffers).
+template <class Refinement>
+inline __attribute__((always_inline)) void q1SubcellPass(
+  const double* from, double* to, int width, Index prefixes, Refinement R, double inv)
+{
+  const int half = width >> 1;
+  for (int m = 0; m < static_cast<int>(R); ++m)
   {
-    const int half = width >> 1;
-    scratch.resize(static_cast<size_t>(prefixes * R * half));
-    for (int m = 0; m < R; ++m)
+    const double t = (m + 0.5) * inv;
+    for (Index q = 0; q < prefixes; ++q)
     {
-      const double t = (m + 0.5) * inv;
-      for (Index q = 0; q < prefixes; ++q)
+      const double* v = from + q * width;
+      double* w = to + (q + prefixes * m) * half;
+      for (int c = 0; c < half; ++c)
       {
-        const double* v = out.data() + q * width;
-        double* to = scratch.data() + (q + prefixes * m) * half;
-        for (int c = 0; c < half; ++c)
-        {
-          to[c] = v[2 * c] + t * (v[2 * c + 1] - v[2 * c]);
-        }
+        w[c] = v[2 * c] + t * (v[2 * c + 1] - v[2 * c]);
       }
     }
-    out.swap(scratch);
   }
+}
+
+/// Q1Interpolator::eval at the centres t_a = (m_a + 1/2) / R of the R^D
+/// subcells of a cell with corner values `corner` (m_0 fastest), bit for bit:
+/// the same collapses, axis 0 first, each made once for all the subcells that
+/// share it (R^D + ... + R 2^(D-1) linear interpolations instead of
+/// (2^D - 1) R^D). `first` and `second` hold q1SubcellBuffer<D>(R) doubles
+/// each; returns the one that holds the values. R is an int, or a
+/// std::integral_constant for a refinement known when compiling (the passes
+/// then have fixed trip counts, which the compiler unrolls and vectorises).
+template <int D, class Refinement>
+const double* q1AtSubcellCentres(const double* corner, Refinement R, double* first, double* second)
+{
+  const double inv = 1.0 / static_cast<int>(R);
+  std::copy(corner, corner + (1 << D), first);
+  double* from = first;
+  double* to = second;
+  Index prefixes = 1; // R^a subcell coordinates m_0 .. m_(a-1) collapsed so far
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC unroll 3
+#endif
+  for (int a = 0, width = 1 << D; a < D; ++a, width >>= 1, prefixes *= static_cast<int>(R))
+  {
+    q1SubcellPass(from, to, width, prefixes, R, inv);
+    std::swap(from, to);
+  }
+  return from;
 }
 
 /// `from` interpolated by (4.28) at the nodes of `to`'s grid on the x lines

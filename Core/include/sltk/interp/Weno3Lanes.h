@@ -8,14 +8,13 @@
 /// lanes replace 84 of one (3D).
 ///
 /// Each lane does the operations of weno3Interpolate1D (Weno3Kernel1D.h) in
-/// the same order, and the code is built without fused multiply-adds (the
-/// "avx2" target below does not enable FMA), so a lane's value is that of
-/// Weno3Interpolator::eval bit for bit; TestWeno3Lanes checks it. On x86-64
-/// GCC/Clang the lanes run as AVX2 when the processor has it (one run-time
-/// test), as SSE2 pairs otherwise; elsewhere as the compiler vectorises them.
+/// the same order (Lanes.h), so a lane's value is that of
+/// Weno3Interpolator::eval bit for bit; TestWeno3Lanes checks it.
 
 #include "sltk/grid/GridField.h"
+#include "sltk/interp/FeetLanes.h"
 #include "sltk/interp/Interpolator.h"
+#include "sltk/interp/Lanes.h"
 
 #include <array>
 #include <cstring>
@@ -25,29 +24,7 @@ namespace sltk
 
 namespace weno3lanes
 {
-#if defined(__GNUC__)
-#define SLTK_LANES_INLINE inline __attribute__((always_inline))
-#else
-#define SLTK_LANES_INLINE inline
-#endif
-
-/// L doubles in one vector (GCC/Clang vector extension), for the lane counts
-/// of (4.22) and (4.24). Spelled out: GCC drops the attribute from an alias
-/// template whose size depends on its parameter.
-template <int L>
-struct LanesOf;
-template <>
-struct LanesOf<2>
-{
-  typedef double type __attribute__((vector_size(16), __may_alias__));
-};
-template <>
-struct LanesOf<4>
-{
-  typedef double type __attribute__((vector_size(32), __may_alias__));
-};
-template <int L>
-using Lanes = typename LanesOf<L>::type;
+using lanes::Lanes;
 
 /// weno3Interpolate1D (2.69) lane by lane, its operations in its order, into
 /// `out` (vectors go by reference: by value they would change the ABI).
@@ -93,10 +70,10 @@ SLTK_LANES_INLINE void evalStencils(Lanes<L>* stencil, const Lanes<L>* t, const 
 /// WENO3 at 2^(D-1) located points (cell and local coordinates, sltk::locate)
 /// of one field, one point per lane.
 template <int D>
-class Weno3Lanes
+class Weno3Lanes : public FeetLanes<Weno3Lanes<D>, D>
 {
 public:
-  static constexpr int Count = 1 << (D - 1);
+  using FeetLanes<Weno3Lanes<D>, D>::Count;
   static constexpr int StencilSize = ipow(4, D);
 
   explicit Weno3Lanes(const GridField<D, double>& field)
@@ -110,26 +87,8 @@ public:
     }
   }
 
-  /// The values at `at[l]`, l < Count, into out[l].
-  void eval(const std::array<CellLocation<D>, Count>& at, double* out) const
-  {
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-    if (hasAvx2())
-    {
-      this->evalAvx2(at, out);
-      return;
-    }
-#endif
-    this->evalAny(at, out);
-  }
-
-  /// eval() without the AVX2 lanes (the SSE2 pairs on x86-64), for the tests.
-  void evalAny(const std::array<CellLocation<D>, Count>& at, double* out) const
-  {
-    this->evalLanes(at, out);
-  }
-
 private:
+  friend class FeetLanes<Weno3Lanes<D>, D>;
   using Vec = weno3lanes::Lanes<Count>;
 
   SLTK_LANES_INLINE void evalLanes(const std::array<CellLocation<D>, Count>& at, double* out) const
@@ -160,19 +119,6 @@ private:
     weno3lanes::evalStencils<D, Count>(stencil, tv, this->Eps);
     std::memcpy(out, &stencil[0], sizeof(Vec));
   }
-
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-  __attribute__((target("avx2"))) void evalAvx2(const std::array<CellLocation<D>, Count>& at, double* out) const
-  {
-    this->evalLanes(at, out);
-  }
-
-  static bool hasAvx2()
-  {
-    static const bool has = __builtin_cpu_supports("avx2");
-    return has;
-  }
-#endif
 
   const GridField<D, double>* Field;
   std::array<Index, StencilSize> Offset{};

@@ -14,6 +14,8 @@
 /// max on every axis, as in Russo-Smereka [100]: the printed "min" on the y
 /// terms of (1.35) would drop the y derivative wherever phi is monotone in y.
 
+#include "sltk/interp/Lanes.h"
+
 #include <cmath>
 #include <cstdint>
 
@@ -35,36 +37,81 @@ inline double reinitSign(double phi0, double gradientNorm, double dx)
 
 /// Upwind approximation of |grad phi| at a node for the characteristic
 /// direction of the sign s, from u = {u_i, u_{i-e_0}, u_{i+e_0}, u_{i-e_1}, ...}
-/// (ReinitStencil::axes) and the inverse spacings.
-template <int D>
-inline double upwindGradientNorm(ReinitScheme scheme, const double* u, const double* inverseSpacing, double s)
+/// (ReinitStencil::axes) and the inverse spacings, into `norm`. V is double or
+/// a vector of nodes in lanes that make these operations in this order
+/// (Lanes.h; the band's pseudo-time steps, Reinitialise.cxx).
+template <int D, class V>
+SLTK_LANES_INLINE void upwindGradientNorm(
+  ReinitScheme scheme, const V* u, const double* inverseSpacing, const V& s, V& norm)
 {
-  double sum = 0.0;
+  const V zero{};
+  const auto positive = s > zero;
+  V sum = zero;
   for (int axis = 0; axis < D; ++axis)
   {
-    const double minus = (u[0] - u[1 + 2 * axis]) * inverseSpacing[axis]; // a = D^- phi (1.33)
-    const double plus = (u[2 + 2 * axis] - u[0]) * inverseSpacing[axis];  // b = D^+ phi (1.33)
-    // s > 0: a+ and b-; s < 0: a- and b+. Ternaries (std::fmax is a libm call)
+    const V minus = (u[0] - u[1 + 2 * axis]) * inverseSpacing[axis]; // a = D^- phi (1.33)
+    const V plus = (u[2 + 2 * axis] - u[0]) * inverseSpacing[axis];  // b = D^+ phi (1.33)
+    // s > 0: a+ and b-; s < 0: a- and b+. Selections (std::fmax is a libm call)
     // written so that a NaN neighbour gives a NaN, never a silent 0.
-    const double left = (s > 0.0 ? !(minus <= 0.0) : !(minus >= 0.0)) ? minus : 0.0;
-    const double right = (s > 0.0 ? !(plus >= 0.0) : !(plus <= 0.0)) ? plus : 0.0;
-    const double l2 = left * left;
-    const double r2 = right * right;
+    const V left = (positive ? minus <= zero : minus >= zero) ? zero : minus;
+    const V right = (positive ? plus >= zero : plus <= zero) ? zero : plus;
+    const V l2 = left * left;
+    const V r2 = right * right;
     sum += scheme == ReinitScheme::Godunov ? (l2 > r2 ? l2 : r2) // (1.35)
                                            : l2 + r2;            // (1.32)
   }
-  return std::sqrt(sum);
+  lanes::sqrtOf(sum, norm);
 }
 
-/// One pseudo-time step of (1.32) / (1.35) at a node: u_i - dtau s (|grad phi| - 1).
+/// One pseudo-time step of (1.32) / (1.35) at a node, u_i - dtau s (|grad phi| - 1)
+/// (u_i where s = 0), into `next`.
+template <int D, class V>
+SLTK_LANES_INLINE void reinitStep(
+  ReinitScheme scheme, const V* u, const double* inverseSpacing, const V& s, double dtau, V& next)
+{
+  V norm;
+  upwindGradientNorm<D>(scheme, u, inverseSpacing, s, norm);
+  const V moved = u[0] - dtau * s * (norm - 1.0);
+  next = s == V{} ? u[0] : moved;
+}
+
+/// upwindGradientNorm of one node.
+template <int D>
+inline double upwindGradientNorm(ReinitScheme scheme, const double* u, const double* inverseSpacing, double s)
+{
+  double norm = 0.0;
+  upwindGradientNorm<D, double>(scheme, u, inverseSpacing, s, norm);
+  return norm;
+}
+
+/// reinitStep of one node.
 template <int D>
 inline double reinitStep(ReinitScheme scheme, const double* u, const double* inverseSpacing, double s, double dtau)
 {
-  if (s == 0.0)
-  {
-    return u[0];
-  }
-  return u[0] - dtau * s * (upwindGradientNorm<D>(scheme, u, inverseSpacing, s) - 1.0);
+  double next = 0.0;
+  reinitStep<D, double>(scheme, u, inverseSpacing, s, dtau, next);
+  return next;
+}
+
+/// One step of Russo and Smereka's relaxation (1.36) next to the front:
+/// phi - dtau/dx (S(phi0) |phi| - d), S(phi0) the sign of d (1.37), into `next`.
+template <class V>
+SLTK_LANES_INLINE void russoSmerekaStep(const V& u, const V& distance, double courant, V& next)
+{
+  const V zero{};
+  const V one = zero + 1.0;
+  const V sign = distance > zero ? one : (distance < zero ? zero - one : zero);
+  V magnitude;
+  lanes::absOf(u, magnitude);
+  next = u - courant * (sign * magnitude - distance);
+}
+
+/// russoSmerekaStep of one node.
+inline double russoSmerekaStep(double u, double distance, double courant)
+{
+  double next = 0.0;
+  russoSmerekaStep<double>(u, distance, courant, next);
+  return next;
 }
 
 } // namespace sltk

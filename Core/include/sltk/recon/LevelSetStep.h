@@ -20,6 +20,7 @@
 #include "sltk/interp/CellCache.h"
 #include "sltk/interp/Interpolator.h"
 #include "sltk/interp/LsqQ1.h"
+#include "sltk/interp/LsqQ1Lanes.h"
 #include "sltk/interp/Weno3.h"
 #include "sltk/interp/Weno3Lanes.h"
 #include "sltk/levelset/CutOff.h"
@@ -214,8 +215,8 @@ bool feetInWindow(const GridSpec<D>& spec, const FarFeet<D>* far, const std::arr
 }
 
 /// The feet of a node interpolated together where the interpolator can
-/// (WENO3: Weno3Lanes.h; the least-squares Q1: straight from phi, LsqQ1.h; the
-/// values of the interpolator bit for bit): every foot finite and, on a slab
+/// (WENO3: Weno3Lanes.h; the least-squares Q1: LsqQ1Lanes.h, straight from phi;
+/// the values of the interpolator bit for bit): every foot finite and, on a slab
 /// window, inside it. tryEval() returns false otherwise, and for the other
 /// interpolators, and the step then takes the feet one by one.
 template <class Interp, int D>
@@ -229,10 +230,11 @@ struct StepLanes
   }
 };
 
-template <int D>
-struct StepLanes<Weno3Interpolator<D>, D>
+/// The feet of a node in the lanes of `FeetLanes` (Weno3Lanes, LsqQ1Lanes).
+template <class Interp, int D, class FeetLanes>
+struct StepInLanes
 {
-  explicit StepLanes(const GridField<D>& phi)
+  explicit StepInLanes(const GridField<D>& phi)
     : Lanes(phi)
   {
   }
@@ -241,8 +243,8 @@ struct StepLanes<Weno3Interpolator<D>, D>
   bool tryEval(
     const GridSpec<D>& spec, const FarFeet<D>* far, const std::array<std::array<double, D>, P>& x, double* values)
   {
-    static_assert(P == Weno3Lanes<D>::Count, "one lane per foot");
-    if (!feetInWindow<Weno3Interpolator<D>, D>(spec, far, x))
+    static_assert(P == FeetLanes::Count, "one lane per foot");
+    if (!feetInWindow<Interp, D>(spec, far, x))
     {
       return false;
     }
@@ -255,37 +257,21 @@ struct StepLanes<Weno3Interpolator<D>, D>
     return true;
   }
 
-  Weno3Lanes<D> Lanes;
+  FeetLanes Lanes;
+};
+
+template <int D>
+struct StepLanes<Weno3Interpolator<D>, D> : StepInLanes<Weno3Interpolator<D>, D, Weno3Lanes<D>>
+{
+  using StepInLanes<Weno3Interpolator<D>, D, Weno3Lanes<D>>::StepInLanes;
 };
 
 /// The least-squares Q1 reads the 3^D nodes around each foot's nearest node
 /// only, where its cache (StencilCache) would read the 4^D around the cell.
 template <int D>
-struct StepLanes<LsqQ1Interpolator<D>, D>
+struct StepLanes<LsqQ1Interpolator<D>, D> : StepInLanes<LsqQ1Interpolator<D>, D, LsqQ1Lanes<D>>
 {
-  explicit StepLanes(const GridField<D>& phi)
-    : Phi(phi)
-    , Around(stencilOffsets<D, 3>(phi.strides(), -1))
-  {
-  }
-
-  template <size_t P>
-  bool tryEval(
-    const GridSpec<D>& spec, const FarFeet<D>* far, const std::array<std::array<double, D>, P>& x, double* values)
-  {
-    if (!feetInWindow<LsqQ1Interpolator<D>, D>(spec, far, x))
-    {
-      return false;
-    }
-    for (size_t j = 0; j < P; ++j)
-    {
-      values[j] = LsqQ1Interpolator<D>::evalAt(this->Phi, this->Around, locate(spec, x[j].data()));
-    }
-    return true;
-  }
-
-  const GridField<D>& Phi;
-  std::array<Index, LsqQ1Interpolator<D>::Neighbours> Around;
+  using StepInLanes<LsqQ1Interpolator<D>, D, LsqQ1Lanes<D>>::StepInLanes;
 };
 } // namespace detail
 

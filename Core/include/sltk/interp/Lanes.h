@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file Lanes.h
+/// L doubles in one SIMD vector, for the interpolators that evaluate the
+/// 2^(d-1) feet of a node of the SL step (4.22)/(4.24) at once, one foot per
+/// lane (Weno3Lanes.h, LsqQ1Lanes.h). A lane does the scalar code's
+/// operations in its order, and the code is built without fused
+/// multiply-adds (the "avx2" target below does not enable FMA), so a lane's
+/// value is the scalar interpolator's bit for bit. On x86-64 GCC/Clang the
+/// lanes run as AVX2 when the processor has it (one run-time test), as SSE2
+/// pairs otherwise; elsewhere as the compiler vectorises them.
+
+#include <cmath>
+
+namespace sltk
+{
+namespace lanes
+{
+#if defined(__GNUC__)
+#define SLTK_LANES_INLINE inline __attribute__((always_inline))
+#else
+#define SLTK_LANES_INLINE inline
+#endif
+
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#define SLTK_LANES_AVX2 1
+#define SLTK_LANES_AVX2_TARGET __attribute__((target("avx2")))
+/// Whether the processor runs AVX2 (asked once).
+inline bool hasAvx2()
+{
+  static const bool has = __builtin_cpu_supports("avx2");
+  return has;
+}
+#endif
+
+/// The GCC/Clang vector of L doubles. Spelled out: GCC drops the attribute
+/// from an alias template whose size depends on its parameter.
+template <int L>
+struct LanesOf;
+template <>
+struct LanesOf<2>
+{
+  typedef double type __attribute__((vector_size(16), __may_alias__));
+};
+template <>
+struct LanesOf<4>
+{
+  typedef double type __attribute__((vector_size(32), __may_alias__));
+};
+template <int L>
+using Lanes = typename LanesOf<L>::type;
+
+/// A comparison's result on Lanes<L>: all ones (true) or zero per lane.
+template <int L>
+struct MaskOf;
+template <>
+struct MaskOf<2>
+{
+  typedef long long type __attribute__((vector_size(16)));
+};
+template <>
+struct MaskOf<4>
+{
+  typedef long long type __attribute__((vector_size(32)));
+};
+template <int L>
+using Mask = typename MaskOf<L>::type;
+
+// Always inlined, so the vector ABI of their signatures never applies.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
+// The operations that a scalar and a lane spell differently, so that one
+// template serves both (ReinitScheme.h): |x| and the square root, each the
+// scalar's value bit for bit. Results go by
+// reference (a vector returned by value would change the ABI).
+SLTK_LANES_INLINE void absOf(const double& x, double& out)
+{
+  out = std::fabs(x);
+}
+template <int L>
+SLTK_LANES_INLINE void absOfLanes(const Lanes<L>& x, Lanes<L>& out)
+{
+  const Mask<L> magnitude = reinterpret_cast<const Mask<L>&>(x) & 0x7fffffffffffffffLL; // fabs clears the sign bit
+  out = reinterpret_cast<const Lanes<L>&>(magnitude);
+}
+SLTK_LANES_INLINE void absOf(const Lanes<2>& x, Lanes<2>& out)
+{
+  absOfLanes<2>(x, out);
+}
+SLTK_LANES_INLINE void absOf(const Lanes<4>& x, Lanes<4>& out)
+{
+  absOfLanes<4>(x, out);
+}
+
+SLTK_LANES_INLINE void sqrtOf(const double& x, double& out)
+{
+  out = std::sqrt(x);
+}
+SLTK_LANES_INLINE void sqrtOf(const Lanes<2>& x, Lanes<2>& out)
+{
+  out = Lanes<2>{ std::sqrt(x[0]), std::sqrt(x[1]) };
+}
+SLTK_LANES_INLINE void sqrtOf(const Lanes<4>& x, Lanes<4>& out)
+{
+  out = Lanes<4>{ std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2]), std::sqrt(x[3]) };
+}
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
+} // namespace lanes
+} // namespace sltk
