@@ -12,9 +12,9 @@
  *    RunIterations, RunEnergy, RunCloudError, RunFarPoints, RunMisfitPoints, RunSeconds;
  *    FitsCloud, 0 when more than 5% of the points lie more than two finest cells
  *    and h_P from the surface or when the result has more Pieces (components of
- *    its inside) than the cloud has CloudComponents (points within 4 h_P linked); the strings AutomaticChoices,
- * Recoveries and Warnings, the last empty unless the result leaves points far from its surface, with the option that
- * may help); with OctreeStorage a vtkHyperTreeGrid with the same values as cell data;
+ *    its inside) than the cloud has CloudComponents (points within 4 local spacings linked); the strings
+ * AutomaticChoices, Recoveries and Warnings, the last empty unless the result leaves points far from its surface, with
+ * the option that may help); with OctreeStorage a vtkHyperTreeGrid with the same values as cell data;
  *  - port 1: vtkPolyData, the zero isosurface (3D) or contour (2D);
  *  - port 2: vtkTable, the convergence history (run, iteration, energy E_2,
  *    eps_1, Err_P, band size, time) for ParaView line charts.

@@ -566,7 +566,7 @@ Command addReconstructCommand(CLI::App& sltk)
     ->add_option("--json", command->Json,
       "summary: points, points_reconstructed, outliers_removed, cdx, kp,\n"
       "automatic_choices, recoveries, warnings, fits_cloud, pieces (components of the\ninside), cloud_components "
-      "(the cloud's, points within 4 h_P linked),\nseconds, peak_memory_mb, ranks, surface_pieces, "
+      "(the cloud's, points within 4 local spacings linked),\nseconds, peak_memory_mb, ranks, surface_pieces, "
       "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points, misfit_points, merged_nodes; "
       "--octree: "
       "stored_nodes, "

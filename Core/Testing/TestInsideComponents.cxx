@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/recon/InsideComponents.h"
 
+#include "sltk/cloud/CloudSpacing.h"
+#include "sltk/cloud/SyntheticClouds.h"
+#include "sltk/exec/ThreadPool.h"
+
 #include "sltk/octree/TiledReconstruction.h"
 
 #include "sltk/recon/PointClusters.h"
@@ -153,9 +157,49 @@ TEST(InsideComponents, RunsMatchAFloodFill)
 
 TEST(InsideComponents, CloudComponentsLinkPointsCloserThanTheLink)
 {
+  // Evenly sampled (every 0.02): the local spacing is h_P, the link 4 h_P.
   const sltk::PointCloud<2> two = circles({ { -0.8, 0.0 }, { 0.8, 0.0 } }, 0.5, 0.02);
-  EXPECT_EQ(sltk::cloudComponents(two, 0.08), 2);
-  EXPECT_EQ(sltk::cloudComponents(two, 0.7), 1) << "a link longer than the gap joins them";
+  const sltk::PointLocator<2> locator(two);
+  const sltk::Context ctx;
+  EXPECT_EQ(sltk::cloudComponents(locator, 0.02, 4.0, 16, ctx), 2);
+  EXPECT_EQ(sltk::cloudComponents(locator, 0.175, 4.0, 16, ctx), 1) << "a link longer than the gap joins them";
+}
+
+TEST(InsideComponents, UnevenlySampledObjectIsOneComponent)
+{
+  // One circle, its upper half sampled every 0.005, its lower half every 0.05: h_P is
+  // about 0.009, so 4 h_P splits the sparse half point by point; the local spacing
+  // (capped at 4 times the median, 0.02) links it.
+  const sltk::PointCloud<2> cloud = sltk::unevenHalvesCircleCloud(0.5, { 0.0, 0.0 }, 0.005, 0.05);
+  const sltk::PointLocator<2> locator(cloud);
+  double h = 0.0;
+  ASSERT_TRUE(sltk::cloudSpacing(locator, sltk::Context{}, h).isOk());
+  EXPECT_LT(4.0 * h, 0.05);
+  EXPECT_GT(sltk::cloudComponents(locator, h, sltk::PieceLinkFactor, 0, sltk::Context{}), 20)
+    << "4 h_P alone splits the sparse half";
+  sltk::ThreadPool pool(2);
+  sltk::Context threaded;
+  threaded.Executor = &pool;
+  EXPECT_EQ(sltk::cloudComponents(locator, h, sltk::PieceLinkFactor, 16, sltk::Context{}), 1);
+  EXPECT_EQ(sltk::cloudComponents(locator, h, sltk::PieceLinkFactor, 16, threaded), 1) << "two threads";
+}
+
+TEST(InsideComponents, ObjectsTwentyLocalSpacingsApartAreTwoComponents)
+{
+  // The uneven circle and a circle sampled every 0.05 below it, their sparse sides 20 of
+  // that spacing apart: two components; one spacing apart: one.
+  for (const auto& [gap, expected] : { std::pair<double, sltk::Index>{ 20.0, 2 }, { 1.0, 1 } })
+  {
+    sltk::PointCloud<2> cloud = sltk::unevenHalvesCircleCloud(0.5, { 0.0, 0.0 }, 0.005, 0.05);
+    for (const auto& p : sltk::unevenHalvesCircleCloud(0.5, { 0.0, -1.0 - gap * 0.05 }, 0.05, 0.05).Points)
+    {
+      cloud.Points.push_back(p);
+    }
+    const sltk::PointLocator<2> locator(cloud);
+    double h = 0.0;
+    ASSERT_TRUE(sltk::cloudSpacing(locator, sltk::Context{}, h).isOk());
+    EXPECT_EQ(sltk::cloudComponents(locator, h, sltk::PieceLinkFactor, 16, sltk::Context{}), expected) << gap;
+  }
 }
 
 TEST(InsideComponents, SeparateDiscsAreTheirComponents)
@@ -195,7 +239,7 @@ TEST(InsideComponents, BrokenNeckIsSaid)
   EXPECT_TRUE(result.Recoveries.empty());
   ASSERT_FALSE(result.Warnings.empty());
   EXPECT_EQ(result.Warnings[0].find("the result has " + std::to_string(result.Pieces) +
-              " pieces where the cloud has 1 connected component(s) at 4 h_P"),
+              " pieces where the cloud has 1 connected component(s) at 4 local spacings"),
     0u)
     << result.Warnings[0];
   EXPECT_NE(result.Warnings[0].find("a C_dx below the 4 that ran"), std::string::npos) << result.Warnings[0];

@@ -120,3 +120,34 @@ TEST(PointLocator, KNearestMatchesBruteForce)
   locator.nearest(cloud.Points[0], 5000, -1, hits);
   EXPECT_EQ(hits.size(), 3000u) << "fewer points than asked: all of them";
 }
+
+TEST(PointLocator, WithinIsEveryPointCloserThanTheRadius)
+{
+  // Against the k nearest with k the whole cloud (checked against brute force above),
+  // for radii inside one bucket, across many, and a query outside the box.
+  const sltk::PointCloud<3> cloud = randomCloud<3>(3000, 7);
+  const sltk::PointLocator<3> locator(cloud);
+  std::vector<sltk::PointLocator<3>::Hit> all;
+  std::vector<std::int64_t> found;
+  for (const double radius : { 0.01, 0.05, 0.3 })
+  {
+    for (std::int64_t q = 0; q < 3000; q += 101)
+    {
+      std::array<double, 3> x = cloud.Points[static_cast<size_t>(q)];
+      x[0] += q % 2 == 0 ? 0.0 : 2.1; // outside the box [-1, 1]^3 for odd q
+      locator.within(x, radius, q, found);
+      locator.nearest(x, 3000, q, all);
+      std::vector<std::int64_t> expected;
+      for (const auto& hit : all)
+      {
+        if (hit.Distance < radius)
+        {
+          expected.push_back(hit.Index);
+        }
+      }
+      std::sort(found.begin(), found.end());
+      std::sort(expected.begin(), expected.end());
+      EXPECT_EQ(found, expected) << "radius " << radius << ", point " << q;
+    }
+  }
+}

@@ -40,7 +40,7 @@ constexpr int ImageGhostLevelsAvailable = static_cast<int>(SlabGhostRows) - 1;
 /// Per-run summary as field data of the output (the image, or the tiled
 /// reconstruction's hyper tree grid): CloudSpacing (h_P), the cleaning
 /// counts, CellSizeFactor and OutsideThresholdFactor used, FitsCloud (1 or 0), Pieces (the
-/// result's, InsideComponents.h) and CloudComponents (the cloud's at 4 h_P), AutomaticChoices,
+/// result's, InsideComponents.h) and CloudComponents (the cloud's at 4 local spacings), AutomaticChoices,
 /// Recoveries and Warnings (strings: the automatic choices, the recoveries, and
 /// what the result does not fit with the option that may help; Reconstruction.h), and one
 /// tuple per run in RunGridDimensions (3 components), RunIterations,

@@ -226,6 +226,21 @@ TEST(ReconstructionSlabs, RanksWithDifferentCloudsAreRefusedTogether)
   EXPECT_NE(status.message().find("different clouds"), std::string::npos) << status.message();
 }
 
+TEST(ReconstructionSlabs, UnevenlySampledCircleIsOneComponentOnEveryRank)
+{
+  // Its lower half 10 times sparser than its upper half: 4 h_P alone splits it; the link
+  // that follows the local spacing (PointClusters.h) counts one component, on every rank.
+  const sltk::PointCloud<2> cloud = sltk::unevenHalvesCircleCloud(0.5, { 0.0, 0.0 }, 0.005, 0.05);
+  sltk::ReconstructionPlan<2> plan;
+  ASSERT_TRUE(sltk::planReconstruction(cloud, sltk::ReconstructionOptions{}, sltk::Context{}, plan).isOk());
+  sltk::ReconstructionResult<2> one, mine;
+  ASSERT_TRUE(sltk::reconstruct(plan, sltk::Context{}, one).isOk());
+  ASSERT_TRUE(sltk::reconstruct(plan, sltk::Context{}, mine, *world()).isOk());
+  EXPECT_EQ(one.CloudComponents, 1);
+  EXPECT_EQ(mine.CloudComponents, 1);
+  EXPECT_EQ(mine.Pieces, one.Pieces);
+}
+
 TEST(ReconstructionSlabs, TwoCirclesAreTwoPiecesOnEveryRank)
 {
   // Side by side along the slabs' axis, so that both pieces cross slab boundaries.

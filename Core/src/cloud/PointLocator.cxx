@@ -214,6 +214,23 @@ void PointLocator<D>::nearest(const std::array<double, D>& x, int k, std::int64_
     [&] { return hits.size() == want ? hits.back().Distance : std::numeric_limits<double>::infinity(); });
 }
 
+template <int D>
+void PointLocator<D>::within(
+  const std::array<double, D>& x, double radius, std::int64_t exclude, std::vector<std::int64_t>& found) const
+{
+  found.clear();
+  this->search(
+    x, exclude,
+    [&](std::int64_t q, double d)
+    {
+      if (d < radius)
+      {
+        found.push_back(q);
+      }
+    },
+    [&] { return radius; });
+}
+
 template class PointLocator<2>;
 template class PointLocator<3>;
 

@@ -226,15 +226,16 @@ inline bool lostThinFeatures(const RunFigures& last)
   return last.FarPoints > FarPointWarning || last.MisfitPoints > FitShare;
 }
 
-/// "the result has N pieces where the cloud has M connected component(s) at 4 h_P (L)"
-/// (PieceLinkFactor, L in the user's units).
+/// "the result has N pieces where the cloud has M connected component(s) at 4 local
+/// spacings (at least 4 h_P = L)" (PieceLinkFactor, cloudComponents, L in the user's units).
 template <int D>
 std::string piecesAgainstComponents(const ReconstructionPlan<D>& plan, std::int64_t pieces, Index components)
 {
   std::ostringstream text;
   text.precision(3);
   text << "the result has " << pieces << " pieces where the cloud has " << components << " connected component(s) at "
-       << PieceLinkFactor << " h_P (" << PieceLinkFactor * plan.userCloudSpacing() << ")";
+       << PieceLinkFactor << " local spacings (at least " << PieceLinkFactor
+       << " h_P = " << PieceLinkFactor * plan.userCloudSpacing() << ")";
   return text.str();
 }
 
@@ -327,9 +328,12 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
   }
   ReconstructionOptions ran = restarted ? finer : plan.Options;
   const auto counting = std::chrono::steady_clock::now();
-  const Index components = cloudComponents(plan.Cloud, PieceLinkFactor * plan.CloudSpacing);
+  // Links that follow the local spacing (Documentation/Numerics.md, "Pieces against the
+  // cloud's components"): every rank holds the whole cloud and counts the same.
+  const Index components =
+    cloudComponents(*plan.Locator, plan.CloudSpacing, PieceLinkFactor, plan.Options.Cleaning.DensityNeighbours, ctx);
   ctx.logger().log(LogLevel::Info,
-    "the cloud has " + std::to_string(components) + " connected component(s) at 4 h_P, counted in " +
+    "the cloud has " + std::to_string(components) + " connected component(s) at 4 local spacings, counted in " +
       std::to_string(detail::secondsSince(counting)) + " s");
   if (status.isOk() && records.Pieces > components && plan.CloudNoise >= 0.0 &&
     ran.Interpolator == InterpolatorKind::LeastSquaresQ1)

@@ -13,7 +13,8 @@
 /// the sparsity factor is rho(Q) = s(Q) / median_P s, clamped to
 /// [1, MaximumSparsity]: 1 on an evenly sampled cloud (measured: the 99th
 /// percentile is at most 1.2 on the Stanford bunny, kitten and fandisk), larger
-/// where the sampling is sparser than the cloud's median.
+/// where the sampling is sparser than the cloud's median. The unsmoothed s also
+/// sets how far the cloud's points are linked into components (recon/PointClusters.h).
 
 #include "sltk/cloud/PointLocator.h"
 #include "sltk/exec/Context.h"
@@ -27,12 +28,27 @@ namespace sltk
 /// K_P h_P from the cloud (run 1's grid is padded for it).
 constexpr double MaximumSparsity = 4.0;
 
+/// s(Q), the density spacing at the k-th neighbour (CloudSpacing.h), unsmoothed, for
+/// every point of the locator's cloud, in its order; `neighbours`, when given, gets
+/// each point's k nearest, nearest first (k per point). Deterministic for any number
+/// of threads. Fails for k < 1 or a cloud of at most k points.
+template <int D>
+Status densitySpacings(const PointLocator<D>& locator, int k, const Context& ctx, std::vector<double>& spacing,
+  std::vector<std::int64_t>* neighbours = nullptr);
+
+/// The median of `values` (the upper middle value of an even count); 0 for none.
+double medianOf(std::vector<double> values);
+
 /// rho(Q) for every point of the locator's cloud, in its order, with k
 /// neighbours (16, the density spacing's). Deterministic for any number of
 /// threads. Clouds of at most k points get 1 everywhere.
 template <int D>
 Status sparsityFactors(const PointLocator<D>& locator, int k, const Context& ctx, std::vector<double>& factors);
 
+extern template Status densitySpacings(
+  const PointLocator<2>&, int, const Context&, std::vector<double>&, std::vector<std::int64_t>*);
+extern template Status densitySpacings(
+  const PointLocator<3>&, int, const Context&, std::vector<double>&, std::vector<std::int64_t>*);
 extern template Status sparsityFactors(const PointLocator<2>&, int, const Context&, std::vector<double>&);
 extern template Status sparsityFactors(const PointLocator<3>&, int, const Context&, std::vector<double>&);
 

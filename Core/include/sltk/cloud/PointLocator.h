@@ -8,6 +8,7 @@
 #include "sltk/cloud/PointCloud.h"
 
 #include <limits>
+#include <vector>
 
 namespace sltk
 {
@@ -33,6 +34,11 @@ public:
   /// The k nearest cloud points to x, nearest first (ties by index), skipping
   /// `exclude`; fewer when the cloud has fewer other points. `hits` is reused.
   void nearest(const std::array<double, D>& x, int k, std::int64_t exclude, std::vector<Hit>& hits) const;
+
+  /// Every cloud point closer than `radius` to x, skipping `exclude`, in the buckets'
+  /// order (the links of the cloud's components, recon/PointClusters.h). `found` is reused.
+  void within(
+    const std::array<double, D>& x, double radius, std::int64_t exclude, std::vector<std::int64_t>& found) const;
 
   double bucketSize() const { return this->Size; }
   const PointCloud<D>& cloud() const { return *this->Cloud; }

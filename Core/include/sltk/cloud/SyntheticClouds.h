@@ -38,6 +38,25 @@ inline PointCloud<2> circleCloud(int n, double r = 1.0, std::array<double, 2> c 
   return cloud;
 }
 
+/// The circle of radius r centred at c, its upper half (y >= c_y) sampled every `dense`
+/// and its lower half every `sparse` (arc lengths, rounded to whole parts of each half):
+/// one object sampled unevenly, as a CAD mesh's vertices are (recon/PointClusters.h).
+inline PointCloud<2> unevenHalvesCircleCloud(double r, std::array<double, 2> c, double dense, double sparse)
+{
+  constexpr double pi = 3.14159265358979323846;
+  PointCloud<2> cloud;
+  for (const auto& [from, step] : { std::pair<double, double>{ 0.0, dense }, std::pair<double, double>{ pi, sparse } })
+  {
+    const int n = static_cast<int>(std::ceil(pi * r / step));
+    for (int k = 0; k < n; ++k)
+    {
+      const double t = from + pi * k / n;
+      cloud.Points.push_back({ c[0] + r * std::cos(t), c[1] + r * std::sin(t) });
+    }
+  }
+  return cloud;
+}
+
 /// n Fibonacci (golden-angle) points on the sphere of radius r centred at c.
 inline PointCloud<3> sphereCloud(int n, double r = 1.0, std::array<double, 3> c = { 0.0, 0.0, 0.0 })
 {

@@ -3,8 +3,10 @@
 /// \file PointClusters.h
 /// The points a run's surface leaves outside, grouped by proximity: the far-point
 /// seeds keep the groups attached to the surface (FarPointSeeds.h), and a result
-/// that does not fit its cloud says where its missed groups lie (MissedPlaces.h).
+/// that does not fit its cloud says where its missed groups lie (MissedPlaces.h); the
+/// cloud's connected components, which the result's pieces are compared with.
 
+#include "sltk/cloud/LocalSpacing.h"
 #include "sltk/cloud/PointCloud.h"
 #include "sltk/core/DisjointSets.h"
 #include "sltk/core/IndexBox.h"
@@ -89,20 +91,46 @@ std::vector<Index> pointGroups(const PointCloud<D>& cloud, const std::vector<Out
   return group;
 }
 
-/// The cloud's connected components when two points closer than `link` are linked
-/// (pointGroups over every point): what the result's pieces are compared with
-/// (Documentation/Numerics.md, "Pieces against the cloud's components").
+/// The cloud's connected components, what the result's pieces are compared with
+/// (Documentation/Numerics.md, "Pieces against the cloud's components"): points i and j
+/// are linked when |p_i - p_j| < max(r_i, r_j), r_i = `factor` max(h_P, min(s_i,
+/// MaximumSparsity median s)), s_i the unsmoothed density spacing at the k-th neighbour
+/// (LocalSpacing.h): a link that follows the sampling where it is sparser than h_P (the
+/// vertices of CAD meshes), capped where a point is far from all others. `cloudSpacing`
+/// alone (factor h_P) for k < 1 or at most k points. The count is a property of the
+/// cloud alone: the same for any order, number of threads or ranks.
 template <int D>
-Index cloudComponents(const PointCloud<D>& cloud, double link)
+Index cloudComponents(const PointLocator<D>& locator, double cloudSpacing, double factor, int k, const Context& ctx)
 {
-  std::vector<OutsidePoint> all(cloud.Points.size());
-  for (size_t k = 0; k < all.size(); ++k)
+  const PointCloud<D>& cloud = locator.cloud();
+  const Index n = cloud.size();
+  std::vector<double> radius(static_cast<size_t>(n), factor * cloudSpacing);
+  std::vector<double> spacing;
+  if (k >= 1 && n > k && densitySpacings(locator, k, ctx, spacing).isOk())
   {
-    all[k].Point = static_cast<Index>(k);
+    const double cap = MaximumSparsity * medianOf(spacing);
+    for (size_t i = 0; i < radius.size(); ++i)
+    {
+      radius[i] = factor * std::max(cloudSpacing, std::min(spacing[i], cap));
+    }
   }
-  std::vector<Index> groups = pointGroups<D>(cloud, all, link);
-  std::sort(groups.begin(), groups.end());
-  return static_cast<Index>(std::unique(groups.begin(), groups.end()) - groups.begin());
+  std::vector<Index> parent = singletonForest<Index>(static_cast<size_t>(n));
+  std::vector<std::int64_t> found;
+  for (Index i = 0; i < n; ++i)
+  {
+    // From each point out to its own radius: every pair is seen from its end with the larger one.
+    locator.within(cloud.Points[static_cast<size_t>(i)], radius[static_cast<size_t>(i)], i, found);
+    for (const std::int64_t j : found)
+    {
+      unite(parent, i, static_cast<Index>(j));
+    }
+  }
+  Index roots = 0;
+  for (Index i = 0; i < n; ++i)
+  {
+    roots += findRoot(parent, i) == i ? 1 : 0;
+  }
+  return roots;
 }
 
 } // namespace sltk

@@ -54,8 +54,9 @@ struct ReconstructionReport
   /// The result's pieces: the connected components of {phi < 0} on the last run's grid
   /// (InsideComponents.h); -1 when not counted (the reconstruction failed).
   std::int64_t Pieces = -1;
-  /// The cloud's connected components when points closer than PieceLinkFactor h_P are
-  /// linked (PointClusters.h, cloudComponents); -1 when not counted.
+  /// The cloud's connected components when points closer than PieceLinkFactor local
+  /// spacings (at least PieceLinkFactor h_P) are linked (PointClusters.h, cloudComponents);
+  /// -1 when not counted.
   std::int64_t CloudComponents = -1;
 };
 
