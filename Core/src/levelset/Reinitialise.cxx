@@ -329,7 +329,7 @@ private:
         russoSmerekaStep(u[0], c, this->Options.Courant, relaxed); // (1.36)
         v = kindLanes<L>(role + p, RoleRelax) ? relaxed : v;
       }
-      std::memcpy(this->Next.data() + p, &v, sizeof(Vec));
+      std::memcpy(this->Next.data() + p, &v, sizeof(Vec)); // a fixed node's is never copied back
       Vec moved;
       lanes::absOf(v - u[0], moved);
       moved = kindLanes<L>(role + p, RoleFixed) ? Vec{} : moved;

@@ -4,7 +4,8 @@
 /// The dispatch shared by the interpolators that take the 2^(d-1) feet of a
 /// node of the SL step (4.22)/(4.24) in SIMD lanes (Weno3Lanes.h,
 /// LsqQ1Lanes.h): `Derived::evalLanes(at, out)` (always inlined) runs in an
-/// AVX2 function when the processor has AVX2, as SSE2 pairs otherwise (Lanes.h).
+/// AVX2 function when the processor has AVX2, otherwise as the compiler lowers
+/// the vectors (SSE2 pairs on x86-64; Lanes.h).
 
 #include "sltk/interp/Interpolator.h"
 #include "sltk/interp/Lanes.h"

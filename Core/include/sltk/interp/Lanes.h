@@ -5,8 +5,8 @@
 /// 2^(d-1) feet of a node of the SL step (4.22)/(4.24) at once, one foot per
 /// lane (Weno3Lanes.h, LsqQ1Lanes.h). A lane does the scalar code's
 /// operations in its order, and the code is built without fused
-/// multiply-adds (the "avx2" target below does not enable FMA), so a lane's
-/// value is the scalar interpolator's bit for bit. On x86-64 GCC/Clang the
+/// multiply-adds (the "avx2" target below does not enable FMA, and the build
+/// sets -ffp-contract=off), so a lane's value is the scalar code's bit for bit. On x86-64 GCC/Clang the
 /// lanes run as AVX2 when the processor has it (one run-time test), as SSE2
 /// pairs otherwise; elsewhere as the compiler vectorises them.
 
@@ -22,7 +22,8 @@ namespace lanes
 #define SLTK_LANES_INLINE inline
 #endif
 
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+// x86-64 only: on i386 the scalar code may keep x87 excess precision.
+#if defined(__GNUC__) && defined(__x86_64__)
 #define SLTK_LANES_AVX2 1
 #define SLTK_LANES_AVX2_TARGET __attribute__((target("avx2")))
 /// Whether the processor runs AVX2 (asked once).
@@ -83,8 +84,9 @@ SLTK_LANES_INLINE void absOf(const double& x, double& out)
 template <int L>
 SLTK_LANES_INLINE void absOfLanes(const Lanes<L>& x, Lanes<L>& out)
 {
-  const Mask<L> magnitude = reinterpret_cast<const Mask<L>&>(x) & 0x7fffffffffffffffLL; // fabs clears the sign bit
-  out = reinterpret_cast<const Lanes<L>&>(magnitude);
+  const Mask<L> magnitude =
+    (Mask<L>)x & 0x7fffffffffffffffLL; // fabs clears the sign bit (a vector cast keeps the bits)
+  out = (Lanes<L>)magnitude;
 }
 SLTK_LANES_INLINE void absOf(const Lanes<2>& x, Lanes<2>& out)
 {

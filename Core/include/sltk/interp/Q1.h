@@ -6,6 +6,7 @@
 
 #include "sltk/exec/Context.h"
 #include "sltk/interp/Interpolator.h"
+#include "sltk/interp/Lanes.h"
 
 #include <algorithm>
 #include <type_traits>
@@ -91,7 +92,7 @@ constexpr int q1SubcellBuffer(int R)
 /// One axis of q1AtSubcellCentres: the `prefixes` groups of `width` values in
 /// `from` collapsed at the R centres of the axis into `to` (distinct buffers).
 template <class Refinement>
-inline __attribute__((always_inline)) void q1SubcellPass(
+SLTK_LANES_INLINE void q1SubcellPass(
   const double* from, double* to, int width, Index prefixes, Refinement R, double inv)
 {
   const int half = width >> 1;

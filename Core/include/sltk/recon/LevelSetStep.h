@@ -230,8 +230,8 @@ struct StepLanes
   }
 };
 
-/// The feet of a node in the lanes of `FeetLanes` (Weno3Lanes, LsqQ1Lanes).
-template <class Interp, int D, class FeetLanes>
+/// The feet of a node in the lanes of `LanesOfFeet` (Weno3Lanes, LsqQ1Lanes).
+template <class Interp, int D, class LanesOfFeet>
 struct StepInLanes
 {
   explicit StepInLanes(const GridField<D>& phi)
@@ -243,7 +243,7 @@ struct StepInLanes
   bool tryEval(
     const GridSpec<D>& spec, const FarFeet<D>* far, const std::array<std::array<double, D>, P>& x, double* values)
   {
-    static_assert(P == FeetLanes::Count, "one lane per foot");
+    static_assert(P == LanesOfFeet::Count, "one lane per foot");
     if (!feetInWindow<Interp, D>(spec, far, x))
     {
       return false;
@@ -257,7 +257,7 @@ struct StepInLanes
     return true;
   }
 
-  FeetLanes Lanes;
+  LanesOfFeet Lanes;
 };
 
 template <int D>
