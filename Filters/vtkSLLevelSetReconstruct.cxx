@@ -200,6 +200,7 @@ SLTK_OPTION_PROPERTY(FinalEta, double, FinalEta)
 SLTK_OPTION_PROPERTY(LocalOffset, bool, LocalOffset)
 SLTK_OPTION_PROPERTY(FollowFarPoints, bool, FollowFarPoints)
 SLTK_OPTION_PROPERTY(SeedFarPoints, bool, SeedFarPoints)
+SLTK_OPTION_PROPERTY(FeetWithinBeta, bool, FeetWithinBeta)
 SLTK_OPTION_PROPERTY(AutomaticCleaning, bool, Cleaning.Automatic)
 SLTK_OPTION_PROPERTY(RemoveOutliers, bool, Cleaning.RemoveOutliers)
 SLTK_OPTION_PROPERTY(OutlierDeviations, double, Cleaning.Outliers.Deviations)
@@ -712,6 +713,7 @@ void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LocalOffset: " << this->GetLocalOffset() << "\n";
   os << indent << "FollowFarPoints: " << this->GetFollowFarPoints() << "\n";
   os << indent << "SeedFarPoints: " << this->GetSeedFarPoints() << "\n";
+  os << indent << "FeetWithinBeta: " << this->GetFeetWithinBeta() << "\n";
   os << indent << "MaximumNumberOfIterations: " << this->GetMaximumNumberOfIterations() << "\n";
   os << indent << "Tolerance: " << this->GetTolerance() << "\n";
   os << indent << "Padding: " << this->GetPadding() << "\n";

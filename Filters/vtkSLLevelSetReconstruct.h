@@ -221,6 +221,16 @@ public:
   ///@}
 
   ///@{
+  /// FeetWithinBeta (default on): the SL step (4.24) interpolates its feet only
+  /// at band nodes with |phi| <= beta; the band beyond takes the step to first
+  /// order, which the reinitialisation rebuilds from the front; off: the thesis's
+  /// step on the whole band.
+  virtual void SetFeetWithinBeta(bool value);
+  virtual bool GetFeetWithinBeta();
+  vtkBooleanMacro(FeetWithinBeta, bool);
+  ///@}
+
+  ///@{
   /// SeedFarPoints (default off): each run after the first starts from the
   /// previous run's surface united with balls around the points that run left
   /// outside by more than a cell and h_P, so thin parts a coarse run lost grow

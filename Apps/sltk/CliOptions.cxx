@@ -284,6 +284,9 @@ void addPlanOptions(CLI::App* app, sltk::ReconstructionOptions& options)
     "--thesis-stopping", [&options]() { options.FollowFarPoints = false; },
     "stop a run by the energy rule (4.33) alone, even while the surface is\nstill approaching points left far from it");
   app->add_flag_callback(
+    "--feet-everywhere", [&options]() { options.FeetWithinBeta = false; },
+    "interpolate the SL step's feet on the whole band (the thesis), not only\nwithin beta of the surface");
+  app->add_flag_callback(
     "--seed-far-points", [&options]() { options.SeedFarPoints = true; },
     "start each run after the first from the previous run's surface united\nwith balls around the points it left "
     "outside (thin parts a coarse run\nlost grow back; off by default: it can add a piece)");

@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace
 {
@@ -82,6 +84,20 @@ double advanceSphere(sltk::Index n, int steps, double eta, double r0, bool dista
     *result = phi;
   }
   return crossingOnAxis(phi);
+}
+
+/// The values of one step on the band |phi| < gamma, with the feet within `feetWithin` (phi unchanged).
+template <class Interp>
+std::vector<double> stepValuesOnBand(const sltk::GridField<3>& phi, const sltk::GridField<3>& dist,
+  sltk::LevelSetStepParameters par, double feetWithin, sltk::NodeList& band)
+{
+  sltk::Context ctx;
+  sltk::collectBand(phi, par.Widths.Gamma, ctx, band);
+  par.FeetWithin = feetWithin;
+  auto copy = phi;
+  std::vector<double> values;
+  EXPECT_TRUE((sltk::levelSetStepValues<Interp, 3>(ctx, copy, dist, band, par, values).isOk()));
+  return values;
 }
 } // namespace
 
@@ -165,4 +181,69 @@ TEST(LevelSetStep, RejectsBadParameters)
   par.TimeStep = 0.1;
   EXPECT_FALSE((sltk::levelSetStep<sltk::Weno3Interpolator<2>, 2>(ctx, phi, dist, { 5 }, par, scratch).isOk()))
     << "WENO3 needs two ghost layers";
+}
+
+TEST(LevelSetStep, FeetWithinBetaLeaveTheNodesNearTheFrontBitForBitAndLineariseTheRest)
+{
+  // A sphere of radius 0.6 advected towards one of radius 0.3 with the curvature term on.
+  const auto g = sltk::uniformBox<3>(41, -1.0, 1.0);
+  const double dx = g.Spacing[0];
+  const auto phi = sltk::sampleField(g, 2, [](const double* x) { return radius<3>(x) - 0.6; });
+  const auto dist = sltk::sampleField(
+    g, 1, [](const double* x) { return std::fabs(radius<3>(x) - 0.3); }, sltk::GhostFill::Exact);
+  sltk::LevelSetStepParameters par;
+  par.P = 2.0;
+  par.Eta = 0.05;
+  par.Energy = 0.2;
+  par.TimeStep = dx;
+  par.Widths = sltk::BandWidths::forSpacing(dx);
+  sltk::NodeList band;
+  using LsqQ1 = sltk::LsqQ1Interpolator<3>;
+  const auto all = stepValuesOnBand<LsqQ1>(phi, dist, par, std::numeric_limits<double>::infinity(), band);
+  const auto near = stepValuesOnBand<LsqQ1>(phi, dist, par, par.Widths.Beta, band);
+  ASSERT_EQ(all.size(), band.size());
+  ASSERT_EQ(near.size(), band.size());
+  size_t within = 0, beyond = 0, linearised = 0;
+  for (size_t k = 0; k < band.size(); ++k)
+  {
+    const double value = phi(phi.nodeIndex(band[k]));
+    if (std::fabs(value) <= par.Widths.Beta)
+    {
+      ++within;
+      EXPECT_EQ(all[k], near[k]) << "node " << band[k];
+      continue;
+    }
+    ++beyond;
+    // What the first order leaves out: the spread's s^2 / r (s^2 = 2 c (d / E) eta d dt / p,
+    // at most 0.08 dx here) and the interpolation's error.
+    EXPECT_NEAR(near[k], all[k], 0.15 * dx) << "node " << band[k];
+    linearised += near[k] != all[k] ? 1 : 0;
+  }
+  EXPECT_GT(within, 1000u);
+  EXPECT_GT(beyond, 1000u);
+  EXPECT_GT(linearised, beyond / 2); // not the feet's values
+}
+
+TEST(LevelSetStep, TheLinearisedStepIsExactForAPlaneMovedAlongItsNormal)
+{
+  // phi = x - 0.1 and d = 0.5 + x / 2: the feet's mean is phi(x0) exactly for a plane.
+  const auto g = sltk::uniformBox<3>(21, -1.0, 1.0);
+  const double dx = g.Spacing[0];
+  const auto phi = sltk::sampleField(g, 2, [](const double* x) { return x[0] - 0.1; });
+  const auto dist = sltk::sampleField(
+    g, 1, [](const double* x) { return 0.5 + 0.5 * x[0]; }, sltk::GhostFill::Exact);
+  sltk::LevelSetStepParameters par;
+  par.TimeStep = dx;
+  par.Eta = 0.3;
+  par.Widths = sltk::BandWidths::forSpacing(dx);
+  sltk::NodeList band;
+  using Q1 = sltk::Q1Interpolator<3>;
+  const auto feet = stepValuesOnBand<Q1>(phi, dist, par, std::numeric_limits<double>::infinity(), band);
+  const auto linear = stepValuesOnBand<Q1>(phi, dist, par, 0.0, band);
+  ASSERT_EQ(feet.size(), band.size());
+  ASSERT_EQ(linear.size(), band.size());
+  for (size_t k = 0; k < band.size(); ++k)
+  {
+    EXPECT_NEAR(linear[k], feet[k], 1e-12) << "node " << band[k];
+  }
 }

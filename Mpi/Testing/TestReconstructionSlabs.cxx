@@ -132,15 +132,16 @@ TEST(ReconstructionSlabs, BallsSeededAroundALostFinAreTheOneRankBalls)
   // rows and every rank adds all the balls (recon/FarPointSeeds.h). The same
   // iterations, but a looser agreement than the header's: on 2 and 3 ranks phi
   // within 1e-6 of a cell and Err_P within 1e-8 of itself (measured; on 4 ranks
-  // 3e-14 of a cell; without the seeds, 2 ranks, 7e-11 of a cell). The fin
-  // amplifies some last-bit difference; its cause is not found yet. The bounds
-  // are ten times the measured ones.
+  // 3e-14 of a cell; without the seeds, 2 ranks, 7e-11 of a cell); with the
+  // feet within beta (the default since 2026-12-02) 1.2e-5 of a cell on 2 ranks,
+  // 6e-14 on 3 and 4. The fin amplifies some last-bit difference; its cause is
+  // not found yet. The bounds are ten times the largest measured ones.
   const sltk::PointCloud<2> cloud = sltk::discWithFinCloud(0.016);
   sltk::ReconstructionOptions options;
   options.CellSizeFactor = 1.0;
   options.SeedFarPoints = true;
   Agreement fin;
-  fin.Phi = 1e-5;
+  fin.Phi = 1e-4;
   fin.CloudError = 1e-7;
   expectSameAsOneRank<2>(cloud, options, fin);
   sltk::ReconstructionResult<2> one;

@@ -179,8 +179,10 @@ int main(int argc, char* argv[])
     // Up to rounding: the tiled band sums in slot order, and phi near the front differs by 2e-4
     // cells on this circle with WENO3 (Documentation/Octree.md, "Same result as the uniform
     // version"); the automatic least-squares Q1 (5.5), whose polynomial is the nearest node's
-    // and so jumps between cells, carries a rounding difference further: 1.03e-3 cells.
-    check(curve->GetNumberOfPoints() == reference->GetNumberOfPoints() && worstAgainstUniform < 2e-3,
+    // and so jumps between cells, carries a rounding difference further: 1.03e-3 cells with the
+    // feet on the whole band, 3.3e-3 with the feet within beta (FeetWithinBeta, the default since
+    // 2026-12-02), where Q1 gives 2.7e-4 and 1.7e-4 cells and WENO3 4.5e-4 both ways.
+    check(curve->GetNumberOfPoints() == reference->GetNumberOfPoints() && worstAgainstUniform < 5e-3,
       "the curve is the uniform grids' (" + std::to_string(curve->GetNumberOfPoints()) + " and " +
         std::to_string(reference->GetNumberOfPoints()) + " vertices, " + std::to_string(worstAgainstUniform) +
         " cells apart)");

@@ -56,6 +56,10 @@ struct LevelSetStepParameters
   bool DetectTunnels = false;
   double TunnelDistance = 0.0;    ///< 2 dx
   double TunnelMinDistance = 0.0; ///< 0.6 h_P
+  /// Beyond the thesis: band nodes with |phi| > FeetWithin take the step's first-order
+  /// expansion (linearisedStep) instead of their feet; +infinity: the feet everywhere.
+  /// The reconstruction sets beta (ReconstructionOptions::FeetWithinBeta).
+  double FeetWithin = std::numeric_limits<double>::infinity();
 };
 
 /// The feet of a step on a slab window (grid/Slabs.h, Documentation/Distributed.md)
@@ -156,6 +160,41 @@ Vector advectionDirection(
     }
   }
   return gd;
+}
+
+/// The points of (4.22)/(4.24) around the advected point x0: x0 + spread sum_m xi_j,m sigma_m,
+/// xi_j in {+-1}^(D-1).
+template <int D, size_t Points>
+void tangentFeet(const double* x0, double spread, const std::array<std::array<double, D>, D - 1>& sigma,
+  std::array<std::array<double, D>, Points>& x)
+{
+  for (size_t j = 0; j < Points; ++j)
+  {
+    for (int a = 0; a < D; ++a)
+    {
+      x[j][a] = x0[a];
+      for (int m = 0; m < D - 1; ++m)
+      {
+        const double xi = ((j >> m) & 1) ? 1.0 : -1.0;
+        x[j][a] += spread * sigma[m][a] * xi;
+      }
+    }
+  }
+}
+
+/// The step (4.22)/(4.24) to first order in its displacements, phi + c dt grad phi . v
+/// (v = grad d or, through a tunnel, grad phi; the tangent spread averages out to first
+/// order): for the band's nodes beyond beta, whose values the reinitialisation (1.38)-(1.45)
+/// rebuilds from the front, so that only its starting value is taken from here.
+template <int D, class Vector>
+double linearisedStep(double phi, double scale, double timeStep, const Vector& gphi, const Vector& v)
+{
+  double slope = 0.0;
+  for (int a = 0; a < D; ++a)
+  {
+    slope += gphi[a] * v[a];
+  }
+  return phi + scale * timeStep * slope;
 }
 
 /// The far feet one chunk of the band found (levelSetStepValues).
@@ -345,6 +384,13 @@ Status levelSetStepValues(const Context& ctx, GridField<D>& phi, const GridField
           // scale factor with cut-off (4.32)
           const double scale = detail::stepScale(*pp, d, par);
           const auto gd = detail::advectionDirection(dist, pd, gphi, par);
+          if (std::fabs(*pp) > par.FeetWithin)
+          {
+            value = detail::linearisedStep<D>(*pp, scale, par.TimeStep, gphi, gd);
+            failures += std::isfinite(value) ? 0.0 : 1.0;
+            values[static_cast<size_t>(k)] = value;
+            continue;
+          }
           std::array<std::array<double, D>, D - 1> sigma;
           detail::tangentFrame(gphi, norm, sigma);
           const double spread = std::sqrt(2.0 * scale * par.Eta * d * par.TimeStep / par.P);
@@ -354,18 +400,7 @@ Status levelSetStepValues(const Context& ctx, GridField<D>& phi, const GridField
             x0[a] = spec.coordinate(a, i[a]) + scale * par.TimeStep * gd[a]; // foot of the advection
           }
           std::array<std::array<double, D>, Points> x;
-          for (int j = 0; j < Points; ++j)
-          {
-            for (int a = 0; a < D; ++a)
-            {
-              x[j][a] = x0[a];
-              for (int m = 0; m < D - 1; ++m)
-              {
-                const double xi = ((j >> m) & 1) ? 1.0 : -1.0; // xi_j in {+-1}^(d-1)
-                x[j][a] += spread * sigma[m][a] * xi;
-              }
-            }
-          }
+          detail::tangentFeet<D>(x0, spread, sigma, x);
           std::array<double, Points> feet;
           bool farNode = false;
           if (!lanes.tryEval(spec, far, x, feet.data()))

@@ -134,6 +134,12 @@ struct ReconstructionOptions
   /// finest uniform grid. The automatic C_dx still sizes the uniform grid.
   bool OctreeStorage = false;
   bool DetectTunnels = false; ///< 4.5.6: follow grad phi where 0.6 h_P < d < 2 dx and |grad d| < 0.5
+  /// Beyond the thesis: the SL step (4.24) takes its four feet only where |phi| <= beta (the
+  /// cut-off's plateau, where the front can be after the step); the band beyond takes the
+  /// step's first-order expansion (LevelSetStepParameters::FeetWithin), a starting value the
+  /// reinitialisation (1.38)-(1.45) then rebuilds from the front. Half the band's feet for
+  /// the same surfaces (Documentation/Profile.md, "The feet within beta"). False: the thesis's step.
+  bool FeetWithinBeta = true;
   /// Pre-processing of merged, noisy scans (CloudCleaning.h): automatic by
   /// default (gross outliers only, thinning only when the cloud is denser than
   /// the finest grid), so the thesis's clouds are reconstructed as given.
@@ -151,6 +157,7 @@ struct ReconstructionOptions
     o.LocalOffset = false;
     o.FollowFarPoints = false;
     o.Interpolator = InterpolatorKind::Weno3; // chapter 4's
+    o.FeetWithinBeta = false;
     return o;
   }
 

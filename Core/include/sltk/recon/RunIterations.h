@@ -63,6 +63,10 @@ inline LevelSetStepParameters runStepParameters(
   step.DetectTunnels = options.DetectTunnels;
   step.TunnelDistance = 2.0 * dx; // 4.5.6
   step.TunnelMinDistance = 0.6 * cloudSpacing;
+  if (options.FeetWithinBeta)
+  {
+    step.FeetWithin = step.Widths.Beta;
+  }
   return step;
 }
 
