@@ -87,11 +87,17 @@ struct vtkSLLevelSetReconstruct::Internals
   /// when Core cannot hold one or one is outside Core's ranges.
   sltk::Status optionsOn(const sltk::Communicator& comm, sltk::ReconstructionOptions& options) const
   {
+    // The least memory available over the ranks (every rank reaches this call):
+    // a C_dx the windows' limit sizes is then the same on every rank.
+    const std::int64_t available = comm.size() > 1
+      ? comm.allReduce(static_cast<std::int64_t>(sltk::availableMemoryBytes()), sltk::ReduceOp::Min)
+      : 0;
     SLTK_RETURN_IF_ERROR(this->refusedValue());
     SLTK_RETURN_IF_ERROR(sltk::validateOptionRanges(this->Options));
     options = this->Options;
     options.Ranks = comm.size(); // the memory check sizes this machine's ranks' windows
     options.RanksHere = sltk::ranksSharingThisMachine(comm.size());
+    options.MemoryAvailable = static_cast<std::uint64_t>(std::max<std::int64_t>(0, available));
     return sltk::Status::ok();
   }
 };

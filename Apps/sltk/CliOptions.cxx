@@ -270,7 +270,8 @@ void addPlanOptions(CLI::App* app, sltk::ReconstructionOptions& options)
       [&options](double mb)
       { options.MemoryBudget = static_cast<std::uint64_t>(mb * static_cast<double>(sltk::BytesPerMB)); },
       "MB for the automatic C_dx (default 0: 1024); with --cdx, grids beyond\nit are refused (default: the memory "
-      "available; under mpirun, for the windows\nof the ranks on each machine)")
+      "available; under mpirun, for the windows\nof the ranks on each machine, and an automatic C_dx grows until "
+      "they fit)")
     ->transform(numberText(false))
     ->check(withinRange("MemoryBudget"))
     ->option_text("MB");

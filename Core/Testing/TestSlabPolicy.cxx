@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 
 namespace
@@ -66,6 +67,7 @@ TEST(SlabPolicy, AutomaticCellSizePlansTheSameGridsForAnyRanksOnThisMachine)
   ASSERT_GT(one.Options.CellSizeFactor, 1.0) << "the budget must bind for this test to say anything";
   options.Ranks = 4;
   options.RanksHere = 4;
+  options.MemoryAvailable = std::uint64_t(64) << 30; // this machine holds the windows, whatever runs the test
   const sltk::Status planned = sltk::planReconstruction(cloud, options, {}, four);
   ASSERT_TRUE(planned.isOk()) << planned.message();
   EXPECT_EQ(four.Options.CellSizeFactor, one.Options.CellSizeFactor);
@@ -80,6 +82,56 @@ TEST(SlabPolicy, AutomaticCellSizePlansTheSameGridsForAnyRanksOnThisMachine)
   sltk::ReconstructionPlan<3> limited;
   const sltk::Status refused = sltk::planReconstruction(cloud, options, {}, limited);
   EXPECT_EQ(refused.code(), sltk::StatusCode::OutOfMemory) << "the case the automatic budget refused";
+}
+
+TEST(SlabPolicy, AutomaticCellSizeGrowsOnlyWhenTheWindowsOnThisMachineDoNotFit)
+{
+  // The rule (ReconstructionPlan.cxx, fitWindowsOnThisMachine): the one-rank
+  // C_dx while the windows of this machine's ranks fit the limit (the budget
+  // given, else the memory available); else the smallest C_dx of the 2% ladder
+  // whose windows fit, instead of refusing what one rank runs.
+  const sltk::PointCloud<3> cloud = sltk::sphereCloud(4000);
+  sltk::ReconstructionOptions options;
+  options.Guess = sltk::InitialGuess::BoundingSphere; // K_P plays no part in the grids' size
+  options.MemoryBudget = std::uint64_t(16) << 20;     // the smallest the front ends allow
+  sltk::ReconstructionPlan<3> one;
+  ASSERT_TRUE(sltk::planReconstruction(cloud, options, {}, one).isOk());
+  ASSERT_GT(one.Options.CellSizeFactor, 1.0) << "the budget must bind for this test to say anything";
+
+  const auto planned = [&](int ranks, int here, std::uint64_t available, sltk::ReconstructionPlan<3>& plan)
+  {
+    sltk::ReconstructionOptions o = options;
+    o.Ranks = ranks;
+    o.RanksHere = here;
+    o.MemoryAvailable = available;
+    const sltk::Status status = sltk::planReconstruction(cloud, o, {}, plan);
+    EXPECT_TRUE(status.isOk()) << status.message();
+    return plan.Options.CellSizeFactor;
+  };
+  sltk::ReconstructionPlan<3> spread, shared, roomy, tight;
+  EXPECT_EQ(planned(4, 1, 0, spread), one.Options.CellSizeFactor) << "4 machines: each window fits, one rank's grids";
+  const double crowded = planned(2, 2, 0, shared); // both on this machine: their windows must share the budget
+  EXPECT_GT(crowded, one.Options.CellSizeFactor);
+  EXPECT_NE(shared.Choices.end(),
+    std::find_if(shared.Choices.begin(), shared.Choices.end(),
+      [](const std::string& c) { return c.find("differ from one rank's") != std::string::npos; }));
+  // The smallest that fits: one step down the ladder, given explicitly, is refused.
+  sltk::ReconstructionOptions below = options;
+  below.Ranks = below.RanksHere = 2;
+  below.CellSizeFactor = crowded / 1.02 * (1.0 + 1e-9);
+  sltk::ReconstructionPlan<3> refused;
+  EXPECT_EQ(sltk::planReconstruction(cloud, below, {}, refused).code(), sltk::StatusCode::OutOfMemory);
+
+  // No budget given: the one-rank C_dx (1 GiB) on any rank count where the memory is
+  // available (the automatic budget sized the grid; it is no limit); where it is not,
+  // the windows of the ranks here size it.
+  options.MemoryBudget = 0;
+  sltk::ReconstructionPlan<3> alone;
+  ASSERT_TRUE(sltk::planReconstruction(cloud, options, {}, alone).isOk());
+  EXPECT_EQ(planned(4, 4, std::uint64_t(64) << 30, roomy), alone.Options.CellSizeFactor);
+  // Room for the whole grid only: 4 windows with their ghost rows hold more.
+  const double wholeGrid = static_cast<double>(alone.Grids.Runs.back().nodeCount()) * sltk::ReconstructionBytesPerNode;
+  EXPECT_GT(planned(4, 4, static_cast<std::uint64_t>(wholeGrid), tight), alone.Options.CellSizeFactor);
 }
 
 TEST(SlabPolicy, WindowsAreTheOwnedRowsAndTheirGhostRows)

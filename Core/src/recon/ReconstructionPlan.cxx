@@ -328,6 +328,129 @@ Status thinIfDenserThanGrid(ReconstructionPlan<D>& plan, const GridPlanOptions& 
   SLTK_RETURN_IF_ERROR(locate(std::move(thinned), plan, ctx));
   return chooseCellSize(plan, po);
 }
+
+/// What the windows of the ranks on this machine may take: the budget given,
+/// else the memory available (the least over the ranks when the front end
+/// agreed it, Options.MemoryAvailable). The automatic 1 GiB is no limit: it
+/// sized the whole grid.
+template <int D>
+double slabMemoryLimit(const ReconstructionPlan<D>& plan)
+{
+  if (plan.Options.MemoryBudget && !plan.BudgetIsAutomatic)
+  {
+    return static_cast<double>(plan.Options.MemoryBudget);
+  }
+  return static_cast<double>(plan.Options.MemoryAvailable ? plan.Options.MemoryAvailable : availableMemoryBytes());
+}
+
+/// The largest window, in nodes, of every run of `grids` split over
+/// plan.Options.Ranks ranks: the boundaries RunSlab.h cuts (SlabPolicy.h), a
+/// later run's widest windows as its cuts follow the previous run's band.
+/// `whole`: the largest grid's nodes.
+template <int D>
+double largestWindowNodes(const ReconstructionPlan<D>& plan, const GridPlan<D>& grids, double& whole)
+{
+  double window = 0.0;
+  whole = 0.0;
+  std::vector<Index> boundaries;
+  for (size_t r = 0; r < grids.Runs.size(); ++r)
+  {
+    const std::vector<Index> previous = std::move(boundaries);
+    boundaries = slabBoundaries(
+      grids.Runs[r], plan.Options.Ranks, plan.Cloud, r > 0 ? &grids.Runs[r - 1] : nullptr, r > 0 ? &previous : nullptr);
+    window = std::max(window,
+      r > 0 ? largestLaterSlabWindowNodes(grids.Runs[r], grids.Runs[r - 1], previous)
+            : largestSlabWindowNodes(grids.Runs[r], boundaries));
+    whole = std::max(whole, static_cast<double>(grids.Runs[r].nodeCount()));
+  }
+  return window;
+}
+
+/// An automatic C_dx split over ranks (beyond the thesis; Distributed.md,
+/// "The automatic C_dx under MPI"). The one-rank C_dx (the whole finest grid within the budget)
+/// is kept while the windows of the ranks on this machine, ghost rows included,
+/// fit slabMemoryLimit: every rank count then runs the one-rank grids. Else C_dx
+/// climbs chooseCellSizeFactor's 2% ladder to the smallest whose windows fit (a
+/// coarser grid than one rank's, said in the choice) rather than refuse what
+/// one rank runs. `po`: the grid options the one-rank C_dx was chosen with.
+template <int D>
+Status fitWindowsOnThisMachine(ReconstructionPlan<D>& plan, GridPlanOptions po)
+{
+  if (plan.Options.Ranks <= 1 || plan.Options.OctreeStorage)
+  {
+    return Status::ok(); // one rank: the whole grid is its window
+  }
+  const double limit = slabMemoryLimit(plan);
+  if (!(limit > 0.0))
+  {
+    return Status::ok();
+  }
+  const double here = std::max(1, plan.Options.RanksHere);
+  po.MemoryBudget = std::numeric_limits<std::uint64_t>::max(); // the windows, not the whole grid
+  for (double c = plan.Options.CellSizeFactor; c <= CellSizeFactorRange[1]; c *= 1.02)
+  {
+    po.CellSizeFactor = c;
+    GridPlan<D> grids;
+    SLTK_RETURN_IF_ERROR(planGrids(boundingBox(plan.Cloud), plan.CloudSpacing, po, grids));
+    double whole = 0.0;
+    if (largestWindowNodes(plan, grids, whole) * here * ReconstructionBytesPerNode <= limit)
+    {
+      plan.Options.CellSizeFactor = c;
+      return Status::ok();
+    }
+  }
+  return Status::ok(); // nothing fits: the memory check refuses with its advice
+}
+
+/// The log line of an automatic C_dx: the one-rank choice `oneRank`, or the
+/// coarser one the ranks on this machine needed (fitWindowsOnThisMachine).
+template <int D>
+std::string cellSizeChoice(const ReconstructionPlan<D>& plan, std::uint64_t budget, double oneRank)
+{
+  const double cdx = plan.Options.CellSizeFactor;
+  if (cdx == oneRank)
+  {
+    return "C_dx = " + number(cdx) +
+      (cdx > 1.0
+          ? ": the smallest whose finest grid fits the " + std::to_string(budget >> 20) + " MB budget (--memory-budget)"
+          : ": the thesis's default, within the memory budget");
+  }
+  const bool given = plan.Options.MemoryBudget && !plan.BudgetIsAutomatic;
+  return "C_dx = " + number(cdx) + ": the smallest whose windows on " + std::to_string(plan.Options.Ranks) +
+    " ranks, ghost rows included, fit the " + std::to_string(static_cast<std::uint64_t>(slabMemoryLimit(plan)) >> 20) +
+    " MB " + (given ? "budget (--memory-budget)" : "available") + " for the " +
+    std::to_string(std::max(1, plan.Options.RanksHere)) +
+    " rank(s) on this machine; one rank would take C_dx = " + number(oneRank) +
+    ", so the grids and the surface differ from one rank's (ranks on more machines" +
+    (given ? " or a larger budget" : " or more memory") + " give one rank's)";
+}
+
+/// planRunGrids; with an automatic C_dx split over ranks, the ladder climbed on
+/// from fitWindowsOnThisMachine's C_dx while the windows do not fit: that one
+/// could not size run 1's padding for its initial surface (K_P is chosen
+/// after C_dx), which moves the later runs' cuts by a row or two.
+template <int D>
+Status planFittingRunGrids(ReconstructionPlan<D>& plan, const Context& ctx)
+{
+  const Status planned = planRunGrids(plan, plan.Options.Runs, plan.Options.CellSizeFactor, plan.Grids);
+  if (planned.code() != StatusCode::OutOfMemory || !plan.AutomaticCellSize || plan.Options.Ranks <= 1 ||
+    plan.Options.OctreeStorage)
+  {
+    return planned;
+  }
+  for (double c = plan.Options.CellSizeFactor * 1.02; c <= CellSizeFactorRange[1]; c *= 1.02)
+  {
+    if (planRunGrids(plan, plan.Options.Runs, c, plan.Grids).isOk())
+    {
+      plan.Choices.push_back("C_dx = " + number(c) + " rather than " + number(plan.Options.CellSizeFactor) +
+        ": run 1's padding for its initial surface widens the windows of the ranks on this machine");
+      ctx.logger().log(LogLevel::Info, "automatic " + plan.Choices.back());
+      plan.Options.CellSizeFactor = c;
+      return Status::ok();
+    }
+  }
+  return planned; // nothing fits: the first refusal, with its advice
+}
 } // namespace
 
 template <int D>
@@ -354,6 +477,8 @@ Status planReconstruction(
   SLTK_RETURN_IF_ERROR(chooseInterpolator(plan, ctx));
 
   const bool automaticCellSize = !(options.CellSizeFactor > 0.0) && options.MaximumLevel == 0;
+  plan.AutomaticCellSize = automaticCellSize;
+  plan.BudgetIsAutomatic = automaticCellSize && !options.MemoryBudget;
   if (options.MaximumLevel > 0)
   {
     SLTK_RETURN_IF_ERROR(cellSizeFromLevel(plan));
@@ -370,10 +495,9 @@ Status planReconstruction(
     {
       SLTK_RETURN_IF_ERROR(thinIfDenserThanGrid(plan, po, ctx));
     }
-    plan.Choices.push_back("C_dx = " + number(plan.Options.CellSizeFactor) +
-      (plan.Options.CellSizeFactor > 1.0 ? ": the smallest whose finest grid fits the " +
-            std::to_string(po.MemoryBudget >> 20) + " MB budget (--memory-budget)"
-                                         : ": the thesis's default, within the memory budget"));
+    const double oneRank = plan.Options.CellSizeFactor;
+    SLTK_RETURN_IF_ERROR(fitWindowsOnThisMachine(plan, po));
+    plan.Choices.push_back(cellSizeChoice(plan, po.MemoryBudget, oneRank));
   }
   const double dx1 = plan.Options.CellSizeFactor * plan.CloudSpacing; // run 1 (4.36)
   const Box<D> bounds = boundingBox(plan.Cloud);
@@ -428,12 +552,10 @@ Status planReconstruction(
     plan.InitialEllipsoid = boundingEllipsoid(plan.Cloud, farDistance);
   }
   plan.Options.MemoryBudget = po.MemoryBudget;
-  plan.AutomaticCellSize = automaticCellSize;
-  plan.BudgetIsAutomatic = automaticCellSize && !options.MemoryBudget;
   // Run 1 must hold the initial surface (at the K_P of a restart, when automatic).
   plan.FirstRunReach =
     initialReach(bounds, sparsest * std::max(farDistance, roomFactor * plan.CloudSpacing), plan.InitialEllipsoid);
-  const Status planned = planRunGrids(plan, options.Runs, plan.Options.CellSizeFactor, plan.Grids);
+  const Status planned = planFittingRunGrids(plan, ctx);
   if (planned.code() == StatusCode::OutOfMemory && options.MaximumLevel > 0)
   {
     return withFittingLevel(plan, planned);
@@ -454,22 +576,9 @@ template <int D>
 Status checkSlabMemory(const ReconstructionPlan<D>& plan, double cellSizeFactor, GridPlan<D>& grids)
 {
   const int ranks = plan.Options.Ranks, here = std::max(1, plan.Options.RanksHere);
-  double window = 0.0, whole = 0.0;
-  std::vector<Index> boundaries;
-  for (size_t r = 0; r < grids.Runs.size(); ++r)
-  {
-    const std::vector<Index> previous = std::move(boundaries);
-    boundaries = slabBoundaries(
-      grids.Runs[r], ranks, plan.Cloud, r > 0 ? &grids.Runs[r - 1] : nullptr, r > 0 ? &previous : nullptr);
-    // A later run's cuts follow the previous run's band (RunSlab.h): its widest possible windows.
-    window = std::max(window,
-      r > 0 ? largestLaterSlabWindowNodes(grids.Runs[r], grids.Runs[r - 1], previous)
-            : largestSlabWindowNodes(grids.Runs[r], boundaries));
-    whole = std::max(whole, static_cast<double>(grids.Runs[r].nodeCount()));
-  }
-  const double budget = plan.Options.MemoryBudget && !plan.BudgetIsAutomatic
-    ? static_cast<double>(plan.Options.MemoryBudget)
-    : static_cast<double>(availableMemoryBytes());
+  double whole = 0.0;
+  const double window = largestWindowNodes(plan, grids, whole);
+  const double budget = slabMemoryLimit(plan);
   const double need = window * here * ReconstructionBytesPerNode;
   if (budget > 0.0 && need > budget)
   {

@@ -9,7 +9,9 @@
 ///
 ///  - C_dx (4.36): 1, the thesis's default, unless the finest grid would not fit
 ///    the memory budget (AutomaticMemoryBudget unless one is given); then the
-///    smallest C_dx that fits.
+///    smallest C_dx that fits. Split over ranks, the same C_dx while the windows
+///    of the ranks on each machine fit its memory (or the budget given), else
+///    the smallest whose windows fit (Documentation/Distributed.md).
 ///  - Thinning: a cloud denser than the finest grid (its density spacing below
 ///    the finest dx) is thinned with a cell of AutomaticThinningFactor density
 ///    spacings (CloudThinning.h); the grids then follow from its h_P.

@@ -126,9 +126,16 @@ struct ReconstructionOptions
   /// communicator) and how many of them share this machine's memory
   /// (ranksSharingThisMachine): the memory check sizes their windows
   /// (SlabPolicy.h). The automatic C_dx sizes the whole grid, so that it is
-  /// the same on any rank count.
+  /// the same on any rank count, unless those windows do not fit the limit
+  /// (MemoryBudget given, else MemoryAvailable): then the smallest C_dx whose
+  /// windows fit (Documentation/Distributed.md, "Memory check").
   int Ranks = 1;
   int RanksHere = 1;
+  /// Bytes the windows may take when no MemoryBudget is given; 0: this
+  /// machine's memory available (availableMemoryBytes). Under MPI the front
+  /// ends set the least over the ranks, so that a C_dx it sizes is the same on
+  /// every rank.
+  std::uint64_t MemoryAvailable = 0;
   /// The octree storage: runs 2..R stored in tiles (octree/TiledReconstruction.h): the memory check
   /// sizes run 1's grid and the finest run's tiles (TiledMemory.h), not the
   /// finest uniform grid. The automatic C_dx still sizes the uniform grid.
