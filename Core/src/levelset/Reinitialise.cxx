@@ -45,32 +45,20 @@ inline double maxOrNaN(double a, double b)
 
 /// values[offset[l] + shift] for the L band nodes of a group, one per lane.
 template <int L>
-lanes::Lanes<L> gatherLanes(const double* values, const Index* offset, Index shift);
-template <>
-SLTK_LANES_INLINE lanes::Lanes<2> gatherLanes<2>(const double* values, const Index* offset, Index shift)
+SLTK_LANES_INLINE lanes::Lanes<L> gatherLanes(const double* values, const Index* offset, Index shift)
 {
-  return lanes::Lanes<2>{ values[offset[0] + shift], values[offset[1] + shift] };
-}
-template <>
-SLTK_LANES_INLINE lanes::Lanes<4> gatherLanes<4>(const double* values, const Index* offset, Index shift)
-{
-  return lanes::Lanes<4>{ values[offset[0] + shift], values[offset[1] + shift], values[offset[2] + shift],
-    values[offset[3] + shift] };
+  lanes::Lanes<L> out;
+  lanes::gatherOf<L>([&](int l) { return values[offset[l] + shift]; }, out);
+  return out;
 }
 
 /// True (all ones) in the lanes whose node has role `kind`.
 template <int L>
-lanes::Mask<L> kindLanes(const std::uint8_t* role, std::uint8_t kind);
-template <>
-SLTK_LANES_INLINE lanes::Mask<2> kindLanes<2>(const std::uint8_t* role, std::uint8_t kind)
+SLTK_LANES_INLINE lanes::Mask<L> kindLanes(const std::uint8_t* role, std::uint8_t kind)
 {
-  return lanes::Mask<2>{ (role[0] & RoleKind) == kind ? -1LL : 0LL, (role[1] & RoleKind) == kind ? -1LL : 0LL };
-}
-template <>
-SLTK_LANES_INLINE lanes::Mask<4> kindLanes<4>(const std::uint8_t* role, std::uint8_t kind)
-{
-  return lanes::Mask<4>{ (role[0] & RoleKind) == kind ? -1LL : 0LL, (role[1] & RoleKind) == kind ? -1LL : 0LL,
-    (role[2] & RoleKind) == kind ? -1LL : 0LL, (role[3] & RoleKind) == kind ? -1LL : 0LL };
+  lanes::Mask<L> out;
+  lanes::maskOf<L>([&](int l) { return (role[l] & RoleKind) == kind; }, out);
+  return out;
 }
 
 /// Per-band-node state of one reinitialise() call: 25 bytes per node.
@@ -321,14 +309,10 @@ private:
       }
       Vec c;
       std::memcpy(&c, this->Coefficient.data() + p, sizeof(Vec));
-      Vec v;
-      reinitStep<D>(this->Options.Scheme, u, this->InverseSpacing, c, this->Dtau, v); // (1.32)/(1.35)
-      if (relaxing)
-      {
-        Vec relaxed;
-        russoSmerekaStep(u[0], c, this->Options.Courant, relaxed); // (1.36)
-        v = kindLanes<L>(role + p, RoleRelax) ? relaxed : v;
-      }
+      const Mask relax = relaxing ? kindLanes<L>(role + p, RoleRelax) : Mask{};
+      Vec v; // (1.32)/(1.35), or (1.36) in the lanes of `relax`
+      bandNodeStep<D>(this->Options.Scheme, u, this->InverseSpacing, c, this->Dtau, this->Options.Courant,
+        relaxing ? &relax : nullptr, v);
       std::memcpy(this->Next.data() + p, &v, sizeof(Vec)); // a fixed node's is never copied back
       Vec moved;
       lanes::absOf(v - u[0], moved);

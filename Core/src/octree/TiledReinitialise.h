@@ -5,9 +5,10 @@
 /// constrained explicit values (1.38)-(1.45) on the nodes next to the front,
 /// then Jacobi pseudo-time steps of (1.30) with the sign (1.31) of phi0) on a
 /// TiledField, with the same kernels (ReinitInterface.h, ReinitScheme.h): the
-/// nodes are classified tile by tile on a copy of the tile with two nodes
-/// around it, and every pseudo-time step reads the axis neighbours straight
-/// from the tiles. The band is the band before the step dilated (1.53), as in
+/// nodes are classified tile by tile from their axis neighbours, those next to
+/// the front on a copy of the tile with two nodes around it, and every
+/// pseudo-time step reads the axis neighbours straight from the tiles, nodes
+/// in SIMD lanes (TiledReinitStep.h). The band is the band before the step dilated (1.53), as in
 /// the uniform version; the values are cut at +-gamma (1.49) afterwards.
 /// Distributed (TileDistribution.h), each rank updates the nodes of its own
 /// tiles and its ghosts' values follow every pseudo-time step.
@@ -18,6 +19,7 @@
 #include "sltk/levelset/ReinitInterface.h"
 #include "sltk/levelset/ReinitOptions.h"
 #include "sltk/octree/TiledField.h"
+#include "sltk/octree/TiledReinitStep.h"
 
 #include <algorithm>
 #include <cmath>
@@ -153,21 +155,25 @@ public:
     }
     const size_t count = this->Nodes.size();
     this->Fixed.assign(count, 0);
-    this->Coefficient.assign(count, 0.0);
-    this->Next.assign(count, 0.0);
+    this->Coefficient.resize(count); // every node's set by classify()
+    this->Next.resize(count);        // every node's but the fixed ones' set by a step, then read
     this->ChunkChange.assign(
       static_cast<size_t>(std::max<Index>(1, ThreadPool::chunkCount(0, static_cast<Index>(count), ChangeGrain))), 0.0);
+    this->Stepper.setSpacing(g);
+    this->Stepper.prepare(field, Step::Lower::Gamma); // as TiledField::scratch reads beyond the grid
     this->classify(field, options, ctx);
-    this->findFaceNeighbours(field);
+    this->Stepper.prepare(field, Step::Lower::Self);
     for (size_t n = 0; n < count; ++n)
     {
       if (this->Fixed[n])
       {
-        field.phi(this->Nodes[n].Tile)[this->Nodes[n].Local] = this->Coefficient[n]; // the one step procedure
+        this->Stepper.phi(this->Nodes[n].Tile)[this->Nodes[n].Local] = this->Coefficient[n]; // the one step procedure
       }
     }
     distribution.exchangeFaces(field);       // the pseudo-time steps read the ghosts' faces only
     const double dtau = options.Courant * h; // (1.34)
+    const typename Step::Band band{ this->Nodes.data(), this->Coefficient.data(), this->Fixed.data(),
+      this->Relax.data() };
     for (int iteration = 1; iteration <= options.MaxIterations; ++iteration)
     {
       // The largest change, as the uniform version's BandSolver::step: the chunks' maxima, then
@@ -176,29 +182,8 @@ public:
         0, static_cast<Index>(count),
         [&](Index b, Index e)
         {
-          double largest = 0.0;
-          double u[1 + 2 * D];
-          for (Index n = b; n < e; ++n)
-          {
-            if (this->Fixed[static_cast<size_t>(n)])
-            {
-              continue;
-            }
-            this->axes(field, this->Nodes[static_cast<size_t>(n)], u);
-            const double c = this->Coefficient[static_cast<size_t>(n)];
-            double v = u[0];
-            if (options.Method == ReinitMethod::RussoSmereka && this->Relax[static_cast<size_t>(n)])
-            {
-              v = russoSmerekaStep(u[0], c, options.Courant); // (1.36)
-            }
-            else
-            {
-              v = reinitStep<D>(options.Scheme, u, this->InverseSpacing, c, dtau); // (1.32)/(1.35)
-            }
-            this->Next[static_cast<size_t>(n)] = v;
-            largest = std::isfinite(v) ? std::max(largest, std::fabs(v - u[0])) : HUGE_VAL;
-          }
-          this->ChunkChange[static_cast<size_t>(b / ChangeGrain)] = largest;
+          this->ChunkChange[static_cast<size_t>(b / ChangeGrain)] =
+            this->Stepper.step(band, options, dtau, b, e, this->Next.data()); // (1.32)/(1.35), (1.36)
         },
         ChangeGrain);
       const double change = distribution.max(*std::max_element(this->ChunkChange.begin(), this->ChunkChange.end()));
@@ -210,7 +195,7 @@ public:
             if (!this->Fixed[static_cast<size_t>(n)])
             {
               const Node& node = this->Nodes[static_cast<size_t>(n)];
-              field.phi(node.Tile)[node.Local] = this->Next[static_cast<size_t>(n)];
+              this->Stepper.phi(node.Tile)[node.Local] = this->Next[static_cast<size_t>(n)];
             }
           }
         });
@@ -249,11 +234,8 @@ public:
   double relativeChange() const { return this->Change; }
 
 private:
-  struct Node
-  {
-    std::int32_t Tile;
-    std::int32_t Local;
-  };
+  using Step = TiledReinitStep<D>;
+  using Node = typename Step::Node;
 
   static Index ipow3(Index n)
   {
@@ -282,75 +264,11 @@ private:
     return field.slot(field.slotIndex(t));
   }
 
-  /// Face neighbours of every tile: for each axis the lower then the upper
-  /// slot's entry (a tile id, or TiledField's Outside / Inside), Outside beyond
-  /// the slots above, Self beyond the grid's first node (constant extension).
-  static constexpr std::int32_t Self = -3;
-  void findFaceNeighbours(const TiledField<D>& field)
-  {
-    this->FaceNeighbours.resize(static_cast<size_t>(field.tileCount()));
-    for (std::int32_t id = 0; id < field.tileCount(); ++id)
-    {
-      const auto& o = field.tileOrigin(id);
-      for (int a = 0; a < D; ++a)
-      {
-        for (int side = 0; side < 2; ++side)
-        {
-          auto t = o;
-          t[a] += side ? 1 : -1;
-          std::int32_t entry = TiledField<D>::Outside;
-          if (t[a] < 0)
-          {
-            entry = Self;
-          }
-          else if (t[a] < field.slotDims()[a])
-          {
-            entry = field.slot(field.slotIndex(t));
-          }
-          this->FaceNeighbours[static_cast<size_t>(id)][static_cast<size_t>(2 * a + side)] = entry;
-        }
-      }
-    }
-  }
-
-  /// u = (node, then the lower and upper neighbour of every axis) as
-  /// ReinitStencil::axes: from the node's tile, or across a tile face from
-  /// the neighbouring tile or slot.
-  void axes(const TiledField<D>& field, const Node& node, double* u) const
-  {
-    const double* p = field.phi(node.Tile);
-    u[0] = p[node.Local];
-    const auto& neighbours = this->FaceNeighbours[static_cast<size_t>(node.Tile)];
-    for (int a = 0; a < D; ++a)
-    {
-      const Index s = Index(1) << (TileBits * a);
-      const Index c = (node.Local >> (TileBits * a)) & (TileEdge - 1);
-      const Index across = (TileEdge - 1) * s; // the same node's place in the neighbouring tile
-      u[1 + 2 * a] = c > 0 ? p[node.Local - s] : this->acrossFace(field, neighbours[2 * a], node.Local + across, u[0]);
-      u[2 + 2 * a] = c < TileEdge - 1 ? p[node.Local + s]
-                                      : this->acrossFace(field, neighbours[2 * a + 1], node.Local - across, u[0]);
-    }
-  }
-
-  /// The value at `local` of a face neighbour `entry`; `self` for Self.
-  double acrossFace(const TiledField<D>& field, std::int32_t entry, Index local, double self) const
-  {
-    if (entry >= 0)
-    {
-      return field.phi(entry)[local];
-    }
-    if (entry == TiledField<D>::Remote)
-    {
-      return std::numeric_limits<double>::quiet_NaN(); // a ghost the exchange should have held
-    }
-    return entry == Self ? self : (entry == TiledField<D>::Inside ? -field.gamma() : field.gamma());
-  }
-
   /// Role and coefficient of every marked node from phi0 (BandSolver::classify of Reinitialise.cxx).
   void classify(const TiledField<D>& field, const ReinitOptions& options, const Context& ctx)
   {
     this->Relax.assign(this->Nodes.size(), 0);
-    // Marked nodes come tile by tile: one copy of the tile (and two nodes around it) per tile.
+    // Marked nodes come tile by tile.
     std::vector<size_t> starts;
     for (size_t n = 0; n < this->Nodes.size(); ++n)
     {
@@ -370,46 +288,67 @@ private:
       [&](Index b, Index e)
       {
         GridField<D> block;
-        constexpr int Halo = 2;
-        double u[ReinitStencil<D>::BlockSize];
+        std::vector<size_t> near;
         for (Index r = b; r < e; ++r)
         {
-          const std::int32_t tile = this->Nodes[starts[static_cast<size_t>(r)]].Tile;
-          field.scratch(tile, Halo, 0, block, nullptr); // ReinitStencil reads no ghost layers
-          const ReinitStencil<D> stencil(block);
-          for (size_t n = starts[static_cast<size_t>(r)]; n < starts[static_cast<size_t>(r) + 1]; ++n)
-          {
-            std::array<Index, D> i{};
-            for (int a = 0; a < D; ++a)
-            {
-              i[a] = Halo + ((this->Nodes[n].Local >> (TileBits * a)) & (TileEdge - 1));
-            }
-            stencil.block(i, u);
-            const bool near = adjacentToInterface<D>(u); // (1.38)
-            if (near && options.Method == ReinitMethod::Constrained)
-            {
-              this->Fixed[n] = 1;
-              this->Coefficient[n] = constrainedDistance<D>(stencil, i, u, this->InverseSpacing, this->Spacing);
-            }
-            else if (near && options.Method == ReinitMethod::RussoSmereka)
-            {
-              this->Relax[n] = 1;
-              this->Coefficient[n] = interfaceDistance<D>(u, this->InverseSpacing, this->Spacing); // (1.37)
-            }
-            else
-            {
-              this->Coefficient[n] =
-                reinitSign(u[ReinitStencil<D>::Centre], centralGradientNorm<D>(u, this->InverseSpacing), h); // (1.31)
-            }
-          }
+          this->classifyTile(
+            field, options, starts[static_cast<size_t>(r)], starts[static_cast<size_t>(r) + 1], h, block, near);
         }
       },
       8);
   }
 
+  /// classify() of the marked nodes [b, e) of one tile: the axis neighbours
+  /// decide (1.38) and give (1.31), read from the tiles (prepared with +gamma
+  /// beyond the grid, as the copy reads it); only if some are next to the
+  /// front, a copy of the tile with two nodes around it gives their 3^D blocks.
+  void classifyTile(const TiledField<D>& field, const ReinitOptions& options, size_t b, size_t e, double h,
+    GridField<D>& block, std::vector<size_t>& near)
+  {
+    near.clear();
+    double axes[ReinitStencil<D>::AxisSize];
+    for (size_t n = b; n < e; ++n)
+    {
+      this->Stepper.axes(this->Nodes[n], axes);
+      if (options.Method != ReinitMethod::Plain && axesAdjacentToInterface<D>(axes)) // (1.38)
+      {
+        near.push_back(n);
+        continue;
+      }
+      this->Coefficient[n] = reinitSign(axes[0], axesCentralGradientNorm<D>(axes, this->InverseSpacing), h); // (1.31)
+    }
+    if (near.empty())
+    {
+      return;
+    }
+    constexpr int Halo = 2;
+    field.scratch(this->Nodes[b].Tile, Halo, 0, block, nullptr); // ReinitStencil reads no ghost layers
+    const ReinitStencil<D> stencil(block);
+    double u[ReinitStencil<D>::BlockSize];
+    for (size_t n : near)
+    {
+      std::array<Index, D> i{};
+      for (int a = 0; a < D; ++a)
+      {
+        i[a] = Halo + ((this->Nodes[n].Local >> (TileBits * a)) & (TileEdge - 1));
+      }
+      stencil.block(i, u);
+      if (options.Method == ReinitMethod::Constrained)
+      {
+        this->Fixed[n] = 1;
+        this->Coefficient[n] = constrainedDistance<D>(stencil, i, u, this->InverseSpacing, this->Spacing); // (1.44)
+      }
+      else
+      {
+        this->Relax[n] = 1;
+        this->Coefficient[n] = interfaceDistance<D>(u, this->InverseSpacing, this->Spacing); // (1.37)
+      }
+    }
+  }
+
   std::vector<std::uint8_t> Mask;
   std::vector<Node> Nodes;
-  std::vector<std::array<std::int32_t, 2 * D>> FaceNeighbours;
+  Step Stepper;
   static constexpr Index ChangeGrain = 2048; ///< nodes a chunk of the largest change
   std::vector<double> Before, Coefficient, Next, ChunkChange;
   std::vector<std::uint8_t> Fixed, Relax;

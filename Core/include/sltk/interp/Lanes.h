@@ -110,6 +110,37 @@ SLTK_LANES_INLINE void sqrtOf(const Lanes<4>& x, Lanes<4>& out)
   out = Lanes<4>{ std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2]), std::sqrt(x[3]) };
 }
 
+/// out[l] = value(l) in every lane l: the scattered values of L nodes (the
+/// band's pseudo-time steps, ReinitLanes.h).
+template <int L, class F>
+SLTK_LANES_INLINE void gatherOf(const F& value, Lanes<L>& out)
+{
+  static_assert(L == 2 || L == 4, "two or four lanes");
+  if constexpr (L == 2)
+  {
+    out = Lanes<2>{ value(0), value(1) };
+  }
+  else
+  {
+    out = Lanes<4>{ value(0), value(1), value(2), value(3) };
+  }
+}
+
+/// out[l] = all ones where test(l), else zero.
+template <int L, class F>
+SLTK_LANES_INLINE void maskOf(const F& test, Mask<L>& out)
+{
+  static_assert(L == 2 || L == 4, "two or four lanes");
+  if constexpr (L == 2)
+  {
+    out = Mask<2>{ test(0) ? -1LL : 0LL, test(1) ? -1LL : 0LL };
+  }
+  else
+  {
+    out = Mask<4>{ test(0) ? -1LL : 0LL, test(1) ? -1LL : 0LL, test(2) ? -1LL : 0LL, test(3) ? -1LL : 0LL };
+  }
+}
+
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
 #endif

@@ -106,6 +106,23 @@ SLTK_LANES_INLINE void russoSmerekaStep(const V& u, const V& distance, double co
   next = u - courant * (sign * magnitude - distance);
 }
 
+/// The pseudo-time step of band nodes in lanes (Reinitialise.cxx,
+/// TiledReinitStep.h): (1.32)/(1.35) with the sign c of (1.31), or, in the
+/// lanes of `*relax` when given, (1.36) towards the distance c of (1.37);
+/// into `next`. M is the comparison mask of V.
+template <int D, class V, class M>
+SLTK_LANES_INLINE void bandNodeStep(ReinitScheme scheme, const V* u, const double* inverseSpacing, const V& c,
+  double dtau, double courant, const M* relax, V& next)
+{
+  reinitStep<D>(scheme, u, inverseSpacing, c, dtau, next); // (1.32)/(1.35)
+  if (relax)
+  {
+    V relaxed;
+    russoSmerekaStep(u[0], c, courant, relaxed); // (1.36)
+    next = *relax ? relaxed : next;
+  }
+}
+
 /// russoSmerekaStep of one node.
 inline double russoSmerekaStep(double u, double distance, double courant)
 {
