@@ -131,7 +131,7 @@ template <int D>
 Status chooseCellSizeFactor(const Box<D>& bounds, double cloudSpacing, GridPlanOptions options, double& cellSizeFactor)
 {
   GridPlan<D> plan;
-  for (double c = 1.0; c <= 1e4; c *= 1.02)
+  for (double c = 1.0; c <= 1e4; c *= CellSizeLadderStep)
   {
     options.CellSizeFactor = c;
     const Status status = planGrids(bounds, cloudSpacing, options, plan);

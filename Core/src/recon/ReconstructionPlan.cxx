@@ -387,7 +387,7 @@ Status fitWindowsOnThisMachine(ReconstructionPlan<D>& plan, GridPlanOptions po)
   }
   const double here = std::max(1, plan.Options.RanksHere);
   po.MemoryBudget = std::numeric_limits<std::uint64_t>::max(); // the windows, not the whole grid
-  for (double c = plan.Options.CellSizeFactor; c <= CellSizeFactorRange[1]; c *= 1.02)
+  for (double c = plan.Options.CellSizeFactor; c <= CellSizeFactorRange[1]; c *= CellSizeLadderStep)
   {
     po.CellSizeFactor = c;
     GridPlan<D> grids;
@@ -438,7 +438,8 @@ Status planFittingRunGrids(ReconstructionPlan<D>& plan, const Context& ctx)
   {
     return planned;
   }
-  for (double c = plan.Options.CellSizeFactor * 1.02; c <= CellSizeFactorRange[1]; c *= 1.02)
+  for (double c = plan.Options.CellSizeFactor * CellSizeLadderStep; c <= CellSizeFactorRange[1];
+       c *= CellSizeLadderStep)
   {
     if (planRunGrids(plan, plan.Options.Runs, c, plan.Grids).isOk())
     {

@@ -93,7 +93,10 @@ template <int D>
 Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds, double cloudSpacing, double dx,
   const std::vector<double>& sparsity, const Context& ctx, OutsideFactorChoice& choice);
 
-/// The smallest C_dx >= 1 (in steps of 2%) whose grids `options` (budget
+/// The ladder of automatic C_dx values: 1, CellSizeLadderStep, CellSizeLadderStep^2, ...
+constexpr double CellSizeLadderStep = 1.02;
+
+/// The smallest C_dx >= 1 on the ladder (steps of 2%) whose grids `options` (budget
 /// included) accepts; fails when none up to 1e4 does.
 template <int D>
 Status chooseCellSizeFactor(const Box<D>& bounds, double cloudSpacing, GridPlanOptions options, double& cellSizeFactor);
