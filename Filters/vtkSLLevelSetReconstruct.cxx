@@ -586,7 +586,8 @@ int vtkSLLevelSetReconstruct::RequestData(
   this->Impl->Summary.reset();
   sltk::ReconstructionOptions options;
   sltk::Status valid = this->Impl->optionsOn(*comm, options);
-  if (valid.isOk()) // before the thread pool takes NumberOfThreads
+  options.FrameShift = shift; // the positions Core's messages name are the user's
+  if (valid.isOk())           // before the thread pool takes NumberOfThreads
   {
     valid = sltk::vtkbridge::checkOptionRanges({ { "NumberOfThreads", double(this->NumberOfThreads) } });
   }

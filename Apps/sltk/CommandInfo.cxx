@@ -9,11 +9,13 @@
 #include "WriteAtomically.h"
 
 #include "sltk/cloud/CloudSpacing.h"
+#include "sltk/cloud/LocalFrame.h"
 #include "sltk/exec/Context.h"
 #include "sltk/exec/Memory.h"
 #include "sltk/exec/ThreadPool.h"
 #include "sltk/recon/ReconstructionPlan.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -75,8 +77,11 @@ int printPlan(const std::string& path, long long read, sltk::PointCloud<D> cloud
   const auto unitBounds = sltk::boundingBox(plan.Cloud);
   for (int a = 0; a < D; ++a)
   {
-    std::printf("%s[%.6g, %.6g]", a ? " x " : " ", plan.Box.Centre[a] + plan.Box.Scale * unitBounds.Min[a],
-      plan.Box.Centre[a] + plan.Box.Scale * unitBounds.Max[a]);
+    // Survey coordinates keep their detail (LocalFrame.h, positionDigits).
+    const double low = plan.Box.Centre[a] + plan.Box.Scale * unitBounds.Min[a];
+    const double high = plan.Box.Centre[a] + plan.Box.Scale * unitBounds.Max[a];
+    const int digits = sltk::positionDigits(std::max(std::fabs(low), std::fabs(high)), 2.0 * plan.Box.Scale);
+    std::printf("%s[%.*g, %.*g]", a ? " x " : " ", digits, low, digits, high);
   }
   std::printf("\nh_P          %.6g   (C_dx = %.3g, K_P = %g, padding %d cells)\n", spacing, plan.Options.CellSizeFactor,
     plan.Options.OutsideThresholdFactor, options.Padding);

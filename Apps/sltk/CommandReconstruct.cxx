@@ -266,8 +266,8 @@ std::string Reconstruct::problemBeforeWork(bool pieces, vtkPolyData* reference, 
   if (ranks > 1 && this->given("--output") && !pieces)
   {
     return this->octree()
-      ? "under mpirun every rank holds only its own trees: write -o as .phtg (one piece per rank, FILE.phtg and "
-        "FILE/FILE_<rank>.htg)"
+      ? "under mpirun every rank holds only its own trees: write -o as .phtg (one piece per rank, FILE.phtg, "
+        "FILE.vtm and FILE/FILE_<rank>.htg)"
       : "under mpirun every rank holds only its block of the grid: write -o as .pvti (one piece per rank, "
         "FILE.pvti and FILE/FILE_<rank>.vti)";
   }
@@ -545,7 +545,7 @@ Command addReconstructCommand(CLI::App& sltk)
     ->add_option("-o,--output", command->Output,
       "signed distance (and distance to the cloud) on the grid; under\nmpirun, .pvti: every rank writes its own "
       "block (FILE/FILE_<rank>.vti);\n--octree: a hyper tree grid, .htg (.phtg under mpirun: each rank\nits own "
-      "trees, FILE/FILE_<rank>.htg)")
+      "trees, FILE/FILE_<rank>.htg, also listed by FILE.vtm, which\nParaView 5.11 opens)")
     ->option_text("FILE.vti|.pvti|.htg|.phtg");
   app
     ->add_option("--surface", command->Surface,

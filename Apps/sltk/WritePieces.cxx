@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <system_error>
 #include <type_traits>
 #include <unistd.h>
@@ -88,11 +89,60 @@ std::string pieceFolderProblem(const std::string& path)
 
 namespace
 {
+/// `text` with XML's five special characters escaped (an attribute's value).
+std::string xmlEscaped(const std::string& text)
+{
+  std::string out;
+  for (const char c : text)
+  {
+    switch (c)
+    {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+/// FILE.vtm beside FILE.phtg: a multiblock of the ranks' pieces, one block each.
+/// ParaView 5.11 opens it (and its Slice and Contour run on it), where its
+/// vtkXMLPHyperTreeGridReader crashes on the .phtg (Documentation/Toolchain.md).
+bool writePieceIndex(const fs::path& path, const PieceNames& names, int pieces)
+{
+  std::ofstream out(path);
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" "
+         "byte_order=\"LittleEndian\" header_type=\"UInt32\">\n  <vtkMultiBlockDataSet>\n";
+  for (int k = 0; k < pieces; ++k)
+  {
+    const std::string piece = names.Stem.string() + "/" + names.Stem.string() + "_" + std::to_string(k) + names.Piece;
+    out << "    <DataSet index=\"" << k << "\" name=\"rank " << k << "\" file=\"" << xmlEscaped(piece) << "\"/>\n";
+  }
+  out << "  </vtkMultiBlockDataSet>\n</VTKFile>\n";
+  out.close();
+  return static_cast<bool>(out);
+}
+
 template <class Writer>
 sltk::Status writePiecesWith(const std::string& path, vtkAlgorithm* producer, vtkMultiProcessController* controller)
 {
   const int size = controller ? controller->GetNumberOfProcesses() : 1;
   const int rank = controller ? controller->GetLocalProcessId() : 0;
+  constexpr bool trees = std::is_same<Writer, vtkXMLPHyperTreeGridWriter>::value;
   const PieceNames names(path);
   int owner = static_cast<int>(::getpid()); // rank 0's process names the temporary folder
   if (size > 1)
@@ -113,7 +163,7 @@ sltk::Status writePiecesWith(const std::string& path, vtkAlgorithm* producer, vt
 
   vtkNew<Writer> writer;
   writer->SetInputConnection(producer->GetOutputPort());
-  if constexpr (std::is_same<Writer, vtkXMLPHyperTreeGridWriter>::value)
+  if constexpr (trees)
   {
     writer->SetDataModeToBinary(); // as writeHyperTreeGrid (Documentation/Toolchain.md: the appended mode)
     useFastXmlData(writer, false);
@@ -128,7 +178,9 @@ sltk::Status writePiecesWith(const std::string& path, vtkAlgorithm* producer, vt
   writer->SetEndPiece(rank);
   writer->SetUseSubdirectory(true);
   writer->SetController(controller);
-  const bool written = writer->Write() == 1 && fs::exists(mine, error) && (rank != 0 || fs::exists(summary, error));
+  const fs::path index = temporary / (names.Stem.string() + ".vtm");
+  const bool written = writer->Write() == 1 && fs::exists(mine, error) &&
+    (rank != 0 || (fs::exists(summary, error) && (!trees || writePieceIndex(index, names, size))));
   const bool everyRank = allTrue(controller, written);
   bool moved = everyRank;
   if (rank == 0)
@@ -140,6 +192,11 @@ sltk::Status writePiecesWith(const std::string& path, vtkAlgorithm* producer, vt
       moved = !error;
       fs::rename(summary, names.Folder / (names.Stem.string() + names.Summary), error);
       moved = moved && !error;
+      if (trees)
+      {
+        fs::rename(index, names.Folder / (names.Stem.string() + ".vtm"), error);
+        moved = moved && !error;
+      }
     }
     else
     {

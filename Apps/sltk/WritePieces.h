@@ -33,7 +33,8 @@ sltk::Status writeImagePieces(const std::string& path, vtkAlgorithm* producer, v
 
 /// The same for `mpirun -np N sltk reconstruct --octree -o FILE.phtg`: each
 /// rank's hyper tree grid (its own trees) as FILE/FILE_<rank>.htg, listed by
-/// FILE.phtg (vtkXMLPHyperTreeGridWriter).
+/// FILE.phtg (vtkXMLPHyperTreeGridWriter) and by FILE.vtm, a multiblock of the
+/// pieces that ParaView 5.11 opens (its .phtg reader crashes, Toolchain.md).
 sltk::Status writeHyperTreeGridPieces(
   const std::string& path, vtkAlgorithm* producer, vtkMultiProcessController* controller);
 

@@ -126,3 +126,16 @@ TEST(LocalFrame, SurveyCoordinatesMoveExactly)
   }
   EXPECT_TRUE(sltk::validateCloud(c).isOk());
 }
+
+TEST(LocalFrame, PositionsKeepTheCloudsDetail)
+{
+  // Near the origin a stream's 6 digits; at 1e7 with an extent of 100 m, the millimetre.
+  EXPECT_EQ(sltk::positionDigits(1.5, 3.0), 6);
+  EXPECT_EQ(sltk::positionDigits(1.0e7 + 12.345, 100.0), 11);
+  EXPECT_EQ(sltk::positionDigits(1e300, 1e-300), 17);
+  EXPECT_EQ(sltk::positionDigits(1.0, 0.0), 6) << "no extent: the default";
+  const double near[3] = { 0.125, -1.5, 2.0 };
+  EXPECT_EQ(sltk::formatPosition(near, 3, 4.0), "(0.125, -1.5, 2)");
+  const double far[2] = { 10000012.345, 4200000.5 };
+  EXPECT_EQ(sltk::formatPosition(far, 2, 100.0), "(10000012.345, 4200000.5)");
+}

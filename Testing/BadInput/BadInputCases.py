@@ -389,6 +389,14 @@ def _(t):
     """A large cloud refused for memory gets the merged-scan hint (thinning) besides the C_dx."""
     t.sltk("info", t.file("big.xyz", bad.sphere(120000)), "--cdx", "0.05", "--memory-budget", "16")
     t.fails(1, "use C_dx >=", "--thin 2.5")
+
+
+@case("cli.option.objects-far-apart-beyond-memory")
+def _(t):
+    """Two small objects far apart in one file: the refusal names the sizes and their own runs, not only a C_dx."""
+    two = bad.sphere_points(2000) + [(p[0] + 300, p[1] + 300, p[2] + 300) for p in bad.sphere_points(2000)]
+    t.sltk("info", t.file("two.xyz", bad.rows(two)), "--cdx", "1", "--memory-budget", "64")
+    t.fails(1, "GB", "use C_dx >=", "2 groups of points", "reconstruct each group in its own run")
 option_case("unknown-option", ("--frobnicate",), 2, "--frobnicate")
 option_case("octree-with-image-output", ("--octree",), 2, "--octree stores no full grid", "FILE.htg")
 

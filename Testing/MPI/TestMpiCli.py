@@ -165,6 +165,26 @@ for ranks in (1, 2):
 check(trees[2][0] == trees[1][0] > 0 and trees[2][1] == [(0.0, 0.0), (1.0, 1.0)],
       "--octree: the 2 ranks' pieces (.phtg) hold the 1-rank trees' %s cells, each rank its own (%s)" %
       (trees[1][0], trees[2]))
+# ParaView 5.11's .phtg reader crashes (Documentation/Toolchain.md): the 2-rank trees open through
+# FILE.vtm, a multiblock of the pieces, with every rank's cells, and ParaView's Slice and Contour run on them.
+from paraview import simple  # noqa: E402
+
+vtm = os.path.join(outdir, "cli_octree_2.vtm")
+opened = simple.OpenDataFile(vtm) if os.path.exists(vtm) else None
+blocks = simple.servermanager.Fetch(opened) if opened else None
+cells = sum(blocks.GetBlock(k).GetNumberOfCells() for k in range(blocks.GetNumberOfBlocks())) if blocks else 0
+check(blocks is not None and blocks.GetNumberOfBlocks() == 2 and cells == trees[1][0] > 0 and
+      opened.CellData["Rank"].GetRange() == (0.0, 1.0),
+      "--octree on 2 ranks: FILE.vtm opens in pvpython with every rank's cells (%s of %s)" % (cells, trees[1][0]))
+if opened:
+    plane = simple.Slice(Input=opened)
+    plane.SliceType.Normal = [0.0, 0.0, 1.0]
+    cut = simple.servermanager.Fetch(plane)
+    contour = simple.servermanager.Fetch(simple.Contour(Input=opened, ContourBy=["CELLS", "SignedDistance"],
+                                                        Isosurfaces=[0.0]))
+    count = [sum(d.GetBlock(k).GetNumberOfCells() for k in range(d.GetNumberOfBlocks())
+                 if d.GetBlock(k)) for d in (cut, contour)]
+    check(min(count) > 0, "Slice and Contour run on the 2-rank trees (%s and %s cells)" % tuple(count))
 r = run(MPI + ["-n", "2", sltk] + RECON + ["--octree", "-o", os.path.join(outdir, "never.htg")])
 check(r.returncode == 2 and "write -o as .phtg" in r.stderr, "reconstruct --octree -o FILE.htg on 2 ranks refused "
       "with the fix")

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/cloud/LocalFrame.h"
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace sltk
 {
@@ -44,6 +46,35 @@ void moveToLocalFrame(PointCloud<3>& cloud, const std::array<double, 3>& shift)
       p[a] -= shift[a];
     }
   }
+}
+
+int positionDigits(double largest, double extent)
+{
+  const double detail = PositionResolution * extent;
+  if (!(detail > 0.0) || !std::isfinite(largest) || !std::isfinite(detail))
+  {
+    return 6;
+  }
+  const double digits = std::ceil(std::log10(std::max(std::fabs(largest), detail) / detail));
+  return static_cast<int>(std::clamp(digits, 6.0, 17.0));
+}
+
+std::string formatPosition(const double* p, int dims, double extent)
+{
+  double largest = 0.0;
+  for (int a = 0; a < dims; ++a)
+  {
+    largest = std::max(largest, std::fabs(p[a]));
+  }
+  std::ostringstream text;
+  text.precision(positionDigits(largest, extent));
+  text << "(";
+  for (int a = 0; a < dims; ++a)
+  {
+    text << (a ? ", " : "") << p[a];
+  }
+  text << ")";
+  return text.str();
 }
 
 } // namespace sltk

@@ -12,13 +12,16 @@
 #include "sltk/recon/AutomaticParameters.h"
 #include "sltk/recon/CloudInitialData.h"
 #include "sltk/recon/CloudPreparation.h"
+#include "sltk/recon/PointClusters.h"
 #include "sltk/recon/SlabPolicy.h"
+#include "sltk/recon/StoppingRule.h"
 #include "sltk/recon/StrayPoints.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace sltk
@@ -454,6 +457,88 @@ Status planFittingRunGrids(ReconstructionPlan<D>& plan, const Context& ctx)
 }
 } // namespace
 
+namespace
+{
+template <int D>
+GridPlanOptions runGridOptions(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor);
+
+/// The nodes of the largest grid of `runs` runs over `box` at the plan's C_dx, whatever the budget.
+template <int D>
+double largestGridNodes(const ReconstructionPlan<D>& plan, const Box<D>& box)
+{
+  GridPlanOptions po = runGridOptions(plan, plan.Options.Runs, plan.Options.CellSizeFactor);
+  po.MemoryBudget = std::numeric_limits<std::uint64_t>::max();
+  GridPlan<D> grids;
+  double nodes = 0.0;
+  if (planGrids(box, plan.CloudSpacing, po, grids).isOk())
+  {
+    for (const GridSpec<D>& run : grids.Runs)
+    {
+      nodes = std::max(nodes, static_cast<double>(run.nodeCount()));
+    }
+  }
+  return nodes;
+}
+
+/// A refusal for memory (`refusal`) of a cloud made of a few groups of points far apart
+/// (two scanned objects in one file): the grid spans the empty space between them, and a
+/// coarser grid would lose them. When the groups (points within PieceLinkFactor h_P
+/// linked, PointClusters.h) are 2 to MaxSeparateGroups and their own grids hold less
+/// than a quarter of the nodes of the grid over all of them, the refusal says so, with
+/// the largest group's grid: each group in its own run.
+template <int D>
+Status withSeparateRuns(const ReconstructionPlan<D>& plan, const Status& refusal)
+{
+  constexpr size_t MaxSeparateGroups = 16;
+  if (refusal.code() != StatusCode::OutOfMemory || !(plan.Options.CellSizeFactor > 0.0))
+  {
+    return refusal;
+  }
+  std::vector<OutsidePoint> all(static_cast<size_t>(plan.Cloud.size()));
+  for (size_t i = 0; i < all.size(); ++i)
+  {
+    all[i].Point = static_cast<Index>(i);
+  }
+  const double link = PieceLinkFactor * plan.CloudSpacing;
+  const std::vector<Index> group = pointGroups(plan.Cloud, all, link);
+  std::map<Index, Box<D>> boxes;
+  for (size_t i = 0; i < group.size() && boxes.size() <= MaxSeparateGroups; ++i)
+  {
+    const auto& p = plan.Cloud.Points[i];
+    auto [it, created] = boxes.try_emplace(group[i]);
+    for (int a = 0; a < D; ++a)
+    {
+      it->second.Min[a] = created ? p[a] : std::min(it->second.Min[a], p[a]);
+      it->second.Max[a] = created ? p[a] : std::max(it->second.Max[a], p[a]);
+    }
+  }
+  if (boxes.size() < 2 || boxes.size() > MaxSeparateGroups)
+  {
+    return refusal;
+  }
+  double own = 0.0, largest = 0.0;
+  for (const auto& entry : boxes)
+  {
+    const double nodes = largestGridNodes(plan, entry.second);
+    own += nodes;
+    largest = std::max(largest, nodes);
+  }
+  const double whole = largestGridNodes(plan, boundingBox(plan.Cloud));
+  if (!(own < 0.25 * whole))
+  {
+    return refusal;
+  }
+  std::ostringstream m;
+  m.precision(3);
+  m << refusal.message() << ". The cloud is " << boxes.size() << " groups of points more than " << PieceLinkFactor
+    << " h_P (" << link * plan.Box.Scale << ") apart, and the grid spans the empty space between them (their own "
+    << "grids would hold " << 100.0 * own / whole << "% of its nodes); a coarser grid would lose them: reconstruct "
+    << "each group in its own run (split the file), the largest group's grid " << largest << " nodes, about "
+    << largest * ReconstructionBytesPerNode / 1e9 << " GB, at this C_dx";
+  return Status::outOfMemory(m.str());
+}
+} // namespace
+
 template <int D>
 Status planReconstruction(
   PointCloud<D> cloud, const ReconstructionOptions& options, const Context& ctx, ReconstructionPlan<D>& plan)
@@ -559,9 +644,9 @@ Status planReconstruction(
   const Status planned = planFittingRunGrids(plan, ctx);
   if (planned.code() == StatusCode::OutOfMemory && options.MaximumLevel > 0)
   {
-    return withFittingLevel(plan, planned);
+    return withSeparateRuns(plan, withFittingLevel(plan, planned));
   }
-  SLTK_RETURN_IF_ERROR(planned);
+  SLTK_RETURN_IF_ERROR(withSeparateRuns(plan, planned));
   return refuseFlatCloud(plan, ctx);
 }
 

@@ -22,6 +22,7 @@
 ///  - `std::int64_t pieces(const ReconstructionResult<D>&)`: the kept result's
 ///    pieces (InsideComponents.h).
 
+#include "sltk/cloud/LocalFrame.h"
 #include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 #include "sltk/recon/AutomaticParameters.h"
@@ -50,26 +51,24 @@ inline void forgetRun(int run, std::vector<IterationRecord>& history)
     history.end());
 }
 
-/// "(x, y, z)" in the user's units.
+/// "(x, y, z)" in the user's coordinates: the unit box's position moved back by the
+/// front end's local frame (`frame`, LocalFrame.h), with the digits that keep its detail.
 template <int D>
-std::string position(const UnitBox<D>& box, const std::array<double, D>& unit)
+std::string position(const UnitBox<D>& box, const std::array<double, 3>& frame, const std::array<double, D>& unit)
 {
-  std::ostringstream text;
-  text.precision(6);
-  const std::array<double, D> p = box.toUser(unit);
-  text << "(";
+  std::array<double, D> p = box.toUser(unit);
   for (int a = 0; a < D; ++a)
   {
-    text << (a ? ", " : "") << p[a];
+    p[a] += frame[static_cast<size_t>(a)];
   }
-  text << ")";
-  return text.str();
+  return formatPosition(p.data(), D, 2.0 * box.Scale);
 }
 
 /// Where the missed points lie (MissedPlaces.h, unit-box units) in the user's: "; outside
 /// it they gather at N point(s) around (..) from (..) to (..), ...", or "" when none.
 template <int D>
-std::string describeMissedPlaces(const std::vector<MissedPlace<D>>& places, const UnitBox<D>& box)
+std::string describeMissedPlaces(
+  const std::vector<MissedPlace<D>>& places, const UnitBox<D>& box, const std::array<double, 3>& frame)
 {
   if (places.empty())
   {
@@ -80,8 +79,8 @@ std::string describeMissedPlaces(const std::vector<MissedPlace<D>>& places, cons
   for (size_t k = 0; k < places.size(); ++k)
   {
     const MissedPlace<D>& place = places[k];
-    text << (k ? "," : "") << " " << place.Points << " point(s) around " << position<D>(box, place.Centre) << " from "
-         << position<D>(box, place.Lower) << " to " << position<D>(box, place.Upper);
+    text << (k ? "," : "") << " " << place.Points << " point(s) around " << position<D>(box, frame, place.Centre)
+         << " from " << position<D>(box, frame, place.Lower) << " to " << position<D>(box, frame, place.Upper);
   }
   return text.str();
 }
@@ -367,7 +366,7 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
               << plan.Box.Scale * misfitDistance(records.Runs.back().Grid.Spacing[0], plan.CloudSpacing)
               << ") from the surface (features thinner than the cells were lost, or the points scatter more than "
               << "that)" << (records.Warnings.empty() ? ": a smaller C_dx resolves thinner features" : "")
-              << detail::describeMissedPlaces<D>(records.MissedPlaces, plan.Box);
+              << detail::describeMissedPlaces<D>(records.MissedPlaces, plan.Box, plan.Options.FrameShift);
     records.FitsCloud = false;
     records.Warnings.insert(records.Warnings.begin(), statement.str());
     ctx.logger().log(LogLevel::Warning, statement.str());

@@ -12,6 +12,7 @@
 #include "sltk/cloud/PointCloud.h"
 
 #include <array>
+#include <string>
 
 namespace sltk
 {
@@ -35,5 +36,17 @@ bool isZeroShift(const std::array<double, 3>& shift);
 
 /// Subtracts `shift` from every point of `cloud`.
 void moveToLocalFrame(PointCloud<3>& cloud, const std::array<double, 3>& shift);
+
+/// The detail a position in a message keeps, as a fraction of the cloud's extent: a
+/// survey cloud at 1e7 with an extent of 100 m is located to the millimetre.
+inline constexpr double PositionResolution = 1e-5;
+
+/// The significant digits that print a coordinate of magnitude up to `largest` to
+/// PositionResolution of `extent`: at least 6 (a stream's default, enough near the
+/// origin), at most 17 (a double's). Six digits would print x = 10000012.345 as 1e+07.
+int positionDigits(double largest, double extent);
+
+/// "(x, y, z)" (D coordinates of `p`) with positionDigits for a cloud of `extent`.
+std::string formatPosition(const double* p, int dims, double extent);
 
 } // namespace sltk

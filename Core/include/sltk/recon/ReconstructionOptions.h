@@ -9,6 +9,7 @@
 #include "sltk/levelset/ReinitOptions.h"
 #include "sltk/recon/OptionRanges.h"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -151,6 +152,10 @@ struct ReconstructionOptions
   /// default (gross outliers only, thinning only when the cloud is denser than
   /// the finest grid), so the thesis's clouds are reconstructed as given.
   CloudCleaningOptions Cleaning;
+  /// Where the cloud's frame lies in the user's coordinates: the shift a front end
+  /// subtracted from a cloud far from the origin (cloud/LocalFrame.h). The positions
+  /// messages name add it back, so that they are the user's; it changes no result.
+  std::array<double, 3> FrameShift{};
 
   /// The thesis's parameters (4.5.2): C_dx = 1, K_P = 2, no cleaning, its
   /// stopping rule; the
