@@ -19,12 +19,13 @@ Index storageOffset(const GridField<D, double>& f, Index k)
   return f.offset(f.nodeIndex(k));
 }
 
-/// Deterministic parallel compaction: out = [item(j) for j in [0, n) if keep(j)],
-/// in order. Two passes over fixed chunks (count, then write at prefix offsets).
-template <class Keep, class Item>
-void compact(const Context& ctx, Index n, Keep keep, Item item, NodeList& out)
+/// Deterministic parallel compaction over the items [0, n) in fixed chunks of
+/// `grain`: count(j) is how many entries item j gives, emit(j, to) writes them at
+/// `to` and returns the end; out holds them in item order, on any thread count
+/// (two passes: count, then write at the prefix offsets).
+template <class Count, class Emit>
+void compactBy(const Context& ctx, Index n, Index grain, Count count, Emit emit, NodeList& out)
 {
-  const Index grain = std::max<Index>(4096, (n + 63) / 64);
   const Index chunks = n > 0 ? (n + grain - 1) / grain : 0;
   std::vector<Index> start(static_cast<size_t>(chunks) + 1, 0);
   ctx.parallelFor(
@@ -34,7 +35,7 @@ void compact(const Context& ctx, Index n, Keep keep, Item item, NodeList& out)
       Index c = 0;
       for (Index j = b; j < e; ++j)
       {
-        c += keep(j) ? 1 : 0;
+        c += count(j);
       }
       start[static_cast<size_t>(b / grain) + 1] = c;
     },
@@ -48,27 +49,69 @@ void compact(const Context& ctx, Index n, Keep keep, Item item, NodeList& out)
     0, n,
     [&](Index b, Index e)
     {
-      Index w = start[static_cast<size_t>(b / grain)];
+      Index* to = out.data() + start[static_cast<size_t>(b / grain)];
       for (Index j = b; j < e; ++j)
       {
-        if (keep(j))
-        {
-          out[static_cast<size_t>(w++)] = item(j);
-        }
+        to = emit(j, to);
       }
     },
     grain);
+}
+
+/// out = [item(j) for j in [0, n) if keep(j)], in order (compactBy).
+template <class Keep, class Item>
+void compact(const Context& ctx, Index n, Keep keep, Item item, NodeList& out)
+{
+  compactBy(
+    ctx, n, std::max<Index>(4096, (n + 63) / 64), [&](Index j) -> Index { return keep(j) ? 1 : 0; },
+    [&](Index j, Index* to)
+    {
+      if (keep(j))
+      {
+        *to++ = item(j);
+      }
+      return to;
+    },
+    out);
 }
 } // namespace
 
 template <int D>
 void collectBand(const GridField<D, double>& phi, double gamma, const Context& ctx, NodeList& band)
 {
+  // By x lines, whose nodes are consecutive in storage: one offset a line, not a
+  // multi-index a node.
   const double* p = phi.storage().data();
+  const Index nx = phi.spec().Dims[0];
+  const Index lines = phi.spec().nodeCount() / nx;
+  const auto line = [&](Index l) { return p + storageOffset(phi, l * nx); };
+  const auto inBand = [gamma](double v) { return std::fabs(v) < gamma; }; // (1.48)
   NodeList out;
-  compact(
-    ctx, phi.spec().nodeCount(), [&](Index k) { return std::fabs(p[storageOffset(phi, k)]) < gamma; }, // (1.48)
-    [](Index k) { return k; }, out);
+  compactBy(
+    ctx, lines, std::max<Index>(16, (lines + 63) / 64),
+    [&](Index l)
+    {
+      const double* q = line(l);
+      Index count = 0;
+      for (Index i = 0; i < nx; ++i)
+      {
+        count += inBand(q[i]) ? 1 : 0;
+      }
+      return count;
+    },
+    [&](Index l, Index* to)
+    {
+      const double* q = line(l);
+      for (Index i = 0; i < nx; ++i)
+      {
+        if (inBand(q[i]))
+        {
+          *to++ = l * nx + i;
+        }
+      }
+      return to;
+    },
+    out);
   band.swap(out);
 }
 
