@@ -397,6 +397,22 @@ def _(t):
     two = bad.sphere_points(2000) + [(p[0] + 300, p[1] + 300, p[2] + 300) for p in bad.sphere_points(2000)]
     t.sltk("info", t.file("two.xyz", bad.rows(two)), "--cdx", "1", "--memory-budget", "64")
     t.fails(1, "GB", "use C_dx >=", "2 groups of points", "reconstruct each group in its own run")
+@case("cli.cloud.objects-far-apart-coarse-grid")
+def _(t):
+    """Two objects far apart under a small budget: the automatic C_dx is coarse for each; the refusal
+    (the grid is flat at its cells) and the result that does not fit name their own runs, not a C_dx."""
+    along = bad.sphere_points(1500) + [(p[0] + 300, p[1], p[2]) for p in bad.sphere_points(1500)]
+    t.sltk("reconstruct", t.file("along.xyz", bad.rows(along)), "--memory-budget", "128")
+    t.fails(3, "does not fit the cloud", "2 groups of points", "reconstruct each group in its own run")
+    if "may keep them" in t.err or "a smaller C_dx resolves" in t.err:
+        t.problems.append("advice for a smaller C_dx, which cannot fit the space between the groups")
+    diagonal = bad.sphere_points(1500) + [(p[0] + 300, p[1] + 300, p[2] + 300) for p in bad.sphere_points(1500)]
+    t.sltk("reconstruct", t.file("diagonal.xyz", bad.rows(diagonal)), "--memory-budget", "64")
+    t.fails(1, "too coarse for the objects", "2 groups of points", "reconstruct each group in its own run")
+    if "is flat" in t.err:
+        t.problems.append("two spheres called a flat cloud")
+
+
 option_case("unknown-option", ("--frobnicate",), 2, "--frobnicate")
 option_case("octree-with-image-output", ("--octree",), 2, "--octree stores no full grid", "FILE.htg")
 

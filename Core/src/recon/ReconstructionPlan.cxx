@@ -64,6 +64,12 @@ Status refuseFlatCloud(const ReconstructionPlan<D>& plan, const Context& ctx)
   {
     return Status::invalidArgument("the grid's cells are too coarse for the object: " + stray);
   }
+  const std::string groups = separateGroupsAdvice(
+    plan, plan.AutomaticCellSize ? 1.0 : plan.Options.CellSizeFactor, "its cells are too coarse for each group");
+  if (!groups.empty()) // not flat: far apart
+  {
+    return Status::invalidArgument("the grid's cells are too coarse for the objects. " + groups);
+  }
   const double scale = plan.Box.Scale;
   std::ostringstream m;
   m << "the cloud is flat: every point lies within " << fit.Thickness * scale << " of the "
@@ -462,11 +468,11 @@ namespace
 template <int D>
 GridPlanOptions runGridOptions(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor);
 
-/// The nodes of the largest grid of `runs` runs over `box` at the plan's C_dx, whatever the budget.
+/// The nodes of the largest grid of the plan's runs over `box` at C_dx = cellSizeFactor, whatever the budget.
 template <int D>
-double largestGridNodes(const ReconstructionPlan<D>& plan, const Box<D>& box)
+double largestGridNodes(const ReconstructionPlan<D>& plan, const Box<D>& box, double cellSizeFactor)
 {
-  GridPlanOptions po = runGridOptions(plan, plan.Options.Runs, plan.Options.CellSizeFactor);
+  GridPlanOptions po = runGridOptions(plan, plan.Options.Runs, cellSizeFactor);
   po.MemoryBudget = std::numeric_limits<std::uint64_t>::max();
   GridPlan<D> grids;
   double nodes = 0.0;
@@ -481,19 +487,23 @@ double largestGridNodes(const ReconstructionPlan<D>& plan, const Box<D>& box)
 }
 
 /// A refusal for memory (`refusal`) of a cloud made of a few groups of points far apart
-/// (two scanned objects in one file): the grid spans the empty space between them, and a
-/// coarser grid would lose them. When the groups (points within PieceLinkFactor h_P
-/// linked, PointClusters.h) are 2 to MaxSeparateGroups and their own grids hold less
-/// than a quarter of the nodes of the grid over all of them, the refusal says so, with
-/// the largest group's grid: each group in its own run.
+/// (two scanned objects in one file) says so, with separateGroupsAdvice.
 template <int D>
 Status withSeparateRuns(const ReconstructionPlan<D>& plan, const Status& refusal)
 {
-  constexpr size_t MaxSeparateGroups = 16;
   if (refusal.code() != StatusCode::OutOfMemory || !(plan.Options.CellSizeFactor > 0.0))
   {
     return refusal;
   }
+  const std::string advice = separateGroupsAdvice(plan, plan.Options.CellSizeFactor, "a coarser grid would lose them");
+  return advice.empty() ? refusal : Status::outOfMemory(refusal.message() + ". " + advice);
+}
+} // namespace
+
+template <int D>
+std::string separateGroupsAdvice(const ReconstructionPlan<D>& plan, double cellSizeFactor, const std::string& why)
+{
+  constexpr size_t MaxSeparateGroups = 16;
   std::vector<OutsidePoint> all(static_cast<size_t>(plan.Cloud.size()));
   for (size_t i = 0; i < all.size(); ++i)
   {
@@ -514,30 +524,29 @@ Status withSeparateRuns(const ReconstructionPlan<D>& plan, const Status& refusal
   }
   if (boxes.size() < 2 || boxes.size() > MaxSeparateGroups)
   {
-    return refusal;
+    return {};
   }
   double own = 0.0, largest = 0.0;
   for (const auto& entry : boxes)
   {
-    const double nodes = largestGridNodes(plan, entry.second);
+    const double nodes = largestGridNodes(plan, entry.second, cellSizeFactor);
     own += nodes;
     largest = std::max(largest, nodes);
   }
-  const double whole = largestGridNodes(plan, boundingBox(plan.Cloud));
+  const double whole = largestGridNodes(plan, boundingBox(plan.Cloud), cellSizeFactor);
   if (!(own < 0.25 * whole))
   {
-    return refusal;
+    return {};
   }
   std::ostringstream m;
   m.precision(3);
-  m << refusal.message() << ". The cloud is " << boxes.size() << " groups of points more than " << PieceLinkFactor
-    << " h_P (" << link * plan.Box.Scale << ") apart, and the grid spans the empty space between them (their own "
-    << "grids would hold " << 100.0 * own / whole << "% of its nodes); a coarser grid would lose them: reconstruct "
-    << "each group in its own run (split the file), the largest group's grid " << largest << " nodes, about "
-    << largest * ReconstructionBytesPerNode / 1e9 << " GB, at this C_dx";
-  return Status::outOfMemory(m.str());
+  m << "The cloud is " << boxes.size() << " groups of points more than " << PieceLinkFactor << " h_P ("
+    << link * plan.Box.Scale << ") apart, and the grid spans the empty space between them (their own grids would "
+    << "hold " << 100.0 * own / whole << "% of its nodes); " << why << ": reconstruct each group in its own run "
+    << "(split the file), the largest group's grid " << largest << " nodes, about "
+    << largest * ReconstructionBytesPerNode / 1e9 << " GB, at C_dx = " << cellSizeFactor;
+  return m.str();
 }
-} // namespace
 
 template <int D>
 Status planReconstruction(
@@ -853,5 +862,7 @@ template Status planRunGrids(const ReconstructionPlan<2>&, int, double, GridPlan
 template Status planRunGrids(const ReconstructionPlan<3>&, int, double, GridPlan<3>&);
 template Status planReconstruction(PointCloud<2>, const ReconstructionOptions&, const Context&, ReconstructionPlan<2>&);
 template Status planReconstruction(PointCloud<3>, const ReconstructionOptions&, const Context&, ReconstructionPlan<3>&);
+template std::string separateGroupsAdvice(const ReconstructionPlan<2>&, double, const std::string&);
+template std::string separateGroupsAdvice(const ReconstructionPlan<3>&, double, const std::string&);
 
 } // namespace sltk

@@ -28,6 +28,7 @@
 #include "sltk/recon/AutomaticParameters.h"
 #include "sltk/recon/PointClusters.h"
 #include "sltk/recon/Reconstruction.h"
+#include "sltk/recon/ReconstructionPlan.h"
 #include "sltk/recon/RunIterations.h"
 #include "sltk/recon/StoppingRule.h"
 #include "sltk/recon/StrayPoints.h"
@@ -240,18 +241,26 @@ std::string piecesAgainstComponents(const ReconstructionPlan<D>& plan, std::int6
 
 /// The honest outcome when the result has more pieces than the cloud has components
 /// (Documentation/Numerics.md, "Pieces against the cloud's components"): FitsCloud is
-/// false and the statement comes first, with advice that is not what just ran (`ran`).
+/// false and the statement comes first, with advice that is not what just ran (`ran`), or
+/// `groups` (separateGroupsAdvice) when the cloud is a few groups far apart.
 template <int D>
 void statePieces(const ReconstructionPlan<D>& plan, const ReconstructionOptions& ran, Index components,
-  const Context& ctx, ReconstructionResult<D>& records)
+  const std::string& groups, const Context& ctx, ReconstructionResult<D>& records)
 {
   std::ostringstream statement;
   statement.precision(3);
-  statement << piecesAgainstComponents(plan, records.Pieces, components)
-            << ": parts thinner than the cells broke apart; a C_dx below the " << ran.CellSizeFactor
-            << " that ran (--cdx" << (ran.OctreeStorage ? "" : ", with --octree for the memory") << ")"
-            << (ran.Interpolator == InterpolatorKind::LeastSquaresQ1 ? " or --interpolator weno3" : "")
-            << " may keep them";
+  statement << piecesAgainstComponents(plan, records.Pieces, components);
+  if (!groups.empty()) // separateGroupsAdvice: no C_dx helps
+  {
+    statement << ". " << groups;
+  }
+  else
+  {
+    statement << ": parts thinner than the cells broke apart; a C_dx below the " << ran.CellSizeFactor
+              << " that ran (--cdx" << (ran.OctreeStorage ? "" : ", with --octree for the memory") << ")"
+              << (ran.Interpolator == InterpolatorKind::LeastSquaresQ1 ? " or --interpolator weno3" : "")
+              << " may keep them";
+  }
   records.FitsCloud = false;
   records.Warnings.insert(records.Warnings.begin(), statement.str());
   ctx.logger().log(LogLevel::Warning, statement.str());
@@ -343,6 +352,14 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
       piecesAgainstComponents(plan, records.Pieces, components) +
         " with the automatic interpolator lsq-q1: reconstructed again with weno3 on the same grids");
   }
+  // A result that does not fit a cloud of a few groups far apart: no C_dx helps, their own runs do.
+  const bool fits = records.Runs.empty() ||
+    (records.Runs.back().FarPoints <= FarPointWarning && records.Runs.back().MisfitPoints <= FitShare &&
+      records.Pieces <= components);
+  const std::string groups = status.isOk() && !fits && components >= 2
+    ? separateGroupsAdvice(
+        plan, plan.AutomaticCellSize ? 1.0 : ran.CellSizeFactor, "its cells are too coarse for each group")
+    : std::string();
   if (status.isOk() && !records.Runs.empty() && records.Runs.back().FarPoints > FarPointWarning)
   {
     // Advice that is not what just ran.
@@ -350,8 +367,10 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
     warning << 100.0 * records.Runs.back().FarPoints
             << "% of the points lie more than one cell of run 1 from the surface: features thinner than that cell "
             << "were lost; "
-            << (restarted ? "the restart from half the C_dx did not keep them: a smaller C_dx with as many runs "
-                            "(the octree storage for the memory) may"
+            << (!groups.empty() ? "the grid spans the empty space between groups of points far apart, and no C_dx that fits the "
+                                  "memory resolves them: reconstruct each group in its own run"
+                   : restarted  ? "the restart from half the C_dx did not keep them: a smaller C_dx with as many runs "
+                                  "(the octree storage for the memory) may"
                    : records.Runs.size() <= 1 ? "a smaller C_dx may keep them"
                                               : "try half the C_dx with one run fewer (the same finest grid)");
     ctx.logger().log(LogLevel::Warning, warning.str());
@@ -365,7 +384,10 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
               << "% of the points lie more than two finest cells and h_P ("
               << plan.Box.Scale * misfitDistance(records.Runs.back().Grid.Spacing[0], plan.CloudSpacing)
               << ") from the surface (features thinner than the cells were lost, or the points scatter more than "
-              << "that)" << (records.Warnings.empty() ? ": a smaller C_dx resolves thinner features" : "")
+              << "that)"
+              << (!groups.empty()               ? ". " + groups
+                     : records.Warnings.empty() ? std::string(": a smaller C_dx resolves thinner features")
+                                                : std::string())
               << detail::describeMissedPlaces<D>(records.MissedPlaces, plan.Box, plan.Options.FrameShift);
     records.FitsCloud = false;
     records.Warnings.insert(records.Warnings.begin(), statement.str());
@@ -373,7 +395,7 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
   }
   if (status.isOk() && records.Pieces > components)
   {
-    statePieces(plan, ran, components, ctx, records);
+    statePieces(plan, ran, components, groups, ctx, records);
   }
   records.CloudComponents = components;
   records.CloudSpacing = plan.userCloudSpacing();

@@ -100,6 +100,16 @@ Status planReconstruction(
 template <int D>
 Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor, GridPlan<D>& grids);
 
+/// When the plan's cloud is 2 to 16 groups of points more than PieceLinkFactor h_P
+/// apart (PointClusters.h) whose own grids at C_dx = cellSizeFactor hold less than a
+/// quarter of the nodes of the grid over all of them (two scanned objects in one
+/// file; callers with an automatic C_dx pass the thesis's 1, where that choice starts): "The cloud is N groups of
+/// points ... apart, and the grid spans the empty space between them (...); <why>: reconstruct each group in its own
+/// run (split the file), the largest group's grid ..."; else "". A coarser grid cannot help such a cloud, so refusals
+/// and results that do not fit say this instead.
+template <int D>
+std::string separateGroupsAdvice(const ReconstructionPlan<D>& plan, double cellSizeFactor, const std::string& why);
+
 /// Nodes run r (1-based) will store: its grid's, or with OctreeStorage, for
 /// runs 2..R, the tiles' estimated from the cloud (estimatedTiledNodes,
 /// TiledMemory.h).
