@@ -182,7 +182,7 @@ void warnAboutResult(const sltk::ReconstructionSummary& summary)
 {
   const double hP = summary.CloudSpacing;
   const double finalError = summary.Runs.empty() ? 0.0 : summary.Runs.back().CloudError;
-  if (finalError > 2.0 * hP)
+  if (finalError > 2.0 * hP && !summary.SeparateGroups) // else Core's warnings advise the groups' own runs
   {
     std::fprintf(stderr,
       "sltk: warning: the surface ends %.1f h_P from the cloud on average: it did not reach the points; try a "
@@ -507,7 +507,8 @@ int Reconstruct::run() const
       { "interpolator", sltk::interpolatorInfo(result.Interpolator).Name },
       { "noise", result.CloudNoise >= 0.0 ? nlohmann::ordered_json(result.CloudNoise) : nlohmann::ordered_json() },
       { "automatic_choices", result.Choices }, { "recoveries", result.Recoveries }, { "warnings", result.Warnings },
-      { "fits_cloud", fits }, { "pieces", static_cast<long long>(result.Pieces) },
+      { "fits_cloud", fits }, { "separate_groups", result.SeparateGroups },
+      { "pieces", static_cast<long long>(result.Pieces) },
       { "cloud_components", static_cast<long long>(result.CloudComponents) }, { "seconds", seconds },
       { "peak_memory_mb", peakMb }, { "ranks", ranks }, { "bytes_sent_max", bytesSent }, { "collectives", collectives },
       { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) }, { "surface_pieces", topology.Pieces },
@@ -565,7 +566,8 @@ Command addReconstructCommand(CLI::App& sltk)
   app
     ->add_option("--json", command->Json,
       "summary: points, points_reconstructed, outliers_removed, cdx, kp,\n"
-      "automatic_choices, recoveries, warnings, fits_cloud, pieces (components of the\ninside), cloud_components "
+      "automatic_choices, recoveries, warnings, fits_cloud, separate_groups (a few groups\nfar apart that need "
+      "their own runs), pieces (components of the\ninside), cloud_components "
       "(the cloud's, points within 4 local spacings linked),\nseconds, peak_memory_mb, ranks, surface_pieces, "
       "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points, misfit_points, merged_nodes; "
       "--octree: "

@@ -141,7 +141,7 @@ void runSummary(const ReconstructionSummary& summary, vtkDataObject* image)
   }
   // The pre-processing (CloudCleaning.h): counts as doubles (exact below 2^53),
   // and the parameters used (chosen when automatic: AutomaticParameters.h).
-  const std::pair<const char*, double> scalars[12] = {
+  const std::pair<const char*, double> scalars[13] = {
     { "InputPoints", static_cast<double>(summary.Cleaning.InputPoints) },
     { "OutliersRemoved", static_cast<double>(summary.Cleaning.OutliersRemoved) },
     { "ThinningCell", summary.Cleaning.ThinningCell },
@@ -150,6 +150,7 @@ void runSummary(const ReconstructionSummary& summary, vtkDataObject* image)
     { "OutsideThresholdFactor", summary.OutsideThresholdFactor },
     { "CloudSpacing", summary.CloudSpacing },
     { "FitsCloud", summary.FitsCloud ? 1.0 : 0.0 },
+    { "SeparateGroups", summary.SeparateGroups ? 1.0 : 0.0 },      // a few groups far apart: their own runs
     { "Interpolator", static_cast<double>(summary.Interpolator) }, // the filter's InterpolatorType code
     { "CloudNoise", summary.CloudNoise },                          // < 0: not measured (given)
     { "Pieces", static_cast<double>(summary.Pieces) },             // InsideComponents.h

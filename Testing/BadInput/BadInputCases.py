@@ -14,6 +14,7 @@ SLTK_PYTHONPATH (the wrapped filters' site directory).
 """
 import glob
 import hashlib
+import json
 import math
 import os
 import signal
@@ -402,9 +403,13 @@ def _(t):
     """Two objects far apart under a small budget: the automatic C_dx is coarse for each; the refusal
     (the grid is flat at its cells) and the result that does not fit name their own runs, not a C_dx."""
     along = bad.sphere_points(1500) + [(p[0] + 300, p[1], p[2]) for p in bad.sphere_points(1500)]
-    t.sltk("reconstruct", t.file("along.xyz", bad.rows(along)), "--memory-budget", "128")
+    t.sltk("reconstruct", t.file("along.xyz", bad.rows(along)), "--memory-budget", "128", "--json", "along.json")
     t.fails(3, "does not fit the cloud", "2 groups of points", "reconstruct each group in its own run")
-    if "may keep them" in t.err or "a smaller C_dx resolves" in t.err:
+    summary = json.load(open(os.path.join(t.dir, "along.json")))
+    if summary.get("separate_groups") is not True or summary.get("fits_cloud") is not False:
+        t.problems.append("--json: separate_groups %r, fits_cloud %r" % (summary.get("separate_groups"),
+                                                                        summary.get("fits_cloud")))
+    if "may keep them" in t.err or "a smaller C_dx resolves" in t.err or "a smaller --cdx" in t.err:
         t.problems.append("advice for a smaller C_dx, which cannot fit the space between the groups")
     diagonal = bad.sphere_points(1500) + [(p[0] + 300, p[1] + 300, p[2] + 300) for p in bad.sphere_points(1500)]
     t.sltk("reconstruct", t.file("diagonal.xyz", bad.rows(diagonal)), "--memory-budget", "64")

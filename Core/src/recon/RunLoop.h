@@ -367,10 +367,11 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
     warning << 100.0 * records.Runs.back().FarPoints
             << "% of the points lie more than one cell of run 1 from the surface: features thinner than that cell "
             << "were lost; "
-            << (!groups.empty() ? "the grid spans the empty space between groups of points far apart, and no C_dx that fits the "
-                                  "memory resolves them: reconstruct each group in its own run"
-                   : restarted  ? "the restart from half the C_dx did not keep them: a smaller C_dx with as many runs "
-                                  "(the octree storage for the memory) may"
+            << (!groups.empty()
+                   ? "the grid spans the empty space between groups of points far apart, and no C_dx that fits the "
+                     "memory resolves them: reconstruct each group in its own run"
+                   : restarted ? "the restart from half the C_dx did not keep them: a smaller C_dx with as many runs "
+                                 "(the octree storage for the memory) may"
                    : records.Runs.size() <= 1 ? "a smaller C_dx may keep them"
                                               : "try half the C_dx with one run fewer (the same finest grid)");
     ctx.logger().log(LogLevel::Warning, warning.str());
@@ -397,6 +398,7 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
   {
     statePieces(plan, ran, components, groups, ctx, records);
   }
+  records.SeparateGroups = !groups.empty();
   records.CloudComponents = components;
   records.CloudSpacing = plan.userCloudSpacing();
   records.Cleaning = plan.Cleaning;

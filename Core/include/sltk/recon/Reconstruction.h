@@ -51,6 +51,9 @@ struct ReconstructionReport
   /// the surface (StoppingRule.h), or when the result has more Pieces than CloudComponents:
   /// the result does not fit the cloud, and Warnings says so first.
   bool FitsCloud = true;
+  /// When it does not fit: the cloud is a few groups of points far apart whose grid is
+  /// coarse for each (separateGroupsAdvice), and Warnings advise their own runs.
+  bool SeparateGroups = false;
   /// The result's pieces: the connected components of {phi < 0} on the last run's grid
   /// (InsideComponents.h); -1 when not counted (the reconstruction failed).
   std::int64_t Pieces = -1;
