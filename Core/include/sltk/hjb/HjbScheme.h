@@ -86,6 +86,58 @@ void hjbInitialize(const Problem& problem, GridField<Problem::Dim, double>& u)
 namespace detail
 {
 
+/// The nodes from index i (of `begin`) to `end` of hjbKernel() when the
+/// minimisation has one candidate (ControlMinimizer::onlyCandidate(), Test 1):
+/// trace(x, stages) traces the node's foot (false: it cannot be located),
+/// finish(i, x, stages, value, located) completes the node (value: I[U] at the
+/// foot if located). The feet of
+/// CellCache::PointLanes nodes are interpolated together (CellCache::evaluate():
+/// the CWENO cells missing are built together), the same values and counts as
+/// node after node. Returns the evaluations.
+template <class Cache, class Stages, class Trace, class Finish>
+double hjbOnlyCandidateNodes(Cache& cache, const GridSpec<Cache::Dim>& spec, std::array<Index, Cache::Dim> i,
+  Index begin, Index end, Trace&& trace, Finish&& finish)
+{
+  constexpr int D = Cache::Dim;
+  constexpr int L = Cache::PointLanes;
+  for (Index node = begin; node < end;)
+  {
+    const int count = static_cast<int>(std::min<Index>(L, end - node));
+    std::array<std::array<Index, D>, L> at;
+    std::array<std::array<double, D>, L> x;
+    std::array<Stages, L> stages;
+    std::array<double, L> value;
+    std::array<bool, L> ok;
+    const double* feet[L];
+    int lane[L];
+    int located = 0;
+    for (int l = 0; l < count; ++l, nextNode(spec, i))
+    {
+      at[l] = i;
+      x[l] = nodePoint(spec, i);
+      value[l] = std::numeric_limits<double>::infinity(); // cannot be located: not a candidate
+      ok[l] = trace(x[l], stages[l]);
+      if (ok[l])
+      {
+        feet[located] = stages[l].Foot.data();
+        lane[located++] = l;
+      }
+    }
+    double found[L];
+    cache.evaluate(located, feet, found);
+    for (int m = 0; m < located; ++m)
+    {
+      value[lane[m]] = found[m];
+    }
+    for (int l = 0; l < count; ++l)
+    {
+      finish(at[l], x[l], stages[l], value[l], ok[l]);
+    }
+    node += count;
+  }
+  return static_cast<double>(end - begin);
+}
+
 /// One step of (3.7) with compile-time stage count S and cache size K; fills
 /// `work` = {evaluations, builds, non-finite values}.
 template <class Interp, int K, int S, class Problem>
@@ -110,34 +162,74 @@ void hjbKernel(const Context& ctx, const ButcherTableau<S>& tableau, const Minim
   const Index chunks = (n + grain - 1) / grain;
   std::vector<std::array<double, 3>> partial(static_cast<size_t>(chunks), std::array<double, 3>{});
   const Interp prototype(current);
+  using Stages = CharacteristicStages<D, S>;
+  // The foot (3.8) of x under the controls a; false when it cannot be located.
+  auto traceFoot = [&](const Point& x, const Sequence& a, Stages& stages) -> bool
+  {
+    traceCharacteristic(
+      tableau, x, tNext, dt, [&](double t, const Point& X, int k) { return problem.Dynamics(t, X, a[k]); }, stages);
+    for (int d = 0; d < D; ++d)
+    {
+      if (!std::isfinite(stages.Foot[d]))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  // F(a) of (3.7) from the interpolated value at the foot: + the cost quadrature (3.9).
+  auto withCost = [&](double v, const Sequence& a, const Stages& stages) -> double
+  {
+    if constexpr (Problem::HasCost)
+    {
+      v += stageQuadrature(
+        tableau, stages, dt, [&](double t, const Point& X, int k) { return problem.RunningCost(t, X, a[k]); });
+    }
+    return v;
+  };
+  // The node's new value: the obstacle (3.39), counted if not finite.
+  auto store = [&](const std::array<Index, D>& i, const Point& x, double value, std::array<double, 3>& local)
+  {
+    if constexpr (Problem::HasObstacle)
+    {
+      value = std::max(value, problem.Obstacle(x)); // (3.39)
+    }
+    if (!std::isfinite(value))
+    {
+      local[2] += 1.0;
+    }
+    next(i) = value;
+  };
+  const Sequence* only = feedback ? nullptr : minimizer.onlyCandidate();
   auto body = [&](Index begin, Index end)
   {
     CellCache<Interp, K> cache(prototype, current); // per chunk: interpolators hold per-cell scratch
-    CharacteristicStages<D, S> stages;
+    Stages stages;
     std::array<double, 3> local{};
     std::array<Index, D> i = current.nodeIndex(begin);
+    if (only != nullptr)
+    {
+      local[0] = hjbOnlyCandidateNodes<CellCache<Interp, K>, Stages>(
+        cache, spec, i, begin, end, [&](const Point& x, Stages& st) { return traceFoot(x, *only, st); },
+        [&](const std::array<Index, D>& at, const Point& x, const Stages& st, double v, bool located)
+        {
+          // minimize()'s value of its one evaluation
+          const double value = located ? ControlMinimizer<M, S>::candidateValue(withCost(v, *only, st)) : v;
+          store(at, x, value, local);
+        });
+      end = begin; // done
+    }
     for (Index node = begin; node < end; ++node, nextNode(spec, i))
     {
       const Point x = nodePoint(spec, i);
       // F(a) of (3.7): interpolation at the foot (3.8) + cost quadrature (3.9).
       auto objective = [&](const Sequence& a) -> double
       {
-        traceCharacteristic(
-          tableau, x, tNext, dt, [&](double t, const Point& X, int k) { return problem.Dynamics(t, X, a[k]); }, stages);
-        for (int d = 0; d < D; ++d)
+        if (!traceFoot(x, a, stages)) // cannot be located: not a candidate
         {
-          if (!std::isfinite(stages.Foot[d])) // cannot be located: not a candidate
-          {
-            return std::numeric_limits<double>::infinity();
-          }
+          return std::numeric_limits<double>::infinity();
         }
-        double v = cache(stages.Foot.data());
-        if constexpr (Problem::HasCost)
-        {
-          v += stageQuadrature(
-            tableau, stages, dt, [&](double t, const Point& X, int k) { return problem.RunningCost(t, X, a[k]); });
-        }
-        return v;
+        return withCost(cache(stages.Foot.data()), a, stages);
       };
       double value = 0.0;
       if (feedback)
@@ -175,15 +267,7 @@ void hjbKernel(const Context& ctx, const ButcherTableau<S>& tableau, const Minim
         value = r.Value;
         local[0] += static_cast<double>(r.Evaluations);
       }
-      if constexpr (Problem::HasObstacle)
-      {
-        value = std::max(value, problem.Obstacle(x)); // (3.39)
-      }
-      if (!std::isfinite(value))
-      {
-        local[2] += 1.0;
-      }
-      next(i) = value;
+      store(i, x, value, local);
     }
     local[1] = cache.builds();
     partial[static_cast<size_t>(begin / grain)] = local;

@@ -136,6 +136,17 @@ public:
   /// Number of tabulated sequences.
   int tabulationSize() const { return static_cast<int>(this->Table.size()); }
 
+  /// The only candidate when A^S is one sequence (no parameters and a table of
+  /// one entry, Test 1's A = {}), else nullptr: minimize() is then
+  /// candidateValue(objective(*onlyCandidate())) in one evaluation.
+  const Sequence* onlyCandidate() const
+  {
+    return this->Count == 0 && this->Table.size() == 1 ? &this->Table[0] : nullptr;
+  }
+
+  /// An objective value as the minimisation compares it: NaN counts as +inf.
+  static double candidateValue(double v) { return std::isnan(v) ? std::numeric_limits<double>::infinity() : v; }
+
   /// Controls of admissible parameters.
   Sequence sequence(const Parameters& p) const
   {
@@ -287,8 +298,7 @@ private:
   static double call(Objective& objective, const Sequence& a, MinimizerResult<M, S>& r)
   {
     ++r.Evaluations;
-    const double v = objective(a);
-    return std::isnan(v) ? std::numeric_limits<double>::infinity() : v;
+    return candidateValue(objective(a));
   }
 
   void projectParameters(Parameters& p) const

@@ -88,23 +88,17 @@ public:
   {
     const CellLocation<Dim> loc = locate(*this->Spec, x);
     ++this->Evaluations;
-    Index key = 0;
-    for (int a = 0; a < Dim; ++a)
-    {
-      key += loc.Cell[a] * this->KeyStride[a];
-    }
+    const Index key = this->keyOf(loc.Cell);
     if constexpr (Hashed)
     {
-      // Fibonacci hashing: neighbouring cells (also across rows) land in different entries.
-      constexpr int shift = 64 - detail::log2Exact(K);
-      const int s = static_cast<int>((static_cast<std::uint64_t>(key) * 0x9E3779B97F4A7C15ULL) >> shift);
+      const int s = this->slotOf(key);
       if (this->Keys[s] != key)
       {
         this->Keys[s] = key;
         ++this->Builds;
         if constexpr (StoresPolynomials)
         {
-          this->Slots[0].build(loc.Cell, this->Coefficients.get() + static_cast<size_t>(s) * Interp::Size);
+          this->Slots[0].build(loc.Cell, this->entry(s));
         }
         else
         {
@@ -114,7 +108,7 @@ public:
       if constexpr (StoresPolynomials)
       {
         // CwenoInterpolator::eval() on the stored coefficients.
-        return cweno::evalTensor<Dim, 4>(this->Coefficients.get() + static_cast<size_t>(s) * Interp::Size, loc.Local);
+        return cweno::evalTensor<Dim, 4>(this->entry(s), loc.Local);
       }
       else
       {
@@ -149,12 +143,109 @@ public:
     }
   }
 
+  /// Points evaluated together by evaluate().
+  static constexpr int PointLanes = 4;
+
+  /// values[l] = (*this)(points[l]) for l < count <= PointLanes, the same values and
+  /// counts. With stored CWENO polynomials the missing cells are built together,
+  /// in the SIMD lanes of CwenoInterpolator::buildLanes() (Documentation/Profile.md:
+  /// one build waits on its long dependency chains, several overlap); when two
+  /// of the points need one entry for different cells, one after the other.
+  void evaluate(int count, const double* const* points, double* values)
+  {
+    if constexpr (StoresPolynomials)
+    {
+      std::array<CellLocation<Dim>, PointLanes> loc;
+      std::array<Index, PointLanes> key{};
+      std::array<int, PointLanes> slot{};
+      for (int l = 0; l < count; ++l)
+      {
+        loc[l] = locate(*this->Spec, points[l]);
+        key[l] = this->keyOf(loc[l].Cell);
+        slot[l] = this->slotOf(key[l]);
+        for (int m = 0; m < l; ++m)
+        {
+          if (slot[m] == slot[l] && key[m] != key[l])
+          {
+            this->evaluateEach(count, points, values);
+            return;
+          }
+        }
+      }
+      std::array<std::array<Index, Dim>, Interp::CellLanes> cells;
+      std::array<double*, Interp::CellLanes> to;
+      int missing = 0;
+      for (int l = 0; l < count; ++l)
+      {
+        if (this->Keys[slot[l]] != key[l]) // the first of the points in this cell
+        {
+          this->Keys[slot[l]] = key[l];
+          cells[missing] = loc[l].Cell;
+          to[missing++] = this->entry(slot[l]);
+        }
+      }
+      this->Builds += missing;
+      this->Evaluations += count;
+      if (missing == 1)
+      {
+        this->Slots[0].build(cells[0], to[0]);
+      }
+      else if (missing > 1)
+      {
+        double spare[Interp::Size];
+        for (int l = missing; l < Interp::CellLanes; ++l) // unused lanes repeat a cell
+        {
+          cells[l] = cells[0];
+          to[l] = spare;
+        }
+        this->Slots[0].buildLanes(cells.data(), to.data());
+      }
+      for (int l = 0; l < count; ++l)
+      {
+        values[l] = cweno::evalTensor<Dim, 4>(this->entry(slot[l]), loc[l].Local);
+      }
+    }
+    else
+    {
+      this->evaluateEach(count, points, values);
+    }
+  }
+
   /// prepare() calls so far.
   double builds() const { return this->Builds; }
   /// Interpolations so far.
   double evaluations() const { return this->Evaluations; }
 
 private:
+  Index keyOf(const std::array<Index, Dim>& cell) const
+  {
+    Index key = 0;
+    for (int a = 0; a < Dim; ++a)
+    {
+      key += cell[a] * this->KeyStride[a];
+    }
+    return key;
+  }
+
+  /// The hashed table's entry of a cell key.
+  static int slotOf(Index key)
+  {
+    // Fibonacci hashing: neighbouring cells (also across rows) land in different entries.
+    constexpr int shift = 64 - detail::log2Exact(K);
+    return static_cast<int>((static_cast<std::uint64_t>(key) * 0x9E3779B97F4A7C15ULL) >> shift);
+  }
+
+  /// The stored polynomial of entry s.
+  double* entry(int s) { return this->Coefficients.get() + static_cast<size_t>(s) * Interp::Size; }
+
+  void evaluateEach(int count, const double* const* points, double* values)
+  {
+    for (int l = 0; l < count; ++l)
+    {
+      values[l] = (*this)(points[l]);
+    }
+  }
+
   const GridSpec<Dim>* Spec;
   std::vector<Interp> Slots;
   std::unique_ptr<double[]> Coefficients;

@@ -26,6 +26,7 @@
 #include "sltk/interp/CwenoPolynomial.h"
 #include "sltk/interp/CwenoWeights.h"
 #include "sltk/interp/Interpolator.h"
+#include "sltk/interp/Lanes.h"
 
 #include <cassert>
 #include <cmath>
@@ -74,39 +75,29 @@ public:
     {
       u[q] = p[this->StencilOffset[q]];
     }
-    // The 1D coefficients of every line, from which all 1 + 2^D polynomials are read.
-    double table[cweno::TableSize<D>];
-    cweno::stencilTable<D>(u, table);
-    if constexpr (V == CwenoVariant::Optimal)
+    this->polynomialOf(u, coef, this->Osc.data(), this->Omega.data());
+  }
+
+  /// build() of the L = CellLanes cells `cells[l]` into coef[l], one cell per
+  /// SIMD lane (Lanes.h), each lane with build()'s operations in its order: the
+  /// same coefficients bit for bit (TestCweno.cxx), several builds overlapping
+  /// (Documentation/Profile.md). weights() and indicators() are not set.
+  void buildLanes(const std::array<Index, D>* cells, double* const* coef) const
+  {
+#if defined(SLTK_LANES_AVX2)
+    if (lanes::hasAvx2())
     {
-      this->Omega = cweno::LinearWeights<D>::values();
-      for (int q = 0; q < Size; ++q)
-      {
-        coef[q] = table[OptimalIndex[q]];
-      }
+      this->buildLanesAvx2(cells, coef);
+      return;
     }
-    else
-    {
-      this->computeIndicators(table);
-      this->Omega = cweno::nonlinearWeights<D, V>(this->Osc, this->Epsilon);
-      // (3.11) + (3.15)/(3.16) folded into one set of coefficients:
-      // P_rec = (omega_0 / d_0) P_opt + sum_k (omega_k - omega_0 d_k / d_0) P_k.
-      constexpr double d0 = cweno::LinearWeights<D>::Optimal;
-      constexpr double dk = cweno::LinearWeights<D>::Octant;
-      const double scale = this->Omega[0] / d0;
-      for (int q = 0; q < Size; ++q)
-      {
-        coef[q] = scale * table[OptimalIndex[q]];
-      }
-      for (int k = 0; k < Octants; ++k)
-      {
-        const double beta = this->Omega[1 + k] - scale * dk;
-        for (int q = 0; q < LowSize; ++q)
-        {
-          coef[cweno::quadraticToCubicIndex<D>(q)] += beta * table[OctantIndex[k][q]];
-        }
-      }
-    }
+#endif
+    this->buildLanesAny(cells, coef);
+  }
+
+  /// buildLanes() without the AVX2 lanes (the SSE2 pairs on x86-64), for the tests.
+  void buildLanesAny(const std::array<Index, D>* cells, double* const* coef) const
+  {
+    this->lanesOf(cells, coef);
   }
 
   void prepareIfNeeded(const std::array<Index, D>& cell)
@@ -118,17 +109,35 @@ public:
   }
 
   /// P_rec at local coordinates t in [0, 1]^D of the prepared cell.
-  double eval(const std::array<double, D>& t) const { return cweno::evalTensor<D, 4>(this->Coef.data(), t); }
+  double eval(const std::array<double, D>& t) const
+  {
+    return cweno::evalTensor<D, 4>(this->Coef.data(), t);
+  }
 
   /// Nonlinear weights of the prepared cell: [0] the optimal polynomial, [1 + k]
   /// octant k (bit a of k set: the sub-stencil on the high side along axis a).
-  const Weights& weights() const { return this->Omega; }
+  const Weights& weights() const
+  {
+    return this->Omega;
+  }
   /// Indicators of the prepared cell, same order (zero for CwenoVariant::Optimal).
-  const Weights& indicators() const { return this->Osc; }
+  const Weights& indicators() const
+  {
+    return this->Osc;
+  }
   /// Monomial coefficients of P_rec in local coordinates (CwenoPolynomial.h layout).
-  const std::array<double, Size>& coefficients() const { return this->Coef; }
-  double epsilon() const { return this->Epsilon; }
-  static constexpr Weights linearWeights() { return cweno::LinearWeights<D>::values(); }
+  const std::array<double, Size>& coefficients() const
+  {
+    return this->Coef;
+  }
+  double epsilon() const
+  {
+    return this->Epsilon;
+  }
+  static constexpr Weights linearWeights()
+  {
+    return cweno::LinearWeights<D>::values();
+  }
 
   /// Delta of (3.24): the cell diameter.
   static double cellDiameter(const GridSpec<D>& spec)
@@ -141,7 +150,85 @@ public:
     return std::sqrt(s);
   }
 
+  static constexpr int CellLanes = 4; ///< cells built at once by buildLanes()
+
 private:
+  using Vec = lanes::Lanes<CellLanes>;
+
+#if defined(SLTK_LANES_AVX2)
+  SLTK_LANES_AVX2_TARGET void buildLanesAvx2(const std::array<Index, D>* cells, double* const* coef) const
+  {
+    this->lanesOf(cells, coef);
+  }
+#endif
+
+  /// buildLanes(): the stencils gathered lane by lane, polynomialOf() on the vectors.
+  SLTK_LANES_INLINE void lanesOf(const std::array<Index, D>* cells, double* const* coef) const
+  {
+    alignas(sizeof(Vec)) double u[Size][CellLanes];
+    for (int l = 0; l < CellLanes; ++l)
+    {
+      const double* p = this->Field->pointer(cells[l]);
+      for (int q = 0; q < Size; ++q)
+      {
+        u[q][l] = p[this->StencilOffset[q]];
+      }
+    }
+    alignas(sizeof(Vec)) double c[Size][CellLanes];
+    Vec osc[WeightCount];
+    Vec omega[WeightCount];
+    // Read in place as vectors (the lane types may alias double).
+    this->polynomialOf(reinterpret_cast<const Vec*>(&u[0][0]), reinterpret_cast<Vec*>(&c[0][0]), osc, omega);
+    for (int l = 0; l < CellLanes; ++l)
+    {
+      for (int q = 0; q < Size; ++q)
+      {
+        coef[l][q] = c[q][l];
+      }
+    }
+  }
+
+  /// The coefficients of P_rec from the stencil data u (4^D values, x
+  /// fastest), with the indicators and weights of the cell; T is double or a
+  /// vector of lanes, one cell per lane.
+  template <class T>
+  SLTK_LANES_INLINE void polynomialOf(const T* u, T* coef, T* osc, T* omega) const
+  {
+    // The 1D coefficients of every line, from which all 1 + 2^D polynomials are read.
+    T table[cweno::TableSize<D>];
+    cweno::stencilTable<D>(u, table);
+    if constexpr (V == CwenoVariant::Optimal)
+    {
+      cweno::nonlinearWeightsOf<D, V>(osc, this->Epsilon, omega); // the linear weights
+      for (int q = 0; q < Size; ++q)
+      {
+        coef[q] = table[OptimalIndex[q]];
+      }
+    }
+    else
+    {
+      this->computeIndicators(table, osc);
+      cweno::nonlinearWeightsOf<D, V>(osc, this->Epsilon, omega);
+      // (3.11) + (3.15)/(3.16) folded into one set of coefficients:
+      // P_rec = (omega_0 / d_0) P_opt + sum_k (omega_k - omega_0 d_k / d_0) P_k.
+      constexpr double d0 = cweno::LinearWeights<D>::Optimal;
+      constexpr double dk = cweno::LinearWeights<D>::Octant;
+      const T scale = omega[0] / d0;
+      for (int q = 0; q < Size; ++q)
+      {
+        coef[q] = scale * table[OptimalIndex[q]];
+      }
+      for (int k = 0; k < Octants; ++k)
+      {
+        const T beta = omega[1 + k] - scale * dk;
+        for (int q = 0; q < LowSize; ++q)
+        {
+          coef[cweno::quadraticToCubicIndex<D>(q)] += beta * table[OctantIndex[k][q]];
+        }
+      }
+    }
+  }
+
   using OptimalIndicator = cweno::IndicatorForm<D, 4>;
   using OctantIndicator = cweno::IndicatorForm<D, 3>;
   static constexpr std::array<int, Size> OptimalIndex = cweno::optimalIndices<D>();
@@ -157,17 +244,18 @@ private:
 
   /// The indicators (3.12) of P_opt and of the 2^D octant polynomials, from the
   /// table entries of their monomials of degree >= 2; the octants side by side.
-  void computeIndicators(const double* table)
+  template <class T>
+  SLTK_LANES_INLINE void computeIndicators(const T* table, T* osc) const
   {
     constexpr auto optActive = OptimalIndicator::activeMonomials();
     constexpr auto lowActive = OctantIndicator::activeMonomials();
-    double y[OptimalIndicator::ActiveCount];
+    T y[OptimalIndicator::ActiveCount];
     for (int i = 0; i < OptimalIndicator::ActiveCount; ++i)
     {
       y[i] = table[OptimalIndex[optActive[i]]];
     }
-    this->Osc[0] = this->OptimalForm.ofActive(y);
-    double low[OctantIndicator::ActiveCount * Octants];
+    this->OptimalForm.template ofActiveLanes<1>(y, osc);
+    T low[OctantIndicator::ActiveCount * Octants];
     for (int i = 0; i < OctantIndicator::ActiveCount; ++i)
     {
       for (int k = 0; k < Octants; ++k)
@@ -175,7 +263,7 @@ private:
         low[i * Octants + k] = table[OctantIndex[k][lowActive[i]]];
       }
     }
-    this->OctantForm.template ofActiveLanes<Octants>(low, this->Osc.data() + 1);
+    this->OctantForm.template ofActiveLanes<Octants>(low, osc + 1);
   }
 
   const GridField<D, double>* Field;

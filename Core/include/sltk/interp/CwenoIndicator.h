@@ -20,6 +20,7 @@
 /// Appendix and by bench/derive/derive_cweno.py.
 
 #include "sltk/interp/CwenoPolynomial.h"
+#include "sltk/interp/Lanes.h"
 
 #include <array>
 #include <cmath>
@@ -177,12 +178,13 @@ public:
   /// U the upper triangle of M on the active monomials, off-diagonal entries doubled.
   /// The r_i are accumulated column by column, all in registers once the loops
   /// are unrolled (no horizontal sums, no serial chain through memory); each
-  /// polynomial gets the same operations in the same order, one per lane.
-  template <int L>
-  void ofActiveLanes(const double* y, double* osc) const
+  /// polynomial gets the same operations in the same order, one per lane. T is
+  /// double or a SIMD vector (Lanes.h) holding that polynomial of several cells.
+  template <int L, class T = double>
+  SLTK_LANES_INLINE void ofActiveLanes(const T* y, T* osc) const
   {
     const double* u = this->Upper.data();
-    double r[ActiveCount][L] = {};
+    T r[ActiveCount][L] = {};
 #pragma GCC unroll 16
     for (int j = 0; j < ActiveCount; ++j)
     {
@@ -198,7 +200,7 @@ public:
     }
     for (int l = 0; l < L; ++l)
     {
-      double s = 0.0;
+      T s = {};
 #pragma GCC unroll 16
       for (int i = 0; i < ActiveCount; ++i)
       {

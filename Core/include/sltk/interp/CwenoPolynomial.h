@@ -21,6 +21,7 @@
 /// every polynomial are entries of the 7^D tensor of the 1D coefficients.
 
 #include "sltk/interp/Interpolator.h"
+#include "sltk/interp/Lanes.h"
 
 #include <array>
 
@@ -51,16 +52,19 @@ constexpr int LineIndex[3][4] = {
   { Value, Right1, Right2, -1 },
 };
 
-/// The seven coefficients of the line (a, b, c, d) at t = -1, 0, 1, 2, into out[o * stride].
-inline void lineCoefficients(double a, double b, double c, double d, double* out, int stride)
+/// The seven coefficients of the line (a, b, c, d) at t = -1, 0, 1, 2, into
+/// out[o * stride]. T is double or a SIMD vector of lanes (Lanes.h), each lane
+/// with the same operations in the same order.
+template <class T>
+SLTK_LANES_INLINE void lineCoefficients(const T& a, const T& b, const T& c, const T& d, T* out, int stride)
 {
-  const double eL = a - 2.0 * b + c; // second increments of the two parabolas
-  const double eR = b - 2.0 * c + d;
-  const double jump = c - b;
-  const double second = 0.5 * eL;
-  const double cubic3 = (eR - eL) * (1.0 / 6.0);
-  const double right2 = 0.5 * eR;
-  const double left1 = jump - second;
+  const T eL = a - 2.0 * b + c; // second increments of the two parabolas
+  const T eR = b - 2.0 * c + d;
+  const T jump = c - b;
+  const T second = 0.5 * eL;
+  const T cubic3 = (eR - eL) * (1.0 / 6.0);
+  const T right2 = 0.5 * eR;
+  const T left1 = jump - second;
   out[Value * stride] = b;
   out[Cubic1 * stride] = left1 - cubic3;
   out[Second * stride] = second;
@@ -78,15 +82,15 @@ namespace detail
 {
 /// One axis of stencilTable(): the lines along axis A of a tensor whose axes
 /// below A already hold the 7 coefficients and the others the 4 values.
-template <int D, int A>
-inline void tablePass(const double* in, double* out)
+template <int D, int A, class T>
+SLTK_LANES_INLINE void tablePass(const T* in, T* out)
 {
   constexpr int lower = ipow(LineCount, A); // stride of axis A
   constexpr int upper = ipow(4, D - 1 - A);
   for (int h = 0; h < upper; ++h)
   {
-    const double* src = in + h * 4 * lower;
-    double* dst = out + h * LineCount * lower;
+    const T* src = in + h * 4 * lower;
+    T* dst = out + h * LineCount * lower;
     for (int l = 0; l < lower; ++l) // consecutive lines: vectorisable
     {
       lineCoefficients(src[l], src[l + lower], src[l + 2 * lower], src[l + 3 * lower], dst + l, lower);
@@ -94,8 +98,8 @@ inline void tablePass(const double* in, double* out)
   }
 }
 
-template <int D, int A>
-inline void tablePasses(const double* in, double* table)
+template <int D, int A, class T>
+SLTK_LANES_INLINE void tablePasses(const T* in, T* table)
 {
   if constexpr (A == D - 1)
   {
@@ -103,7 +107,7 @@ inline void tablePasses(const double* in, double* table)
   }
   else
   {
-    double next[ipow(LineCount, A + 1) * ipow(4, D - 1 - A)];
+    T next[ipow(LineCount, A + 1) * ipow(4, D - 1 - A)];
     tablePass<D, A>(in, next);
     tablePasses<D, A + 1>(next, table);
   }
@@ -111,9 +115,10 @@ inline void tablePasses(const double* in, double* table)
 } // namespace detail
 
 /// The 7^D tensor of 1D coefficients (LineCoefficient along each axis, x
-/// fastest) of the 4^D stencil data u (x fastest, t = -1..2 per axis).
-template <int D>
-inline void stencilTable(const double* u, double* table)
+/// fastest) of the 4^D stencil data u (x fastest, t = -1..2 per axis); T as
+/// in lineCoefficients().
+template <int D, class T>
+SLTK_LANES_INLINE void stencilTable(const T* u, T* table)
 {
   detail::tablePasses<D, 0>(u, table);
 }

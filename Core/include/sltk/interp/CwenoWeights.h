@@ -4,6 +4,8 @@
 /// Linear and nonlinear weights of the CWENO and CWENOZ operators (Definition 3.1):
 /// one optimal polynomial (k = 0) and 2^D octant polynomials (k = 1..2^D).
 
+#include "sltk/interp/Lanes.h"
+
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -51,57 +53,81 @@ struct LinearWeights
 /// (3.22) in 1D, (3.27) in 2D; in 3D the eight octant indicators share the
 /// O(h^2) term with OSC_0 and their O(h^3) terms are odd under the reflections
 /// that swap octants, so tau = O(h^4) (checked by bench/derive/derive_cweno.py --taylor).
-template <size_t Count>
-inline double globalIndicator(const std::array<double, Count>& osc)
+/// T is double or a SIMD vector of lanes (Lanes.h), each lane with the same
+/// operations in the same order.
+/// (Into `tau`: a vector returned by value would change the ABI.)
+template <int Count, class T>
+SLTK_LANES_INLINE void globalIndicatorOf(const T* osc, T& tau)
 {
-  double s = static_cast<double>(Count - 1) * osc[0];
-  for (size_t k = 1; k < Count; ++k)
+  T s = static_cast<double>(Count - 1) * osc[0];
+  for (int k = 1; k < Count; ++k)
   {
     s -= osc[k];
   }
-  return std::fabs(s);
+  lanes::absOf(s, tau);
 }
 
-/// Nonlinear weights omega_k from the indicators osc (k = 0: optimal polynomial)
-/// with l = 2 and the given epsilon: (3.13) for CWENO, (3.14) for CWENOZ.
-template <int D, CwenoVariant V>
-inline std::array<double, LinearWeights<D>::Count> nonlinearWeights(
-  const std::array<double, LinearWeights<D>::Count>& osc, double epsilon)
+template <size_t Count>
+inline double globalIndicator(const std::array<double, Count>& osc)
+{
+  double tau = 0.0;
+  globalIndicatorOf<static_cast<int>(Count)>(osc.data(), tau);
+  return tau;
+}
+
+/// Nonlinear weights w[k] from the indicators osc[k] (k = 0: optimal polynomial)
+/// with l = 2 and the given epsilon: (3.13) for CWENO, (3.14) for CWENOZ;
+/// T as in globalIndicatorOf().
+template <int D, CwenoVariant V, class T>
+SLTK_LANES_INLINE void nonlinearWeightsOf(const T* osc, double epsilon, T* w)
 {
   constexpr int count = LinearWeights<D>::Count;
   constexpr std::array<double, count> d = LinearWeights<D>::values();
-  std::array<double, count> w{};
   if constexpr (V == CwenoVariant::Optimal)
   {
-    return d;
+    for (int k = 0; k < count; ++k)
+    {
+      w[k] = T{} + d[k];
+    }
+    return;
   }
   else if constexpr (V == CwenoVariant::Cweno)
   {
     for (int k = 0; k < count; ++k)
     {
-      const double s = osc[k] + epsilon;
+      const T s = osc[k] + epsilon;
       w[k] = d[k] / (s * s); // (3.13), l = 2
     }
   }
   else
   {
-    const double tau = globalIndicator(osc);
+    T tau;
+    globalIndicatorOf<count>(osc, tau);
     for (int k = 0; k < count; ++k)
     {
-      const double r = tau / (osc[k] + epsilon);
+      const T r = tau / (osc[k] + epsilon);
       w[k] = d[k] * (1.0 + r * r); // (3.14), l = 2
     }
   }
-  double sum = 0.0;
-  for (int k = 0; k < count; ++k)
+  T sum = w[0];
+  for (int k = 1; k < count; ++k)
   {
     sum += w[k];
   }
-  const double inverse = 1.0 / sum;
+  const T inverse = 1.0 / sum;
   for (int k = 0; k < count; ++k)
   {
     w[k] *= inverse;
   }
+}
+
+/// nonlinearWeightsOf() on arrays of doubles.
+template <int D, CwenoVariant V>
+inline std::array<double, LinearWeights<D>::Count> nonlinearWeights(
+  const std::array<double, LinearWeights<D>::Count>& osc, double epsilon)
+{
+  std::array<double, LinearWeights<D>::Count> w{};
+  nonlinearWeightsOf<D, V>(osc.data(), epsilon, w.data());
   return w;
 }
 
