@@ -414,8 +414,9 @@ int Reconstruct::run() const
   }
   if (this->Verbose)
   {
-    std::fprintf(stderr, "read       %lld points in %.3f s: at most %lld parsed and %lld held by a rank\n",
-      counts.Total, readSeconds, counts.ReadMax, counts.HeldMax);
+    std::fprintf(stderr,
+      "read       %lld points in %.3f s (parsed in %.3f s): at most %lld parsed and %lld held by a rank\n",
+      counts.Total, readSeconds, counts.ParseSeconds, counts.ReadMax, counts.HeldMax);
   }
   double bounds[6];
   cloud->GetBounds(bounds);
@@ -510,6 +511,7 @@ int Reconstruct::run() const
     nlohmann::ordered_json summary = { { "cloud", path },
       { "points", static_cast<long long>(cloud->GetNumberOfPoints()) }, { "points_total", counts.Total },
       { "points_read_max", counts.ReadMax }, { "points_held_max", counts.HeldMax }, { "read_seconds", readSeconds },
+      { "parse_seconds", counts.ParseSeconds },
       { "outliers_removed", static_cast<long long>(result.Cleaning.OutliersRemoved) },
       { "thinning_cell", result.Cleaning.ThinningCell },
       { "points_reconstructed", static_cast<long long>(result.Cleaning.OutputPoints) }, { "h_P", result.CloudSpacing },
@@ -574,9 +576,10 @@ Command addReconstructCommand(CLI::App& sltk)
     ->option_text("FILE");
   app
     ->add_option("--json", command->Json,
-      "summary: points, points_total, points_read_max and points_held_max (the\nmost points a rank parsed from the "
-      "file "
-      "and holds), read_seconds,\npoints_reconstructed, outliers_removed, cdx, kp,\n"
+      "summary: points, points_total, points_read_max and points_held_max (the\n"
+      "most points a rank parsed from the file and holds), read_seconds\n"
+      "(parse_seconds of it: the shares' parse, before the gather),\n"
+      "points_reconstructed, outliers_removed, cdx, kp,\n"
       "automatic_choices, recoveries, warnings, fits_cloud, pieces (components of the\ninside), cloud_components "
       "(the cloud's, points within 4 local spacings linked),\nseconds, peak_memory_mb, ranks, surface_pieces, "
       "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points, misfit_points, merged_nodes; "

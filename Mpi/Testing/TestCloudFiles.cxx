@@ -174,7 +174,8 @@ void put(std::string& bytes, T value, bool bigEndian)
 }
 
 /// Reads `bytes` as a PLY in shares: its layout's verdict, and the gathered points.
-bool readPly(const std::string& name, const std::string& bytes, Points& gathered, std::int64_t& total)
+bool readPly(
+  const std::string& name, const std::string& bytes, Points& gathered, std::int64_t& total, bool* wide = nullptr)
 {
   auto comm = world();
   const std::string path = sharedFile(*comm, name, bytes);
@@ -188,6 +189,10 @@ bool readPly(const std::string& name, const std::string& bytes, Points& gathered
     gathered = comm->allGatherV(share.Points);
     total = share.Total;
   }
+  if (wide)
+  {
+    *wide = layout.Wide;
+  }
   removeShared(*comm, path);
   return split;
 }
@@ -197,26 +202,41 @@ TEST(CloudFiles, BinaryPlyByVertexRecords)
 {
   for (bool big : { false, true })
   {
-    // y as int, then x as double, then z as float: the coordinates stored as float (vtkPLYReader's points).
+    // y as int, then x as double, then z as float: the file's values (wide: the CLI keeps them in double).
     std::string records;
     Points expected;
     for (int i = 0; i < 37; ++i)
     {
       const double x = 0.1 * i + 1e-9, z = -0.3 * i;
-      put<std::int32_t>(records, i * 7, big);
+      put<std::int32_t>(records, i * 7 - 100, big);
       put<double>(records, x, big);
       put<float>(records, static_cast<float>(z), big);
-      expected.push_back({ double(float(x)), double(i * 7), double(float(z)) });
+      expected.push_back({ x, double(i * 7 - 100), double(float(z)) });
     }
     Points gathered;
     std::int64_t total = 0;
+    bool wide = false;
     ASSERT_TRUE(readPly("points.ply",
       plyOf(big ? "binary_big_endian" : "binary_little_endian", 37,
         "property int y\nproperty double x\nproperty float z\n", records),
-      gathered, total));
+      gathered, total, &wide));
     EXPECT_EQ(gathered, expected) << (big ? "big" : "little") << " endian";
     EXPECT_EQ(total, 37);
+    EXPECT_TRUE(wide);
   }
+  // Float and short coordinates: not wide (the CLI stores them in float, as vtkPLYReader does).
+  std::string records;
+  put<float>(records, 0.1f, false);
+  put<std::int16_t>(records, -3, false);
+  put<float>(records, 2.5f, false);
+  Points gathered;
+  std::int64_t total = 0;
+  bool wide = true;
+  ASSERT_TRUE(readPly("narrow.ply",
+    plyOf("binary_little_endian", 1, "property float x\nproperty short y\nproperty float z\n", records), gathered,
+    total, &wide));
+  EXPECT_EQ(gathered, Points({ { double(0.1f), -3.0, 2.5 } }));
+  EXPECT_FALSE(wide);
 }
 
 TEST(CloudFiles, PlyWithMoreThanPointsIsLeftToTheWholeRead)

@@ -16,7 +16,7 @@ import struct
 import subprocess
 import sys
 
-from vtkmodules.vtkCommonCore import vtkPoints, VTK_DOUBLE, VTK_FLOAT
+from vtkmodules.vtkCommonCore import vtkPoints, VTK_DOUBLE
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
@@ -51,9 +51,9 @@ def reconstruct(ranks, cloud, tag):
     return data, (json.load(open(summary)) if os.path.exists(summary) else {})
 
 
-def write_vtp(name, points, float_points):
+def write_vtp(name, points):
     p = vtkPoints()
-    p.SetDataType(VTK_FLOAT if float_points else VTK_DOUBLE)
+    p.SetDataType(VTK_DOUBLE)
     for x in points:
         p.InsertNextPoint(*x)
     cloud = vtkPolyData()
@@ -82,16 +82,17 @@ for i, x in enumerate(points):
 text = path("cloud.xyz")
 with open(text, "wb") as f:
     f.write("\r\n".join(lines).encode())
-# Binary PLY of the points alone (big endian, double x and z, float y): vtkPLYReader's points are float.
+# Binary PLY of the points alone (big endian, double x and z, float y): the serial reader keeps double
+# coordinates in double (Apps/sltk/ReadVtkFile.h), y is the file's float.
 ply = path("cloud.ply")
 with open(ply, "wb") as f:
     f.write(b"ply\nformat binary_big_endian 1.0\nelement vertex %d\nproperty double x\nproperty float y\n"
             b"property double z\nend_header\n" % N)
     for x in points:
         f.write(struct.pack(">dfd", *x))
-rounded = [tuple(struct.unpack("<3f", struct.pack("<3f", *x))) for x in points]
+mixed = [(x, struct.unpack("<f", struct.pack("<f", y))[0], z) for x, y, z in points]
 
-for cloud, whole in ((text, write_vtp("cloud.vtp", points, False)), (ply, write_vtp("float.vtp", rounded, True))):
+for cloud, whole in ((text, write_vtp("cloud.vtp", points)), (ply, write_vtp("mixed.vtp", mixed))):
     kind = os.path.basename(cloud)
     split, summary = reconstruct(2, cloud, kind + ".2")
     reference, whole_summary = reconstruct(2, whole, kind + ".whole.2")

@@ -118,6 +118,8 @@ bool coordinateLayout(const PlyElement& vertex, PlyVertexLayout& layout)
     offset += plyTypeBytes(type, layout.Type[axis]);
   }
   layout.RecordBytes = offset;
+  layout.Wide =
+    std::any_of(layout.Type.begin(), layout.Type.end(), [](char t) { return t == 'd' || t == 'i' || t == 'I'; });
   layout.Vertices = vertex.Count;
   return found == 7;
 }
@@ -130,7 +132,7 @@ double valueOf(const unsigned char* bytes)
   return static_cast<double>(value);
 }
 
-/// One coordinate of a record, as vtkPLYReader stores it (float).
+/// One coordinate of a record, the file's value.
 double coordinate(const unsigned char* at, char type, bool swap)
 {
   unsigned char b[8];
@@ -143,15 +145,14 @@ double coordinate(const unsigned char* at, char type, bool swap)
   {
     std::reverse(b, b + bytes);
   }
-  const double v = type == 'c' ? valueOf<std::int8_t>(b)
-    : type == 'C'              ? valueOf<std::uint8_t>(b)
-    : type == 's'              ? valueOf<std::int16_t>(b)
-    : type == 'S'              ? valueOf<std::uint16_t>(b)
-    : type == 'i'              ? valueOf<std::int32_t>(b)
-    : type == 'I'              ? valueOf<std::uint32_t>(b)
-    : type == 'f'              ? valueOf<float>(b)
-                               : valueOf<double>(b);
-  return static_cast<double>(static_cast<float>(v));
+  return type == 'c' ? valueOf<std::int8_t>(b)
+    : type == 'C'    ? valueOf<std::uint8_t>(b)
+    : type == 's'    ? valueOf<std::int16_t>(b)
+    : type == 'S'    ? valueOf<std::uint16_t>(b)
+    : type == 'i'    ? valueOf<std::int32_t>(b)
+    : type == 'I'    ? valueOf<std::uint32_t>(b)
+    : type == 'f'    ? valueOf<float>(b)
+                     : valueOf<double>(b);
 }
 
 bool littleEndianHost()

@@ -7,7 +7,8 @@
 /// element first, its properties exactly the scalars x, y and z (any types,
 /// any order), and every later element empty. Other PLY files (ASCII, normals,
 /// colours, faces) are read whole by the caller's reader (the CLI's vtkPLYReader),
-/// which gives the surface their point arrays.
+/// which gives the surface their point arrays. The header is read here only for
+/// the layout: the CLI has checked the file with its serial checks before.
 
 #include "sltk/cloud/CloudFileShares.h"
 #include "sltk/core/Status.h"
@@ -28,6 +29,9 @@ struct PlyVertexLayout
   std::array<int, 3> Offset{}; ///< x, y and z in a record
   std::array<char, 3> Type{};  ///< their types: 'c' 'C' 's' 'S' 'i' 'I' 'f' 'd' (int8 ... double)
   bool BigEndian = false;
+  /// A coordinate is double or a 32-bit integer: the CLI's serial reader keeps such
+  /// coordinates in double (Apps/sltk/ReadVtkFile.h), the others in float (vtkPLYReader's).
+  bool Wide = false;
 };
 
 /// Whether the PLY whose header `in` starts with, of `bytes` bytes, can be read
@@ -36,8 +40,9 @@ struct PlyVertexLayout
 bool plyVertexLayout(std::istream& in, std::int64_t bytes, PlyVertexLayout& layout);
 
 /// Collective. This rank's share of the vertex records of the PLY `path` of
-/// `layout`, each coordinate rounded to float as vtkPLYReader stores it (its
-/// points are float), in file order; every rank returns the same status.
+/// `layout`, in file order, each coordinate the file's value (exact in double;
+/// in float too unless layout.Wide); every rank returns the same status. The
+/// caller runs the serial reader's checks of the file first (Apps/sltk/CheckPly.h).
 Status readPlyCloudShare(
   const std::string& path, const PlyVertexLayout& layout, const Communicator& comm, CloudShare& share);
 
