@@ -8,7 +8,7 @@
 #include "MpiSession.h"
 #include "OutputPaths.h"
 #include "ProgressBar.h"
-#include "ReadPointCloud.h"
+#include "ReadCloudShares.h"
 #include "RenderPng.h"
 #include "SurfaceDistance.h"
 #include "SurfacePieces.h"
@@ -403,10 +403,20 @@ int Reconstruct::run() const
   const auto start = std::chrono::steady_clock::now();
   const std::string& path = this->Cloud;
   vtkSmartPointer<vtkPointSet> cloud;
-  sltk::Status status = readPointCloud(path, cloud);
+  CloudReadCounts counts;
+  sltk::Status status =
+    readCloudOnRanks(path, cloud, counts); // each rank its share, then all of it (ReadCloudShares.h)
+  const double readSeconds =
+    MpiSession::maxOverRanks(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   if (MpiSession::maxOverRanks(status.isOk() ? 0.0 : 1.0) > 0.0) // every rank stops, none waits in the filter
   {
     return fail(status.isOk() ? path + ": another rank could not read the cloud" : status.message());
+  }
+  if (this->Verbose)
+  {
+    std::fprintf(stderr,
+      "read       %lld points in %.3f s (parsed in %.3f s): at most %lld parsed and %lld held by a rank\n",
+      counts.Total, readSeconds, counts.ParseSeconds, counts.ReadMax, counts.HeldMax);
   }
   double bounds[6];
   cloud->GetBounds(bounds);
@@ -499,7 +509,9 @@ int Reconstruct::run() const
   if (this->given("--json"))
   {
     nlohmann::ordered_json summary = { { "cloud", path },
-      { "points", static_cast<long long>(cloud->GetNumberOfPoints()) },
+      { "points", static_cast<long long>(cloud->GetNumberOfPoints()) }, { "points_total", counts.Total },
+      { "points_read_max", counts.ReadMax }, { "points_held_max", counts.HeldMax }, { "read_seconds", readSeconds },
+      { "parse_seconds", counts.ParseSeconds },
       { "outliers_removed", static_cast<long long>(result.Cleaning.OutliersRemoved) },
       { "thinning_cell", result.Cleaning.ThinningCell },
       { "points_reconstructed", static_cast<long long>(result.Cleaning.OutputPoints) }, { "h_P", result.CloudSpacing },
@@ -565,7 +577,10 @@ Command addReconstructCommand(CLI::App& sltk)
     ->option_text("FILE");
   app
     ->add_option("--json", command->Json,
-      "summary: points, points_reconstructed, outliers_removed, cdx, kp,\n"
+      "summary: points, points_total, points_read_max and points_held_max (the\n"
+      "most points a rank parsed from the file and holds), read_seconds\n"
+      "(parse_seconds of it: the shares' parse, before the gather),\n"
+      "points_reconstructed, outliers_removed, cdx, kp,\n"
       "automatic_choices, recoveries, warnings, fits_cloud, separate_groups (a few groups\nfar apart that need "
       "their own runs), pieces (components of the\ninside), cloud_components "
       "(the cloud's, points within 4 local spacings linked),\nseconds, peak_memory_mb, ranks, surface_pieces, "

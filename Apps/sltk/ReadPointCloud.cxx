@@ -47,12 +47,17 @@ sltk::Status readWith(const std::string& path, vtkSmartPointer<vtkPointSet>& clo
 }
 } // namespace
 
+bool isTextCloudExtension(const std::string& extension)
+{
+  return extension == "xyz" || extension == "txt" || extension == "csv" || extension == "pts";
+}
+
 sltk::Status readPointCloud(const std::string& path, vtkSmartPointer<vtkPointSet>& cloud)
 {
   cloud = nullptr;
   SLTK_RETURN_IF_ERROR(sltk::vtkbridge::checkCloudFile(path));
   const std::string ext = extensionOf(path);
-  if (ext == "xyz" || ext == "txt" || ext == "csv" || ext == "pts")
+  if (isTextCloudExtension(ext))
   {
     return readText(path, cloud);
   }

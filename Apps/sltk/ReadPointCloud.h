@@ -21,4 +21,7 @@ namespace sltkcli
 
 sltk::Status readPointCloud(const std::string& path, vtkSmartPointer<vtkPointSet>& cloud);
 
+/// Whether `extension` (extensionOf's, FileNames.h) names a text cloud: xyz, txt, csv or pts.
+bool isTextCloudExtension(const std::string& extension);
+
 } // namespace sltkcli

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/exec/Communicator.h"
+#include "sltk/exec/FirstError.h"
 
 #include <algorithm>
 #include <cstring>
@@ -8,35 +9,54 @@
 namespace sltk
 {
 
-Status Communicator::agree(const Status& local) const
+Status agreeOnFirstError(const Communicator& comm, const Status& local, int* root)
 {
-  const int ranks = this->size();
+  const int ranks = comm.size();
+  if (root)
+  {
+    *root = local.isOk() ? ranks : comm.rank();
+  }
   if (ranks == 1)
   {
     return local;
   }
   // The lowest failing rank, or `ranks` when every rank is ok.
   const std::int64_t first =
-    this->allReduce(static_cast<std::int64_t>(local.isOk() ? ranks : this->rank()), ReduceOp::Min);
+    comm.allReduce(static_cast<std::int64_t>(local.isOk() ? ranks : comm.rank()), ReduceOp::Min);
+  if (root)
+  {
+    *root = static_cast<int>(first);
+  }
   if (first == ranks)
   {
     return Status::ok();
   }
-  const int root = static_cast<int>(first);
+  const int from = static_cast<int>(first);
   std::int64_t header[2] = { static_cast<std::int64_t>(local.code()),
     static_cast<std::int64_t>(local.message().size()) };
-  this->broadcast(header, sizeof(header), root);
+  comm.broadcast(header, sizeof(header), from);
   std::string message(static_cast<size_t>(header[1]), '\0');
-  if (this->rank() == root)
+  if (comm.rank() == from)
   {
     message = local.message();
   }
   if (!message.empty())
   {
-    this->broadcast(&message[0], message.size(), root);
+    comm.broadcast(&message[0], message.size(), from);
   }
-  return Status(static_cast<StatusCode>(header[0]),
-    "rank " + std::to_string(root) + " of " + std::to_string(ranks) + ": " + message);
+  return Status(static_cast<StatusCode>(header[0]), message);
+}
+
+Status Communicator::agree(const Status& local) const
+{
+  int root = 0;
+  const Status first = agreeOnFirstError(*this, local, &root);
+  if (first.isOk() || this->size() == 1)
+  {
+    return first;
+  }
+  return Status(
+    first.code(), "rank " + std::to_string(root) + " of " + std::to_string(this->size()) + ": " + first.message());
 }
 
 namespace

@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "ReadCloudShares.h"
+
+#include "CheckPly.h"
+#include "FileNames.h"
+#include "ReadPointCloud.h"
+#include "SLTKCommunicator.h"
+
+#include "sltk/cloud/PlyCloudFile.h"
+#include "sltk/cloud/TextCloudFile.h"
+#include "sltk/exec/FirstError.h"
+
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkType.h>
+
+#include <chrono>
+#include <fstream>
+#include <memory>
+
+namespace sltkcli
+{
+
+namespace
+{
+/// Whether every rank finds `path` a binary PLY of points alone (PlyCloudFile.h), with its layout.
+/// Such a file passes the serial reader's checks first (CheckPly.h), with their messages, in `status`.
+bool splitPly(
+  const std::string& path, const sltk::Communicator& comm, sltk::PlyVertexLayout& layout, sltk::Status& status)
+{
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(0, std::ios::end);
+  const std::int64_t bytes = static_cast<std::int64_t>(in.tellg());
+  in.seekg(0);
+  const bool mine = in && sltk::plyVertexLayout(in, bytes, layout);
+  if (comm.anyRank(!mine))
+  {
+    return false;
+  }
+  status = sltk::agreeOnFirstError(comm, checkPlyFile(path));
+  return true;
+}
+
+/// The whole cloud from every rank's share, in rank order (the file's order),
+/// in the point type of the serial reader: double for text and wide PLY coordinates, else float.
+vtkSmartPointer<vtkPointSet> gatherShares(sltk::CloudShare& share, const sltk::Communicator& comm, int type)
+{
+  std::vector<std::array<double, 3>> all = comm.size() > 1 ? comm.allGatherV(share.Points) : std::move(share.Points);
+  share.Points = {};
+  vtkNew<vtkPoints> points;
+  points->SetDataType(type);
+  points->SetNumberOfPoints(static_cast<vtkIdType>(all.size()));
+  for (size_t i = 0; i < all.size(); ++i)
+  {
+    points->SetPoint(static_cast<vtkIdType>(i), all[i].data());
+  }
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(points);
+  return cloud;
+}
+} // namespace
+
+sltk::Status readCloudOnRanks(const std::string& path, vtkSmartPointer<vtkPointSet>& cloud, CloudReadCounts& counts)
+{
+  cloud = nullptr;
+  counts = CloudReadCounts();
+  std::unique_ptr<sltk::Communicator> comm;
+  SLTK_RETURN_IF_ERROR(sltk::vtkbridge::makeCommunicator(nullptr, comm));
+  SLTK_RETURN_IF_ERROR(sltk::agreeOnFirstError(*comm, sltk::checkCloudFile(path)));
+  const std::string ext = extensionOf(path);
+  const bool text = isTextCloudExtension(ext);
+  sltk::PlyVertexLayout layout;
+  sltk::Status checked;
+  if (!text && !(ext == "ply" && splitPly(path, *comm, layout, checked)))
+  {
+    const sltk::Status whole = readPointCloud(path, cloud); // every rank the whole file, as before
+    counts.Total = counts.ReadMax = counts.HeldMax = whole.isOk() ? cloud->GetNumberOfPoints() : 0;
+    return whole;
+  }
+  SLTK_RETURN_IF_ERROR(checked);
+  sltk::CloudShare share;
+  const auto start = std::chrono::steady_clock::now();
+  SLTK_RETURN_IF_ERROR(
+    text ? sltk::readTextCloudShare(path, *comm, share) : sltk::readPlyCloudShare(path, layout, *comm, share));
+  counts.ParseSeconds = comm->allReduce(
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), sltk::ReduceOp::Max);
+  counts.Total = share.Total;
+  counts.ReadMax = comm->allReduce(static_cast<std::int64_t>(share.Points.size()), sltk::ReduceOp::Max);
+  cloud = gatherShares(share, *comm, text || layout.Wide ? VTK_DOUBLE : VTK_FLOAT);
+  counts.HeldMax = comm->allReduce(static_cast<std::int64_t>(cloud->GetNumberOfPoints()), sltk::ReduceOp::Max);
+  return sltk::Status::ok();
+}
+
+} // namespace sltkcli
