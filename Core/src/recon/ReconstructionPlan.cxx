@@ -12,16 +12,13 @@
 #include "sltk/recon/AutomaticParameters.h"
 #include "sltk/recon/CloudInitialData.h"
 #include "sltk/recon/CloudPreparation.h"
-#include "sltk/recon/PointClusters.h"
 #include "sltk/recon/SlabPolicy.h"
-#include "sltk/recon/StoppingRule.h"
 #include "sltk/recon/StrayPoints.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <sstream>
 
 namespace sltk
@@ -465,27 +462,6 @@ Status planFittingRunGrids(ReconstructionPlan<D>& plan, const Context& ctx)
 
 namespace
 {
-template <int D>
-GridPlanOptions runGridOptions(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor);
-
-/// The nodes of the largest grid of the plan's runs over `box` at C_dx = cellSizeFactor, whatever the budget.
-template <int D>
-double largestGridNodes(const ReconstructionPlan<D>& plan, const Box<D>& box, double cellSizeFactor)
-{
-  GridPlanOptions po = runGridOptions(plan, plan.Options.Runs, cellSizeFactor);
-  po.MemoryBudget = std::numeric_limits<std::uint64_t>::max();
-  GridPlan<D> grids;
-  double nodes = 0.0;
-  if (planGrids(box, plan.CloudSpacing, po, grids).isOk())
-  {
-    for (const GridSpec<D>& run : grids.Runs)
-    {
-      nodes = std::max(nodes, static_cast<double>(run.nodeCount()));
-    }
-  }
-  return nodes;
-}
-
 /// A refusal for memory (`refusal`) of a cloud made of a few groups of points far apart
 /// (two scanned objects in one file) says so, with separateGroupsAdvice.
 template <int D>
@@ -499,54 +475,6 @@ Status withSeparateRuns(const ReconstructionPlan<D>& plan, const Status& refusal
   return advice.empty() ? refusal : Status::outOfMemory(refusal.message() + ". " + advice);
 }
 } // namespace
-
-template <int D>
-std::string separateGroupsAdvice(const ReconstructionPlan<D>& plan, double cellSizeFactor, const std::string& why)
-{
-  constexpr size_t MaxSeparateGroups = 16;
-  std::vector<OutsidePoint> all(static_cast<size_t>(plan.Cloud.size()));
-  for (size_t i = 0; i < all.size(); ++i)
-  {
-    all[i].Point = static_cast<Index>(i);
-  }
-  const double link = PieceLinkFactor * plan.CloudSpacing;
-  const std::vector<Index> group = pointGroups(plan.Cloud, all, link);
-  std::map<Index, Box<D>> boxes;
-  for (size_t i = 0; i < group.size() && boxes.size() <= MaxSeparateGroups; ++i)
-  {
-    const auto& p = plan.Cloud.Points[i];
-    auto [it, created] = boxes.try_emplace(group[i]);
-    for (int a = 0; a < D; ++a)
-    {
-      it->second.Min[a] = created ? p[a] : std::min(it->second.Min[a], p[a]);
-      it->second.Max[a] = created ? p[a] : std::max(it->second.Max[a], p[a]);
-    }
-  }
-  if (boxes.size() < 2 || boxes.size() > MaxSeparateGroups)
-  {
-    return {};
-  }
-  double own = 0.0, largest = 0.0;
-  for (const auto& entry : boxes)
-  {
-    const double nodes = largestGridNodes(plan, entry.second, cellSizeFactor);
-    own += nodes;
-    largest = std::max(largest, nodes);
-  }
-  const double whole = largestGridNodes(plan, boundingBox(plan.Cloud), cellSizeFactor);
-  if (!(own < 0.25 * whole))
-  {
-    return {};
-  }
-  std::ostringstream m;
-  m.precision(3);
-  m << "The cloud is " << boxes.size() << " groups of points more than " << PieceLinkFactor << " h_P ("
-    << link * plan.Box.Scale << ") apart, and the grid spans the empty space between them (their own grids would "
-    << "hold " << 100.0 * own / whole << "% of its nodes); " << why << ": reconstruct each group in its own run "
-    << "(split the file), the largest group's grid " << largest << " nodes, about "
-    << largest * ReconstructionBytesPerNode / 1e9 << " GB, at C_dx = " << cellSizeFactor;
-  return m.str();
-}
 
 template <int D>
 Status planReconstruction(
@@ -723,8 +651,8 @@ double memoryBudgetBytes(const ReconstructionPlan<D>& plan)
                                    : static_cast<double>(availableMemoryBytes());
 }
 
-/// The grid options of `runs` runs from C_dx = cellSizeFactor (4.36): run 1
-/// padded for the plan's FirstRunReach, plus the band gamma and two cells.
+} // namespace
+
 template <int D>
 GridPlanOptions runGridOptions(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor)
 {
@@ -738,8 +666,6 @@ GridPlanOptions runGridOptions(const ReconstructionPlan<D>& plan, int runs, doub
   po.FirstRunPadding = static_cast<int>(std::ceil(plan.FirstRunReach / dx1 + plan.Options.GammaFactor + 2.0));
   return po;
 }
-
-} // namespace
 
 /// With OctreeStorage: tiledNeedBytes must fit. A refusal names the smallest
 /// C_dx, in steps of 5% up to the range's end, whose plan fits with 10%
@@ -862,7 +788,7 @@ template Status planRunGrids(const ReconstructionPlan<2>&, int, double, GridPlan
 template Status planRunGrids(const ReconstructionPlan<3>&, int, double, GridPlan<3>&);
 template Status planReconstruction(PointCloud<2>, const ReconstructionOptions&, const Context&, ReconstructionPlan<2>&);
 template Status planReconstruction(PointCloud<3>, const ReconstructionOptions&, const Context&, ReconstructionPlan<3>&);
-template std::string separateGroupsAdvice(const ReconstructionPlan<2>&, double, const std::string&);
-template std::string separateGroupsAdvice(const ReconstructionPlan<3>&, double, const std::string&);
+template GridPlanOptions runGridOptions(const ReconstructionPlan<2>&, int, double);
+template GridPlanOptions runGridOptions(const ReconstructionPlan<3>&, int, double);
 
 } // namespace sltk

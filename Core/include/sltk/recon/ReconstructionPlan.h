@@ -100,8 +100,14 @@ Status planReconstruction(
 template <int D>
 Status planRunGrids(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor, GridPlan<D>& grids);
 
+/// The grid options of `runs` runs from C_dx = cellSizeFactor (4.36) for the plan's
+/// cloud and budget: run 1 padded for the plan's FirstRunReach, plus the band gamma and
+/// two cells.
+template <int D>
+GridPlanOptions runGridOptions(const ReconstructionPlan<D>& plan, int runs, double cellSizeFactor);
+
 /// When the plan's cloud is 2 to 16 groups of points more than PieceLinkFactor h_P
-/// apart (PointClusters.h) whose own grids at C_dx = cellSizeFactor hold less than a
+/// apart (PointClusters.h; SeparateGroups.cxx) whose own grids at C_dx = cellSizeFactor hold less than a
 /// quarter of the nodes of the grid over all of them (two scanned objects in one
 /// file; callers with an automatic C_dx pass the thesis's 1, where that choice starts): "The cloud is N groups of
 /// points ... apart, and the grid spans the empty space between them (...); <why>: reconstruct each group in its own
