@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace
 {
@@ -37,9 +40,8 @@ TEST(GridField, ExtrapolationReproducesLinearFunctionsIncludingCorners)
 {
   auto spec = unitGrid<3>(5, sltk::Boundary::Extrapolate);
   sltk::GridField<3> f(spec, 2);
-  auto lin = [&](sltk::Index i, sltk::Index j, sltk::Index k) {
-    return 1.0 + 2.0 * spec.coordinate(0, i) - 3.0 * spec.coordinate(1, j) + 0.5 * spec.coordinate(2, k);
-  };
+  auto lin = [&](sltk::Index i, sltk::Index j, sltk::Index k)
+  { return 1.0 + 2.0 * spec.coordinate(0, i) - 3.0 * spec.coordinate(1, j) + 0.5 * spec.coordinate(2, k); };
   for (sltk::Index n = 0; n < spec.nodeCount(); ++n)
   {
     auto i = f.nodeIndex(n);
@@ -88,4 +90,27 @@ TEST(GridField, MixedBoundariesPerAxis)
   EXPECT_EQ(f({ 1, -1 }), 1.0 - 10.0);
   EXPECT_EQ(f({ 1, 6 }), 1.0 + 60.0);
   EXPECT_EQ(f({ -1, -1 }), 4.0 - 10.0);
+}
+
+TEST(GridField, GhostsFilledOnThreadsAsOnOne)
+{
+  // Mixed boundaries and a non-linear function, so that the corners depend on
+  // the axes' order; the lines of each axis in chunks of 16 on two threads.
+  auto spec = unitGrid<3>(20, sltk::Boundary::Extrapolate);
+  spec.Bounds[1] = sltk::Boundary::Periodic;
+  sltk::GridField<3> serial(spec, 2);
+  for (sltk::Index n = 0; n < spec.nodeCount(); ++n)
+  {
+    const auto i = serial.nodeIndex(n);
+    serial(i) = std::sin(0.3 * double(i[0])) * double(i[1] * i[1]) + 0.01 * double(i[2] * i[2] * i[2]);
+  }
+  sltk::GridField<3> threaded = serial;
+  serial.fillGhosts();
+  sltk::ThreadPool pool(2);
+  sltk::Context ctx;
+  ctx.Executor = &pool;
+  threaded.fillGhosts(ctx);
+  EXPECT_EQ(serial.storage(), threaded.storage());
+  threaded.fillGhosts(sltk::Context{});
+  EXPECT_EQ(serial.storage(), threaded.storage());
 }

@@ -49,11 +49,17 @@ vtkSmartPointer<vtkDoubleArray> moveNodeValues(GridField<D>& field, Index firstR
   array->SetNumberOfTuples(n);
   double* out = array->GetPointer(0);
   const Index lineNodes = field.spec().Dims[0];
-  for (Index k = 0; k < n; k += lineNodes) // x fastest in both layouts: one x line at a time
-  {
-    const double* line = field.pointer(field.nodeIndex(k + firstRow * rowNodes));
-    std::copy(line, line + lineNodes, out + k);
-  }
+  // x fastest in both layouts: one x line at a time, the lines on VTK's threads
+  // (a copy of every node: 206 MB for the bunny's finest grid)
+  vtkSMPTools::For(0, n / lineNodes,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (Index k = begin * lineNodes; k < end * lineNodes; k += lineNodes)
+      {
+        const double* line = field.pointer(field.nodeIndex(k + firstRow * rowNodes));
+        std::copy(line, line + lineNodes, out + k);
+      }
+    });
   field = GridField<D>();
   return array;
 }

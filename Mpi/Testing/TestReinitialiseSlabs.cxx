@@ -33,9 +33,8 @@ void expectSameAsOneRank(double cy, double r, sltk::ReinitMethod method)
   }
   phi.fillGhosts();
   sltk::NodeList band, wide;
-  std::vector<std::uint8_t> scratch;
   sltk::collectBand(phi, 4.0 * dx, sltk::Context{}, band);
-  sltk::dilateBand(whole, band, 2, scratch, wide);
+  sltk::dilateBand(whole, band, 2, sltk::Context{}, wide);
   sltk::ReinitOptions options;
   options.Method = method;
   sltk::GridField<2> one = phi;

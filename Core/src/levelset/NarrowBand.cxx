@@ -128,32 +128,40 @@ void filterBand(
   band.swap(out);
 }
 
-template <int D>
-void dilateBand(const GridSpec<D>& grid, const NodeList& band, int k, std::vector<std::uint8_t>& scratch,
-  NodeList& dilated, const NodeList* more)
+namespace
 {
-  const Index nodes = grid.nodeCount();
-  if (static_cast<Index>(scratch.size()) != nodes)
+/// The ball of radius k cells (1.53) grouped by x line: for each offset of the
+/// other coordinates (o_1, ..., o_{D-1}), the half-width m of its x offsets
+/// -m..m (those with |o|^2 <= k^2).
+template <int D>
+struct BallRows
+{
+  std::vector<std::array<Index, D>> Rows; ///< [0] unused
+  std::vector<Index> HalfWidth;
+
+  explicit BallRows(int k)
   {
-    scratch.assign(static_cast<size_t>(nodes), 0);
-  }
-  // The ball of radius k cells (1.53), as index offsets.
-  std::vector<std::array<Index, D>> ball;
-  {
+    const Index k2 = static_cast<Index>(k) * k;
     std::array<Index, D> o;
     o.fill(-k);
     for (;;)
     {
       Index r2 = 0;
-      for (int a = 0; a < D; ++a)
+      for (int a = 1; a < D; ++a)
       {
         r2 += o[a] * o[a];
       }
-      if (r2 <= static_cast<Index>(k) * k)
+      if (r2 <= k2)
       {
-        ball.push_back(o);
+        Index m = 0;
+        while (r2 + (m + 1) * (m + 1) <= k2)
+        {
+          ++m;
+        }
+        this->Rows.push_back(o);
+        this->HalfWidth.push_back(m);
       }
-      int a = 0;
+      int a = 1;
       for (; a < D; ++a)
       {
         if (++o[a] <= k)
@@ -168,78 +176,153 @@ void dilateBand(const GridSpec<D>& grid, const NodeList& band, int k, std::vecto
       }
     }
   }
-  std::array<Index, D> stride;
-  Index s = 1;
-  for (int a = 0; a < D; ++a)
+};
+
+/// A list of grid nodes by x line: line r's nodes are Nodes[Begin[r], Begin[r + 1]),
+/// ascending (a copy is sorted when the list is not); nodes outside the grid are left out.
+struct NodesByLine
+{
+  const NodeList* Nodes = nullptr;
+  NodeList Sorted;
+  std::vector<Index> Begin;
+
+  NodesByLine(const NodeList& nodes, Index nodeCount, Index nx, const Context& ctx)
   {
-    stride[a] = s;
-    s *= grid.Dims[a];
-  }
-  const NodeIndexer<D> indexer(grid.Dims);
-  // The marked nodes are read back row by row, in ascending order, between each
-  // x line's first and last mark: the sorted list without a sort (a sort of the
-  // dilated band was the largest serial part of an iteration, Profile.md).
-  const Index nx = grid.Dims[0];
-  const Index rows = nodes / nx;
-  std::array<Index, D> rowStride{}; // an x line's index from the node's other coordinates
-  for (int a = 1; a < D; ++a)
-  {
-    rowStride[a] = stride[a] / nx;
-  }
-  std::vector<std::int32_t> first(static_cast<size_t>(rows), static_cast<std::int32_t>(nx)),
-    last(static_cast<size_t>(rows), -1);
-  const auto mark = [&](const Index node)
-  {
-    if (node < 0 || node >= nodes)
+    this->Nodes = &nodes;
+    if (!std::is_sorted(nodes.begin(), nodes.end()))
     {
-      return; // not a node of this grid
+      this->Sorted = nodes;
+      std::sort(this->Sorted.begin(), this->Sorted.end());
+      this->Nodes = &this->Sorted;
     }
-    const std::array<Index, D> i = indexer(node);
-    for (const auto& o : ball)
+    const Index lines = nodeCount / nx;
+    this->Begin.resize(static_cast<size_t>(lines) + 1);
+    const NodeList& list = *this->Nodes;
+    ctx.parallelFor(0, lines + 1,
+      [&](Index b, Index e)
+      {
+        for (Index r = b; r < e; ++r)
+        {
+          this->Begin[static_cast<size_t>(r)] =
+            std::lower_bound(list.begin(), list.end(), r * nx) - list.begin(); // r * nx: the grid's end at r = lines
+        }
+      });
+  }
+};
+} // namespace
+
+template <int D>
+void dilateBand(
+  const GridSpec<D>& grid, const NodeList& band, int k, const Context& ctx, NodeList& dilated, const NodeList* more)
+{
+  // x line by x line (x fastest, so lines and the nodes in them are in
+  // ascending order): line r's dilation is its own band nodes and those of the
+  // lines the ball reaches, shifted along x. A line's marks live in a scratch
+  // line of nx bytes, not in a mask over the grid, and the lines are
+  // independent: both threads work, and the list comes out sorted without a sort.
+  const Index nodes = grid.nodeCount();
+  const Index nx = grid.Dims[0];
+  const Index lines = nodes / nx;
+  const BallRows<D> ball(k);
+  std::vector<NodesByLine> lists;
+  lists.emplace_back(band, nodes, nx, ctx);
+  if (more)
+  {
+    lists.emplace_back(*more, nodes, nx, ctx);
+  }
+  // Marks line r in `marks` (nx bytes, all zero), returns the marked x range.
+  const auto markLine = [&](Index r, std::uint8_t* marks, Index& lo, Index& hi)
+  {
+    std::array<Index, D> at{}; // line r's coordinates 1..D-1
+    Index rest = r;
+    for (int a = 1; a < D; ++a)
     {
+      at[a] = rest % grid.Dims[a];
+      rest /= grid.Dims[a];
+    }
+    lo = nx;
+    hi = -1;
+    for (size_t g = 0; g < ball.Rows.size(); ++g)
+    {
+      Index source = 0, stride = 1;
       bool inside = true;
-      Index lin = node, row = 0;
-      for (int a = 0; a < D; ++a)
+      for (int a = 1; a < D; ++a)
       {
-        const Index j = i[a] + o[a];
+        const Index j = at[a] - ball.Rows[g][a];
         inside = inside && j >= 0 && j < grid.Dims[a];
-        lin += o[a] * stride[a];
-        row += j * rowStride[a];
+        source += j * stride;
+        stride *= grid.Dims[a];
       }
-      if (inside)
+      if (!inside)
       {
-        scratch[static_cast<size_t>(lin)] = 1;
-        const auto x = static_cast<std::int32_t>(i[0] + o[0]);
-        first[static_cast<size_t>(row)] = std::min(first[static_cast<size_t>(row)], x);
-        last[static_cast<size_t>(row)] = std::max(last[static_cast<size_t>(row)], x);
+        continue;
+      }
+      const Index m = ball.HalfWidth[g];
+      for (const NodesByLine& list : lists)
+      {
+        const Index begin = list.Begin[static_cast<size_t>(source)], end = list.Begin[static_cast<size_t>(source) + 1];
+        if (begin == end)
+        {
+          continue;
+        }
+        const Index* x = list.Nodes->data();
+        const Index origin = source * nx;
+        lo = std::min(lo, std::max<Index>(0, x[begin] - origin - m)); // the line's nodes ascend
+        hi = std::max(hi, std::min(nx - 1, x[end - 1] - origin + m));
+        for (Index p = begin; p < end; ++p)
+        {
+          const Index first = std::max<Index>(0, x[p] - origin - m), last = std::min(nx - 1, x[p] - origin + m);
+          for (Index to = first; to <= last; ++to)
+          {
+            marks[to] = 1;
+          }
+        }
       }
     }
   };
-  for (const Index node : band)
-  {
-    mark(node);
-  }
-  if (more)
-  {
-    for (const Index node : *more)
+  // The lines in chunks of fixed size, each chunk's nodes in its own list, then joined in order.
+  const Index grain = std::max<Index>(16, (lines + 63) / 64);
+  const Index chunks = (lines + grain - 1) / grain;
+  std::vector<NodeList> parts(static_cast<size_t>(chunks));
+  ctx.parallelFor(
+    0, lines,
+    [&](Index b, Index e)
     {
-      mark(node);
-    }
-  }
-  dilated.clear();
-  dilated.reserve(band.size() * 2);
-  for (Index row = 0; row < rows; ++row)
-  {
-    for (Index x = first[static_cast<size_t>(row)]; x <= last[static_cast<size_t>(row)]; ++x)
-    {
-      std::uint8_t& marked = scratch[static_cast<size_t>(row * nx + x)];
-      if (marked)
+      std::vector<std::uint8_t> marks(static_cast<size_t>(nx), 0);
+      NodeList& part = parts[static_cast<size_t>(b / grain)];
+      for (Index r = b; r < e; ++r)
       {
-        marked = 0;
-        dilated.push_back(row * nx + x);
+        Index lo = 0, hi = -1;
+        markLine(r, marks.data(), lo, hi);
+        for (Index x = lo; x <= hi; ++x)
+        {
+          if (marks[static_cast<size_t>(x)])
+          {
+            marks[static_cast<size_t>(x)] = 0;
+            part.push_back(r * nx + x);
+          }
+        }
       }
-    }
+    },
+    grain);
+  std::vector<size_t> start(parts.size() + 1, 0);
+  for (size_t c = 0; c < parts.size(); ++c)
+  {
+    start[c + 1] = start[c] + parts[c].size();
   }
+  NodeList out(start.back());
+  ctx.parallelFor(
+    0, chunks,
+    [&](Index b, Index e)
+    {
+      for (Index c = b; c < e; ++c)
+      {
+        std::copy(parts[static_cast<size_t>(c)].begin(), parts[static_cast<size_t>(c)].end(),
+          out.begin() + static_cast<std::ptrdiff_t>(start[static_cast<size_t>(c)]));
+      }
+    },
+    1);
+  dilated.swap(out);
 }
 
 template <int D>
@@ -281,10 +364,8 @@ template void collectBand(const GridField<2, double>&, double, const Context&, N
 template void collectBand(const GridField<3, double>&, double, const Context&, NodeList&);
 template void filterBand(const GridField<2, double>&, const NodeList&, double, const Context&, NodeList&);
 template void filterBand(const GridField<3, double>&, const NodeList&, double, const Context&, NodeList&);
-template void dilateBand(
-  const GridSpec<2>&, const NodeList&, int, std::vector<std::uint8_t>&, NodeList&, const NodeList*);
-template void dilateBand(
-  const GridSpec<3>&, const NodeList&, int, std::vector<std::uint8_t>&, NodeList&, const NodeList*);
+template void dilateBand(const GridSpec<2>&, const NodeList&, int, const Context&, NodeList&, const NodeList*);
+template void dilateBand(const GridSpec<3>&, const NodeList&, int, const Context&, NodeList&, const NodeList*);
 template void cutLevelSet(GridField<2, double>&, const NodeList&, double, const Context&);
 template void cutLevelSet(GridField<3, double>&, const NodeList&, double, const Context&);
 template void cutLevelSet(GridField<2, double>&, double, const Context&);

@@ -98,8 +98,8 @@ public:
   {
     // The step writes the band, the reinitialisation its dilation (1.53): phi^n there for eps_1 (4.34).
     // On slabs the ghost rows' band nodes dilate into the owned rows too.
-    dilateBand(this->Phi.spec(), this->Band, this->Options.ReinitDilation, this->DilationScratch, this->ReinitBand,
-      &this->GhostBand);
+    dilateBand(
+      this->Phi.spec(), this->Band, this->Options.ReinitDilation, this->Ctx, this->ReinitBand, &this->GhostBand);
     this->Slab.keepOwned(this->ReinitBand);
     this->Previous.resize(this->ReinitBand.size());
     this->Ctx.parallelFor(0, static_cast<Index>(this->ReinitBand.size()),
@@ -133,7 +133,7 @@ public:
     SLTK_RETURN_IF_ERROR(reinitialiseOn(this->Phi, this->ReinitBand, this->Slab, this->Options.Reinit, this->Ctx));
     cutLevelSet(this->Phi, this->ReinitBand, this->Gamma, this->Ctx); // (1.49)
     this->Slab.exchange(this->Phi);
-    this->Phi.fillGhosts();
+    this->Phi.fillGhosts(this->Ctx);
     filterBand(this->Phi, this->ReinitBand, this->Gamma, this->Ctx, this->Band); // (1.54)
     return Status::ok();
   }
@@ -148,11 +148,29 @@ public:
     double sums[5] = { 0.0, 0.0,
       cloudErrorSum<D, Interp>(this->Phi, this->Cloud, this->Ctx, s.Begin, s.End, this->Slab.rows()),
       static_cast<double>(this->Band.size()), interrupted ? 1.0 : 0.0 };
-    for (size_t k = 0; k < this->ReinitBand.size(); ++k)
-    {
-      sums[0] += std::fabs(this->Phi(this->Phi.nodeIndex(this->ReinitBand[k])) - this->Previous[k]);
-      sums[1] += std::fabs(this->Previous[k]);
-    }
+    // eps_1 of (4.34), summed in fixed chunks (ThreadPool.h: the same on any thread count)
+    const Index size = static_cast<Index>(this->ReinitBand.size());
+    sums[0] = this->Ctx.parallelSum(0, size,
+      [&](Index b, Index e)
+      {
+        double sum = 0.0;
+        for (Index k = b; k < e; ++k)
+        {
+          const size_t at = static_cast<size_t>(k);
+          sum += std::fabs(this->Phi(this->Phi.nodeIndex(this->ReinitBand[at])) - this->Previous[at]);
+        }
+        return sum;
+      });
+    sums[1] = this->Ctx.parallelSum(0, size,
+      [&](Index b, Index e)
+      {
+        double sum = 0.0;
+        for (Index k = b; k < e; ++k)
+        {
+          sum += std::fabs(this->Previous[static_cast<size_t>(k)]);
+        }
+        return sum;
+      });
     this->Slab.comm().allReduce(sums, 5, ReduceOp::Sum);
     it.Change = sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
     it.CloudError = sums[2] / static_cast<double>(this->Cloud.size());
@@ -198,8 +216,7 @@ private:
   GridField<D>& Phi;
   GridField<D>& Dist;
   const double Gamma;
-  NodeList Band, ReinitBand, GhostBand; // Band: the owned rows' B^n; GhostBand: the adjacent ghost rows'
-  std::vector<std::uint8_t> DilationScratch;
+  NodeList Band, ReinitBand, GhostBand;      // Band: the owned rows' B^n; GhostBand: the adjacent ghost rows'
   std::vector<double> StepScratch, Previous; // Previous: phi^n at ReinitBand, for eps_1 (4.34)
   FarFeet<D> Far;
   Index FarFeetCount = 0;

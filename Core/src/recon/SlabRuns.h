@@ -121,9 +121,8 @@ Status initialData(const ReconstructionPlan<D>& plan, double outsideFactor, cons
   if (previous)
   {
     NodeList band, wide;
-    std::vector<std::uint8_t> scratch;
     collectBand(phi, gamma, ctx, band); // the window's: ghost rows' nodes dilate into the owned rows
-    dilateBand(grid, band, options.ReinitDilation, scratch, wide);
+    dilateBand(grid, band, options.ReinitDilation, ctx, wide);
     slab.keepOwned(wide);
     SLTK_RETURN_IF_ERROR(reinitialiseOn(phi, wide, slab, options.Reinit, ctx));
     cutLevelSet(phi, wide, gamma, ctx);

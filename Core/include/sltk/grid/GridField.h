@@ -90,7 +90,17 @@ public:
   {
     for (int a = 0; a < D; ++a)
     {
-      this->fillGhostsAlong(a);
+      this->fillGhostsAlong(a, 0, this->linesAlong(a));
+    }
+  }
+  /// The same, each axis' lines shared out by `ctx.parallelFor(begin, end, body)`
+  /// (a Context: the iterations' refills, every boundary line of a large grid).
+  template <class Executor>
+  void fillGhosts(const Executor& ctx)
+  {
+    for (int a = 0; a < D; ++a)
+    {
+      ctx.parallelFor(0, this->linesAlong(a), [&](Index b, Index e) { this->fillGhostsAlong(a, b, e); });
     }
   }
 
@@ -98,20 +108,29 @@ public:
   const std::vector<T>& storage() const { return this->Values; }
 
 private:
-  void fillGhostsAlong(int axis)
+  /// Lines along `axis` in the padded box (the other axes include their ghosts).
+  Index linesAlong(int axis) const
   {
-    const Index n = this->Spec.Dims[axis];
-    const Index g = this->Ghost;
-    // Iterate over every line along `axis` in the padded box (other axes include ghosts).
-    std::array<Index, D> ext{};
     Index lines = 1;
     for (int a = 0; a < D; ++a)
     {
+      lines *= a == axis ? 1 : this->Spec.Dims[a] + 2 * this->Ghost;
+    }
+    return lines;
+  }
+
+  /// The ghosts of the lines [first, last) along `axis` (linesAlong's order).
+  void fillGhostsAlong(int axis, Index first, Index last)
+  {
+    const Index n = this->Spec.Dims[axis];
+    const Index g = this->Ghost;
+    std::array<Index, D> ext{};
+    for (int a = 0; a < D; ++a)
+    {
       ext[a] = a == axis ? 1 : this->Spec.Dims[a] + 2 * g;
-      lines *= ext[a];
     }
     const Index s = this->Stride[axis];
-    for (Index line = 0; line < lines; ++line)
+    for (Index line = first; line < last; ++line)
     {
       Index rest = line;
       Index start = 0;

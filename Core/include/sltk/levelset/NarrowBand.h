@@ -34,17 +34,15 @@ void filterBand(
   const GridField<D, double>& phi, const NodeList& candidates, double gamma, const Context& ctx, NodeList& band);
 
 /// (1.52)-(1.53): the nodes within k cells (Euclidean, in index units:
-/// sum_a o_a^2 <= k^2) of a band node, the band included; k = 1 adds the
-/// 2D face neighbours. `scratch` is a per-node mask that must be all zero
-/// (or empty: it is then allocated); it is returned all zero. Indices
-/// outside the grid are ignored. `more` (optional) dilates with the band, e.g.
-/// a slab's ghost-row band (its nodes may repeat the band's). Work
-/// O(band * k^D) plus one pass over the grid's x lines (the marks are read back
-/// in ascending order between each line's first and last), serial: marking is
-/// cheap next to the reinitialisation it feeds.
+/// sum_a o_a^2 <= k^2) of a band node, the band included, ascending; k = 1
+/// adds the 2D face neighbours. `more` (optional, any order) dilates with the
+/// band, e.g. a slab's ghost-row band (its nodes may repeat the band's).
+/// Indices outside the grid are ignored. Work O(band * k^D) plus one pass over
+/// the grid's x lines, on the context's threads, x line by x line (the same list
+/// on any thread count).
 template <int D>
-void dilateBand(const GridSpec<D>& grid, const NodeList& band, int k, std::vector<std::uint8_t>& scratch,
-  NodeList& dilated, const NodeList* more = nullptr);
+void dilateBand(const GridSpec<D>& grid, const NodeList& band, int k, const Context& ctx, NodeList& dilated,
+  const NodeList* more = nullptr);
 
 /// (1.49) on the listed nodes: phi clamped to [-gamma, gamma].
 template <int D>
@@ -58,10 +56,8 @@ extern template void collectBand(const GridField<2, double>&, double, const Cont
 extern template void collectBand(const GridField<3, double>&, double, const Context&, NodeList&);
 extern template void filterBand(const GridField<2, double>&, const NodeList&, double, const Context&, NodeList&);
 extern template void filterBand(const GridField<3, double>&, const NodeList&, double, const Context&, NodeList&);
-extern template void dilateBand(
-  const GridSpec<2>&, const NodeList&, int, std::vector<std::uint8_t>&, NodeList&, const NodeList*);
-extern template void dilateBand(
-  const GridSpec<3>&, const NodeList&, int, std::vector<std::uint8_t>&, NodeList&, const NodeList*);
+extern template void dilateBand(const GridSpec<2>&, const NodeList&, int, const Context&, NodeList&, const NodeList*);
+extern template void dilateBand(const GridSpec<3>&, const NodeList&, int, const Context&, NodeList&, const NodeList*);
 extern template void cutLevelSet(GridField<2, double>&, const NodeList&, double, const Context&);
 extern template void cutLevelSet(GridField<3, double>&, const NodeList&, double, const Context&);
 extern template void cutLevelSet(GridField<2, double>&, double, const Context&);

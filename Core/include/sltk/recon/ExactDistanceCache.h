@@ -15,7 +15,9 @@
 #include "sltk/grid/GridField.h"
 #include "sltk/levelset/NarrowBand.h"
 
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace sltk
@@ -33,7 +35,10 @@ public:
   }
 
   /// Forgets what was computed (a new grid or a new field); dist needs one ghost layer.
-  void reset(const GridField<D>& dist) { this->Exact.assign(dist.storage().size(), 0); }
+  void reset(const GridField<D>& dist)
+  {
+    this->Exact.reset(new std::atomic<std::uint8_t>[dist.storage().size()]()); // all zero
+  }
 
   /// Makes d exact on the band's stencils; returns how many nodes were computed.
   Index ensure(const NodeList& band, const Context& ctx, GridField<D>& dist);
@@ -41,8 +46,8 @@ public:
 private:
   const PointCloud<D>* Cloud;
   const PointLocator<D>* Locator;
-  std::vector<std::uint8_t> Exact; ///< per storage slot: 1 once d is exact there
-  std::vector<Index> Pending;      ///< storage offsets to compute in this call
+  /// Per storage slot: 1 once d is exact there (or claimed by the call computing it).
+  std::unique_ptr<std::atomic<std::uint8_t>[]> Exact;
 };
 
 extern template class ExactDistanceCache<2>;

@@ -334,7 +334,7 @@ Status levelSetStepValues(const Context& ctx, GridField<D>& phi, const GridField
   {
     return Status::invalidArgument("levelSetStep: need dt > 0, p >= 1, eta >= 0 and E_p > 0");
   }
-  phi.fillGhosts();
+  phi.fillGhosts(ctx);
   const GridSpec<D>& spec = phi.spec();
   const Index count = static_cast<Index>(band.size());
   values.resize(band.size());
