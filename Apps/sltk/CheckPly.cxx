@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "CheckPly.h"
 
+#include "sltk/cloud/PlyHeader.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -14,72 +16,12 @@ namespace sltkcli
 {
 namespace
 {
-struct PlyProperty
-{
-  std::string Name;
-  int Size = 0;         ///< bytes of a scalar, or of a list's items
-  int CountSize = 0;    ///< bytes of a list's count; 0 for a scalar
-  bool Integer = false; ///< the (item) type is an integer type
-  bool Signed = false;  ///< ... and a signed one
-  /// A list of vertex indices (a face's or a strip's): vtkPLYReader reads the
-  /// points they name without a bounds check, so each must be < the vertex count.
-  bool isVertexIndexList() const { return this->CountSize > 0 && this->Name == "vertex_indices"; }
-};
-
-struct PlyElement
-{
-  std::string Name;
-  std::int64_t Count = 0;
-  std::vector<PlyProperty> Properties;
-};
-
-/// Bytes of a PLY scalar type, 0 when unknown.
-int typeSize(const std::string& type)
-{
-  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8")
-    return 1;
-  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16")
-    return 2;
-  if (type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" || type == "float32")
-    return 4;
-  if (type == "double" || type == "float64")
-    return 8;
-  return 0;
-}
-
-/// Whether a PLY scalar type is an integer type, and a signed one.
-void integerKind(const std::string& type, bool& integer, bool& isSigned)
-{
-  isSigned = type == "char" || type == "int8" || type == "short" || type == "int16" || type == "int" || type == "int32";
-  integer = isSigned || type == "uchar" || type == "uint8" || type == "ushort" || type == "uint16" || type == "uint" ||
-    type == "uint32";
-}
+using sltk::PlyElement;
+using sltk::PlyProperty;
 
 sltk::Status damaged(const std::string& path, const std::string& what)
 {
-  return sltk::Status::ioError(
-    "damaged PLY file '" + path + "': " + what + "; export it again (or convert it, e.g. to .vtp or a text .xyz file)");
-}
-
-/// What in a header or ASCII data line VTK's parser reads differently from its
-/// words (found by bench/fuzz): it reads lines with fgets into 4096 bytes (a
-/// longer line is cut in two, a NUL ends it) and splits words at spaces, tabs
-/// and carriage returns only. Empty when the line is plain.
-std::string oddLine(const std::string& line)
-{
-  if (line.size() > 4000)
-  {
-    return "a line of " + std::to_string(line.size()) + " characters (at most 4000 are read as one line)";
-  }
-  for (const char c : line)
-  {
-    if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\r')
-    {
-      return c == '\0' ? std::string("binary data (a NUL byte) in a text line")
-                       : "a control character (code " + std::to_string(static_cast<int>(c)) + ") in a text line";
-    }
-  }
-  return {};
+  return sltk::plyDamaged(path, what);
 }
 
 /// vtkPLYReader asks for these properties by name as numbers (vertex) or as the kind given (face),
@@ -110,129 +52,12 @@ sltk::Status checkPropertyKind(
   return sltk::Status::ok();
 }
 
-/// The header; `format` is "ascii", "binary_little_endian" or "binary_big_endian".
-sltk::Status readHeader(
-  std::istream& in, const std::string& path, std::string& format, std::vector<PlyElement>& elements)
+/// The header, each property checked for what VTK's reader asks of it.
+sltk::Status readHeader(std::istream& in, const std::string& path, sltk::PlyHeader& header)
 {
-  std::string line;
-  if (!std::getline(in, line) || line.rfind("ply", 0) != 0)
-  {
-    return damaged(path, "it does not start with the line 'ply'");
-  }
-  for (int number = 2; std::getline(in, line); ++number)
-  {
-    if (!line.empty() && line.back() == '\r')
-    {
-      line.pop_back();
-    }
-    const std::string odd = oddLine(line);
-    if (!odd.empty())
-    {
-      return damaged(path, odd + " at header line " + std::to_string(number));
-    }
-    std::istringstream words(line);
-    std::string keyword;
-    words >> keyword;
-    if (keyword == "end_header")
-    {
-      if (!elements.empty() && elements.back().Properties.empty())
-      {
-        return damaged(path, "the element '" + elements.back().Name + "' has no property");
-      }
-      return format.empty() ? damaged(path, "its header has no 'format' line") : sltk::Status::ok();
-    }
-    const std::string where = "header line " + std::to_string(number) + " ('" + line + "')";
-    // VTK's header parser takes "element face 0Jproperty ..." as a face element with no
-    // properties and crashes later (found by bench/fuzz): every line must be exactly its words.
-    const auto endsHere = [&words] { return (words >> std::ws).eof(); };
-    if (keyword == "format")
-    {
-      if (!format.empty())
-      {
-        return damaged(path, "a second 'format' line in " + where); // VTK would read the data as the last one says
-      }
-      std::string version;
-      words >> format >> version;
-      if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
-      {
-        return damaged(path, "unknown format in " + where);
-      }
-      if (version != "1.0" || !endsHere())
-      {
-        return damaged(path, "bad format line (version 1.0 expected) in " + where);
-      }
-    }
-    else if (keyword == "element")
-    {
-      PlyElement element;
-      std::string count;
-      if (!(words >> element.Name >> count) || !endsHere() ||
-        count.find_first_not_of("0123456789") != std::string::npos || count.size() > 15)
-      {
-        return damaged(path, "bad element in " + where);
-      }
-      element.Count = std::stoll(count);
-      if (!elements.empty() && elements.back().Properties.empty())
-      {
-        return damaged(path, "the element '" + elements.back().Name + "' has no property, before " + where);
-      }
-      for (const PlyElement& before : elements)
-      {
-        if (before.Name == element.Name)
-        {
-          return damaged(path, "the element '" + element.Name + "' is declared twice, again in " + where);
-        }
-      }
-      elements.push_back(element);
-    }
-    else if (keyword == "property")
-    {
-      PlyProperty property;
-      std::string type;
-      words >> type;
-      if (type == "list")
-      {
-        std::string countType, itemType;
-        words >> countType >> itemType;
-        property.CountSize = typeSize(countType);
-        property.Size = typeSize(itemType);
-        integerKind(itemType, property.Integer, property.Signed);
-        if (property.CountSize == 0 || property.CountSize == 8)
-        {
-          return damaged(path, "bad list count type in " + where);
-        }
-      }
-      else
-      {
-        property.Size = typeSize(type);
-        integerKind(type, property.Integer, property.Signed);
-      }
-      if (property.Size == 0 || !(words >> property.Name) || !endsHere() || elements.empty())
-      {
-        return damaged(path, "bad property in " + where);
-      }
-      for (const PlyProperty& before : elements.back().Properties)
-      {
-        if (before.Name == property.Name)
-        {
-          return damaged(path,
-            "the property '" + property.Name + "' of the element '" + elements.back().Name +
-              "' is declared twice, again in " + where);
-        }
-      }
-      SLTK_RETURN_IF_ERROR(checkPropertyKind(path, elements.back().Name, property, where));
-      elements.back().Properties.push_back(property);
-    }
-    else if (keyword.empty())
-    {
-      return damaged(path, "a blank line in the header, at line " + std::to_string(number)); // VTK reads a word there
-    }
-    else if (keyword != "comment" && keyword != "obj_info")
-    {
-      return damaged(path, "unknown keyword in " + where);
-    }
-  }
-  return damaged(path, "its header has no 'end_header' line");
+  return sltk::readPlyHeader(in, path, header,
+    [&path](const std::string& element, const PlyProperty& property, const std::string& where)
+    { return checkPropertyKind(path, element, property, where); });
 }
 
 sltk::Status checkVertices(const std::string& path, const std::vector<PlyElement>& elements)
@@ -322,16 +147,6 @@ sltk::Status indexOutOfRange(const std::string& path, const PlyElement& element,
       std::to_string(vertices) + " vertices");
 }
 
-std::uint64_t listCount(const unsigned char* bytes, int size, bool bigEndian)
-{
-  std::uint64_t value = 0;
-  for (int k = 0; k < size; ++k)
-  {
-    value = (value << 8) | bytes[bigEndian ? k : size - 1 - k];
-  }
-  return value;
-}
-
 std::string itemText(const PlyElement& element, std::int64_t item)
 {
   return std::to_string(item) + " of the " + std::to_string(element.Count) + " " + element.Name + " items";
@@ -384,7 +199,7 @@ sltk::Status checkBinary(
             return damaged(path, "it is truncated: " + itemText(element, item) + " are there");
           }
           at += p.CountSize;
-          bytes = static_cast<std::streamoff>(listCount(count, p.CountSize, bigEndian)) * p.Size;
+          bytes = static_cast<std::streamoff>(sltk::plyBits(count, p.CountSize, bigEndian)) * p.Size;
         }
         if (end - at < bytes)
         {
@@ -397,7 +212,7 @@ sltk::Status checkBinary(
           in.read(reinterpret_cast<char*>(raw.data()), bytes);
           for (std::streamoff k = 0; k < bytes; k += p.Size)
           {
-            std::uint64_t value = listCount(raw.data() + k, p.Size, bigEndian);
+            std::uint64_t value = sltk::plyBits(raw.data() + k, p.Size, bigEndian);
             std::int64_t index = static_cast<std::int64_t>(value);
             if (p.Signed && p.Size < 8 && (value >> (8 * p.Size - 1)) != 0)
             {
@@ -459,7 +274,7 @@ sltk::Status checkAscii(std::istream& in, const std::string& path, const std::ve
         // VTK's parser takes a last line without a line end for the end of the file, and aborts.
         return damaged(path, "the line of " + element.Name + " " + std::to_string(item) + " has no line end");
       }
-      const std::string odd = oddLine(line);
+      const std::string odd = sltk::plyOddLine(line);
       if (!odd.empty())
       {
         return damaged(path, odd + ", in " + element.Name + " " + std::to_string(item));
@@ -510,31 +325,6 @@ sltk::Status checkAscii(std::istream& in, const std::string& path, const std::ve
   }
   return sltk::Status::ok();
 }
-/// A scalar of a binary PLY as a double (`p` a scalar property, `bytes` its bytes in the file's order).
-double scalarValue(const unsigned char* bytes, const PlyProperty& p, bool bigEndian)
-{
-  const std::uint64_t value = listCount(bytes, p.Size, bigEndian); // the bits, whatever the host's order
-  if (!p.Integer && p.Size == 4)
-  {
-    const std::uint32_t bits = static_cast<std::uint32_t>(value);
-    float f = 0.0f;
-    std::memcpy(&f, &bits, 4);
-    return f;
-  }
-  if (!p.Integer)
-  {
-    double d = 0.0;
-    std::memcpy(&d, &value, 8);
-    return d;
-  }
-  if (p.Signed && (value >> (8 * p.Size - 1)) != 0)
-  {
-    return p.Size < 8 ? static_cast<double>(static_cast<std::int64_t>(value) - (std::int64_t(1) << (8 * p.Size)))
-                      : static_cast<double>(static_cast<std::int64_t>(value));
-  }
-  return static_cast<double>(value);
-}
-
 /// The x, y, z of the binary vertices that follow the header, read in chunks.
 sltk::Status binaryCoordinates(std::istream& in, const std::string& path, bool bigEndian, const PlyElement& vertex,
   const int* axis, std::vector<double>& xyz)
@@ -561,7 +351,7 @@ sltk::Status binaryCoordinates(std::istream& in, const std::string& path, bool b
       {
         const PlyProperty& p = vertex.Properties[static_cast<size_t>(axis[a])];
         xyz[static_cast<size_t>(3 * (first + i) + a)] =
-          scalarValue(raw.data() + i * itemBytes + at[static_cast<size_t>(axis[a])], p, bigEndian);
+          sltk::plyScalar(raw.data() + i * itemBytes + at[static_cast<size_t>(axis[a])], p, bigEndian);
       }
     }
   }
@@ -573,9 +363,10 @@ sltk::Status plyCoordinatesInDouble(const std::string& path, std::vector<double>
 {
   xyz.clear();
   std::ifstream in(path, std::ios::binary);
-  std::string format;
-  std::vector<PlyElement> elements;
-  SLTK_RETURN_IF_ERROR(readHeader(in, path, format, elements));
+  sltk::PlyHeader header;
+  SLTK_RETURN_IF_ERROR(readHeader(in, path, header));
+  const std::string& format = header.Format;
+  const std::vector<PlyElement>& elements = header.Elements;
   SLTK_RETURN_IF_ERROR(checkVertices(path, elements)); // the vertex element comes first, with x, y and z
   const PlyElement& vertex = elements[0];
   int axis[3] = { -1, -1, -1 };
@@ -626,9 +417,10 @@ sltk::Status checkPlyFile(const std::string& path)
   {
     return sltk::Status::ioError("cannot open '" + path + "': check the path and the permissions");
   }
-  std::string format;
-  std::vector<PlyElement> elements;
-  SLTK_RETURN_IF_ERROR(readHeader(in, path, format, elements));
+  sltk::PlyHeader header;
+  SLTK_RETURN_IF_ERROR(readHeader(in, path, header));
+  const std::string& format = header.Format;
+  const std::vector<PlyElement>& elements = header.Elements;
   SLTK_RETURN_IF_ERROR(checkVertices(path, elements));
   SLTK_RETURN_IF_ERROR(checkIndexLists(path, elements));
   return format == "ascii" ? checkAscii(in, path, elements)

@@ -7,13 +7,16 @@
 /// element first, its properties exactly the scalars x, y and z (any types,
 /// any order), and every later element empty. Other PLY files (ASCII, normals,
 /// colours, faces) are read whole by the caller's reader (the CLI's vtkPLYReader),
-/// which gives the surface their point arrays. The header is read here only for
-/// the layout: the CLI has checked the file with its serial checks before.
+/// which gives the surface their point arrays. The header is read by the
+/// parser of the CLI's checks (PlyHeader.h), which run on the file before.
 
 #include "sltk/cloud/CloudFileShares.h"
+#include "sltk/cloud/PlyHeader.h"
 #include "sltk/core/Status.h"
 #include "sltk/exec/Communicator.h"
 
+#include <array>
+#include <cstdint>
 #include <istream>
 #include <string>
 
@@ -26,8 +29,8 @@ struct PlyVertexLayout
   std::int64_t DataOffset = 0; ///< the first record's byte (after "end_header\n")
   std::int64_t Vertices = 0;
   std::int64_t RecordBytes = 0;
-  std::array<int, 3> Offset{}; ///< x, y and z in a record
-  std::array<char, 3> Type{};  ///< their types: 'c' 'C' 's' 'S' 'i' 'I' 'f' 'd' (int8 ... double)
+  std::array<int, 3> Offset{};       ///< x, y and z in a record
+  std::array<PlyProperty, 3> Axes{}; ///< their properties (types)
   bool BigEndian = false;
   /// A coordinate is double or a 32-bit integer: the CLI's serial reader keeps such
   /// coordinates in double (Apps/sltk/ReadVtkFile.h), the others in float (vtkPLYReader's).
