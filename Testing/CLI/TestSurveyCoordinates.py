@@ -17,6 +17,7 @@ import tempfile
 
 from vtkmodules.vtkCommonCore import vtkLogger, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkIOXML import vtkXMLHyperTreeGridReader
 
 import sltk as sltk_filters
 
@@ -110,6 +111,38 @@ expect(deviation <= TOLERANCE, "the far PLY is the near one moved, to %g (%g)" %
 origin_near, origin_far = vti_origin(outputs["near"]["vti"]), vti_origin(outputs["far"]["vti"])
 expect(all(abs(origin_far[a] - origin_near[a] - SHIFT[a]) <= TOLERANCE for a in range(3)),
        "the image's origin is moved by the shift (%s, %s)" % (origin_near, origin_far))
+
+# The CLI with --octree: the same surface moved and the octree's grid moved (its .htg coordinates).
+octree = {}
+for name in ("near", "far"):
+    files = {k: os.path.join(tmp, name + "-octree." + k) for k in ("htg", "ply", "json")}
+    p = subprocess.run([sltk, "reconstruct", os.path.join(tmp, name + ".xyz"), "--octree", "--runs", "2",
+                        "--interpolator", "q1", "--quiet", "-o", files["htg"], "--surface", files["ply"], "--json",
+                        files["json"]], capture_output=True, text=True, timeout=300)
+    expect(p.returncode == 0, "sltk reconstruct --octree of the %s cloud exits 0 (%s)" % (name, p.stderr.strip()))
+    octree[name] = files
+near_json, far_json = (json.load(open(octree[k]["json"])) for k in ("near", "far"))
+for key in ("surface_points", "surface_pieces", "euler_characteristic"):
+    expect(near_json[key] == far_json[key], "--octree: %s the same far from the origin (%s, %s)" %
+           (key, near_json[key], far_json[key]))
+near_kind, near_vertices = read_ply_vertices(octree["near"]["ply"])
+far_kind, far_vertices = read_ply_vertices(octree["far"]["ply"])
+expect(far_kind == "double" and len(near_vertices) == len(far_vertices) == near_json["surface_points"],
+       "--octree: the far PLY holds every vertex in double (%s, %d)" % (far_kind, len(far_vertices)))
+deviation = largest_deviation(near_vertices, far_vertices, SHIFT)
+expect(deviation <= TOLERANCE, "--octree: the far PLY is the near one moved, to %g (%g)" % (TOLERANCE, deviation))
+def htg_coordinates(path):
+    reader = vtkXMLHyperTreeGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    grid = reader.GetOutput()
+    return [getattr(grid, get)() for get in ("GetXCoordinates", "GetYCoordinates", "GetZCoordinates")]
+
+
+for axis, (a, b) in enumerate(zip(htg_coordinates(octree["near"]["htg"]), htg_coordinates(octree["far"]["htg"]))):
+    expect(a.GetNumberOfTuples() == b.GetNumberOfTuples() > 0 and
+           all(abs(b.GetTuple1(i) - a.GetTuple1(i) - SHIFT[axis]) <= TOLERANCE for i in range(a.GetNumberOfTuples())),
+           "--octree: the .htg's %s coordinates moved" % "xyz"[axis])
 
 # Where a result that does not fit misses its cloud (MissedPlaces.h) is said in the user's coordinates with
 # their detail: a needle beside the ellipsoid, thinner than run 1's cells of C_dx = 4, is missed, and the
