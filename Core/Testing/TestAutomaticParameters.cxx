@@ -355,6 +355,36 @@ TEST(AutomaticParameters, ThinFeatureLostByRunOneIsRecovered)
   EXPECT_LT(phiNear(first.SignedDistance, 0.75, 0.0), 0.0) << "the fin's middle is inside";
 }
 
+TEST(AutomaticParameters, ThinFeatureBrokenIntoPiecesIsRecoveredFromHalfTheCellSize)
+{
+  sltk::Context ctx;
+  // A fin 1.2 h_P thick. The first attempt (C_dx = 1, three runs, the automatic
+  // least-squares Q1) misses none of its points, yet its run 1's cells break the fin:
+  // the result has 2 pieces where the cloud has 1 component. Parts thinner than the cells
+  // broke apart, so it starts again from half the C_dx with one run fewer (the same
+  // finest grid), whose result is one piece (WENO3 on the first attempt's grids loses the fin).
+  const sltk::PointCloud<2> cloud = sltk::discWithFinCloud(0.012);
+  sltk::ReconstructionOptions defaults;
+  defaults.SeedFarPoints = false;
+  sltk::ReconstructionResult<2> kept;
+  const sltk::Status status = sltk::reconstruct(cloud, defaults, ctx, kept);
+  ASSERT_TRUE(status.isOk()) << status.message();
+  EXPECT_EQ(kept.Interpolator, sltk::InterpolatorKind::LeastSquaresQ1);
+  ASSERT_EQ(kept.Recoveries.size(), 1u);
+  EXPECT_NE(kept.Recoveries[0].find("the result has 2 pieces where the cloud has 1"), std::string::npos)
+    << kept.Recoveries[0];
+  EXPECT_NE(kept.Recoveries[0].find("reconstructed again from C_dx = 0.5 with 2 run(s)"), std::string::npos)
+    << kept.Recoveries[0];
+  EXPECT_EQ(kept.CellSizeFactor, 0.5);
+  EXPECT_EQ(kept.Runs.size(), 2u);
+  EXPECT_EQ(kept.Pieces, 1);
+  EXPECT_EQ(kept.CloudComponents, 1);
+  EXPECT_TRUE(kept.FitsCloud);
+  EXPECT_TRUE(kept.Warnings.empty()) << kept.Warnings.front();
+  EXPECT_LT(phiNear(kept.SignedDistance, 0.75, 0.0), 0.0) << "the fin's middle is inside";
+  EXPECT_GT(phiNear(kept.SignedDistance, 0.75, 0.1), 0.0) << "beside the fin is outside";
+}
+
 TEST(AutomaticParameters, ResultThatMissesTheCloudSaysSo)
 {
   // A circle with a needle of points (no thickness) reaching 1.5 radii out: run 1's cells
@@ -387,7 +417,8 @@ TEST(AutomaticParameters, ResultThatMissesTheCloudSaysSo)
   EXPECT_EQ(needle.Upper[0], 2.5) << "the needle's tip";
   EXPECT_EQ(needle.Lower[1], 0.0);
   EXPECT_EQ(needle.Upper[1], 0.0);
-  EXPECT_NE(result.Warnings[0].find("outside it they gather at " + std::to_string(needle.Points) + " point(s) around ("),
+  EXPECT_NE(
+    result.Warnings[0].find("outside it they gather at " + std::to_string(needle.Points) + " point(s) around ("),
     std::string::npos)
     << result.Warnings[0];
 }

@@ -266,13 +266,72 @@ void statePieces(const ReconstructionPlan<D>& plan, const ReconstructionOptions&
   ctx.logger().log(LogLevel::Warning, statement.str());
 }
 
+/// `finer`: `ran` with one run fewer from half its C_dx, which ends on the same finest grid,
+/// and its grids. When that is one run, its grid is the finest grid, which the automatic C_dx
+/// fitted to the memory budget without run 1's padding for its initial surface; if the padding
+/// takes it past the budget, the smallest C_dx above the half that fits, up the ladder of the
+/// automatic C_dx (CellSizeLadderStep, AutomaticParameters.h) while it stays below `ran`'s.
+/// False when none fits (with two runs or more, a run 1 that does not fit at half the C_dx is
+/// not restarted, as before). Collective: every rank takes the same decisions (comm.agree;
+/// machines differ).
+template <int D>
+bool planFinerStart(const ReconstructionPlan<D>& plan, const Communicator& comm, const ReconstructionOptions& ran,
+  ReconstructionOptions& finer, GridPlan<D>& grids)
+{
+  finer = ran;
+  finer.Runs -= 1;
+  for (double c = ran.CellSizeFactor / 2.0; c < ran.CellSizeFactor; c *= CellSizeLadderStep)
+  {
+    const Status planned = comm.agree(planRunGrids(plan, finer.Runs, c, grids));
+    if (planned.isOk())
+    {
+      finer.CellSizeFactor = c;
+      return true;
+    }
+    if (planned.code() != StatusCode::OutOfMemory || finer.Runs > 1)
+    {
+      return false;
+    }
+  }
+  return false;
+}
+
+/// Why the result of `ran` starts again as `finer`, from half its C_dx (reconstructWithRecoveries):
+/// its pieces against the cloud's `components`, else its far or missed points.
+template <int D>
+std::string restartReason(const ReconstructionPlan<D>& plan, const ReconstructionResult<D>& records, Index components,
+  const ReconstructionOptions& ran, const ReconstructionOptions& finer)
+{
+  const RunFigures& last = records.Runs.back();
+  std::ostringstream what;
+  if (records.Pieces > components)
+  {
+    what << piecesAgainstComponents(plan, records.Pieces, components);
+  }
+  else if (last.FarPoints > FarPointWarning)
+  {
+    what << 100.0 * last.FarPoints << "% of the points ended more than one cell of run 1 from the surface";
+  }
+  else
+  {
+    what << 100.0 * last.MisfitPoints << "% of the points ended more than two finest cells and h_P from the surface";
+  }
+  what << " with C_dx = " << ran.CellSizeFactor << ": reconstructed again from C_dx = " << finer.CellSizeFactor
+       << " with " << finer.Runs << " run(s), which end on "
+       << (finer.CellSizeFactor == ran.CellSizeFactor / 2.0
+              ? "the same finest grid"
+              : "the finest grid that fits the memory budget (run 1's padding for its initial surface)");
+  return what.str();
+}
+
 /// Algorithm 1 on the plan with every recovery: `runWith(options, grids)`
 /// runs it (runAlgorithm1 on a fresh storage, filling `records`) with the
 /// plan's options; when C_dx was chosen automatically and the last run lost
-/// thin features (lostThinFeatures), it runs again from
-/// half the C_dx with one run fewer, which ends on the same finest grid; when the
-/// automatic interpolator chose the least-squares Q1 and the result has more pieces
-/// than the cloud has components (PieceLinkFactor), again with WENO3 on the same grids.
+/// thin features (lostThinFeatures) or the result has more pieces than the cloud has
+/// components (PieceLinkFactor), it runs again from half the C_dx with one run fewer,
+/// which ends on the same finest grid, and halves again while the pieces stay more
+/// (down to one run on that grid); when the automatic interpolator chose the
+/// least-squares Q1 and the result still has more pieces, again with WENO3 on the same grids.
 /// The records are returned in the user's units (recordsToUser), with the plan's
 /// choices; the storage's fields are left in unit-box units.
 template <int D, class RunWith>
@@ -307,34 +366,6 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
     return rerun;
   };
   Status status = start(plan.Options, plan.Grids.Runs);
-  ReconstructionOptions finer = plan.Options;
-  finer.Runs -= 1;
-  finer.CellSizeFactor /= 2.0;
-  GridPlan<D> finerGrids;
-  bool restarted = false;
-  if (status.isOk() && plan.AutomaticCellSize && finer.Runs >= 1 && !records.Runs.empty() &&
-    lostThinFeatures(records.Runs.back()) &&
-    comm.agree(planRunGrids(plan, finer.Runs, finer.CellSizeFactor, finerGrids)).isOk()) // machines differ
-  {
-    // Run 1 lost features thinner than its cells: start at half the cell size with
-    // one run fewer, which ends on the same finest grid (the same memory).
-    const RunFigures& last = records.Runs.back();
-    std::ostringstream what;
-    if (last.FarPoints > FarPointWarning)
-    {
-      what << 100.0 * last.FarPoints << "% of the points ended more than one cell of run 1 from the surface";
-    }
-    else
-    {
-      what << 100.0 * last.MisfitPoints << "% of the points ended more than two finest cells and h_P from the surface";
-    }
-    what << " with C_dx = " << plan.Options.CellSizeFactor
-         << ": reconstructed again from C_dx = " << finer.CellSizeFactor << " with " << finer.Runs
-         << " run(s), which end on the same finest grid";
-    status = again(finer, finerGrids.Runs, what.str());
-    restarted = true;
-  }
-  ReconstructionOptions ran = restarted ? finer : plan.Options;
   const auto counting = std::chrono::steady_clock::now();
   // Links that follow the local spacing (Documentation/Numerics.md, "Pieces against the
   // cloud's components"): every rank holds the whole cloud and counts the same.
@@ -343,12 +374,33 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
   ctx.logger().log(LogLevel::Info,
     "the cloud has " + std::to_string(components) + " connected component(s) at 4 local spacings, counted in " +
       std::to_string(detail::secondsSince(counting)) + " s");
+  ReconstructionOptions ran = plan.Options;
+  std::vector<GridSpec<D>> ranGrids = plan.Grids.Runs;
+  bool restarted = false;
+  // Run 1 lost features thinner than its cells (lostThinFeatures, or thin parts broke into
+  // more pieces than the cloud's components): start at half the cell size with one run fewer,
+  // which ends on the same finest grid (the same memory); again while the pieces stay more
+  // (Documentation/Numerics.md, "Lost thin features").
+  while (status.isOk() && plan.AutomaticCellSize && ran.Runs > 1 && !records.Runs.empty() &&
+    (records.Pieces > components || (!restarted && lostThinFeatures(records.Runs.back()))))
+  {
+    ReconstructionOptions finer = ran;
+    GridPlan<D> finerGrids;
+    if (!planFinerStart(plan, comm, ran, finer, finerGrids))
+    {
+      break;
+    }
+    status = again(finer, finerGrids.Runs, restartReason(plan, records, components, ran, finer));
+    ran = finer;
+    ranGrids = finerGrids.Runs;
+    restarted = true;
+  }
   if (status.isOk() && records.Pieces > components && plan.CloudNoise >= 0.0 &&
     ran.Interpolator == InterpolatorKind::LeastSquaresQ1)
   {
     // The automatic least-squares Q1 let thin parts break apart: WENO3 on the same grids.
     ran.Interpolator = InterpolatorKind::Weno3;
-    status = again(ran, restarted ? finerGrids.Runs : plan.Grids.Runs,
+    status = again(ran, ranGrids,
       piecesAgainstComponents(plan, records.Pieces, components) +
         " with the automatic interpolator lsq-q1: reconstructed again with weno3 on the same grids");
   }
