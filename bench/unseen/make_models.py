@@ -95,6 +95,31 @@ def animal(x, y, z):
     return d
 
 
+def ring(x, y, z, c, axis, R, r):
+    """A torus of tube radius r around the circle of radius R about `axis` (0, 1 or 2) through c."""
+    p = [x - c[0], y - c[1], z - c[2]]
+    along = p.pop(axis)
+    return np.sqrt((np.sqrt(p[0] ** 2 + p[1] ** 2) - R) ** 2 + along ** 2) - r
+
+
+def bone(x, y, z):
+    # a shaft with two knobs (genus 0) and two arches standing on it, 0.03 and 0.04 thick: on the
+    # 0.02 grid (h_P about 0.01) 3 and 4 point spacings, the thin handles of issue "Real-world
+    # clouds"; genus 2
+    d = smooth_min(capsule(x, y, z, (-1.0, 0, 0), (1.0, 0, 0), 0.2),
+                   np.minimum(sphere(x, y, z, (-1.1, 0, 0), 0.32), sphere(x, y, z, (1.1, 0, 0), 0.32)), 0.1)
+    for cx, r in ((-0.45, 0.015), (0.45, 0.02)):
+        d = smooth_min(d, ring(x, y, z, (cx, 0.0, 0.42), 1, 0.3, r), 0.02)
+    return d
+
+
+def chain(x, y, z):
+    # three linked tori (R = 0.6, tube radius 0.06: 12 point spacings) 0.8 apart, each through
+    # the next's hole, their tubes 0.28 apart where they pass: 3 parts of genus 1
+    return np.minimum(np.minimum(ring(x, y, z, (0.0, 0, 0), 2, 0.6, 0.06), ring(x, y, z, (0.8, 0, 0), 1, 0.6, 0.06)),
+                      ring(x, y, z, (1.6, 0, 0), 2, 0.6, 0.06))
+
+
 def contour(f, lo, hi, h):
     """Zero level set of f sampled with spacing h on the box [lo, hi] (shifted by h/pi so that
     no node lies exactly on the surface)."""
@@ -180,6 +205,8 @@ MODELS = {
     "part3": (part3, (-2.2, -1.0, -0.5), (2.2, 1.0, 0.5), 0.025, 3, 1, None),
     "two_spheres": (two_spheres, (-2.3, -1.2, -1.2), (2.3, 1.2, 1.2), 0.035, 0, 2, None),
     "animal": (animal, (-1.4, -1.1, -0.65), (1.8, 0.9, 0.65), 0.02, 0, 1, None),
+    "bone": (bone, (-1.5, -0.4, -0.4), (1.5, 0.4, 0.8), 0.02, 2, 1, None),
+    "chain": (chain, (-0.75, -0.75, -0.75), (2.35, 0.75, 0.75), 0.02, 3, 3, None),
     "torus_cad": (torus, (-1.5, -1.5, -0.5), (1.5, 1.5, 0.5), 0.01, 1, 1, (0.9, None)),
     "part3_cad": (part3, (-2.2, -1.0, -0.5), (2.2, 1.0, 0.5), 0.01, 3, 1, (0.95, 0.3)),
     "part3_cad_vertices": (part3, (-2.2, -1.0, -0.5), (2.2, 1.0, 0.5), 0.01, 3, 1, (0.95, None)),
