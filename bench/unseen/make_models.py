@@ -102,15 +102,20 @@ def ring(x, y, z, c, axis, R, r):
     return np.sqrt((np.sqrt(p[0] ** 2 + p[1] ** 2) - R) ** 2 + along ** 2) - r
 
 
-def bone(x, y, z):
+def bone(x, y, z, radii=(0.015, 0.02)):
     # a shaft with two knobs (genus 0) and two arches standing on it, 0.03 and 0.04 thick: on the
     # 0.02 grid (h_P about 0.01) 3 and 4 point spacings, the thin handles of issue "Real-world
     # clouds"; genus 2
     d = smooth_min(capsule(x, y, z, (-1.0, 0, 0), (1.0, 0, 0), 0.2),
                    np.minimum(sphere(x, y, z, (-1.1, 0, 0), 0.32), sphere(x, y, z, (1.1, 0, 0), 0.32)), 0.1)
-    for cx, r in ((-0.45, 0.015), (0.45, 0.02)):
+    for cx, r in zip((-0.45, 0.45), radii):
         d = smooth_min(d, ring(x, y, z, (cx, 0.0, 0.42), 1, 0.3, r), 0.02)
     return d
+
+
+def bone_thin(x, y, z):
+    # the bone with arches 0.02 and 0.03 thick: 2 and 3 point spacings of its cloud (spacing 0.01)
+    return bone(x, y, z, (0.01, 0.015))
 
 
 def chain(x, y, z):
@@ -148,7 +153,16 @@ def contour(f, lo, hi, h):
 
 
 def cad_like(mesh, reduction, max_edge):
-    """A CAD-like tessellation of mesh: decimated, then edges longer than max_edge split."""
+    """A CAD-like tessellation of mesh: decimated, then edges longer than max_edge split; or, with
+    reduction "spacing", the mesh's vertices merged within max_edge (a cloud sampled at about
+    that spacing from a finer reference)."""
+    if reduction == "spacing":
+        merge = vtkCleanPolyData()
+        merge.SetInputData(mesh)
+        merge.ToleranceIsAbsoluteOn()
+        merge.SetAbsoluteTolerance(max_edge)
+        merge.Update()
+        return merge.GetOutput()
     coarse = decimate(mesh, reduction)
     if max_edge is None:
         return coarse
@@ -206,6 +220,7 @@ MODELS = {
     "two_spheres": (two_spheres, (-2.3, -1.2, -1.2), (2.3, 1.2, 1.2), 0.035, 0, 2, None),
     "animal": (animal, (-1.4, -1.1, -0.65), (1.8, 0.9, 0.65), 0.02, 0, 1, None),
     "bone": (bone, (-1.5, -0.4, -0.4), (1.5, 0.4, 0.8), 0.02, 2, 1, None),
+    "bone_thin": (bone_thin, (-1.5, -0.4, -0.4), (1.5, 0.4, 0.8), 0.005, 2, 1, ("spacing", 0.01)),
     "chain": (chain, (-0.75, -0.75, -0.75), (2.35, 0.75, 0.75), 0.02, 3, 3, None),
     "torus_cad": (torus, (-1.5, -1.5, -0.5), (1.5, 1.5, 0.5), 0.01, 1, 1, (0.9, None)),
     "part3_cad": (part3, (-2.2, -1.0, -0.5), (2.2, 1.0, 0.5), 0.01, 3, 1, (0.95, 0.3)),
