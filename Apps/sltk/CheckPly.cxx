@@ -16,13 +16,9 @@ namespace sltkcli
 {
 namespace
 {
+using sltk::plyDamaged;
 using sltk::PlyElement;
 using sltk::PlyProperty;
-
-sltk::Status damaged(const std::string& path, const std::string& what)
-{
-  return sltk::plyDamaged(path, what);
-}
 
 /// vtkPLYReader asks for these properties by name as numbers (vertex) or as the kind given (face),
 /// and stores a list where it asked for a number (or the reverse) through a type it never set: an
@@ -33,7 +29,7 @@ sltk::Status checkPropertyKind(
   const bool list = property.CountSize > 0;
   if (element == "vertex" && list)
   {
-    return damaged(path,
+    return plyDamaged(path,
       "the vertex property '" + property.Name + "' is a list in " + where +
         ": VTK's PLY reader reads vertex properties as numbers (export the vertices without lists)");
   }
@@ -44,7 +40,7 @@ sltk::Status checkPropertyKind(
     const bool wantsNumber = name == "red" || name == "green" || name == "blue" || name == "alpha";
     if ((wantsList && !list) || (wantsNumber && list))
     {
-      return damaged(path,
+      return plyDamaged(path,
         "the face property '" + name + "' must be " + (wantsList ? "a list" : "a number") +
           " for VTK's PLY reader, in " + where);
     }
@@ -75,7 +71,7 @@ sltk::Status checkVertices(const std::string& path, const std::vector<PlyElement
     const bool inPlace = name == "vertex" ? k == 0 : name == "face" ? k == 1 && vertexFirst : k >= 1 && vertexFirst;
     if (!inPlace)
     {
-      return damaged(path,
+      return plyDamaged(path,
         "its element '" + name + "' is out of place: VTK's PLY reader needs the vertex " +
           "element first, then the faces, then any other (export it in that order)");
     }
@@ -95,13 +91,13 @@ sltk::Status checkVertices(const std::string& path, const std::vector<PlyElement
       }
       if (!found)
       {
-        return damaged(
+        return plyDamaged(
           path, std::string("its vertices have no scalar '") + axis + "' property (x, y and z are needed)");
       }
     }
     return sltk::Status::ok();
   }
-  return damaged(path, "it has no 'vertex' element");
+  return plyDamaged(path, "it has no 'vertex' element");
 }
 
 std::int64_t vertexCount(const std::vector<PlyElement>& elements)
@@ -127,13 +123,13 @@ sltk::Status checkIndexLists(const std::string& path, const std::vector<PlyEleme
     {
       if (p.isVertexIndexList() && !p.Integer)
       {
-        return damaged(path, "the " + element.Name + " list '" + p.Name + "' does not hold integers");
+        return plyDamaged(path, "the " + element.Name + " list '" + p.Name + "' does not hold integers");
       }
       hasIndices = hasIndices || p.isVertexIndexList();
     }
     if (element.Name == "face" && element.Count > 0 && !hasIndices)
     {
-      return damaged(path, "its faces have no 'vertex_indices' list (the only name VTK's PLY reader reads)");
+      return plyDamaged(path, "its faces have no 'vertex_indices' list (the only name VTK's PLY reader reads)");
     }
   }
   return sltk::Status::ok();
@@ -142,7 +138,7 @@ sltk::Status checkIndexLists(const std::string& path, const std::vector<PlyEleme
 sltk::Status indexOutOfRange(const std::string& path, const PlyElement& element, std::int64_t item,
   const std::string& index, std::int64_t vertices)
 {
-  return damaged(path,
+  return plyDamaged(path,
     element.Name + " " + std::to_string(item) + " names vertex " + index + ", but there are " +
       std::to_string(vertices) + " vertices");
 }
@@ -180,7 +176,7 @@ sltk::Status checkBinary(
     {
       if (element.Count > 0 && (end - at) / itemBytes < element.Count)
       {
-        return damaged(path, "it is truncated: " + itemText(element, (end - at) / itemBytes) + " are there");
+        return plyDamaged(path, "it is truncated: " + itemText(element, (end - at) / itemBytes) + " are there");
       }
       at += itemBytes * element.Count;
       continue;
@@ -196,14 +192,14 @@ sltk::Status checkBinary(
           in.seekg(at);
           if (end - at < p.CountSize || !in.read(reinterpret_cast<char*>(count), p.CountSize))
           {
-            return damaged(path, "it is truncated: " + itemText(element, item) + " are there");
+            return plyDamaged(path, "it is truncated: " + itemText(element, item) + " are there");
           }
           at += p.CountSize;
           bytes = static_cast<std::streamoff>(sltk::plyBits(count, p.CountSize, bigEndian)) * p.Size;
         }
         if (end - at < bytes)
         {
-          return damaged(path, "it is truncated: " + itemText(element, item) + " are there");
+          return plyDamaged(path, "it is truncated: " + itemText(element, item) + " are there");
         }
         if (p.isVertexIndexList())
         {
@@ -267,22 +263,22 @@ sltk::Status checkAscii(std::istream& in, const std::string& path, const std::ve
     {
       if (!std::getline(in, line))
       {
-        return damaged(path, "it is truncated: " + itemText(element, item) + " are there");
+        return plyDamaged(path, "it is truncated: " + itemText(element, item) + " are there");
       }
       if (in.eof())
       {
         // VTK's parser takes a last line without a line end for the end of the file, and aborts.
-        return damaged(path, "the line of " + element.Name + " " + std::to_string(item) + " has no line end");
+        return plyDamaged(path, "the line of " + element.Name + " " + std::to_string(item) + " has no line end");
       }
       const std::string odd = sltk::plyOddLine(line);
       if (!odd.empty())
       {
-        return damaged(path, odd + ", in " + element.Name + " " + std::to_string(item));
+        return plyDamaged(path, odd + ", in " + element.Name + " " + std::to_string(item));
       }
       if (line.find_first_not_of(" \t\r") == std::string::npos)
       {
         // VTK's parser takes a blank line as an item without words, then aborts at the end of the file.
-        return damaged(path, "a blank line where " + element.Name + " " + std::to_string(item) + " was expected");
+        return plyDamaged(path, "a blank line where " + element.Name + " " + std::to_string(item) + " was expected");
       }
       const std::vector<std::string> words = wordsOf(line);
       const std::string what = element.Name + " " + std::to_string(item);
@@ -292,13 +288,13 @@ sltk::Status checkAscii(std::istream& in, const std::string& path, const std::ve
       {
         if (next >= words.size())
         {
-          return damaged(path,
+          return plyDamaged(path,
             what + " has only " + std::to_string(words.size()) + " numbers, too few for its properties ('" + line +
               "')");
         }
         if (!isNumber(words[next], value))
         {
-          return damaged(path, "'" + words[next] + "' is not a number, in " + what + " ('" + line + "')");
+          return plyDamaged(path, "'" + words[next] + "' is not a number, in " + what + " ('" + line + "')");
         }
         ++next;
         if (p.CountSize == 0)
@@ -307,13 +303,13 @@ sltk::Status checkAscii(std::istream& in, const std::string& path, const std::ve
         }
         if (!(value >= 0.0) || value > static_cast<double>(words.size() - next) || value != std::floor(value))
         {
-          return damaged(path, what + " is incomplete: its list count is " + words[next - 1] + " ('" + line + "')");
+          return plyDamaged(path, what + " is incomplete: its list count is " + words[next - 1] + " ('" + line + "')");
         }
         for (std::int64_t k = 0, count = static_cast<std::int64_t>(value); k < count; ++k, ++next)
         {
           if (!isNumber(words[next], value))
           {
-            return damaged(path, "'" + words[next] + "' is not a number, in " + what + " ('" + line + "')");
+            return plyDamaged(path, "'" + words[next] + "' is not a number, in " + what + " ('" + line + "')");
           }
           if (p.isVertexIndexList() && !(value >= 0.0 && value < static_cast<double>(vertices)))
           {
@@ -343,7 +339,7 @@ sltk::Status binaryCoordinates(std::istream& in, const std::string& path, bool b
     const std::int64_t n = std::min(Chunk, vertex.Count - first);
     if (!in.read(reinterpret_cast<char*>(raw.data()), static_cast<std::streamsize>(n * itemBytes)))
     {
-      return damaged(path, "it is truncated in its vertices");
+      return plyDamaged(path, "it is truncated in its vertices");
     }
     for (std::int64_t i = 0; i < n; ++i)
     {
@@ -379,7 +375,7 @@ sltk::Status plyCoordinatesInDouble(const std::string& path, std::vector<double>
       if (axis[a] < 0 && p.Name == std::string(1, static_cast<char>('x' + a)))
       {
         axis[a] = static_cast<int>(k);
-        wide = wide || p.Size == 8 || (p.Integer && p.Size == 4);
+        wide = wide || p.widerThanFloat();
       }
     }
   }
@@ -402,7 +398,7 @@ sltk::Status plyCoordinatesInDouble(const std::string& path, std::vector<double>
       double value = 0.0;
       if (static_cast<size_t>(axis[a]) >= words.size() || !isNumber(words[static_cast<size_t>(axis[a])], value))
       {
-        return damaged(path, "vertex " + std::to_string(i) + " has no number for its coordinate " + "xyz"[a]);
+        return plyDamaged(path, "vertex " + std::to_string(i) + " has no number for its coordinate " + "xyz"[a]);
       }
       xyz[static_cast<size_t>(3 * i + a)] = value;
     }

@@ -33,8 +33,8 @@ bool coordinateLayout(const PlyElement& vertex, PlyVertexLayout& layout)
     offset += property.Size;
   }
   layout.RecordBytes = offset;
-  layout.Wide = std::any_of(layout.Axes.begin(), layout.Axes.end(),
-    [](const PlyProperty& p) { return p.Size == 8 || (p.Integer && p.Size == 4); });
+  layout.Wide =
+    std::any_of(layout.Axes.begin(), layout.Axes.end(), [](const PlyProperty& p) { return p.widerThanFloat(); });
   layout.Vertices = vertex.Count;
   return found == 7;
 }

@@ -25,6 +25,9 @@ struct PlyProperty
   int CountSize = 0;    ///< bytes of a list's count; 0 for a scalar
   bool Integer = false; ///< the (item) type is an integer type
   bool Signed = false;  ///< ... and a signed one
+  /// A scalar that float does not hold exactly: double, or a 32-bit integer (the
+  /// CLI reads such coordinates again in double, Apps/sltk/ReadVtkFile.h).
+  bool widerThanFloat() const { return this->Size == 8 || (this->Integer && this->Size == 4); }
   /// A list of vertex indices (a face's or a strip's).
   bool isVertexIndexList() const { return this->CountSize > 0 && this->Name == "vertex_indices"; }
 };
