@@ -11,7 +11,8 @@
  *    and a per-run summary in its field data (CloudSpacing, RunGridDimensions,
  *    RunIterations, RunEnergy, RunCloudError, RunFarPoints, RunMisfitPoints, RunSeconds;
  *    FitsCloud, 0 when more than 5% of the points lie more than two finest cells
- *    and h_P from the surface or when the result has more Pieces (components of
+ *    and h_P from the surface, when one place holds at least 0.5% of them and the
+ *    surface misses 85% of the points there (a lost part, MissedPlaces.h), or when the result has more Pieces (components of
  *    its inside) than the cloud has CloudComponents (points within 4 local spacings linked); the strings
  * AutomaticChoices, Recoveries and Warnings, the last empty unless the result leaves points far from its surface, with
  * the option that may help); with OctreeStorage a vtkHyperTreeGrid with the same values as cell data;

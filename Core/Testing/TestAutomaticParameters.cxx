@@ -385,20 +385,31 @@ TEST(AutomaticParameters, ThinFeatureBrokenIntoPiecesIsRecoveredFromHalfTheCellS
   EXPECT_GT(phiNear(kept.SignedDistance, 0.75, 0.1), 0.0) << "beside the fin is outside";
 }
 
-TEST(AutomaticParameters, ResultThatMissesTheCloudSaysSo)
+namespace
 {
-  // A circle with a needle of points (no thickness) reaching 1.5 radii out: run 1's cells
-  // of C_dx = 4 cannot hold the needle, so its far half is missed (more than FitShare).
+/// 400 points on the unit circle and a needle of `points` points (no thickness) from it
+/// along +x, `length` long, its last point at x = 1 + length.
+sltk::PointCloud<2> circleWithNeedle(int points, double length)
+{
   sltk::PointCloud<2> cloud;
   for (int k = 0; k < 400; ++k)
   {
     const double a = 2.0 * 3.14159265358979323846 * k / 400.0;
     cloud.Points.push_back({ std::cos(a), std::sin(a) });
   }
-  for (int k = 1; k <= 80; ++k)
+  for (int k = 1; k <= points; ++k)
   {
-    cloud.Points.push_back({ 1.0 + 1.5 * k / 80.0, 0.0 });
+    cloud.Points.push_back({ 1.0 + length * k / points, 0.0 });
   }
+  return cloud;
+}
+} // namespace
+
+TEST(AutomaticParameters, ResultThatMissesTheCloudSaysSo)
+{
+  // A circle with a needle of points (no thickness) reaching 1.5 radii out: run 1's cells
+  // of C_dx = 4 cannot hold the needle, so its far half is missed (more than FitShare).
+  const sltk::PointCloud<2> cloud = circleWithNeedle(80, 1.5);
   sltk::ReconstructionOptions options;
   options.CellSizeFactor = 4.0;
   options.Runs = 1;
@@ -418,9 +429,57 @@ TEST(AutomaticParameters, ResultThatMissesTheCloudSaysSo)
   EXPECT_EQ(needle.Lower[1], 0.0);
   EXPECT_EQ(needle.Upper[1], 0.0);
   EXPECT_NE(
-    result.Warnings[0].find("outside it they gather at " + std::to_string(needle.Points) + " point(s) around ("),
+    result.Warnings[0].find("outside it they gather at " + std::to_string(needle.Points) + " point(s) (of the "),
     std::string::npos)
     << result.Warnings[0];
+}
+
+TEST(AutomaticParameters, LostPartUnderTheMisfitShareSaysSo)
+{
+  // The circle with a needle of points (no thickness) 0.3 radii long, 4.5% of the cloud: the
+  // cells of C_dx = 1 and WENO3 lose it, and its points are under FitShare. But the surface
+  // misses nearly every point where the needle was, which is a lost part (lostPart,
+  // MissedPlaces.h): the result says so, and where.
+  sltk::PointCloud<2> cloud = circleWithNeedle(19, 0.3);
+  sltk::ReconstructionOptions options;
+  options.CellSizeFactor = 1.0;
+  options.Interpolator = sltk::InterpolatorKind::Weno3;
+  options.SeedFarPoints = false;
+  sltk::Context ctx;
+  sltk::ReconstructionResult<2> result;
+  ASSERT_TRUE(sltk::reconstruct(cloud, options, ctx, result).isOk());
+  EXPECT_GT(result.Runs.back().MisfitPoints, sltk::LostPartShare);
+  EXPECT_LT(result.Runs.back().MisfitPoints, sltk::FitShare) << "the share alone would call it a fit";
+  ASSERT_FALSE(result.MissedPlaces.empty());
+  const sltk::MissedPlace<2>& needle = result.MissedPlaces[0];
+  EXPECT_GE(needle.Points, sltk::LostPartMissed * needle.Nearby) << needle.Points << " of " << needle.Nearby;
+  EXPECT_DOUBLE_EQ(needle.Upper[0], 1.3) << "the needle's tip";
+  EXPECT_FALSE(result.FitsCloud);
+  ASSERT_FALSE(result.Warnings.empty());
+  EXPECT_NE(result.Warnings[0].find("the result does not fit the cloud: it lost a part of the model, " +
+              std::to_string(needle.Points) + " of the " + std::to_string(needle.Nearby) + " points around ("),
+    std::string::npos)
+    << result.Warnings[0];
+  EXPECT_NE(result.Warnings[0].find("a C_dx below the 1 that ran"), std::string::npos) << result.Warnings[0];
+
+  // With the automatic C_dx the lost part starts it again from half the C_dx; the needle, no
+  // thicker than its points, is lost there too, and the result says so with the C_dx that ran.
+  options.CellSizeFactor = 0.0;
+  sltk::ReconstructionResult<2> again;
+  ASSERT_TRUE(sltk::reconstruct(cloud, options, ctx, again).isOk());
+  ASSERT_EQ(again.Recoveries.size(), 1u);
+  EXPECT_NE(again.Recoveries[0].find("(a part of the model lost) with C_dx = 1: reconstructed again from C_dx = 0.5"),
+    std::string::npos)
+    << again.Recoveries[0];
+  EXPECT_FALSE(again.FitsCloud);
+  ASSERT_FALSE(again.Warnings.empty());
+  EXPECT_NE(again.Warnings[0].find("a C_dx below the 0.5 that ran"), std::string::npos) << again.Warnings[0];
+
+  // The circle alone fits: no place is a lost part.
+  cloud.Points.resize(400);
+  sltk::ReconstructionResult<2> circle;
+  ASSERT_TRUE(sltk::reconstruct(cloud, options, ctx, circle).isOk());
+  EXPECT_TRUE(circle.FitsCloud) << circle.Warnings.front();
 }
 
 TEST(AutomaticParameters, StalledRunFollowsFarPoints)

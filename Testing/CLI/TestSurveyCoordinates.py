@@ -147,7 +147,7 @@ for axis, (a, b) in enumerate(zip(htg_coordinates(octree["near"]["htg"]), htg_co
 # Where a result that does not fit misses its cloud (MissedPlaces.h) is said in the user's coordinates with
 # their detail: a needle beside the ellipsoid, thinner than run 1's cells of C_dx = 4, is missed, and the
 # far cloud's statement names the near one's places moved by the shift (not the local frame's, not 1e+07).
-PLACE = re.compile(r"(\d+) point\(s\) around \(([^)]*)\) from \(([^)]*)\) to \(([^)]*)\)")
+PLACE = re.compile(r"(\d+) point\(s\) \(of the \d+ there\) around \(([^)]*)\) from \(([^)]*)\) to \(([^)]*)\)")
 needle = [(round((1.2 + 1.5 * (k + 1) / 200) * 2 ** 29) / 2 ** 29, 0.0, 0.0) for k in range(200)]
 places = {}
 for name, points in (("near", near + needle), ("far", moved(near + needle, SHIFT))):

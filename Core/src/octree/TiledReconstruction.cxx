@@ -164,7 +164,7 @@ public:
     const bool ran = status.isOk() && !vanished;
     this->Seeds = seedsAfterRun(
       band, this->Plan.Cloud, this->Plan.CloudSpacing, this->Options, run, ran, this->Distribution.comm());
-    records.MissedPlaces = missedPlacesAfterRun(band, this->Plan.Cloud, this->Plan.CloudSpacing, this->Options, run,
+    records.MissedPlaces = missedPlacesAfterRun(band, *this->Plan.Locator, this->Plan.CloudSpacing, this->Options, run,
       ran, records.Runs, this->Distribution.comm());
     recordStorage(this->Field, run, storage, this->Distribution, this->Out.Storage);
     return status;

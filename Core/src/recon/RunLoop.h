@@ -80,8 +80,9 @@ std::string describeMissedPlaces(
   for (size_t k = 0; k < places.size(); ++k)
   {
     const MissedPlace<D>& place = places[k];
-    text << (k ? "," : "") << " " << place.Points << " point(s) around " << position<D>(box, frame, place.Centre)
-         << " from " << position<D>(box, frame, place.Lower) << " to " << position<D>(box, frame, place.Upper);
+    text << (k ? "," : "") << " " << place.Points << " point(s) (of the " << place.Nearby << " there) around "
+         << position<D>(box, frame, place.Centre) << " from " << position<D>(box, frame, place.Lower) << " to "
+         << position<D>(box, frame, place.Upper);
   }
   return text.str();
 }
@@ -226,6 +227,26 @@ inline bool lostThinFeatures(const RunFigures& last)
   return last.FarPoints > FarPointWarning || last.MisfitPoints > FitShare;
 }
 
+/// Whether the result lost thin features (lostThinFeatures) or a part of the model, a place
+/// where nearly every point is missed (lostPart, MissedPlaces.h) of a cloud of `cloudPoints`.
+template <int D>
+bool lostFeatures(const ReconstructionResult<D>& records, Index cloudPoints)
+{
+  return !records.Runs.empty() &&
+    (lostThinFeatures(records.Runs.back()) || lostPart(records.MissedPlaces, cloudPoints) != nullptr);
+}
+
+/// "N of the M points around (x, y, z) from (..) to (..)": a lost part (lostPart) in the user's
+/// coordinates, its bounds in the run's unit-box units.
+template <int D>
+std::string lostPartText(const ReconstructionPlan<D>& plan, const MissedPlace<D>& place)
+{
+  const auto at = [&](const std::array<double, D>& unit)
+  { return detail::position<D>(plan.Box, plan.Options.FrameShift, unit); };
+  return std::to_string(place.Points) + " of the " + std::to_string(place.Nearby) + " points around " +
+    at(place.Centre) + " from " + at(place.Lower) + " to " + at(place.Upper);
+}
+
 /// "the result has N pieces where the cloud has M connected component(s) at 4 local
 /// spacings (at least 4 h_P = L)" (PieceLinkFactor, cloudComponents, L in the user's units).
 template <int D>
@@ -312,9 +333,14 @@ std::string restartReason(const ReconstructionPlan<D>& plan, const Reconstructio
   {
     what << 100.0 * last.FarPoints << "% of the points ended more than one cell of run 1 from the surface";
   }
-  else
+  else if (last.MisfitPoints > FitShare || !lostPart(records.MissedPlaces, plan.Cloud.size()))
   {
     what << 100.0 * last.MisfitPoints << "% of the points ended more than two finest cells and h_P from the surface";
+  }
+  else
+  {
+    what << lostPartText(plan, *lostPart(records.MissedPlaces, plan.Cloud.size()))
+         << " ended more than two finest cells and h_P from the surface (a part of the model lost)";
   }
   what << " with C_dx = " << ran.CellSizeFactor << ": reconstructed again from C_dx = " << finer.CellSizeFactor
        << " with " << finer.Runs << " run(s), which end on "
@@ -322,6 +348,57 @@ std::string restartReason(const ReconstructionPlan<D>& plan, const Reconstructio
               ? "the same finest grid"
               : "the finest grid that fits the memory budget (run 1's padding for its initial surface)");
   return what.str();
+}
+
+/// The honest outcome when the last run misses more than FitShare of the points, or a part of
+/// the model (lostPart): FitsCloud is false and the statement comes first, with where the
+/// missed points gather and advice (`groups`: separateGroupsAdvice, or a smaller C_dx when no
+/// warning gave any). Nothing when it fits.
+template <int D>
+void stateMisfit(
+  const ReconstructionPlan<D>& plan, const std::string& groups, const Context& ctx, ReconstructionResult<D>& records)
+{
+  if (records.Runs.empty())
+  {
+    return;
+  }
+  const RunRecord<D>& last = records.Runs.back();
+  const MissedPlace<D>* lost = lostPart(records.MissedPlaces, plan.Cloud.size());
+  if (!(last.MisfitPoints > FitShare) && lost == nullptr)
+  {
+    return;
+  }
+  std::ostringstream statement;
+  statement.precision(3);
+  const double distance = plan.Box.Scale * misfitDistance(last.Grid.Spacing[0], plan.CloudSpacing);
+  if (last.MisfitPoints > FitShare)
+  {
+    statement << "the result does not fit the cloud: " << 100.0 * last.MisfitPoints
+              << "% of the points lie more than two finest cells and h_P (" << distance
+              << ") from the surface (features thinner than the cells were lost, or the points scatter more than "
+              << "that)";
+  }
+  else
+  {
+    statement << "the result does not fit the cloud: it lost a part of the model, " << lostPartText(plan, *lost)
+              << " lie more than two finest cells and h_P (" << distance << ") from the surface ("
+              << 100.0 * last.MisfitPoints << "% of all the points)";
+  }
+  if (!groups.empty())
+  {
+    statement << ". " << groups;
+  }
+  else if (records.Warnings.empty())
+  {
+    statement << ": a C_dx below the " << records.CellSizeFactor << " that ran (--cdx) resolves thinner features";
+  }
+  if (last.MisfitPoints > FitShare)
+  {
+    statement << detail::describeMissedPlaces<D>(records.MissedPlaces, plan.Box, plan.Options.FrameShift);
+  }
+  records.FitsCloud = false;
+  records.Warnings.insert(records.Warnings.begin(), statement.str());
+  ctx.logger().log(LogLevel::Warning, statement.str());
 }
 
 /// Algorithm 1 on the plan with every recovery: `runWith(options, grids)`
@@ -351,7 +428,16 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
   {
     records.OutsideThresholdFactor = options.OutsideThresholdFactor;
     records.CellSizeFactor = options.CellSizeFactor;
-    return runWith(options, grids);
+    const Status ran = runWith(options, grids);
+    if (!records.Runs.empty() && !records.MissedPlaces.empty())
+    {
+      std::ostringstream missed;
+      missed.precision(3);
+      missed << "the last run's surface misses " << 100.0 * records.Runs.back().MisfitPoints << "% of the points"
+             << detail::describeMissedPlaces<D>(records.MissedPlaces, plan.Box, plan.Options.FrameShift);
+      ctx.logger().log(LogLevel::Info, missed.str());
+    }
+    return ran;
   };
   // A run again after `what`, the recoveries so far kept first.
   const auto again =
@@ -382,7 +468,7 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
   // which ends on the same finest grid (the same memory); again while the pieces stay more
   // (Documentation/Numerics.md, "Lost thin features").
   while (status.isOk() && plan.AutomaticCellSize && ran.Runs > 1 && !records.Runs.empty() &&
-    (records.Pieces > components || (!restarted && lostThinFeatures(records.Runs.back()))))
+    (records.Pieces > components || (!restarted && lostFeatures(records, plan.Cloud.size()))))
   {
     ReconstructionOptions finer = ran;
     GridPlan<D> finerGrids;
@@ -405,9 +491,7 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
         " with the automatic interpolator lsq-q1: reconstructed again with weno3 on the same grids");
   }
   // A result that does not fit a cloud of a few groups far apart: no C_dx helps, their own runs do.
-  const bool fits = records.Runs.empty() ||
-    (records.Runs.back().FarPoints <= FarPointWarning && records.Runs.back().MisfitPoints <= FitShare &&
-      records.Pieces <= components);
+  const bool fits = records.Runs.empty() || (!lostFeatures(records, plan.Cloud.size()) && records.Pieces <= components);
   const std::string groups = status.isOk() && !fits && components >= 2
     ? separateGroupsAdvice(
         plan, plan.AutomaticCellSize ? 1.0 : ran.CellSizeFactor, "its cells are too coarse for each group")
@@ -429,22 +513,9 @@ Status reconstructWithRecoveries(const ReconstructionPlan<D>& plan, const Contex
     ctx.logger().log(LogLevel::Warning, warning.str());
     records.Warnings.push_back(warning.str());
   }
-  if (status.isOk() && !records.Runs.empty() && records.Runs.back().MisfitPoints > FitShare)
+  if (status.isOk())
   {
-    std::ostringstream statement;
-    statement.precision(3);
-    statement << "the result does not fit the cloud: " << 100.0 * records.Runs.back().MisfitPoints
-              << "% of the points lie more than two finest cells and h_P ("
-              << plan.Box.Scale * misfitDistance(records.Runs.back().Grid.Spacing[0], plan.CloudSpacing)
-              << ") from the surface (features thinner than the cells were lost, or the points scatter more than "
-              << "that)"
-              << (!groups.empty()               ? ". " + groups
-                     : records.Warnings.empty() ? std::string(": a smaller C_dx resolves thinner features")
-                                                : std::string())
-              << detail::describeMissedPlaces<D>(records.MissedPlaces, plan.Box, plan.Options.FrameShift);
-    records.FitsCloud = false;
-    records.Warnings.insert(records.Warnings.begin(), statement.str());
-    ctx.logger().log(LogLevel::Warning, statement.str());
+    stateMisfit(plan, groups, ctx, records);
   }
   if (status.isOk() && records.Pieces > components)
   {

@@ -200,7 +200,7 @@ public:
     this->Seeds =
       seedsAfterRun(band, this->Plan.Cloud, this->Plan.CloudSpacing, this->Options, run, ran, this->Slab.comm());
     result.MissedPlaces = missedPlacesAfterRun(
-      band, this->Plan.Cloud, this->Plan.CloudSpacing, this->Options, run, ran, result.Runs, this->Slab.comm());
+      band, *this->Plan.Locator, this->Plan.CloudSpacing, this->Options, run, ran, result.Runs, this->Slab.comm());
     // d was made exact where each rank's band reached: the ghost rows take the
     // owners' values (the next run interpolates them; the blocks share a row).
     this->Slab.exchange(this->Dist);

@@ -48,8 +48,9 @@ struct ReconstructionReport
   /// surface) and the option that may help; empty when it fits.
   std::vector<std::string> Warnings;
   /// False when more than FitShare of the points lie more than two finest cells and h_P from
-  /// the surface (StoppingRule.h), or when the result has more Pieces than CloudComponents:
-  /// the result does not fit the cloud, and Warnings says so first.
+  /// the surface (StoppingRule.h), when a place where the surface misses nearly every point
+  /// holds LostPartShare of them (a lost part, MissedPlaces.h), or when the result has more
+  /// Pieces than CloudComponents: the result does not fit the cloud, and Warnings says so first.
   bool FitsCloud = true;
   /// When it does not fit: the cloud is a few groups of points far apart whose grid is
   /// coarse for each (separateGroupsAdvice), and Warnings advise their own runs.
@@ -76,8 +77,8 @@ struct ReconstructionResult : ReconstructionReport
   SlabPlan Slab;
   std::vector<RunRecord<D>> Runs;
   std::vector<IterationRecord> History;
-  /// When the result does not fit the cloud: where the points it misses lie, the
-  /// largest groups first (MissedPlaces.h); empty when it fits.
+  /// Where the points the last run misses lie, the largest groups first (MissedPlaces.h);
+  /// empty when it misses none.
   std::vector<MissedPlace<D>> MissedPlaces;
 };
 
