@@ -403,11 +403,13 @@ def _(t):
     """Two objects far apart under a small budget: the automatic C_dx is coarse for each; the refusal
     (the grid is flat at its cells) names their own runs, not a C_dx. Along one axis the grid fits:
     the first attempt breaks the spheres into pieces, and the restarts on the pieces (half the
-    C_dx, then one run on the finest grid that fits) give the two spheres (they were 9 pieces and
+    C_dx, then one run on the finest grid that fits: 1.02, up the automatic C_dx's ladder from the
+    half, 0.74, whose run 1 with its padding passes the budget) give the two spheres (they were 9 pieces and
     a statement that the result does not fit before the restarts followed the pieces)."""
     along = bad.sphere_points(1500) + [(p[0] + 300, p[1], p[2]) for p in bad.sphere_points(1500)]
     t.sltk("reconstruct", t.file("along.xyz", bad.rows(along)), "--memory-budget", "128", "--json", "along.json")
-    t.fails(0, "pieces where the cloud has 2 connected component(s)", "with 1 run(s)", "2 piece(s)")
+    t.fails(0, "pieces where the cloud has 2 connected component(s)", "with 1 run(s)", "2 piece(s)",
+            "the finest grid that fits the memory budget (run 1's padding")
     summary = json.load(open(os.path.join(t.dir, "along.json")))
     if summary.get("surface_pieces") != 2 or summary.get("fits_cloud") is not True:
         t.problems.append("--json: surface_pieces %r, fits_cloud %r" % (summary.get("surface_pieces"),
