@@ -236,8 +236,8 @@ bool lostFeatures(const ReconstructionResult<D>& records, Index cloudPoints)
     (lostThinFeatures(records.Runs.back()) || lostPart(records.MissedPlaces, cloudPoints) != nullptr);
 }
 
-/// "N of the M points around (x, y, z) from (..) to (..)": a lost part (lostPart) in the user's
-/// coordinates, its bounds in the run's unit-box units.
+/// "N of the M points around (x, y, z) from (..) to (..)": a lost part (lostPart), given in the
+/// run's unit-box units, in the user's coordinates.
 template <int D>
 std::string lostPartText(const ReconstructionPlan<D>& plan, const MissedPlace<D>& place)
 {
