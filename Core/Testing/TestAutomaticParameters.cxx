@@ -385,31 +385,11 @@ TEST(AutomaticParameters, ThinFeatureBrokenIntoPiecesIsRecoveredFromHalfTheCellS
   EXPECT_GT(phiNear(kept.SignedDistance, 0.75, 0.1), 0.0) << "beside the fin is outside";
 }
 
-namespace
-{
-/// 400 points on the unit circle and a needle of `points` points (no thickness) from it
-/// along +x, `length` long, its last point at x = 1 + length.
-sltk::PointCloud<2> circleWithNeedle(int points, double length)
-{
-  sltk::PointCloud<2> cloud;
-  for (int k = 0; k < 400; ++k)
-  {
-    const double a = 2.0 * 3.14159265358979323846 * k / 400.0;
-    cloud.Points.push_back({ std::cos(a), std::sin(a) });
-  }
-  for (int k = 1; k <= points; ++k)
-  {
-    cloud.Points.push_back({ 1.0 + length * k / points, 0.0 });
-  }
-  return cloud;
-}
-} // namespace
-
 TEST(AutomaticParameters, ResultThatMissesTheCloudSaysSo)
 {
   // A circle with a needle of points (no thickness) reaching 1.5 radii out: run 1's cells
   // of C_dx = 4 cannot hold the needle, so its far half is missed (more than FitShare).
-  const sltk::PointCloud<2> cloud = circleWithNeedle(80, 1.5);
+  const sltk::PointCloud<2> cloud = sltk::circleWithNeedleCloud(80, 1.5);
   sltk::ReconstructionOptions options;
   options.CellSizeFactor = 4.0;
   options.Runs = 1;
@@ -440,7 +420,7 @@ TEST(AutomaticParameters, LostPartUnderTheMisfitShareSaysSo)
   // cells of C_dx = 1 and WENO3 lose it, and its points are under FitShare. But the surface
   // misses nearly every point where the needle was, which is a lost part (lostPart,
   // MissedPlaces.h): the result says so, and where.
-  sltk::PointCloud<2> cloud = circleWithNeedle(19, 0.3);
+  sltk::PointCloud<2> cloud = sltk::circleWithNeedleCloud(19, 0.3);
   sltk::ReconstructionOptions options;
   options.CellSizeFactor = 1.0;
   options.Interpolator = sltk::InterpolatorKind::Weno3;

@@ -73,6 +73,7 @@ sltk::Index expectSameAsOneRank(
   EXPECT_EQ(mine.Pieces, one.Pieces);
   EXPECT_EQ(mine.CloudComponents, one.CloudComponents);
   EXPECT_EQ(mine.FitsCloud, one.FitsCloud);
+  expectSameMissedPlaces(mine.MissedPlaces, one.MissedPlaces);
   EXPECT_EQ(mine.History.size(), one.History.size());
   for (size_t k = 0; k < std::min(one.History.size(), mine.History.size()); ++k)
   {
@@ -148,6 +149,25 @@ TEST(ReconstructionSlabs, BallsSeededAroundALostFinAreTheOneRankBalls)
   ASSERT_TRUE(sltk::reconstruct(cloud, options, sltk::Context{}, one).isOk());
   EXPECT_GT(one.Runs.front().FarPoints, 0.01) << "run 1 was expected to lose the fin";
   EXPECT_LT(one.Runs.back().FarPoints, 0.01) << "the seeds were expected to bring it back";
+}
+
+TEST(ReconstructionSlabs, LostPartIsNamedAsOnOneRank)
+{
+  // A needle of points (no thickness) 0.3 radii long off the unit circle, 4.5% of the cloud:
+  // the cells of C_dx = 1 and WENO3 lose it (Core's AutomaticParameters.LostPartUnderTheMisfitShareSaysSo).
+  // Each rank finds the missed points in its rows; gathered, every rank names the one rank's place
+  // with its counts and says the result does not fit.
+  const sltk::PointCloud<2> cloud = sltk::circleWithNeedleCloud(19, 0.3);
+  sltk::ReconstructionOptions options;
+  options.CellSizeFactor = 1.0;
+  options.Interpolator = sltk::InterpolatorKind::Weno3;
+  options.SeedFarPoints = false;
+  expectSameAsOneRank<2>(cloud, options);
+  sltk::ReconstructionResult<2> one;
+  ASSERT_TRUE(sltk::reconstruct(cloud, options, sltk::Context{}, one).isOk());
+  EXPECT_FALSE(one.FitsCloud) << "the needle was expected to be lost, and said";
+  ASSERT_FALSE(one.Warnings.empty());
+  EXPECT_NE(one.Warnings[0].find("it lost a part of the model"), std::string::npos) << one.Warnings[0];
 }
 
 TEST(ReconstructionSlabs, SingleNodeSpecksAreMergedAsOnOneRank)

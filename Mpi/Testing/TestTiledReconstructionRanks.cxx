@@ -63,6 +63,8 @@ RankRun expectSameAsOneRank(const sltk::PointCloud<D>& cloud, const sltk::Recons
   EXPECT_GE(one.Records.Pieces, 1);
   EXPECT_EQ(mine.Records.Pieces, one.Records.Pieces);
   EXPECT_EQ(mine.Records.CloudComponents, one.Records.CloudComponents);
+  EXPECT_EQ(mine.Records.FitsCloud, one.Records.FitsCloud);
+  expectSameMissedPlaces(mine.Records.MissedPlaces, one.Records.MissedPlaces);
   for (size_t k = 0; k < one.Records.History.size(); ++k)
   {
     const auto &a = mine.Records.History[k], &b = one.Records.History[k];
@@ -191,6 +193,24 @@ TEST(TiledReconstructionRanks, BallsSeededAroundALostFinAreTheOneRankBalls)
   options.OctreeStorage = true;
   options.SeedFarPoints = true;
   expectSameAsOneRank<2>(sltk::discWithFinCloud(0.016), options);
+}
+
+TEST(TiledReconstructionRanks, LostPartIsNamedAsOnOneRank)
+{
+  // The needle of ReconstructionSlabs.LostPartIsNamedAsOnOneRank on the tiled band: each rank
+  // finds the missed points in its own tiles, and every rank names the one rank's place.
+  sltk::ReconstructionOptions options;
+  options.CellSizeFactor = 1.0;
+  options.OctreeStorage = true;
+  options.Interpolator = sltk::InterpolatorKind::Weno3;
+  options.SeedFarPoints = false;
+  const sltk::PointCloud<2> cloud = sltk::circleWithNeedleCloud(19, 0.3);
+  expectSameAsOneRank<2>(cloud, options);
+  sltk::ReconstructionPlan<2> plan;
+  ASSERT_TRUE(sltk::planReconstruction(cloud, options, sltk::Context{}, plan).isOk());
+  sltk::TiledReconstructionResult<2> one;
+  ASSERT_TRUE(sltk::reconstructTiled(plan, sltk::Context{}, one).isOk());
+  EXPECT_FALSE(one.Records.FitsCloud) << "the needle was expected to be lost, and said";
 }
 
 TEST(TiledReconstructionRanks, SingleNodeSpecksAreMergedAsOnOneRank)

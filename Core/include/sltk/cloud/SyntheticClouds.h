@@ -10,7 +10,8 @@
 ///    (icosphereCloud, 4.5.4's 2562-point sphere); sphereSdf;
 ///  - Cube&Spheres (4.5.4): CubeSpheres, cloud and SDF;
 ///  - any closed polygon sampled every h (polygonCloud);
-///  - a disc with a thin fin (discWithFinCloud), a part coarse runs lose;
+///  - a disc with a thin fin (discWithFinCloud), a part coarse runs lose; a circle with a
+///    needle of points (circleWithNeedleCloud);
 ///  - Gaussian noise on a cloud (the "10% noise" tests, Fig. 4.8, Fig. 4.11).
 /// Used by tests, benchmarks and examples.
 
@@ -34,6 +35,19 @@ inline PointCloud<2> circleCloud(int n, double r = 1.0, std::array<double, 2> c 
   {
     const double t = twoPi * k / n;
     cloud.Points.push_back({ c[0] + r * std::cos(t), c[1] + r * std::sin(t) });
+  }
+  return cloud;
+}
+
+/// circleCloud(400) with a needle of `points` points (no thickness) from it along +x, `length`
+/// long (its last point at x = 1 + length): a part whose points the surface of coarse cells
+/// misses nearly all of (recon/MissedPlaces.h, lostPart).
+inline PointCloud<2> circleWithNeedleCloud(int points, double length)
+{
+  PointCloud<2> cloud = circleCloud(400);
+  for (int k = 1; k <= points; ++k)
+  {
+    cloud.Points.push_back({ 1.0 + length * k / points, 0.0 });
   }
   return cloud;
 }
