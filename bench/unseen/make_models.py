@@ -19,7 +19,10 @@ maximum (part3_cad_vertices), the decimated vertices alone. The latter is beyond
 reconstruction from points alone can decide: the largest empty disc on its flat faces (radius
 0.34) is wider than the plate is half thick (0.3), so the points do not say whether the faces
 are there (bench/unseen/README.md, "Sampling condition"). Every reference mesh is checked: no boundary or non-manifold edges,
-the expected number of parts and V - E + F = 2 parts - 2 genus.
+the expected number of parts and V - E + F = 2 parts - 2 genus. For the *_cad models it also
+prints the largest empty disc (the largest distance from a reference vertex to the cloud) on the
+whole surface and on each thin part of SAMPLING, with its ratio to the part's local feature size.
+bone_cad, chain_cad and animal_cad are the issue's thin handles and limbs sampled that way.
 """
 import json
 import os
@@ -225,7 +228,51 @@ MODELS = {
     "torus_cad": (torus, (-1.5, -1.5, -0.5), (1.5, 1.5, 0.5), 0.01, 1, 1, (0.9, None)),
     "part3_cad": (part3, (-2.2, -1.0, -0.5), (2.2, 1.0, 0.5), 0.01, 3, 1, (0.95, 0.3)),
     "part3_cad_vertices": (part3, (-2.2, -1.0, -0.5), (2.2, 1.0, 0.5), 0.01, 3, 1, (0.95, None)),
+    # the thin handles and limbs of issue "Real-world clouds", sampled non-uniformly: the arches and
+    # limbs keep small triangles (curved), the shaft, body and knobs large ones (SAMPLING below)
+    "bone_cad": (bone, (-1.5, -0.4, -0.4), (1.5, 0.4, 0.8), 0.005, 2, 1, (0.95, 0.05)),
+    "chain_cad": (chain, (-0.75, -0.75, -0.75), (2.35, 0.75, 0.75), 0.01, 3, 3, (0.9, 0.05)),
+    "animal_cad": (animal, (-1.4, -1.1, -0.65), (1.8, 0.9, 0.65), 0.0075, 0, 1, (0.9, 0.05)),
 }
+
+
+def legs(x, y, z):
+    return np.minimum.reduce([capsule(x, y, z, (lx, -0.3, lz), (lx, -1.0, lz), 0.02)
+                              for lx in (-0.8, 0.8) for lz in (-0.25, 0.25)])
+
+
+def horns(x, y, z):
+    return np.minimum.reduce([capsule(x, y, z, (1.35, 0.2, 0.2 + hz), (1.6, 0.75, 0.2 + 2.5 * hz), 0.015)
+                              for hz in (-0.12, 0.12)])
+
+
+# The sampling condition of the CAD-like clouds (bench/unseen/README.md, "Sampling condition"): per
+# part, (label, the part's signed distance or None for the whole surface, its local feature size:
+# the distance to the medial axis, the half-thickness of a plate, the radius of a tube). The
+# reference vertices within 1.5 grid spacings of the part's zero level set are that part's.
+SAMPLING = {
+    "torus_cad": [("tube", None, 0.35)],
+    "part3_cad": [("plate", None, 0.3)],
+    "part3_cad_vertices": [("plate", None, 0.3)],
+    "bone_cad": [("arch 0.03 thick", lambda x, y, z: ring(x, y, z, (-0.45, 0.0, 0.42), 1, 0.3, 0.015), 0.015),
+                 ("arch 0.04 thick", lambda x, y, z: ring(x, y, z, (0.45, 0.0, 0.42), 1, 0.3, 0.02), 0.02)],
+    "chain_cad": [("tubes", None, 0.06)],
+    "animal_cad": [("legs", legs, 0.02), ("horns", horns, 0.015)],
+}
+
+
+def largest_empty_discs(mesh, cloud, h, parts):
+    """Per part, the largest distance from a reference vertex of that part to the cloud, and its
+    ratio to the part's local feature size (epsilon-sampling asks about 0.5 at most)."""
+    from scipy.spatial import cKDTree
+    ref = numpy_support.vtk_to_numpy(mesh.GetPoints().GetData()).astype(float)
+    pts = numpy_support.vtk_to_numpy(cloud.GetPoints().GetData()).astype(float)
+    dist, _ = cKDTree(pts).query(ref)
+    out = [("whole surface", dist.max(), None)]
+    for label, f, size in parts:
+        on = np.ones(len(ref), bool) if f is None else np.abs(f(*ref.T)) < 1.5 * h
+        out.append((label, dist[on].max(), size))
+    return out
 
 
 def main(out):
@@ -250,6 +297,10 @@ def main(out):
               f"{nonmanifold}  {'ok' if good else 'WRONG (expected genus %d, %d parts)' % (genus, parts)}")
         listing.append({"name": name, "genus": genus, "parts": parts, "points": len(pts),
                         "reference_vertices": mesh.GetNumberOfPoints(), "cad": bool(cad)})
+        if name in SAMPLING:
+            print("    largest empty disc: " + ", ".join(
+                f"{label} {disc:.4f}" + (f" = {disc / size:.2f} x {size:g}" if size else "")
+                for label, disc, size in largest_empty_discs(mesh, cloud, h, SAMPLING[name])))
     with open(os.path.join(out, "models.json"), "w") as fp:
         json.dump(listing, fp, indent=2)
     return 0 if ok else 1
