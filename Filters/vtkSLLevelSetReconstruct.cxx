@@ -415,7 +415,7 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
       grid->GetFieldData()->AddArray(leaves);
     }
   }
-  summary = sltk::summarize(result);
+  summary = sltk::summarize(result, plan.Options.FrameShift); // places in the user's coordinates
   summary.Ranks = comm.size();
   summary.BytesSent = bytesSent;
   summary.Collectives = collectives;
@@ -462,7 +462,7 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionOp
     return 0;
   }
   sltk::vtkbridge::toImage(result, z, ghostLevels, image);
-  summary = sltk::summarize(result);
+  summary = sltk::summarize(result, plan.Options.FrameShift); // places in the user's coordinates
   summary.Ranks = comm.size();
   summary.BytesSent = counted.bytesSent();
   summary.Collectives = counted.collectives();

@@ -10,6 +10,8 @@
  *    inside; cut at +-4 dx away from the surface, (1.49)) and "DistanceToCloud",
  *    and a per-run summary in its field data (CloudSpacing, RunGridDimensions,
  *    RunIterations, RunEnergy, RunCloudError, RunFarPoints, RunMisfitPoints, RunSeconds;
+ *    MissedPlaces, where the last run misses points, a tuple of 11 per place (Points,
+ *    Nearby: the cloud's points there, Centre, Lower, Upper in the input's coordinates);
  *    FitsCloud, 0 when more than 5% of the points lie more than two finest cells
  *    and h_P from the surface, when one place holds at least 0.5% of them and the
  *    surface misses 85% of the points there (a lost part, MissedPlaces.h), or when the result has more Pieces (components of

@@ -195,6 +195,19 @@ void warnAboutResult(const sltk::ReconstructionSummary& summary)
   }
 }
 
+/// --json's missed_places: where the last run misses points (MissedPlaces.h), in the user's coordinates.
+nlohmann::ordered_json missedPlacesJson(const std::vector<sltk::MissedPlace<3>>& places)
+{
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const sltk::MissedPlace<3>& place : places)
+  {
+    list.push_back(
+      { { "points", static_cast<long long>(place.Points) }, { "nearby", static_cast<long long>(place.Nearby) },
+        { "centre", place.Centre }, { "lower", place.Lower }, { "upper", place.Upper } });
+  }
+  return list;
+}
+
 /// The runs' table on standard output and their records for --json.
 nlohmann::ordered_json printRuns(const sltk::ReconstructionSummary& summary, int ranks)
 {
@@ -525,7 +538,7 @@ int Reconstruct::run() const
       { "peak_memory_mb", peakMb }, { "ranks", ranks }, { "bytes_sent_max", bytesSent }, { "collectives", collectives },
       { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) }, { "surface_pieces", topology.Pieces },
       { "euler_characteristic", planar ? nlohmann::ordered_json() : nlohmann::ordered_json(topology.Euler) },
-      { "runs", runRecords } };
+      { "runs", runRecords }, { "missed_places", missedPlacesJson(result.MissedPlaces) } };
     if (this->given("--reference"))
     {
       summary["reference"] = this->Reference;
@@ -587,7 +600,8 @@ Command addReconstructCommand(CLI::App& sltk)
       "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points, misfit_points, merged_nodes; "
       "--octree: "
       "stored_nodes, "
-      "uniform_nodes, leaves]")
+      "uniform_nodes, leaves], missed_places [points, nearby (the cloud's\npoints there), centre, lower, upper: "
+      "where the last run misses\npoints, largest first]")
     ->option_text("FILE");
   addReconstructionInterpolatorOption(app, o.Interpolator);
   addPlanOptions(app, o);

@@ -125,6 +125,31 @@ void addPerRun(vtkFieldData* fd, const char* name, const std::vector<RunSummary>
   }
   fd->AddArray(a);
 }
+
+/// MissedPlaces: one tuple per place where the last run misses points (MissedPlaces.h),
+/// largest first: its points, the cloud's points there, its centre and bounds in the user's
+/// coordinates (11 components).
+void missedPlacesSummary(const ReconstructionSummary& summary, vtkFieldData* fd)
+{
+  vtkNew<vtkDoubleArray> places;
+  places->SetName("MissedPlaces");
+  places->SetNumberOfComponents(11);
+  const char* names[11] = { "Points", "Nearby", "CentreX", "CentreY", "CentreZ", "LowerX", "LowerY", "LowerZ", "UpperX",
+    "UpperY", "UpperZ" };
+  for (int c = 0; c < 11; ++c)
+  {
+    places->SetComponentName(c, names[c]);
+  }
+  for (const MissedPlace<3>& place : summary.MissedPlaces)
+  {
+    double tuple[11] = { static_cast<double>(place.Points), static_cast<double>(place.Nearby) };
+    std::copy(place.Centre.begin(), place.Centre.end(), tuple + 2);
+    std::copy(place.Lower.begin(), place.Lower.end(), tuple + 5);
+    std::copy(place.Upper.begin(), place.Upper.end(), tuple + 8);
+    places->InsertNextTuple(tuple);
+  }
+  fd->AddArray(places);
+}
 } // namespace
 
 void runSummary(const ReconstructionSummary& summary, vtkDataObject* image)
@@ -169,6 +194,7 @@ void runSummary(const ReconstructionSummary& summary, vtkDataObject* image)
     a->InsertNextValue(entry.second);
     fd->AddArray(a);
   }
+  missedPlacesSummary(summary, fd);
   vtkNew<vtkIntArray> grids;
   grids->SetName("RunGridDimensions");
   grids->SetNumberOfComponents(3);

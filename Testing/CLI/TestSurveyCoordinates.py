@@ -153,19 +153,33 @@ places = {}
 for name, points in (("near", near + needle), ("far", moved(near + needle, SHIFT))):
     cloud = os.path.join(tmp, name + "-needle.xyz")
     write_xyz(cloud, points)
-    p = subprocess.run([sltk, "reconstruct", cloud, "--cdx", "4", "--runs", "1", "--quiet"],
+    summary = os.path.join(tmp, name + "-needle.json")
+    p = subprocess.run([sltk, "reconstruct", cloud, "--cdx", "4", "--runs", "1", "--quiet", "--json", summary],
                        capture_output=True, text=True, timeout=300)
     statement = next((line for line in p.stderr.splitlines() if "does not fit the cloud" in line), "")
     places[name] = [[int(m.group(1))] + [[float(v) for v in m.group(g).split(",")] for g in (2, 3, 4)]
                     for m in PLACE.finditer(statement)]
     expect(p.returncode == 3 and places[name], "the %s needle is missed, exit 3, with its places (%d: %s)" %
            (name, p.returncode, statement or p.stderr.strip()))
+    # --json's missed_places are the statement's, in full precision.
+    listed = json.load(open(summary)).get("missed_places", []) if os.path.exists(summary) else []
+    expect(len(listed) == len(places[name]) and
+           all(j["points"] == t[0] and all(abs(j[key][k] - t[g][k]) <= 1e-5 * max(1.0, abs(t[g][k]))
+                                           for g, key in ((1, "centre"), (2, "lower"), (3, "upper")) for k in range(3))
+               for j, t in zip(listed, places[name])),
+           "--json's missed_places of the %s needle are the statement's (%s, %s)" % (name, listed, places[name]))
+    places[name + " json"] = listed
 near_places, far_places = places["near"], places["far"]
 NEEDLE_EXTENT = 2.7 + 1.2  # the cloud's largest extent, x from -1.2 to 2.7
 expect(len(near_places) == len(far_places) and
        all(a[0] == b[0] and all(abs(q[k] - p[k] - SHIFT[k]) <= 1e-4 * NEEDLE_EXTENT for p, q in zip(a[1:], b[1:])
                                 for k in range(3)) for a, b in zip(near_places, far_places)),
        "the far needle's places are the near one's moved, to 1e-4 of the extent (%s, %s)" % (near_places, far_places))
+expect(len(places["near json"]) == len(places["far json"]) > 0 and
+       all(a["points"] == b["points"] and a["nearby"] == b["nearby"] and
+           all(abs(b[key][k] - a[key][k] - SHIFT[k]) <= TOLERANCE for key in ("centre", "lower", "upper")
+               for k in range(3)) for a, b in zip(places["near json"], places["far json"])),
+       "--json: the far needle's missed_places are the near one's moved, to %g" % TOLERANCE)
 
 # STL holds 32-bit floats: refused before any work, with the formats that hold the surface.
 p = subprocess.run([sltk, "reconstruct", os.path.join(tmp, "far.xyz"), "--surface", os.path.join(tmp, "far.stl")],

@@ -332,9 +332,9 @@ void gatherTiles(TiledReconstructionResult<D>& result, const Communicator& comm,
 }
 
 template <int D>
-ReconstructionSummary summarize(const TiledReconstructionResult<D>& result)
+ReconstructionSummary summarize(const TiledReconstructionResult<D>& result, const std::array<double, 3>& frame)
 {
-  ReconstructionSummary summary = summarize(result.Records);
+  ReconstructionSummary summary = summarize(result.Records, frame);
   summary.OctreeStorage = true;
   for (size_t r = 0; r < summary.Runs.size(); ++r)
   {
@@ -363,8 +363,8 @@ ReconstructionSummary summarize(const TiledReconstructionResult<D>& result)
 
 template Status reconstructTiled(
   const ReconstructionPlan<2>&, const Context&, TiledReconstructionResult<2>&, const Communicator&);
-template ReconstructionSummary summarize(const TiledReconstructionResult<2>&);
-template ReconstructionSummary summarize(const TiledReconstructionResult<3>&);
+template ReconstructionSummary summarize(const TiledReconstructionResult<2>&, const std::array<double, 3>&);
+template ReconstructionSummary summarize(const TiledReconstructionResult<3>&, const std::array<double, 3>&);
 template void gatherTiles(TiledReconstructionResult<2>&, const Communicator&, int);
 template void gatherTiles(TiledReconstructionResult<3>&, const Communicator&, int);
 template Index completeTiledDistances(

@@ -29,6 +29,7 @@
 #include "vtkXMLHyperTreeGridReader.h"
 #include "vtkXMLHyperTreeGridWriter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -75,8 +76,8 @@ void checkOptionProperties()
   const sltk::ReconstructionOptions defaults;
   check(recon->GetNumberOfRuns() == defaults.Runs && recon->GetPadding() == defaults.Padding &&
       recon->GetTolerance() == defaults.Tolerance && recon->GetFinalEta() == defaults.FinalEta &&
-      !defaults.Interpolator && recon->GetInterpolator() == vtkSLLevelSetReconstruct::AUTOMATIC && recon->GetMemoryBudget() == 0 &&
-      recon->GetAutomaticCleaning() == defaults.Cleaning.Automatic &&
+      !defaults.Interpolator && recon->GetInterpolator() == vtkSLLevelSetReconstruct::AUTOMATIC &&
+      recon->GetMemoryBudget() == 0 && recon->GetAutomaticCleaning() == defaults.Cleaning.Automatic &&
       recon->GetOutlierDeviations() == defaults.Cleaning.Outliers.Deviations,
     "the properties' defaults are Core's");
   const vtkMTimeType before = recon->GetMTime();
@@ -151,6 +152,20 @@ void checkSummary(vtkSLLevelSetReconstruct* recon, const std::string& what)
       (!s->OctreeStorage || static_cast<double>(run.StoredNodes) == fieldValue(grid, "RunStoredNodes", k));
   }
   check(same, what + ": the typed summary holds port 0's field data");
+  // Where the last run misses points: a tuple of 11 per place (Points, Nearby, Centre, Lower, Upper).
+  vtkDataArray* places = grid ? grid->GetFieldData()->GetArray("MissedPlaces") : nullptr;
+  bool placesSame = s && places && places->GetNumberOfComponents() == 11 &&
+    places->GetNumberOfTuples() == static_cast<vtkIdType>(s->MissedPlaces.size());
+  for (size_t k = 0; placesSame && k < s->MissedPlaces.size(); ++k)
+  {
+    const sltk::MissedPlace<3>& place = s->MissedPlaces[k];
+    const double* tuple = places->GetTuple(static_cast<vtkIdType>(k));
+    placesSame = tuple[0] == static_cast<double>(place.Points) && tuple[1] == static_cast<double>(place.Nearby) &&
+      std::equal(place.Centre.begin(), place.Centre.end(), tuple + 2) &&
+      std::equal(place.Lower.begin(), place.Lower.end(), tuple + 5) &&
+      std::equal(place.Upper.begin(), place.Upper.end(), tuple + 8);
+  }
+  check(placesSame, what + ": the field data's MissedPlaces are the typed summary's");
 }
 } // namespace
 

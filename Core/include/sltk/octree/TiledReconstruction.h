@@ -100,17 +100,17 @@ template <int D>
 Index completeTiledDistances(const ReconstructionPlan<D>& plan, const Context& ctx, TiledField<D>& field,
   const std::vector<std::int32_t>& owners = {}, int rank = 0);
 
-/// The summary of the records (summarize(ReconstructionResult)) with each
-/// run's storage: its stored nodes, its uniform grid's nodes and the octree's
-/// leaves (run 1, uniform unless it is the only run: its grid's nodes, the
+/// The summary of the records (summarize(ReconstructionResult), its missed places moved by
+/// `frame`) with each run's storage: its stored nodes, its uniform grid's nodes and the
+/// octree's leaves (run 1, uniform unless it is the only run: its grid's nodes, the
 /// largest rank's from its history).
 template <int D>
-ReconstructionSummary summarize(const TiledReconstructionResult<D>& result);
+ReconstructionSummary summarize(const TiledReconstructionResult<D>& result, const std::array<double, 3>& frame = {});
 
 extern template Status reconstructTiled(
   const ReconstructionPlan<2>&, const Context&, TiledReconstructionResult<2>&, const Communicator&);
-extern template ReconstructionSummary summarize(const TiledReconstructionResult<2>&);
-extern template ReconstructionSummary summarize(const TiledReconstructionResult<3>&);
+extern template ReconstructionSummary summarize(const TiledReconstructionResult<2>&, const std::array<double, 3>&);
+extern template ReconstructionSummary summarize(const TiledReconstructionResult<3>&, const std::array<double, 3>&);
 extern template void gatherTiles(TiledReconstructionResult<2>&, const Communicator&, int);
 extern template void gatherTiles(TiledReconstructionResult<3>&, const Communicator&, int);
 extern template Index completeTiledDistances(

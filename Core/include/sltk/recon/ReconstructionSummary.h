@@ -38,14 +38,18 @@ struct ReconstructionSummary : ReconstructionReport
   int Ranks = 1;
   std::int64_t BytesSent = 0;
   std::int64_t Collectives = 0;
+  /// Where the last run's surface misses points (MissedPlaces.h), the largest places first,
+  /// in the user's coordinates (the front end's local frame added back); z = 0 in 2D.
+  std::vector<MissedPlace<3>> MissedPlaces;
 };
 
 /// The summary of a result whose records are in the user's units
-/// (recordsToUser); the traffic is the caller's to fill in.
+/// (recordsToUser), its missed places moved by `frame` (the front end's local
+/// frame, ReconstructionOptions::FrameShift); the traffic is the caller's to fill in.
 template <int D>
-ReconstructionSummary summarize(const ReconstructionResult<D>& result);
+ReconstructionSummary summarize(const ReconstructionResult<D>& result, const std::array<double, 3>& frame = {});
 
-extern template ReconstructionSummary summarize(const ReconstructionResult<2>&);
-extern template ReconstructionSummary summarize(const ReconstructionResult<3>&);
+extern template ReconstructionSummary summarize(const ReconstructionResult<2>&, const std::array<double, 3>&);
+extern template ReconstructionSummary summarize(const ReconstructionResult<3>&, const std::array<double, 3>&);
 
 } // namespace sltk
