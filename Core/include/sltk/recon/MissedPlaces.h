@@ -44,28 +44,23 @@ struct MissedPlace
 constexpr size_t MissedPlacesNamed = 3;
 
 /// How many points of `locator`'s cloud lie within `link` of one of the points `members`
-/// (indices into `all`, entries of the cloud), themselves included.
+/// (indices into `all`, entries of the cloud), themselves included: the points found, sorted
+/// and counted once each (memory in the found points, not the cloud).
 template <int D>
 Index pointsNear(
   const PointLocator<D>& locator, const std::vector<OutsidePoint>& all, const std::vector<size_t>& members, double link)
 {
   const PointCloud<D>& cloud = locator.cloud();
-  std::vector<uint8_t> seen(static_cast<size_t>(cloud.size()), 0);
-  std::vector<std::int64_t> found;
-  Index count = 0;
-  const auto mark = [&](std::int64_t i)
-  {
-    count += seen[static_cast<size_t>(i)] ? 0 : 1;
-    seen[static_cast<size_t>(i)] = 1;
-  };
+  std::vector<std::int64_t> near, found;
   for (const size_t j : members)
   {
     const Index i = all[j].Point;
-    mark(i);
+    near.push_back(i);
     locator.within(cloud.Points[static_cast<size_t>(i)], link, i, found);
-    std::for_each(found.begin(), found.end(), mark);
+    near.insert(near.end(), found.begin(), found.end());
   }
-  return count;
+  std::sort(near.begin(), near.end());
+  return static_cast<Index>(std::unique(near.begin(), near.end()) - near.begin());
 }
 
 /// The groups of the points `local` (this rank's, beyond the misfit threshold) over
