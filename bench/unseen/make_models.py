@@ -84,17 +84,22 @@ def capsule(x, y, z, a, b, r):
     return np.sqrt((x - a[0] - t * ab[0]) ** 2 + (y - a[1] - t * ab[1]) ** 2 + (z - a[2] - t * ab[2]) ** 2) - r
 
 
+# The animal's limbs, (end, end, radius) of each capsule: legs 0.04 thick and 0.7 long, two horns
+# 0.03 thick (the animal below, and its parts in SAMPLING).
+ANIMAL_LEGS = [((lx, -0.3, lz), (lx, -1.0, lz), 0.02) for lx in (-0.8, 0.8) for lz in (-0.25, 0.25)]
+ANIMAL_HORNS = [((1.35, 0.2, 0.2 + hz), (1.6, 0.75, 0.2 + 2.5 * hz), 0.015) for hz in (-0.12, 0.12)]
+
+
 def animal(x, y, z):
     # a four-legged body (an ellipsoid 2.4 x 1 x 1) with a head, legs 0.04 thick and 0.7
     # long, and two horns 0.03 thick: on the 0.02 grid (h_P about 0.01) 4 and 3 point
     # spacings, the thin limbs of issue "Real-world clouds"; genus 0
     body = (np.sqrt((x / 1.2) ** 2 + (y / 0.5) ** 2 + (z / 0.5) ** 2) - 1.0) * 0.5
     d = smooth_min(body, sphere(x, y, z, (1.3, 0.0, 0.2), 0.32), 0.1)
-    for lx in (-0.8, 0.8):
-        for lz in (-0.25, 0.25):
-            d = smooth_min(d, capsule(x, y, z, (lx, -0.3, lz), (lx, -1.0, lz), 0.02), 0.03)
-    for hz in (-0.12, 0.12):
-        d = smooth_min(d, capsule(x, y, z, (1.35, 0.2, 0.2 + hz), (1.6, 0.75, 0.2 + 2.5 * hz), 0.015), 0.02)
+    for a, b, r in ANIMAL_LEGS:
+        d = smooth_min(d, capsule(x, y, z, a, b, r), 0.03)
+    for a, b, r in ANIMAL_HORNS:
+        d = smooth_min(d, capsule(x, y, z, a, b, r), 0.02)
     return d
 
 
@@ -105,6 +110,11 @@ def ring(x, y, z, c, axis, R, r):
     return np.sqrt((np.sqrt(p[0] ** 2 + p[1] ** 2) - R) ** 2 + along ** 2) - r
 
 
+def arch(x, y, z, cx, r):
+    """The bone's arch at x = cx, its tube radius r: half of a torus standing on the shaft."""
+    return ring(x, y, z, (cx, 0.0, 0.42), 1, 0.3, r)
+
+
 def bone(x, y, z, radii=(0.015, 0.02)):
     # a shaft with two knobs (genus 0) and two arches standing on it, 0.03 and 0.04 thick: on the
     # 0.02 grid (h_P about 0.01) 3 and 4 point spacings, the thin handles of issue "Real-world
@@ -112,7 +122,7 @@ def bone(x, y, z, radii=(0.015, 0.02)):
     d = smooth_min(capsule(x, y, z, (-1.0, 0, 0), (1.0, 0, 0), 0.2),
                    np.minimum(sphere(x, y, z, (-1.1, 0, 0), 0.32), sphere(x, y, z, (1.1, 0, 0), 0.32)), 0.1)
     for cx, r in zip((-0.45, 0.45), radii):
-        d = smooth_min(d, ring(x, y, z, (cx, 0.0, 0.42), 1, 0.3, r), 0.02)
+        d = smooth_min(d, arch(x, y, z, cx, r), 0.02)
     return d
 
 
@@ -236,14 +246,9 @@ MODELS = {
 }
 
 
-def legs(x, y, z):
-    return np.minimum.reduce([capsule(x, y, z, (lx, -0.3, lz), (lx, -1.0, lz), 0.02)
-                              for lx in (-0.8, 0.8) for lz in (-0.25, 0.25)])
-
-
-def horns(x, y, z):
-    return np.minimum.reduce([capsule(x, y, z, (1.35, 0.2, 0.2 + hz), (1.6, 0.75, 0.2 + 2.5 * hz), 0.015)
-                              for hz in (-0.12, 0.12)])
+def limbs(capsules):
+    """The signed distance to the union of `capsules` (ANIMAL_LEGS, ANIMAL_HORNS)."""
+    return lambda x, y, z: np.minimum.reduce([capsule(x, y, z, a, b, r) for a, b, r in capsules])
 
 
 # The sampling condition of the CAD-like clouds (bench/unseen/README.md, "Sampling condition"): per
@@ -254,10 +259,10 @@ SAMPLING = {
     "torus_cad": [("tube", None, 0.35)],
     "part3_cad": [("plate", None, 0.3)],
     "part3_cad_vertices": [("plate", None, 0.3)],
-    "bone_cad": [("arch 0.03 thick", lambda x, y, z: ring(x, y, z, (-0.45, 0.0, 0.42), 1, 0.3, 0.015), 0.015),
-                 ("arch 0.04 thick", lambda x, y, z: ring(x, y, z, (0.45, 0.0, 0.42), 1, 0.3, 0.02), 0.02)],
+    "bone_cad": [("arch 0.03 thick", lambda x, y, z: arch(x, y, z, -0.45, 0.015), 0.015),
+                 ("arch 0.04 thick", lambda x, y, z: arch(x, y, z, 0.45, 0.02), 0.02)],
     "chain_cad": [("tubes", None, 0.06)],
-    "animal_cad": [("legs", legs, 0.02), ("horns", horns, 0.015)],
+    "animal_cad": [("legs", limbs(ANIMAL_LEGS), 0.02), ("horns", limbs(ANIMAL_HORNS), 0.015)],
 }
 
 

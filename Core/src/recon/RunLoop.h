@@ -65,8 +65,18 @@ std::string position(const UnitBox<D>& box, const std::array<double, 3>& frame, 
   return formatPosition(p.data(), D, 2.0 * box.Scale);
 }
 
+/// "around (..) from (..) to (..)": a missed place's centre and bounds (unit-box units) in the
+/// user's coordinates.
+template <int D>
+std::string placeBounds(const MissedPlace<D>& place, const UnitBox<D>& box, const std::array<double, 3>& frame)
+{
+  return "around " + position<D>(box, frame, place.Centre) + " from " + position<D>(box, frame, place.Lower) + " to " +
+    position<D>(box, frame, place.Upper);
+}
+
 /// Where the missed points lie (MissedPlaces.h, unit-box units) in the user's: "; outside
-/// it they gather at N point(s) around (..) from (..) to (..), ...", or "" when none.
+/// it they gather at N point(s) (of the M there) around (..) from (..) to (..), ...", or ""
+/// when none.
 template <int D>
 std::string describeMissedPlaces(
   const std::vector<MissedPlace<D>>& places, const UnitBox<D>& box, const std::array<double, 3>& frame)
@@ -80,9 +90,8 @@ std::string describeMissedPlaces(
   for (size_t k = 0; k < places.size(); ++k)
   {
     const MissedPlace<D>& place = places[k];
-    text << (k ? "," : "") << " " << place.Points << " point(s) (of the " << place.Nearby << " there) around "
-         << position<D>(box, frame, place.Centre) << " from " << position<D>(box, frame, place.Lower) << " to "
-         << position<D>(box, frame, place.Upper);
+    text << (k ? "," : "") << " " << place.Points << " point(s) (of the " << place.Nearby << " there) "
+         << placeBounds<D>(place, box, frame);
   }
   return text.str();
 }
@@ -241,10 +250,8 @@ bool lostFeatures(const ReconstructionResult<D>& records, Index cloudPoints)
 template <int D>
 std::string lostPartText(const ReconstructionPlan<D>& plan, const MissedPlace<D>& place)
 {
-  const auto at = [&](const std::array<double, D>& unit)
-  { return detail::position<D>(plan.Box, plan.Options.FrameShift, unit); };
-  return std::to_string(place.Points) + " of the " + std::to_string(place.Nearby) + " points around " +
-    at(place.Centre) + " from " + at(place.Lower) + " to " + at(place.Upper);
+  return std::to_string(place.Points) + " of the " + std::to_string(place.Nearby) + " points " +
+    detail::placeBounds<D>(place, plan.Box, plan.Options.FrameShift);
 }
 
 /// "the result has N pieces where the cloud has M connected component(s) at 4 local
@@ -324,6 +331,7 @@ std::string restartReason(const ReconstructionPlan<D>& plan, const Reconstructio
   const ReconstructionOptions& ran, const ReconstructionOptions& finer)
 {
   const RunFigures& last = records.Runs.back();
+  const MissedPlace<D>* lost = lostPart(records.MissedPlaces, plan.Cloud.size());
   std::ostringstream what;
   if (records.Pieces > components)
   {
@@ -333,13 +341,13 @@ std::string restartReason(const ReconstructionPlan<D>& plan, const Reconstructio
   {
     what << 100.0 * last.FarPoints << "% of the points ended more than one cell of run 1 from the surface";
   }
-  else if (last.MisfitPoints > FitShare || !lostPart(records.MissedPlaces, plan.Cloud.size()))
+  else if (last.MisfitPoints > FitShare || lost == nullptr)
   {
     what << 100.0 * last.MisfitPoints << "% of the points ended more than two finest cells and h_P from the surface";
   }
   else
   {
-    what << lostPartText(plan, *lostPart(records.MissedPlaces, plan.Cloud.size()))
+    what << lostPartText(plan, *lost)
          << " ended more than two finest cells and h_P from the surface (a part of the model lost)";
   }
   what << " with C_dx = " << ran.CellSizeFactor << ": reconstructed again from C_dx = " << finer.CellSizeFactor
