@@ -399,7 +399,7 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
   grid->Initialize();
   // Each rank outputs its own trees and contours its own blocks of tiles (its ghosts hold the
   // nodes around them): the pieces join.
-  sltk::vtkbridge::tiledZeroLevelSet(result.Field, result.Box, surface, result.Owners, comm.rank(), z);
+  sltk::vtkbridge::tiledZeroLevelSet(result.Field, result.Box, surface, ctx, result.Owners, comm.rank(), z);
   if (self->GetGenerateHyperTreeGrid())
   {
     sltk::completeTiledDistances(plan, ctx, result.Field, result.Owners, comm.rank()); // its own tiles

@@ -11,6 +11,7 @@
 /// identical points. The union is the uniform contour of the same nodes: as
 /// watertight as it.
 
+#include "sltk/exec/Context.h"
 #include "sltk/octree/TiledField.h"
 #include "sltk/recon/UnitBox.h"
 
@@ -28,9 +29,9 @@ namespace vtkbridge
 /// With `owners` (a distributed field's, per slot: TiledReconstructionResult)
 /// only the blocks `rank` owns: this rank's piece, which joins the others'
 /// at their shared points. A 2D field's zero level set is a curve (segments, no
-/// normals) in the plane `z`.
+/// normals) in the plane `z`. The blocks are contoured on `ctx`'s threads.
 template <int D>
-void tiledZeroLevelSet(const TiledField<D>& field, const UnitBox<D>& box, vtkPolyData* surface,
+void tiledZeroLevelSet(const TiledField<D>& field, const UnitBox<D>& box, vtkPolyData* surface, const Context& ctx,
   const std::vector<std::int32_t>& owners = {}, int rank = 0, double z = 0.0);
 
 } // namespace vtkbridge

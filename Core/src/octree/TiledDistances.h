@@ -170,23 +170,25 @@ private:
   }
 
   /// One pass of a 3-node dilation of `mask` along the axis of `stride`: a
-  /// node is set when it or an axis neighbour was.
+  /// node is set when it or an axis neighbour was. The lines along the axis
+  /// start at the nodes whose index along it is 0: `inner` below the axis,
+  /// `outer` above it (no division a node).
   static void dilateAlong(Mask& mask, Index stride)
   {
-    for (Index first = 0; first < BlockNodes; ++first)
+    const Index span = stride * Edge;
+    for (Index outer = 0; outer < BlockNodes; outer += span)
     {
-      if ((first / stride) % Edge != 0)
+      for (Index inner = 0; inner < stride; ++inner)
       {
-        continue; // not a line's first node
-      }
-      std::uint8_t before = 0;
-      for (Index n = 0; n < Edge; ++n)
-      {
-        const size_t at = static_cast<size_t>(first + n * stride);
-        const std::uint8_t here = mask[at];
-        const std::uint8_t after = n + 1 < Edge ? mask[at + static_cast<size_t>(stride)] : 0;
-        mask[at] = here | before | after;
-        before = here;
+        std::uint8_t before = 0;
+        for (Index n = 0; n < Edge; ++n)
+        {
+          const size_t at = static_cast<size_t>(outer + inner + n * stride);
+          const std::uint8_t here = mask[at];
+          const std::uint8_t after = n + 1 < Edge ? mask[at + static_cast<size_t>(stride)] : 0;
+          mask[at] = here | before | after;
+          before = here;
+        }
       }
     }
   }

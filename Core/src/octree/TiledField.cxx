@@ -207,19 +207,23 @@ void TiledField<D>::scratchBlock(const std::array<Index, D>& first, Index tiles,
     rows *= edge;
   }
   Index lastBase = -2;
+  std::array<Index, D> i{}; // block index of the row's first node, counted like an odometer
   for (Index row = 0; row < rows; ++row)
   {
-    std::array<Index, D> i{}; // block index of the row's first node
+    if (row > 0)
+    {
+      for (int a = 1; a < D && ++i[a] == edge; ++a)
+      {
+        i[a] = 0;
+      }
+    }
     bool beyond = false;
     Index local = 0; // the row's node offset inside its tiles
     Index base = 0;  // slotIndex of the row's tiles with t[0] = 0
     Index stride = 1;
-    Index rest = row;
     bool distRow = dist != nullptr;
     for (int a = 1; a < D; ++a)
     {
-      i[a] = rest % edge;
-      rest /= edge;
       distRow = distRow && i[a] >= distFrom && i[a] < distTo;
       const Index g = start[a] + i[a];
       const Index t = floorTile(g);

@@ -27,21 +27,16 @@ public:
 
   void resize(const GridSpec<D>& spec, int ghost, T value = T(0))
   {
-    this->Spec = spec;
-    this->Indexer = NodeIndexer<D>(spec.Dims);
-    this->Ghost = ghost;
-    Index total = 1;
-    for (int a = 0; a < D; ++a)
-    {
-      this->Stride[a] = total;
-      total *= spec.Dims[a] + 2 * ghost;
-    }
-    this->Values.assign(static_cast<size_t>(total), value);
-    this->Base = 0;
-    for (int a = 0; a < D; ++a)
-    {
-      this->Base += ghost * this->Stride[a];
-    }
+    this->Values.assign(static_cast<size_t>(this->setShape(spec, ghost)), value);
+  }
+
+  /// The same shape as resize() gives, the values left as they were (the new
+  /// ones zero): for a scratch copy that writes every value it reads.
+  void reshape(const GridSpec<D>& spec, int ghost)
+  {
+    const auto total = static_cast<size_t>(this->setShape(spec, ghost));
+    this->Values.reserve(total); // exactly: resize alone may double the capacity
+    this->Values.resize(total);
   }
 
   const GridSpec<D>& spec() const { return this->Spec; }
@@ -108,6 +103,26 @@ public:
   const std::vector<T>& storage() const { return this->Values; }
 
 private:
+  /// The spec, ghost layers, strides and base of a shape; returns its value count.
+  Index setShape(const GridSpec<D>& spec, int ghost)
+  {
+    this->Spec = spec;
+    this->Indexer = NodeIndexer<D>(spec.Dims);
+    this->Ghost = ghost;
+    Index total = 1;
+    for (int a = 0; a < D; ++a)
+    {
+      this->Stride[a] = total;
+      total *= spec.Dims[a] + 2 * ghost;
+    }
+    this->Base = 0;
+    for (int a = 0; a < D; ++a)
+    {
+      this->Base += ghost * this->Stride[a];
+    }
+    return total;
+  }
+
   /// Lines along `axis` in the padded box (the other axes include their ghosts).
   Index linesAlong(int axis) const
   {
@@ -130,15 +145,28 @@ private:
       ext[a] = a == axis ? 1 : this->Spec.Dims[a] + 2 * g;
     }
     const Index s = this->Stride[axis];
+    // The first line's position by division, the next ones counted like an
+    // odometer (a division per line cost more than the ghosts of a small block).
+    std::array<Index, D> at{};
+    Index rest = first;
+    for (int a = 0; a < D; ++a)
+    {
+      at[a] = rest % ext[a];
+      rest /= ext[a];
+    }
     for (Index line = first; line < last; ++line)
     {
-      Index rest = line;
+      if (line > first)
+      {
+        for (int a = 0; a < D && ++at[a] == ext[a]; ++a)
+        {
+          at[a] = 0;
+        }
+      }
       Index start = 0;
       for (int a = 0; a < D; ++a)
       {
-        const Index ia = rest % ext[a];
-        rest /= ext[a];
-        start += (a == axis ? g : ia) * this->Stride[a];
+        start += (a == axis ? g : at[a]) * this->Stride[a];
       }
       T* p = this->Values.data() + start; // node 0 of this line
       for (Index k = 1; k <= g; ++k)
