@@ -151,3 +151,48 @@ TEST(PointLocator, WithinIsEveryPointCloserThanTheRadius)
     }
   }
 }
+
+TEST(PointLocator, NearestDistancesAreTheQueriesBitForBit)
+{
+  // Batches of a tile's size around centres on, near and far from a surface-like
+  // cloud (a sphere), and far from a cloud shifted to survey-like coordinates;
+  // a small candidate cap forces the query-per-point fallback too.
+  for (const double shift : { 0.0, 4.0e5 })
+  {
+    sltk::PointCloud<3> cloud;
+    std::mt19937_64 rng(11);
+    std::normal_distribution<double> g(0.0, 1.0);
+    for (int k = 0; k < 4000; ++k)
+    {
+      std::array<double, 3> p{ g(rng), g(rng), g(rng) };
+      const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+      cloud.Points.push_back({ shift + p[0] / r, p[1] / r, p[2] / r });
+    }
+    const sltk::PointLocator<3> locator(cloud);
+    std::vector<std::int64_t> candidates;
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (const double away : { 0.0, 0.9, 1.02, 1.3, 3.0 })
+    {
+      for (const std::int64_t cap : { std::int64_t(1024), std::int64_t(3) })
+      {
+        const std::array<double, 3> centre{ shift + away * 0.6, away * 0.8, 0.0 };
+        const double spread = 0.05;
+        std::vector<std::array<double, 3>> x(512);
+        for (auto& p : x)
+        {
+          for (int a = 0; a < 3; ++a)
+          {
+            p[a] = centre[a] + spread / std::sqrt(3.0) * u(rng);
+          }
+        }
+        std::vector<double> distances(x.size());
+        locator.nearestDistances(x.data(), static_cast<std::int64_t>(x.size()), distances.data(), candidates, cap);
+        for (size_t i = 0; i < x.size(); ++i)
+        {
+          ASSERT_EQ(distances[i], locator.nearest(x[i]).Distance)
+            << "shift " << shift << ", " << away << " from the centre, cap " << cap << ", point " << i;
+        }
+      }
+    }
+  }
+}

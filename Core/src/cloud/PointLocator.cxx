@@ -231,6 +231,80 @@ void PointLocator<D>::within(
     [&] { return radius; });
 }
 
+template <int D>
+void PointLocator<D>::nearestDistances(const std::array<double, D>* x, std::int64_t count, double* distances,
+  std::vector<std::int64_t>& candidates, std::int64_t maxCandidates) const
+{
+  if (count <= 0)
+  {
+    return;
+  }
+  std::array<double, D> centre{};
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    for (int a = 0; a < D; ++a)
+    {
+      centre[a] += x[i][a] / static_cast<double>(count);
+    }
+  }
+  double spread = 0.0; // the farthest point from the centre
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    double r2 = 0.0;
+    for (int a = 0; a < D; ++a)
+    {
+      r2 += (x[i][a] - centre[a]) * (x[i][a] - centre[a]);
+    }
+    spread = std::max(spread, std::sqrt(r2));
+  }
+  const Hit first = this->nearest(centre);
+  // The ball's radius with a margin for the rounding of the distances and of
+  // the coordinates they subtract (within() keeps d < radius).
+  double magnitude = first.Distance + 2.0 * spread;
+  for (int a = 0; a < D; ++a)
+  {
+    magnitude += std::fabs(centre[a]);
+  }
+  const double radius = first.Distance + 2.0 * spread + 1e-12 * magnitude + 1e-300;
+  candidates.clear();
+  if (first.Index >= 0 && std::isfinite(radius))
+  {
+    this->within(centre, radius, -1, candidates);
+  }
+  if (candidates.empty() || static_cast<std::int64_t>(candidates.size()) > maxCandidates)
+  {
+    for (std::int64_t i = 0; i < count; ++i)
+    {
+      distances[i] = this->nearest(x[i]).Distance;
+    }
+    return;
+  }
+  // The smallest squared distance of each point, candidate after candidate (the
+  // points' loop vectorises); its square root is the nearest distance.
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    distances[i] = std::numeric_limits<double>::infinity();
+  }
+  for (const std::int64_t k : candidates)
+  {
+    const std::array<double, D>& p = this->Cloud->Points[static_cast<size_t>(k)];
+    for (std::int64_t i = 0; i < count; ++i)
+    {
+      double d2 = 0.0;
+      for (int a = 0; a < D; ++a)
+      {
+        const double d = p[a] - x[i][a]; // the ring search's arithmetic, term by term
+        d2 += d * d;
+      }
+      distances[i] = d2 < distances[i] ? d2 : distances[i];
+    }
+  }
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    distances[i] = std::sqrt(distances[i]);
+  }
+}
+
 template class PointLocator<2>;
 template class PointLocator<3>;
 

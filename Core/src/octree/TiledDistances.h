@@ -17,6 +17,7 @@
 #include "sltk/exec/Context.h"
 #include "sltk/octree/TiledField.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -47,10 +48,11 @@ public:
       {
         GridField<D> phi;
         Mask near{};
+        Batch batch;
         for (Index c = b; c < e; ++c)
         {
           computed[static_cast<size_t>(c)] =
-            this->ensureTile(field, this->Candidates[static_cast<size_t>(c)], locator, phi, near);
+            this->ensureTile(field, this->Candidates[static_cast<size_t>(c)], locator, phi, near, batch);
         }
       },
       8);
@@ -73,6 +75,7 @@ public:
       [&](Index b, Index e)
       {
         double computed = 0.0;
+        Batch batch;
         for (Index id = b; id < e; ++id)
         {
           const auto tile = static_cast<std::int32_t>(id);
@@ -80,15 +83,17 @@ public:
           {
             continue;
           }
-          double* d = field.distance(tile);
+          const double* d = field.distance(tile);
+          batch.Nodes.clear();
           for (Index k = 0; k < TiledField<D>::Nodes; ++k)
           {
             if (std::isnan(d[k]))
             {
-              d[k] = locator.nearest(field.position(field.node(tile, k))).Distance;
-              computed += 1.0;
+              batch.Nodes.push_back(k);
             }
           }
+          computed += static_cast<double>(batch.Nodes.size());
+          batch.compute(field, tile, locator);
         }
         return computed;
       },
@@ -96,6 +101,39 @@ public:
   }
 
 private:
+  /// The nearest-point distances of some nodes of one tile at once
+  /// (PointLocator::nearestDistances): per thread.
+  struct Batch
+  {
+    std::vector<Index> Nodes; ///< the tile's nodes (node order) to compute
+    std::vector<std::array<double, D>> Positions;
+    std::vector<double> Distances;
+    std::vector<std::int64_t> Candidates;
+
+    /// d at `Nodes` of tile `id`, each bit for bit the nearest point's distance.
+    void compute(TiledField<D>& field, std::int32_t id, const PointLocator<D>& locator)
+    {
+      const size_t n = this->Nodes.size();
+      if (n == 0)
+      {
+        return;
+      }
+      this->Positions.resize(n);
+      this->Distances.resize(n);
+      for (size_t i = 0; i < n; ++i)
+      {
+        this->Positions[i] = field.position(field.node(id, this->Nodes[i]));
+      }
+      locator.nearestDistances(
+        this->Positions.data(), static_cast<std::int64_t>(n), this->Distances.data(), this->Candidates);
+      double* d = field.distance(id);
+      for (size_t i = 0; i < n; ++i)
+      {
+        d[this->Nodes[i]] = this->Distances[i];
+      }
+    }
+  };
+
   /// The tiles (not yet complete) that may hold a node within one node of a
   /// band node: each band tile and the neighbours its band nodes reach.
   template <class Mine>
@@ -124,7 +162,8 @@ private:
   using Mask = std::array<std::uint8_t, static_cast<size_t>(BlockNodes)>;
 
   /// d at the nodes of tile `id` within one node of a band node, where not known.
-  Index ensureTile(TiledField<D>& field, std::int32_t id, const PointLocator<D>& locator, GridField<D>& phi, Mask& near)
+  Index ensureTile(
+    TiledField<D>& field, std::int32_t id, const PointLocator<D>& locator, GridField<D>& phi, Mask& near, Batch& batch)
   {
     field.scratch(id, 1, 0, phi, nullptr); // no ghost layer: storage in node order
     const double* values = phi.storage().data();
@@ -138,8 +177,9 @@ private:
       dilateAlong(near, stride);
       stride *= Edge;
     }
-    double* d = field.distance(id);
-    Index computed = 0, unknown = 0;
+    const double* d = field.distance(id);
+    Index unknown = 0;
+    batch.Nodes.clear();
     for (Index k = 0; k < TiledField<D>::Nodes; ++k)
     {
       if (!std::isnan(d[k]))
@@ -154,19 +194,19 @@ private:
       }
       if (near[static_cast<size_t>(b)])
       {
-        d[k] = locator.nearest(field.position(field.node(id, k))).Distance;
-        ++computed;
+        batch.Nodes.push_back(k);
       }
       else
       {
         ++unknown;
       }
     }
+    batch.compute(field, id, locator);
     if (unknown == 0)
     {
       this->Complete[static_cast<size_t>(id)] = 1;
     }
-    return computed;
+    return static_cast<Index>(batch.Nodes.size());
   }
 
   /// One pass of a 3-node dilation of `mask` along the axis of `stride`: a

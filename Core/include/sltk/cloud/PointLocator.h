@@ -40,6 +40,16 @@ public:
   void within(
     const std::array<double, D>& x, double radius, std::int64_t exclude, std::vector<std::int64_t>& found) const;
 
+  /// nearest(x[i]).Distance for the `count` points x (close together: a
+  /// tile's nodes), bit for bit. The nearest point to any of them lies within
+  /// |the centre's nearest| + 2 spread of their centre (the triangle
+  /// inequality; spread: the farthest of them from it), so one ring search at
+  /// the centre and one ball of candidates serve them all, and sqrt is
+  /// monotone and correctly rounded. A ball of more than `maxCandidates`
+  /// points falls back to a query per point. `candidates` is reused.
+  void nearestDistances(const std::array<double, D>* x, std::int64_t count, double* distances,
+    std::vector<std::int64_t>& candidates, std::int64_t maxCandidates = 1024) const;
+
   double bucketSize() const { return this->Size; }
   const PointCloud<D>& cloud() const { return *this->Cloud; }
 
