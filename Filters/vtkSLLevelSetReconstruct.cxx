@@ -406,7 +406,7 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
     const sltk::PointLocator<D>& locator = *plan.Locator;
     sltk::vtkbridge::tiledToHyperTreeGrid<D>(
       result.Field, result.Box, [&locator](const std::array<double, D>& x) { return locator.nearest(x).Distance; },
-      grid, result.Owners, comm.rank(), z); // Initialize()s the grid: its field data after it
+      grid, ctx, result.Owners, comm.rank(), z); // Initialize()s the grid: its field data after it
     if (!result.Storage.empty())
     {
       vtkNew<vtkDoubleArray> leaves; // the trees' leaves over every rank, on every rank

@@ -154,7 +154,7 @@ bool build(const TiledField<D>& field, std::int32_t tile, double scale, const Di
 
 template <int D>
 void tiledToHyperTreeGrid(const TiledField<D>& field, const UnitBox<D>& box,
-  const std::function<double(const std::array<double, D>&)>& distanceAt, vtkHyperTreeGrid* output,
+  const std::function<double(const std::array<double, D>&)>& distanceAt, vtkHyperTreeGrid* output, const Context& ctx,
   const std::vector<std::int32_t>& owners, int rank, double z)
 {
   const auto mine = [&](Index s) { return ownedBy(owners, s, rank); };
@@ -209,6 +209,23 @@ void tiledToHyperTreeGrid(const TiledField<D>& field, const UnitBox<D>& box,
   mask->SetNumberOfTuples(cells);
   CellValues out{ phiArray->GetPointer(0), distanceArray->GetPointer(0), levelArray->GetPointer(0), mask };
 
+  // The distance at the centre of every slot without a tile, on ctx's threads
+  // first: one query each, most of them far from the cloud.
+  std::vector<double> slotDistance(static_cast<size_t>(field.slotCount()), 0.0);
+  ctx.parallelFor(
+    0, field.slotCount(),
+    [&](Index b, Index e)
+    {
+      for (Index s = b; s < e; ++s)
+      {
+        if (mine(s) && field.slot(s) < 0)
+        {
+          slotDistance[static_cast<size_t>(s)] =
+            distanceAt(cellCentre<D>(field, field.slotCoordinates(s), std::array<Index, D>{}, TileEdge));
+        }
+      }
+    },
+    64);
   vtkNew<vtkHyperTreeGridNonOrientedCursor> cursor;
   vtkIdType start = 0;
   for (Index s = 0; s < field.slotCount(); ++s)
@@ -231,9 +248,9 @@ void tiledToHyperTreeGrid(const TiledField<D>& field, const UnitBox<D>& box,
     }
     else
     {
-      const std::array<double, D> centre = cellCentre<D>(field, t, std::array<Index, D>{}, TileEdge);
       const double side = entry == TiledField<D>::Inside ? -field.gamma() : field.gamma();
-      out.set(cursor->GetGlobalNodeIndex(), box.Scale * side, box.Scale * distanceAt(centre), 0, false);
+      out.set(
+        cursor->GetGlobalNodeIndex(), box.Scale * side, box.Scale * slotDistance[static_cast<size_t>(s)], 0, false);
     }
     start += static_cast<vtkIdType>(cursor->GetTree()->GetNumberOfVertices());
   }
@@ -257,11 +274,11 @@ void tiledToHyperTreeGrid(const TiledField<D>& field, const UnitBox<D>& box,
 }
 
 template void tiledToHyperTreeGrid<2>(const TiledField<2>&, const UnitBox<2>&,
-  const std::function<double(const std::array<double, 2>&)>&, vtkHyperTreeGrid*, const std::vector<std::int32_t>&, int,
-  double);
+  const std::function<double(const std::array<double, 2>&)>&, vtkHyperTreeGrid*, const Context&,
+  const std::vector<std::int32_t>&, int, double);
 template void tiledToHyperTreeGrid<3>(const TiledField<3>&, const UnitBox<3>&,
-  const std::function<double(const std::array<double, 3>&)>&, vtkHyperTreeGrid*, const std::vector<std::int32_t>&, int,
-  double);
+  const std::function<double(const std::array<double, 3>&)>&, vtkHyperTreeGrid*, const Context&,
+  const std::vector<std::int32_t>&, int, double);
 
 } // namespace vtkbridge
 } // namespace sltk

@@ -11,6 +11,7 @@
 /// the mean of its unmasked children. The dual grid of the leaves (vtkHyperTreeGridContour) therefore contours the
 /// nodes' values as the uniform grid does near the front.
 
+#include "sltk/exec/Context.h"
 #include "sltk/octree/TiledField.h"
 #include "sltk/recon/UnitBox.h"
 
@@ -35,7 +36,7 @@ namespace vtkbridge
 /// grid lies in the plane `z`.
 template <int D>
 void tiledToHyperTreeGrid(const TiledField<D>& field, const UnitBox<D>& box,
-  const std::function<double(const std::array<double, D>&)>& distanceAt, vtkHyperTreeGrid* output,
+  const std::function<double(const std::array<double, D>&)>& distanceAt, vtkHyperTreeGrid* output, const Context& ctx,
   const std::vector<std::int32_t>& owners = {}, int rank = 0, double z = 0.0);
 
 } // namespace vtkbridge
