@@ -131,11 +131,10 @@ void tiledZeroLevelSet(const TiledField<D>& field, const UnitBox<D>& box, vtkPol
   }
   std::sort(blocks.begin(), blocks.end());
   blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
-  // The blocks on the solver's threads (each its own copy and pipeline; VTK
-  // runs the pipelines' own vtkSMPTools loops serially there), appended in
-  // block order: the same surface on any thread count. (vtkSMPTools' threads
-  // kept 25 MB more of the bunny's process at its peak: their heaps' freed
-  // pieces.)
+  // The blocks on the solver's threads (each its own copy and pipeline),
+  // appended in block order: the same surface on any thread count.
+  // (vtkSMPTools::For over the blocks kept 25 MB more of the bunny's process
+  // at its peak: its threads' heaps.)
   std::vector<vtkSmartPointer<vtkPolyData>> pieces(blocks.size());
   ctx.parallelFor(
     0, static_cast<Index>(blocks.size()),

@@ -279,8 +279,9 @@ void PointLocator<D>::nearestDistances(const std::array<double, D>* x, std::int6
     }
     return;
   }
-  // The smallest squared distance of each point, candidate after candidate (the
-  // points' loop vectorises); its square root is the nearest distance.
+  // The smallest squared distance of each point, candidate after candidate
+  // (the points' loop inside: no minimum carried across it); its square root
+  // is the nearest distance.
   for (std::int64_t i = 0; i < count; ++i)
   {
     distances[i] = std::numeric_limits<double>::infinity();
