@@ -2,9 +2,94 @@
 #include "sltk/recon/ExactDistanceCache.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <utility>
+#include <vector>
 
 namespace sltk
 {
+
+namespace
+{
+/// Nodes grouped by boxes of BoxEdge^D nodes, each box's distances found at
+/// once (PointLocator::nearestDistances: bit for bit the per-node queries);
+/// a box with fewer than MinBatch nodes asks one query a node. Per thread.
+template <int D>
+struct BoxBatch
+{
+  static constexpr Index BoxBits = 2; ///< boxes of 4^D nodes: spread at most 1.5 sqrt(D) dx
+  static constexpr size_t MinBatch = 8;
+
+  std::vector<std::pair<Index, Index>> Keyed; ///< (box, storage slot)
+  std::vector<std::array<double, D>> Positions;
+  std::vector<double> Distances;
+  std::vector<std::int64_t> Candidates;
+
+  /// values[slot] = the distance to the cloud at every storage slot of `slots`.
+  void compute(const std::vector<Index>& slots, const std::array<Index, D>& padded, const GridField<D>& dist,
+    const PointLocator<D>& locator, double* values)
+  {
+    this->Keyed.clear();
+    for (const Index slot : slots)
+    {
+      Index rest = slot, key = 0, stride = 1;
+      for (int a = 0; a < D; ++a)
+      {
+        key += ((rest % padded[a]) >> BoxBits) * stride;
+        stride *= (padded[a] >> BoxBits) + 1;
+        rest /= padded[a];
+      }
+      this->Keyed.emplace_back(key, slot);
+    }
+    std::sort(this->Keyed.begin(), this->Keyed.end());
+    for (size_t first = 0; first < this->Keyed.size();)
+    {
+      size_t last = first + 1;
+      while (last < this->Keyed.size() && this->Keyed[last].first == this->Keyed[first].first)
+      {
+        ++last;
+      }
+      const size_t n = last - first;
+      this->Positions.resize(n);
+      for (size_t i = 0; i < n; ++i)
+      {
+        this->Positions[i] = position(this->Keyed[first + i].second, padded, dist);
+      }
+      if (n < MinBatch)
+      {
+        for (size_t i = 0; i < n; ++i)
+        {
+          values[this->Keyed[first + i].second] = locator.nearest(this->Positions[i]).Distance;
+        }
+      }
+      else
+      {
+        this->Distances.resize(n);
+        locator.nearestDistances(
+          this->Positions.data(), static_cast<std::int64_t>(n), this->Distances.data(), this->Candidates);
+        for (size_t i = 0; i < n; ++i)
+        {
+          values[this->Keyed[first + i].second] = this->Distances[i];
+        }
+      }
+      first = last;
+    }
+  }
+
+  /// The coordinates of a storage slot (ghosts included in `padded`).
+  static std::array<double, D> position(Index slot, const std::array<Index, D>& padded, const GridField<D>& dist)
+  {
+    std::array<double, D> x;
+    for (int a = 0; a < D; ++a)
+    {
+      x[a] = dist.spec().coordinate(a, slot % padded[a] - dist.ghost());
+      slot /= padded[a];
+    }
+    return x;
+  }
+};
+} // namespace
 
 template <int D>
 Index ExactDistanceCache<D>::ensure(const NodeList& band, const Context& ctx, GridField<D>& dist)
@@ -31,9 +116,11 @@ Index ExactDistanceCache<D>::ensure(const NodeList& band, const Context& ctx, Gr
     stencil[s] = dist.offset(shift[s]) - dist.offset({});
   }
   const auto& spec = dist.spec();
-  // Both threads mark: a slot's flag is claimed by one atomic exchange, so each
+  // Both threads mark: a slot's flag is claimed by one atomic fetch_or, so each
   // slot is computed once, by the chunk that claimed it first (which one does
-  // not change its value, nor the count).
+  // not change its value, nor the count). A node whose stencil was made exact
+  // at an earlier call (most of the band: it moves a few nodes an iteration)
+  // is passed over on its own flag.
   const Index size = static_cast<Index>(band.size());
   const Index grain = std::max<Index>(1024, (size + 63) / 64);
   const Index chunks = (size + grain - 1) / grain;
@@ -43,22 +130,40 @@ Index ExactDistanceCache<D>::ensure(const NodeList& band, const Context& ctx, Gr
     [&](Index b, Index e)
     {
       std::vector<Index>& mine = pending[static_cast<size_t>(b / grain)];
+      Index previous = -2, lineEnd = 0, base = 0;
       for (Index p = b; p < e; ++p)
       {
-        const Index base = dist.offset(dist.nodeIndex(band[static_cast<size_t>(p)]));
+        const Index k = band[static_cast<size_t>(p)];
+        if (k == previous + 1 && k < lineEnd)
+        {
+          ++base; // the next node of an x line is the next storage slot (no division)
+        }
+        else
+        {
+          const auto i = dist.nodeIndex(k);
+          base = dist.offset(i);
+          lineEnd = k - i[0] + spec.Dims[0];
+        }
+        previous = k;
+        std::atomic<std::uint8_t>& node = this->Exact[base];
+        if (node.load(std::memory_order_relaxed) & StencilExact)
+        {
+          continue;
+        }
         for (int s = 0; s < n; ++s)
         {
           const Index slot = base + stencil[s];
           std::atomic<std::uint8_t>& exact = this->Exact[slot];
-          if (exact.load(std::memory_order_relaxed) == 0 && exact.exchange(1, std::memory_order_relaxed) == 0)
+          if (!(exact.load(std::memory_order_relaxed) & SlotExact) &&
+            !(exact.fetch_or(SlotExact, std::memory_order_relaxed) & SlotExact))
           {
             mine.push_back(slot);
           }
         }
+        node.fetch_or(StencilExact, std::memory_order_relaxed);
       }
     },
     grain);
-  // Storage offset -> multi-index (ghosts included) for the coordinates.
   std::array<Index, D> padded{};
   for (int a = 0; a < D; ++a)
   {
@@ -69,19 +174,10 @@ Index ExactDistanceCache<D>::ensure(const NodeList& band, const Context& ctx, Gr
     0, chunks,
     [&](Index b, Index e)
     {
+      BoxBatch<D> batch;
       for (Index c = b; c < e; ++c)
       {
-        for (const Index slot : pending[static_cast<size_t>(c)])
-        {
-          Index rest = slot;
-          std::array<double, D> x;
-          for (int a = 0; a < D; ++a)
-          {
-            x[a] = spec.coordinate(a, rest % padded[a] - dist.ghost());
-            rest /= padded[a];
-          }
-          values[slot] = this->Locator->nearest(x).Distance;
-        }
+        batch.compute(pending[static_cast<size_t>(c)], padded, dist, *this->Locator, values);
       }
     },
     1);

@@ -8,7 +8,10 @@
 /// corners of their cells for (4.29)/(4.30)) get the exact nearest-point
 /// distance the first time the band reaches them. Elsewhere d keeps its
 /// approximate value (swept in run 1, interpolated from the previous run
-/// later). Work: O(new nodes) nearest-point queries per iteration.
+/// later). Work: O(new nodes) nearest-point queries per iteration, the new
+/// nodes grouped by boxes of 4^D nodes and each box's distances found with one
+/// search (PointLocator::nearestDistances, bit for bit the per-node query);
+/// a band node whose stencil is already exact costs one flag read.
 
 #include "sltk/cloud/PointLocator.h"
 #include "sltk/exec/Context.h"
@@ -46,7 +49,9 @@ public:
 private:
   const PointCloud<D>* Cloud;
   const PointLocator<D>* Locator;
-  /// Per storage slot: 1 once d is exact there (or claimed by the call computing it).
+  static constexpr std::uint8_t SlotExact = 1;    ///< d is exact there (or claimed by the call computing it)
+  static constexpr std::uint8_t StencilExact = 2; ///< the node's whole stencil is SlotExact
+  /// Per storage slot: SlotExact | StencilExact flags.
   std::unique_ptr<std::atomic<std::uint8_t>[]> Exact;
 };
 
