@@ -57,7 +57,9 @@ struct TileScratch
 
 /// The largest displacement of a foot of (4.22)/(4.24) from its node, in the
 /// same arithmetic as levelSetStep (the scale (4.32), grad d or, through a
-/// tunnel, grad phi, and the spread of the tangent points).
+/// tunnel, grad phi, and the spread of the tangent points). Only the nodes
+/// that take feet count (|phi| <= FeetWithin): the others' linearised step
+/// reads one node around them.
 template <int D>
 double largestFoot(
   const GridField<D>& phi, const GridField<D>& dist, const NodeList& nodes, const LevelSetStepParameters& par)
@@ -66,6 +68,10 @@ double largestFoot(
   for (Index k : nodes)
   {
     const auto i = phi.nodeIndex(k);
+    if (std::fabs(phi(i)) > par.FeetWithin)
+    {
+      continue;
+    }
     const double d = dist(i);
     const double scale = detail::stepScale(phi(i), d, par);
     const auto gd = detail::centredGradient(dist, dist.pointer(i));
