@@ -12,6 +12,7 @@
 #include "RenderPng.h"
 #include "SurfaceDistance.h"
 #include "SurfacePieces.h"
+#include "TreeImage.h"
 #include "WriteAtomically.h"
 #include "WritePieces.h"
 #include "WriteSurface.h"
@@ -117,7 +118,9 @@ struct Reconstruct
   std::string problemBeforeWork(bool pieces, vtkPolyData* reference, int& code) const;
   vtkSmartPointer<vtkSLLevelSetReconstruct> makeFilter(vtkPointSet* cloud) const;
   sltk::Status writeRankPieces(vtkDataObject* grid) const;
-  sltk::Status writeFiles(vtkDataObject* grid, vtkPolyData* surface, vtkPointSet* cloud, vtkTable* history) const;
+  /// `finest`: the last run's grid (nodes per axis), the image --octree writes as .vti.
+  sltk::Status writeFiles(vtkDataObject* grid, const std::array<long long, 3>& finest, vtkPolyData* surface,
+    vtkPointSet* cloud, vtkTable* history) const;
   int run() const;
 };
 
@@ -265,10 +268,10 @@ std::string Reconstruct::problemBeforeWork(bool pieces, vtkPolyData* reference, 
   }
   const std::string extension = this->given("--output") ? extensionOf(this->Output) : "";
   const bool treeOutput = extension == "htg" || extension == "phtg";
-  if (this->octree() && this->given("--output") && !treeOutput)
+  if (this->octree() && extension == "pvti")
   {
-    return "--octree stores no full grid, so its -o is a hyper tree grid (one tree per 8^3 nodes, 8^2 in 2D, refined "
-           "near the front): write -o FILE.htg (FILE.phtg under mpirun)";
+    return "--octree's ranks hold trees, not blocks of the grid: write -o as .phtg under mpirun (each rank its own "
+           "trees), or as .vti on one rank (the uniform grid written from the trees piece by piece)";
   }
   if (!this->octree() && treeOutput)
   {
@@ -365,13 +368,15 @@ sltk::Status Reconstruct::writeRankPieces(vtkDataObject* grid) const
 
 /// The files rank 0 writes besides the summary: -o (unless written in pieces,
 /// `grid` null then), --surface, --png and --csv.
-sltk::Status Reconstruct::writeFiles(
-  vtkDataObject* grid, vtkPolyData* surface, vtkPointSet* cloud, vtkTable* history) const
+sltk::Status Reconstruct::writeFiles(vtkDataObject* grid, const std::array<long long, 3>& finest, vtkPolyData* surface,
+  vtkPointSet* cloud, vtkTable* history) const
 {
   if (grid && this->given("--output"))
   {
-    SLTK_RETURN_IF_ERROR(this->octree() ? writeHyperTreeGrid(this->Output, vtkHyperTreeGrid::SafeDownCast(grid))
-                                        : writeImage(this->Output, vtkImageData::SafeDownCast(grid)));
+    auto* trees = vtkHyperTreeGrid::SafeDownCast(grid);
+    SLTK_RETURN_IF_ERROR(!this->octree()     ? writeImage(this->Output, vtkImageData::SafeDownCast(grid))
+        : extensionOf(this->Output) == "vti" ? writeTreeImage(this->Output, trees, finest)
+                                             : writeHyperTreeGrid(this->Output, trees));
   }
   if (this->given("--surface"))
   {
@@ -514,7 +519,12 @@ int Reconstruct::run() const
       distances.Chamfer, distances.Hausdorff, distances.MeanToReference, distances.MeanFromReference);
   }
 
-  status = this->writeFiles(pieces ? nullptr : grid, surface, cloud, history);
+  std::array<long long, 3> finest{ 1, 1, 1 };
+  for (int a = 0; a < 3 && !result.Runs.empty(); ++a)
+  {
+    finest[a] = static_cast<long long>(result.Runs.back().GridDimensions[a]);
+  }
+  status = this->writeFiles(pieces ? nullptr : grid, finest, surface, cloud, history);
   if (!status.isOk())
   {
     return fail(status.message());
@@ -571,7 +581,8 @@ Command addReconstructCommand(CLI::App& sltk)
     ->add_option("-o,--output", command->Output,
       "signed distance (and distance to the cloud) on the grid; under\nmpirun, .pvti: every rank writes its own "
       "block (FILE/FILE_<rank>.vti);\n--octree: a hyper tree grid, .htg (.phtg under mpirun: each rank\nits own "
-      "trees, FILE/FILE_<rank>.htg, also listed by FILE.vtm, which\nParaView 5.11 opens)")
+      "trees, FILE/FILE_<rank>.htg, also listed by FILE.vtm, which\nParaView 5.11 opens), or on one rank the "
+      "uniform grid as .vti,\nwritten from the trees piece by piece (never held whole)")
     ->option_text("FILE.vti|.pvti|.htg|.phtg");
   app
     ->add_option("--surface", command->Surface,

@@ -422,7 +422,13 @@ def _(t):
 
 
 option_case("unknown-option", ("--frobnicate",), 2, "--frobnicate")
-option_case("octree-with-image-output", ("--octree",), 2, "--octree stores no full grid", "FILE.htg")
+
+
+@case("cli.option.octree-with-image-pieces")
+def _(t):
+    """--octree's ranks hold trees: -o FILE.pvti is refused before any work, naming .phtg and .vti."""
+    t.sltk("reconstruct", t.file("cloud.xyz", bad.sphere(200)), "--octree", "-o", t.output("out.pvti"))
+    t.fails(2, "--octree's ranks hold trees", ".phtg", ".vti on one rank")
 
 
 @case("cli.option.tree-output-without-octree")

@@ -180,6 +180,38 @@ expect([r["iterations"] for r in tree_runs] == [r["iterations"] for r in summary
 expect(0 < tree_runs[1]["leaves"] < tree_runs[1]["uniform_nodes"] and
        tree_runs[0]["leaves"] == tree_runs[0]["uniform_nodes"],
        "--octree JSON: the octree's leaves per run, fewer than its grid's nodes (run 1: its grid's nodes)")
+# --octree -o FILE.vti: the uniform grid written from the trees, piece by piece; the signed distance is
+# the uniform run's in its band (the same iterations) and +-gamma beyond it, as the uniform image holds it.
+tree_vti = os.path.join(tmp, "sphere-trees.vti")
+rc, out, err = run("reconstruct", sphere, "--runs", "2", "--interpolator", "q1", "--octree", "-o", tree_vti, "--quiet")
+expect(rc == 0, "reconstruct --octree -o FILE.vti exits 0 (%s)" % err.strip())
+try:
+    from vtkmodules.vtkIOXML import vtkXMLImageDataReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    import numpy
+
+    def read_image(path):
+        reader = vtkXMLImageDataReader()
+        reader.SetFileName(path)
+        reader.Update()
+        return reader.GetOutput()
+
+    trees, uniform = read_image(tree_vti), read_image(out_vti)
+    phi_t = vtk_to_numpy(trees.GetPointData().GetArray("SignedDistance"))
+    phi_u = vtk_to_numpy(uniform.GetPointData().GetArray("SignedDistance"))
+    gamma = numpy.abs(phi_u).max()
+    band = numpy.abs(phi_u) < gamma
+    same_grid = trees.GetDimensions() == uniform.GetDimensions() and numpy.allclose(
+        trees.GetOrigin(), uniform.GetOrigin(), rtol=0, atol=1e-12) and numpy.allclose(
+        trees.GetSpacing(), uniform.GetSpacing(), rtol=1e-12, atol=0)
+    expect(same_grid and band.any() and numpy.abs(phi_t - phi_u)[band].max() < 1e-12 * gamma and
+           (phi_t[~band] == phi_u[~band]).all() and
+           trees.GetPointData().GetArray("DistanceToCloud") is not None and
+           b'type="ImageData"' in open(tree_vti, "rb").read(400),
+           "--octree -o FILE.vti: the uniform grid, its signed distance the uniform run's (%s, %s)" %
+           (trees.GetDimensions(), uniform.GetDimensions()))
+except ImportError as e:
+    print("skip --octree -o FILE.vti's values: %s" % e)
 # info --octree: the octree's plan, its stored nodes estimated from the cloud (an upper estimate).
 plan_json, uniform_plan_json = os.path.join(tmp, "octree-plan.json"), os.path.join(tmp, "uniform-plan.json")
 rc1, _, err1 = run("info", sphere, "--runs", "2", "--octree", "--json", plan_json)
