@@ -158,7 +158,7 @@ void TiledField<D>::scratchBlock(const std::array<Index, D>& first, Index tiles,
   {
     if (f.spec().Dims != block.Dims || f.ghost() != ghost)
     {
-      f.resize(block, ghost);
+      f.reshape(block, ghost); // every value read is written below (see the header)
     }
     f.setGeometry(block.Origin, block.Spacing);
   };

@@ -29,6 +29,8 @@ constexpr int DistReach = 1;    ///< nodes around the band the step reads d at (
 constexpr int HaloStep = 4;     ///< the step's halo is a multiple of this (fewer scratch shapes)
 constexpr int MaxHalo = 32;     ///< the farthest the step reads around a tile
 constexpr Index BlockTiles = TileBlockEdge; ///< the step copies blocks of 4^D tile positions (32^D nodes) at once
+/// Blocks of one chunk of the step share its scratch: its copies take no new allocation nor zero fill.
+constexpr Index BlocksPerChunk = 4;
 static_assert(MaxHalo <= MaxGhostLayers * TileEdge, "the ghost layers cover the step's farthest read");
 
 /// Index in a scratch block (`tiles`^D tile positions and `halo` nodes around
@@ -329,7 +331,7 @@ Status tiledStep(TiledField<D>& field, const std::vector<std::int32_t>& band, co
           });
       }
     },
-    1);
+    BlocksPerChunk);
   for (size_t block = 0; block < feet.size(); ++block)
   {
     if (!(feet[block] <= (MaxHalo - StencilReach) * dx))
