@@ -2,12 +2,45 @@
 #include "sltk/cloud/PointLocator.h"
 
 #include "sltk/core/IndexBox.h"
+#include "sltk/interp/Lanes.h"
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace sltk
 {
+
+namespace
+{
+/// squared[i] = min(squared[i], |p - x_i|^2) for the `count` points whose
+/// coordinates are axes[a * count + i]: the ring search's arithmetic term by
+/// term (no FMA: -ffp-contract=off), so the values are the per-point query's.
+template <int D>
+inline void smallestSquared(const double* p, const double* axes, std::int64_t count, double* squared)
+{
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    double d2 = 0.0;
+    for (int a = 0; a < D; ++a)
+    {
+      const double d = p[a] - axes[a * count + i];
+      d2 += d * d;
+    }
+    squared[i] = d2 < squared[i] ? d2 : squared[i];
+  }
+}
+
+#if defined(SLTK_LANES_AVX2)
+/// smallestSquared() in four lanes where the processor has AVX2 (the same operations a lane).
+template <int D>
+SLTK_LANES_AVX2_TARGET void smallestSquaredAvx2(
+  const double* p, const double* axes, std::int64_t count, double* squared)
+{
+  smallestSquared<D>(p, axes, count, squared);
+}
+#endif
+} // namespace
 
 template <int D>
 PointLocator<D>::PointLocator(const PointCloud<D>& cloud, double pointsPerBucket)
@@ -280,25 +313,26 @@ void PointLocator<D>::nearestDistances(const std::array<double, D>* x, std::int6
     return;
   }
   // The smallest squared distance of each point, candidate after candidate
-  // (the points' loop inside: no minimum carried across it); its square root
-  // is the nearest distance.
+  // (the points' loop inside: no minimum carried across it), the points'
+  // coordinates axis by axis so that the loop takes whole vectors; its square
+  // root is the nearest distance.
+  std::vector<double> axes(static_cast<size_t>(D * count));
   for (std::int64_t i = 0; i < count; ++i)
   {
     distances[i] = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < D; ++a)
+    {
+      axes[static_cast<size_t>(a * count + i)] = x[i][a];
+    }
   }
+#if defined(SLTK_LANES_AVX2)
+  const auto smallest = lanes::hasAvx2() ? smallestSquaredAvx2<D> : smallestSquared<D>;
+#else
+  const auto smallest = smallestSquared<D>;
+#endif
   for (const std::int64_t k : candidates)
   {
-    const std::array<double, D>& p = this->Cloud->Points[static_cast<size_t>(k)];
-    for (std::int64_t i = 0; i < count; ++i)
-    {
-      double d2 = 0.0;
-      for (int a = 0; a < D; ++a)
-      {
-        const double d = p[a] - x[i][a]; // the ring search's arithmetic, term by term
-        d2 += d * d;
-      }
-      distances[i] = d2 < distances[i] ? d2 : distances[i];
-    }
+    smallest(this->Cloud->Points[static_cast<size_t>(k)].data(), axes.data(), count, distances);
   }
   for (std::int64_t i = 0; i < count; ++i)
   {
