@@ -316,7 +316,8 @@ void PointLocator<D>::nearestDistances(const std::array<double, D>* x, std::int6
   // (the points' loop inside: no minimum carried across it), the points'
   // coordinates axis by axis so that the loop takes whole vectors; its square
   // root is the nearest distance.
-  std::vector<double> axes(static_cast<size_t>(D * count));
+  static thread_local std::vector<double> axes; // kept: no allocation a call once it is large enough
+  axes.resize(static_cast<size_t>(D * count));
   for (std::int64_t i = 0; i < count; ++i)
   {
     distances[i] = std::numeric_limits<double>::infinity();

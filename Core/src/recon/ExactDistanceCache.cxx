@@ -12,7 +12,7 @@ namespace sltk
 
 namespace
 {
-/// Nodes grouped by boxes of BoxEdge^D nodes, each box's distances found at
+/// Nodes grouped by boxes of (2^BoxBits)^D nodes, each box's distances found at
 /// once (PointLocator::nearestDistances: bit for bit the per-node queries);
 /// a box with fewer than MinBatch nodes asks one query a node. Per thread.
 template <int D>
