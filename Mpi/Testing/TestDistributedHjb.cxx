@@ -3,7 +3,10 @@
 // also right on 4): the slabs with ghost rows give the serial solve's values
 // at every node (to round-off: each slab computes its own node coordinates),
 // the same step count and the same errors; a formula that fails on one rank's
-// slab only ends every rank with the same error, without a hang.
+// slab only ends every rank with the same error, without a hang. A periodic
+// last axis wraps the slabs: the first rank's feet are located in a window
+// that starts below row 0, so its values agree with the serial solve's to
+// rounding, not bitwise (DistributedHjbSolver.h).
 #include "MpiWorld.h"
 #include "sltk/hjb/DistributedHjbSolver.h"
 
@@ -59,7 +62,21 @@ sltk::HjbRunResult solve(sltk::HjbSolver& solver)
   return r;
 }
 
-void expectSameAsSerial(const sltk::HjbExpressionSpec& spec)
+/// A wave carried across a periodic square: the feet of the first and last
+/// rows of y (the slabs' axis) cross the wrap at every step.
+sltk::HjbExpressionSpec periodicTransport(sltk::Index n)
+{
+  sltk::HjbExpressionSpec s = rotation(n); // its unit square and Courant number
+  s.Bounds = { sltk::Boundary::Periodic, sltk::Boundary::Periodic, sltk::Boundary::Extrapolate };
+  s.Dynamics = { "0.37", "0.71", "" }; // feet between the nodes
+  s.Initial = "sin(2*pi*x)*cos(2*pi*y)";
+  s.Exact = "sin(2*pi*(x + 0.37*t))*cos(2*pi*(y + 0.71*t))";
+  s.FinalTime = 0.5;
+  return s;
+}
+
+/// `tolerance`: the largest difference allowed at a node (0: bitwise).
+void expectSameAsSerial(const sltk::HjbExpressionSpec& spec, double tolerance = 0.0)
 {
   auto comm = world();
   std::unique_ptr<sltk::HjbSolver> serial, distributed;
@@ -75,13 +92,13 @@ void expectSameAsSerial(const sltk::HjbExpressionSpec& spec)
   {
     worst = std::max(worst, std::fabs(one.Value[k] - many.Value[k]));
   }
-  EXPECT_EQ(worst, 0.0) << "on " << comm->size() << " ranks";
+  EXPECT_LE(worst, tolerance) << "on " << comm->size() << " ranks";
   EXPECT_EQ(many.ReachTime, one.ReachTime) << "on " << comm->size() << " ranks";
   if (!spec.Exact.empty())
   {
     // The L1 sum is reduced over the ranks: the same terms, added in another order.
-    EXPECT_NEAR(many.L1Error, one.L1Error, 1e-13 * one.L1Error);
-    EXPECT_EQ(many.LinfError, one.LinfError);
+    EXPECT_NEAR(many.L1Error, one.L1Error, 1e-13 * one.L1Error + tolerance);
+    EXPECT_NEAR(many.LinfError, one.LinfError, tolerance);
   }
   EXPECT_EQ(many.Steps > 0, spec.FinalTime > 0.0);
 }
@@ -97,8 +114,15 @@ TEST(DistributedHjb, RotationMatchesTheSerialSolveAtEveryNode)
   expectSameAsSerial(rotation(81));
 }
 
-/// A thesis test split over the ranks against the same test on one rank.
-void expectPresetSameAsSerial(sltk::HjbPreset preset, sltk::Index nodes, bool split)
+TEST(DistributedHjb, APeriodicLastAxisWrapsTheSlabs)
+{
+  // Measured: the largest difference 8.9e-16 on 2 and 3 ranks, 7.8e-16 on 4 (values of size 1).
+  expectSameAsSerial(periodicTransport(48), 1e-14);
+}
+
+/// A thesis test split over the ranks against the same test on one rank
+/// (`tolerance` as expectSameAsSerial).
+void expectPresetSameAsSerial(sltk::HjbPreset preset, sltk::Index nodes, double tolerance = 0.0)
 {
   auto comm = world();
   sltk::PresetRunOptions options;
@@ -108,26 +132,33 @@ void expectPresetSameAsSerial(sltk::HjbPreset preset, sltk::Index nodes, bool sp
   ASSERT_TRUE(sltk::makePresetSolver(options, serial).isOk());
   const sltk::Status made = sltk::makeDistributedPresetSolver(options, *comm, distributed);
   ASSERT_TRUE(made.isOk()) << made.message();
-  EXPECT_EQ(distributed->ranks(), split ? comm->size() : 1);
+  EXPECT_EQ(distributed->ranks(), comm->size());
   const sltk::HjbRunResult one = solve(*serial);
   const sltk::HjbRunResult many = solve(*distributed);
   EXPECT_EQ(many.Steps, one.Steps);
-  EXPECT_EQ(many.Value, one.Value) << "test " << static_cast<int>(preset) << " on " << comm->size() << " ranks";
+  ASSERT_EQ(many.Value.size(), one.Value.size());
+  double worst = 0.0;
+  for (size_t k = 0; k < one.Value.size(); ++k)
+  {
+    worst = std::max(worst, std::fabs(one.Value[k] - many.Value[k]));
+  }
+  EXPECT_LE(worst, tolerance) << "test " << static_cast<int>(preset) << " on " << comm->size() << " ranks";
   EXPECT_EQ(many.ReachTime, one.ReachTime);
   if (!std::isnan(one.L1Error))
   {
-    EXPECT_NEAR(many.L1Error, one.L1Error, 1e-13 * one.L1Error);
-    EXPECT_EQ(many.LinfError, one.LinfError);
+    EXPECT_NEAR(many.L1Error, one.L1Error, 1e-13 * one.L1Error + tolerance);
+    EXPECT_NEAR(many.LinfError, one.LinfError, tolerance);
   }
 }
 
 TEST(DistributedHjb, ThesisTestsMatchTheSerialSolveAtEveryNode)
 {
-  expectPresetSameAsSerial(sltk::HjbPreset::Test1Rotation, 81, true);
-  expectPresetSameAsSerial(sltk::HjbPreset::Test2SemiConcave, 101, true);
-  expectPresetSameAsSerial(sltk::HjbPreset::Test4Quadratic, 41, true);
-  expectPresetSameAsSerial(sltk::HjbPreset::Test5Zermelo, 51, true);
-  expectPresetSameAsSerial(sltk::HjbPreset::Test3Eikonal, 40, false); // periodic: whole on every rank
+  expectPresetSameAsSerial(sltk::HjbPreset::Test1Rotation, 81);
+  expectPresetSameAsSerial(sltk::HjbPreset::Test2SemiConcave, 101);
+  expectPresetSameAsSerial(sltk::HjbPreset::Test4Quadratic, 41);
+  expectPresetSameAsSerial(sltk::HjbPreset::Test5Zermelo, 51);
+  // Periodic: the slabs wrap. Measured: the largest difference 2.2e-15 on 2, 3 and 4 ranks.
+  expectPresetSameAsSerial(sltk::HjbPreset::Test3Eikonal, 40, 1e-14);
 }
 
 TEST(DistributedHjb, AnObstacleAndItsReachableSetMatchTheSerialSolve)

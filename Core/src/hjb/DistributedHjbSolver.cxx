@@ -88,6 +88,12 @@ public:
     }
     // u^0 is built on the first call (the serial solver's advanceTo does it), even when no step is asked for.
     SLTK_RETURN_IF_ERROR(this->Comm.agree(this->Inner->advanceTo(this->time(), ctx)));
+    if (this->Slab.Periodic && this->stepsDone() == 0)
+    {
+      // The wrapped ghost rows' u^0 came from coordinates a period away (the same value to rounding):
+      // the owners' values instead, so that the first step reads what one rank's does.
+      this->exchange();
+    }
     Index target = this->stepsDone();
     while (target < this->stepCount() && this->startTime() + static_cast<double>(target + 1) * dt <= t + 1e-9 * dt)
     {
@@ -300,12 +306,12 @@ private:
 };
 } // namespace
 
-Status planSlabs(const HjbGrid& grid, double speed, double dt, const Communicator& comm, SlabPlan& plan)
+Status planSlabs(const HjbGrid& grid, double speed, double dt, const Communicator& comm, SlabPlan& plan, bool periodic)
 {
   const int last = grid.Dimension - 1;
   const double reach = 1.25 * speed * dt / grid.Spacing[static_cast<size_t>(last)];
   return planSlab(grid.Dims[static_cast<size_t>(last)], static_cast<Index>(std::ceil(reach)) + HjbStencilRows,
-    comm.rank(), comm.size(), "the feet reach that far in one step", plan);
+    comm.rank(), comm.size(), "the feet reach that far in one step", plan, periodic);
 }
 
 std::unique_ptr<HjbSolver> makeDistributedSolver(std::unique_ptr<HjbSolver> window, const Communicator& comm,
@@ -329,22 +335,24 @@ Status makeDistributedExpressionSolver(
   double dt = 0.0;
   SLTK_RETURN_IF_ERROR(planExpressionSolve(spec, *compiled, grid, dt));
   const int last = spec.Dimension - 1;
-  if (spec.Bounds[static_cast<size_t>(last)] == Boundary::Periodic)
-  {
-    return Status::invalidArgument(
-      "a distributed HJB solve cuts the last axis into slabs, and it is periodic here: run on one rank");
-  }
+  const bool periodic = spec.Bounds[static_cast<size_t>(last)] == Boundary::Periodic;
   SlabPlan slab;
-  SLTK_RETURN_IF_ERROR(planSlabs(grid, largestSpeed(spec, *compiled, grid), dt, comm, slab));
+  SLTK_RETURN_IF_ERROR(planSlabs(grid, largestSpeed(spec, *compiled, grid), dt, comm, slab, periodic));
   const Index rows = grid.Dims[static_cast<size_t>(last)], first = slab.First, stop = slab.Stop;
   HjbExpressionSpec local = spec; // the slab: the whole grid's coordinates, spacing and time steps, bitwise
   local.WindowFirst[static_cast<size_t>(last)] = first;
   local.WindowNodes[static_cast<size_t>(last)] = stop - first;
   if (!spec.InitialValues.empty())
   {
+    // Row by row: a periodic slab's ghost rows past either end are the other end's rows.
     const Index rowNodes = static_cast<Index>(spec.InitialValues.size()) / rows;
-    local.InitialValues.assign(spec.InitialValues.begin() + static_cast<std::ptrdiff_t>(first * rowNodes),
-      spec.InitialValues.begin() + static_cast<std::ptrdiff_t>(stop * rowNodes));
+    local.InitialValues.clear();
+    local.InitialValues.reserve(static_cast<size_t>((stop - first) * rowNodes));
+    for (Index row = first; row < stop; ++row)
+    {
+      const auto from = spec.InitialValues.begin() + static_cast<std::ptrdiff_t>((row + rows) % rows * rowNodes);
+      local.InitialValues.insert(local.InitialValues.end(), from, from + static_cast<std::ptrdiff_t>(rowNodes));
+    }
   }
   std::unique_ptr<HjbSolver> inner;
   SLTK_RETURN_IF_ERROR(comm.agree(makeExpressionSolver(local, inner)));

@@ -173,17 +173,21 @@ Status buildGrid(const HjbExpressionSpec& spec, GridSpec<D>& grid)
     const bool periodic = spec.Bounds[static_cast<size_t>(a)] == Boundary::Periodic;
     const Index first = spec.WindowFirst[static_cast<size_t>(a)];
     const Index window = spec.WindowNodes[static_cast<size_t>(a)];
-    if (window < 0 || first < 0 || (window > 0 && (first + window > n || window < 5 || periodic)))
+    // A window of a periodic axis (a distributed solve's slab, Slabs.h) may run up to one period past
+    // either end: its rows there are the other end's, at coordinates a period away.
+    const Index low = periodic && window > 0 ? -n : 0, high = periodic ? 2 * n : n;
+    if (window < 0 || first < low || (window > 0 && (first + window > high || window < 5)))
     {
       return Status::invalidArgument(std::string("the window along ") + axisNames[a] + " (nodes " +
         std::to_string(first) + " + " + std::to_string(window) + " of " + std::to_string(n) +
-        ") is not inside the grid, shorter than 5 nodes or on a periodic axis");
+        ") is not inside the grid (a periodic axis: within a period of it) or shorter than 5 nodes");
     }
     grid.Dims[a] = window > 0 ? window : n;
     grid.Offset[a] = window > 0 ? first : 0;
     grid.Origin[a] = lo;
     grid.Spacing[a] = axisSpacing(spec, a);
-    grid.Bounds[a] = spec.Bounds[static_cast<size_t>(a)];
+    // A window's end rows are ghost rows, overwritten by the exchange: no wrap inside the window.
+    grid.Bounds[a] = periodic && window > 0 ? Boundary::Extrapolate : spec.Bounds[static_cast<size_t>(a)];
   }
   return grid.validate();
 }

@@ -67,6 +67,7 @@ Status presetSolver(const Problem& base, HjbSetup<Problem::Dim> setup, const Pre
     constexpr int last = Problem::Dim - 1;
     setup.Grid.Offset[last] = slab->First;
     setup.Grid.Dims[last] = slab->Stop - slab->First;
+    setup.Grid.Bounds[last] = Boundary::Extrapolate; // a periodic axis' window: its end rows are ghost rows
   }
   const bool reachable = options.Preset == HjbPreset::Test5Zermelo;
   solver = makeHjbSolverOf<Fixed>(
@@ -82,7 +83,9 @@ Status distributedPreset(const Problem& base, const HjbSetup<Problem::Dim>& setu
   std::unique_ptr<HjbSolver> whole; // the plan: nothing is allocated before the first step
   SLTK_RETURN_IF_ERROR(presetSolver<O>(base, setup, options, whole));
   SlabPlan slab;
-  SLTK_RETURN_IF_ERROR(planSlabs(whole->grid(), speed, whole->timeStep(), comm, slab));
+  constexpr int last = Problem::Dim - 1;
+  SLTK_RETURN_IF_ERROR(
+    planSlabs(whole->grid(), speed, whole->timeStep(), comm, slab, setup.Grid.Bounds[last] == Boundary::Periodic));
   std::unique_ptr<HjbSolver> window;
   SLTK_RETURN_IF_ERROR(comm.agree(presetSolver<O>(base, setup, options, window, &slab)));
   ExactSolution exact;
@@ -167,7 +170,7 @@ Status makePresetSolver(const PresetRunOptions& options, std::unique_ptr<HjbSolv
 Status makeDistributedPresetSolver(
   const PresetRunOptions& options, const Communicator& comm, std::unique_ptr<HjbSolver>& solver)
 {
-  if (comm.size() == 1 || options.Preset == HjbPreset::Test3Eikonal) // Test 3: one periodic axis, whole here
+  if (comm.size() == 1)
   {
     return makePresetSolver(options, solver);
   }
@@ -176,7 +179,7 @@ Status makeDistributedPresetSolver(
   const Index n = options.Nodes;
   const double t = options.FinalTime;
   constexpr double pi = 3.141592653589793;
-  switch (options.Preset) // the speed bounds: |2 pi (x - 1/2)| on [0, 1]; |a| <= pi/2; |a| <= 2.2; |a2| <= 1
+  switch (options.Preset) // the speed bounds: |2 pi (x - 1/2)| on [0, 1]; |a| <= pi/2; |a| <= 2; |a| <= 2.2; |a2| <= 1
   {
     case HjbPreset::Test1Rotation:
       return distributedPreset<Test1Order>(test1Problem(), setupOf<2>(options.Preset, n, t), options, pi, comm, solver);
@@ -190,7 +193,8 @@ Status makeDistributedPresetSolver(
       return distributedPreset<Test5Order>(
         test5Problem(), setupOf<2>(options.Preset, n, t), options, 1.0, comm, solver);
     case HjbPreset::Test3Eikonal:
-      break;
+      return distributedPreset<Test3Order>(
+        test3Problem(), setupOf<1>(options.Preset, n, t), options, 2.0, comm, solver);
   }
   return Status::invalidArgument("unknown preset");
 }

@@ -4,7 +4,8 @@
 /// The halo exchange of a slab decomposition (Slabs.h): every rank sends its
 /// first owned rows down and its last owned rows up, and receives its
 /// neighbours' into its ghost rows (two paired sendReceive calls, no deadlock,
-/// nothing at the domain's edges). One exchange moves Ghost rows (or the
+/// nothing at the domain's edges; across them when the slabs wrap,
+/// SlabPlan::Periodic). One exchange moves Ghost rows (or the
 /// `depth` nearest the owned rows) each way per inner boundary.
 
 #include "sltk/exec/Communicator.h"
@@ -41,7 +42,8 @@ void exchangeSlabRows(const SlabPlan& slab, Index rowNodes, const Communicator& 
   const Index rows = slab.windowRows();
   const Index below = slab.Begin - slab.First, above = slab.Stop - slab.End; // ghost rows on each side
   const int rank = comm.rank(), size = comm.size();
-  const int down = rank > 0 ? rank - 1 : -1, up = rank + 1 < size ? rank + 1 : -1;
+  const int down = rank > 0 ? rank - 1 : slab.Periodic ? size - 1 : -1;
+  const int up = rank + 1 < size ? rank + 1 : slab.Periodic ? 0 : -1;
   const Index chunkRows = std::max<Index>(1, static_cast<Index>(chunkBytes / sizeof(T)) / std::max<Index>(1, rowNodes));
   std::vector<T> send, receive;
   for (const bool toDown : { true, false })

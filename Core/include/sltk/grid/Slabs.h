@@ -7,6 +7,9 @@
 /// at given boundaries (the reconstruction balances its band), and each rank
 /// works on a window of its owned rows plus `ghost` rows on each side (fewer
 /// at the domain's edges), at the whole grid's coordinates (GridSpec::Offset).
+/// A periodic last axis (HJB, thesis 3.5) wraps: every rank has ghost rows on
+/// both sides, the first rank's below row 0 (rows -Ghost .. -1 are rows
+/// rows - Ghost .. rows - 1) and the last rank's past the last row.
 
 #include "sltk/core/Index.h"
 #include "sltk/core/Status.h"
@@ -19,10 +22,13 @@ namespace sltk
 {
 
 /// This rank's slab: owned rows [Begin, End) of the last axis, worked on
-/// [First, Stop) (Ghost rows on each side, fewer at the domain's edges).
+/// [First, Stop) (Ghost rows on each side, fewer at the domain's edges unless
+/// Periodic: then First may be negative and Stop past the last row, the rows
+/// of the other end of the axis).
 struct SlabPlan
 {
   Index First = 0, Begin = 0, End = 0, Stop = 0, Ghost = 0;
+  bool Periodic = false; ///< the last axis wraps: the first and the last ranks are neighbours
   Index windowRows() const { return this->Stop - this->First; }
 };
 
@@ -35,9 +41,9 @@ inline Index evenSlabBegin(Index rows, int rank, int size)
 /// Rank `rank`'s slab of `boundaries` (size + 1 rows, ascending: rank r owns
 /// rows [boundaries[r], boundaries[r + 1])) with `ghost` ghost rows; refuses
 /// fewer than `ghost` owned rows a rank, naming `why` the ghost rows are
-/// needed and the fix.
-inline Status planSlabAt(
-  const std::vector<Index>& boundaries, Index ghost, int rank, const std::string& why, SlabPlan& plan)
+/// needed and the fix. `periodic`: the last axis wraps (SlabPlan::Periodic).
+inline Status planSlabAt(const std::vector<Index>& boundaries, Index ghost, int rank, const std::string& why,
+  SlabPlan& plan, bool periodic = false)
 {
   const int size = static_cast<int>(boundaries.size()) - 1;
   const Index rows = boundaries.back(), least = std::max<Index>(ghost, 1);
@@ -53,8 +59,9 @@ inline Status planSlabAt(
   plan.Ghost = ghost;
   plan.Begin = boundaries[static_cast<size_t>(rank)];
   plan.End = boundaries[static_cast<size_t>(rank) + 1];
-  plan.First = std::max<Index>(0, plan.Begin - ghost);
-  plan.Stop = std::min(rows, plan.End + ghost);
+  plan.Periodic = periodic && size > 1;
+  plan.First = plan.Periodic ? plan.Begin - ghost : std::max<Index>(0, plan.Begin - ghost);
+  plan.Stop = plan.Periodic ? plan.End + ghost : std::min(rows, plan.End + ghost);
   return Status::ok();
 }
 
@@ -128,10 +135,11 @@ inline std::vector<Index> balancedSlabBoundaries(const std::vector<double>& weig
 }
 
 /// Rank `rank` of `size`'s slab of `rows` rows, split evenly, with `ghost`
-/// ghost rows (planSlabAt).
-inline Status planSlab(Index rows, Index ghost, int rank, int size, const std::string& why, SlabPlan& plan)
+/// ghost rows (planSlabAt; `periodic`: the last axis wraps).
+inline Status planSlab(
+  Index rows, Index ghost, int rank, int size, const std::string& why, SlabPlan& plan, bool periodic = false)
 {
-  return planSlabAt(evenSlabBoundaries(rows, size), ghost, rank, why, plan);
+  return planSlabAt(evenSlabBoundaries(rows, size), ghost, rank, why, plan, periodic);
 }
 
 } // namespace sltk

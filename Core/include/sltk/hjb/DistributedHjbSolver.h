@@ -20,6 +20,12 @@
 /// Every rank's owned values are bitwise those of the serial solve: the slab is
 /// a window of the whole grid (GridSpec::Offset), so its node coordinates, dx
 /// and dt are the whole grid's, and the scheme reads the same values.
+/// A periodic last axis (Test 3, `--periodic z`) wraps the slabs: the first
+/// and last ranks are neighbours, and their ghost rows past the axis' ends lie
+/// a period away, in a window that does not wrap itself (its end rows are
+/// ghost rows). There a foot that crosses the end is located from its
+/// unwrapped coordinate, which rounds differently from the serial solve's wrap
+/// (s + N against s + G): the values agree to rounding (about 1e-15), not bitwise.
 /// Memory: each rank allocates its slab plus 2G rows (checked per rank) and
 /// holds only the output block it asks for (HjbSolver::resultBlock).
 /// After every step the ranks agree on the status (Communicator::agree): a
@@ -44,8 +50,10 @@ using ExactSolution = std::function<double(double t, const double* x)>;
 
 /// The slabs of `grid` over `comm`'s ranks for feet that move at most
 /// `speed` dt along the last axis in a step (G above); refuses fewer than G
-/// rows a rank ("use fewer ranks or more nodes").
-Status planSlabs(const HjbGrid& grid, double speed, double dt, const Communicator& comm, SlabPlan& plan);
+/// rows a rank ("use fewer ranks or more nodes"). `periodic`: the last axis
+/// wraps, so the first and last ranks exchange rows too (SlabPlan::Periodic).
+Status planSlabs(
+  const HjbGrid& grid, double speed, double dt, const Communicator& comm, SlabPlan& plan, bool periodic = false);
 
 /// The distributed solver of `whole` from this rank's solver on its window
 /// (`window`: the rows [slab.First, slab.Stop) at the whole grid's
@@ -57,14 +65,14 @@ std::unique_ptr<HjbSolver> makeDistributedSolver(std::unique_ptr<HjbSolver> wind
 /// A solver of the whole grid (grid(), result()) whose work and memory are
 /// split over `comm`'s ranks. resultBlock() sends each rank the nodes it asks
 /// for (result(): the whole grid on every rank); the errors against the exact
-/// solution are reduced over the owned nodes. One rank: makeExpressionSolver(). The last
-/// axis may not be periodic; every rank needs at least G owned rows.
+/// solution are reduced over the owned nodes. One rank: makeExpressionSolver(). Every
+/// rank needs at least G owned rows.
 Status makeDistributedExpressionSolver(
   const HjbExpressionSpec& spec, const Communicator& comm, std::unique_ptr<HjbSolver>& solver);
 
-/// The same for a thesis test (PresetRun.h): Tests 1, 2, 4 and 5 are split
-/// (the feet's speed along the last axis is bounded in closed form: pi, pi/2,
-/// 2.2, 1); Test 3 is periodic and runs whole on every rank (ranks() == 1).
+/// The same for a thesis test (PresetRun.h), every one split (the feet's
+/// speed along the last axis is bounded in closed form: pi, pi/2, 2, 2.2, 1
+/// for Tests 1-5; Test 3's axis is periodic).
 Status makeDistributedPresetSolver(
   const PresetRunOptions& options, const Communicator& comm, std::unique_ptr<HjbSolver>& solver);
 
