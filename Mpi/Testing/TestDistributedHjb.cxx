@@ -62,6 +62,17 @@ sltk::HjbRunResult solve(sltk::HjbSolver& solver)
   return r;
 }
 
+/// The largest difference between two solves' values at a node (same sizes).
+double largestDifference(const sltk::HjbRunResult& one, const sltk::HjbRunResult& many)
+{
+  double worst = 0.0;
+  for (size_t k = 0; k < one.Value.size(); ++k)
+  {
+    worst = std::max(worst, std::fabs(one.Value[k] - many.Value[k]));
+  }
+  return worst;
+}
+
 /// A wave carried across a periodic square: the feet of the first and last
 /// rows of y (the slabs' axis) cross the wrap at every step.
 sltk::HjbExpressionSpec periodicTransport(sltk::Index n)
@@ -87,12 +98,7 @@ void expectSameAsSerial(const sltk::HjbExpressionSpec& spec, double tolerance = 
   const sltk::HjbRunResult many = solve(*distributed);
   ASSERT_EQ(one.Value.size(), many.Value.size());
   EXPECT_EQ(one.Steps, many.Steps);
-  double worst = 0.0;
-  for (size_t k = 0; k < one.Value.size(); ++k)
-  {
-    worst = std::max(worst, std::fabs(one.Value[k] - many.Value[k]));
-  }
-  EXPECT_LE(worst, tolerance) << "on " << comm->size() << " ranks";
+  EXPECT_LE(largestDifference(one, many), tolerance) << "on " << comm->size() << " ranks";
   EXPECT_EQ(many.ReachTime, one.ReachTime) << "on " << comm->size() << " ranks";
   if (!spec.Exact.empty())
   {
@@ -137,12 +143,8 @@ void expectPresetSameAsSerial(sltk::HjbPreset preset, sltk::Index nodes, double 
   const sltk::HjbRunResult many = solve(*distributed);
   EXPECT_EQ(many.Steps, one.Steps);
   ASSERT_EQ(many.Value.size(), one.Value.size());
-  double worst = 0.0;
-  for (size_t k = 0; k < one.Value.size(); ++k)
-  {
-    worst = std::max(worst, std::fabs(one.Value[k] - many.Value[k]));
-  }
-  EXPECT_LE(worst, tolerance) << "test " << static_cast<int>(preset) << " on " << comm->size() << " ranks";
+  EXPECT_LE(largestDifference(one, many), tolerance)
+    << "test " << static_cast<int>(preset) << " on " << comm->size() << " ranks";
   EXPECT_EQ(many.ReachTime, one.ReachTime);
   if (!std::isnan(one.L1Error))
   {

@@ -23,9 +23,9 @@
 /// A periodic last axis (Test 3, `--periodic z`) wraps the slabs: the first
 /// and last ranks are neighbours, and their ghost rows past the axis' ends lie
 /// a period away, in a window that does not wrap itself (its end rows are
-/// ghost rows). There a foot that crosses the end is located from its
-/// unwrapped coordinate, which rounds differently from the serial solve's wrap
-/// (s + N against s + G): the values agree to rounding (about 1e-15), not bitwise.
+/// ghost rows). The first rank's window starts at row -G, so its feet's cell
+/// coordinates are s + G where the serial solve computes s (or wraps s + N),
+/// which round differently: the values agree to rounding (about 1e-15), not bitwise.
 /// Memory: each rank allocates its slab plus 2G rows (checked per rank) and
 /// holds only the output block it asks for (HjbSolver::resultBlock).
 /// After every step the ranks agree on the status (Communicator::agree): a
