@@ -60,6 +60,18 @@ semi-Lagrangian level-set method (Preda 2024, Algorithm 1 with the multi-run
 schedule of Table 4.1). Clouds with no z extent are reconstructed in 2D.
 )";
 
+/// The most points a rank's run read over the runs (RunFigures::PointsHeld).
+template <class Runs>
+long long runPointsHeld(const Runs& runs)
+{
+  long long most = 0;
+  for (const auto& run : runs)
+  {
+    most = std::max(most, static_cast<long long>(run.PointsHeld));
+  }
+  return most;
+}
+
 /// "P:E,P:E,..." -> one (p, eta) per run; false when malformed.
 bool parseSchedule(const std::string& text, std::vector<sltk::RunParameters>& schedule)
 {
@@ -227,7 +239,8 @@ nlohmann::ordered_json printRuns(const sltk::ReconstructionSummary& summary, int
       { "grid", { static_cast<long long>(g[0]), static_cast<long long>(g[1]), static_cast<long long>(g[2]) } },
       { "iterations", static_cast<long long>(run.Iterations) }, { "energy", run.Energy },
       { "err_cloud", run.CloudError }, { "far_points", run.FarPoints }, { "misfit_points", run.MisfitPoints },
-      { "merged_nodes", static_cast<long long>(run.MergedNodes) }, { "seconds", run.Seconds } });
+      { "merged_nodes", static_cast<long long>(run.MergedNodes) },
+      { "points_held", static_cast<long long>(run.PointsHeld) }, { "seconds", run.Seconds } });
     if (ranks > 1)
     {
       runRecords.back()["ghost_rows"] = static_cast<long long>(run.GhostRows);
@@ -533,7 +546,8 @@ int Reconstruct::run() const
   {
     nlohmann::ordered_json summary = { { "cloud", path },
       { "points", static_cast<long long>(cloud->GetNumberOfPoints()) }, { "points_total", counts.Total },
-      { "points_read_max", counts.ReadMax }, { "points_held_max", counts.HeldMax }, { "read_seconds", readSeconds },
+      { "points_read_max", counts.ReadMax }, { "points_held_max", counts.HeldMax },
+      { "run_points_held_max", runPointsHeld(result.Runs) }, { "read_seconds", readSeconds },
       { "parse_seconds", counts.ParseSeconds },
       { "outliers_removed", static_cast<long long>(result.Cleaning.OutliersRemoved) },
       { "thinning_cell", result.Cleaning.ThinningCell },
@@ -602,13 +616,15 @@ Command addReconstructCommand(CLI::App& sltk)
   app
     ->add_option("--json", command->Json,
       "summary: points, points_total, points_read_max and points_held_max (the\n"
-      "most points a rank parsed from the file and holds), read_seconds\n"
+      "most points a rank parsed from the file and holds), run_points_held_max\n"
+      "(the most a rank's runs read: its rows' and those within reach), read_seconds\n"
       "(parse_seconds of it: the shares' parse, before the gather),\n"
       "points_reconstructed, outliers_removed, cdx, kp,\n"
       "automatic_choices, recoveries, warnings, fits_cloud, separate_groups (a few groups\nfar apart that need "
       "their own runs), pieces (components of the\ninside), cloud_components "
       "(the cloud's, points within 4 local spacings linked),\nseconds, peak_memory_mb, ranks, surface_pieces, "
-      "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points, misfit_points, merged_nodes; "
+      "euler_characteristic, runs [grid, iterations, energy, err_cloud,\nfar_points, misfit_points, "
+      "merged_nodes,\npoints_held; "
       "--octree: "
       "stored_nodes, "
       "uniform_nodes, leaves], missed_places [points, nearby (the cloud's\npoints there), centre, lower, upper: "

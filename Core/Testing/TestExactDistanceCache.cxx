@@ -80,7 +80,7 @@ TEST(ExactDistanceCache, BandStencilsGetTheNearestPointQueriesBitForBit)
     sltk::GridSpec<3> centred = sltk::uniformBox<3>(41, -1.0, 1.0);
     const double marker = -7.0;
     sltk::GridField<3> dist(g, 1, marker);
-    sltk::ExactDistanceCache<3> cache(cloud, locator);
+    sltk::ExactDistanceCache<3> cache(locator);
     cache.reset(dist);
     sltk::ThreadPool pool(threads);
     sltk::Context ctx;

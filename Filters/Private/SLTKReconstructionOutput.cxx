@@ -216,6 +216,7 @@ void runSummary(const ReconstructionSummary& summary, vtkDataObject* image)
   // Counts as doubles (exact below 2^53).
   addPerRun<vtkDoubleArray>(fd, "RunFarFeet", runs, [](const RunSummary& r) { return double(r.FarFeet); });
   addPerRun<vtkDoubleArray>(fd, "RunMergedNodes", runs, [](const RunSummary& r) { return double(r.MergedNodes); });
+  addPerRun<vtkDoubleArray>(fd, "RunPointsHeld", runs, [](const RunSummary& r) { return double(r.PointsHeld); });
   if (!summary.OctreeStorage)
   {
     return;

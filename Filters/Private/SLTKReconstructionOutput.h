@@ -48,7 +48,8 @@ constexpr int ImageGhostLevelsAvailable = static_cast<int>(SlabGhostRows) - 1;
 /// more than one cell of run 1 from the surface), RunMisfitPoints (... more than two
 /// of the run's cells and than h_P), RunSeconds, RunGhostRows (the
 /// slabs' ghost rows at the run's end; 0 on one rank), RunFarFeet, RunMergedNodes
-/// (single-node specks merged, levelset/IsolatedNodes.h), MissedPlaces (where the last run's
+/// (single-node specks merged, levelset/IsolatedNodes.h), RunPointsHeld (the most points a
+/// rank's run read, RunFigures::PointsHeld), MissedPlaces (where the last run's
 /// surface misses points, a tuple of 11 per place: Points, Nearby, Centre, Lower, Upper); with the
 /// octree storage also RunStoredNodes, RunUniformNodes, RunLeaves and
 /// RunLargestRankLeaves (ReconstructionSummary.h).

@@ -5,9 +5,13 @@
 // the one-rank distanceToCloud() to rounding when the sweeps run until nothing
 // changes, and within the sweeps' tolerance with the default options; a cloud
 // that lies in one rank's rows only works; a bad option fails every rank.
+// ExactDistanceCache (ExactDistanceCache.h) on each rank's own points: the
+// whole cloud's distances bit for bit, the far ones settled over the ranks.
 #include "MpiWorld.h"
 #include "sltk/cloud/SyntheticClouds.h"
+#include "sltk/levelset/NarrowBand.h"
 #include "sltk/recon/DistanceFunction.h"
+#include "sltk/recon/ExactDistanceCache.h"
 
 #include <gtest/gtest.h>
 
@@ -78,4 +82,89 @@ TEST(DistanceSlabs, ABadOptionFailsEveryRank)
     sltk::distanceToCloudSlabs(locator, sltk::uniformBox<2>(41, -1.5, 1.5), slab, *comm, sltk::Context{}, d, bad);
   EXPECT_EQ(s.code(), sltk::StatusCode::InvalidArgument) << s.message();
   comm->barrier(); // no hang
+}
+
+TEST(DistanceSlabs, ExactDistancesFromEachRanksOwnPointsAreTheWholeCloudsBitForBit)
+{
+  // Each rank holds only the points within `reach` of its rows (and a row on
+  // each side, where the stencils reach); its band is wide enough that many
+  // nodes lie farther than reach from every point, where its own points may
+  // not hold the nearest: those are settled over the ranks.
+  auto comm = world();
+  const sltk::Index n = 33;
+  const sltk::GridSpec<3> g = sltk::uniformBox<3>(n, -1.0, 1.0);
+  const sltk::PointCloud<3> cloud = sltk::sphereCloud(2000, 0.6, { 0.05, -0.02, 0.03 });
+  const sltk::PointLocator<3> whole(cloud);
+  sltk::SlabPlan slab;
+  ASSERT_TRUE(sltk::planSlab(n, 1, comm->rank(), comm->size(), "the cache's stencil", slab).isOk());
+  const double reach = 0.15;
+  const double low = g.coordinate(2, slab.Begin - 1) - reach, high = g.coordinate(2, slab.End) + reach;
+  sltk::PointCloud<3> mine;
+  for (const auto& q : cloud.Points)
+  {
+    if (q[2] >= low && q[2] <= high)
+    {
+      mine.Points.push_back(q);
+    }
+  }
+  ASSERT_GT(mine.size(), 0);
+  const sltk::PointLocator<3> locator(mine);
+  sltk::GridField<3> sdf(g, 1);
+  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
+  {
+    const auto i = sdf.nodeIndex(k);
+    sdf(i) = std::hypot(g.coordinate(0, i[0]) - 0.05, g.coordinate(1, i[1]) + 0.02, g.coordinate(2, i[2]) - 0.03) - 0.6;
+  }
+  sltk::NodeList all, band;
+  sltk::collectBand(sdf, 0.45, sltk::Context{}, all);
+  for (const sltk::Index k : all)
+  {
+    const sltk::Index row = sdf.nodeIndex(k)[2];
+    if (row >= slab.Begin && row < slab.End)
+    {
+      band.push_back(k);
+    }
+  }
+  const double marker = -7.0;
+  sltk::GridField<3> dist(g, 1, marker);
+  sltk::ExactDistanceCache<3> cache(locator);
+  cache.bind(locator, reach, *comm);
+  cache.reset(dist);
+  cache.ensure(band, sltk::Context{}, dist);
+  sltk::Index beyond = 0, checked = 0, wrong = 0;
+  for (const sltk::Index k : band)
+  {
+    const auto i = dist.nodeIndex(k);
+    for (int c = 0; c < 11; ++c)
+    {
+      std::array<sltk::Index, 3> j = i;
+      if (c < 8)
+      {
+        j = { i[0] + (c & 1), i[1] + ((c >> 1) & 1), i[2] + ((c >> 2) & 1) };
+      }
+      else
+      {
+        --j[c - 8];
+      }
+      std::array<double, 3> x{};
+      bool inGrid = true;
+      for (int a = 0; a < 3; ++a)
+      {
+        inGrid = inGrid && j[a] >= 0 && j[a] < n;
+        x[a] = g.coordinate(a, j[a]);
+      }
+      if (!inGrid)
+      {
+        continue;
+      }
+      const double expected = whole.nearest(x).Distance;
+      wrong += dist(j) == expected ? 0 : 1;
+      beyond += expected > reach ? 1 : 0;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 0) << "rank " << comm->rank();
+  EXPECT_EQ(wrong, 0) << "rank " << comm->rank() << ": " << wrong << " of " << checked << " stencil nodes";
+  EXPECT_TRUE(comm->anyRank(beyond > 0)) << "the test needs nodes beyond reach";
+  EXPECT_TRUE(comm->size() == 1 || comm->anyRank(mine.size() < cloud.size())) << "the ranks should hold part of it";
 }

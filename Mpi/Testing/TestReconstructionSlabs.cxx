@@ -43,10 +43,11 @@ struct Agreement
   double CloudError = 1e-12; ///< relative
 };
 
-/// Returns the feet interpolated by another rank over all runs (FarFeetExchange.h).
+/// Returns the feet interpolated by another rank over all runs (FarFeetExchange.h);
+/// `held`: the most points a rank's run read (RunRecord::PointsHeld), over the runs.
 template <int D>
-sltk::Index expectSameAsOneRank(
-  const sltk::PointCloud<D>& cloud, const sltk::ReconstructionOptions& options, Agreement agreement = {})
+sltk::Index expectSameAsOneRank(const sltk::PointCloud<D>& cloud, const sltk::ReconstructionOptions& options,
+  Agreement agreement = {}, sltk::Index* held = nullptr)
 {
   auto comm = world();
   sltk::ReconstructionPlan<D> plan;
@@ -107,6 +108,14 @@ sltk::Index expectSameAsOneRank(
   for (const auto& run : mine.Runs)
   {
     farFeet += run.FarFeet;
+    if (held)
+    {
+      *held = std::max(*held, run.PointsHeld);
+    }
+  }
+  for (const auto& run : one.Runs)
+  {
+    EXPECT_EQ(run.PointsHeld, plan.Cloud.size()) << "one rank reads the whole cloud";
   }
   return farFeet;
 }
@@ -116,6 +125,27 @@ sltk::Index expectSameAsOneRank(
 TEST(ReconstructionSlabs, UnevenCircleWithTheDefaultsIsTheOneRankReconstruction)
 {
   expectSameAsOneRank<2>(unevenCircle(240), sltk::ReconstructionOptions{});
+}
+
+TEST(ReconstructionSlabs, TheRanksOfALongCloudReadOnlyThePointsNearTheirRows)
+{
+  // An ellipse five times longer than wide along the slabs' axis: each rank's
+  // runs read the points within reach of its rows (RunPoints.h), and give the
+  // one-rank result.
+  sltk::PointCloud<2> cloud;
+  for (int k = 0; k < 500; ++k)
+  {
+    const double t = 2.0 * M_PI * k / 500.0;
+    cloud.Points.push_back({ 0.4 * std::cos(t) + 0.05 * std::sin(3.0 * t), 2.0 * std::sin(t) });
+  }
+  sltk::Index held = 0;
+  expectSameAsOneRank<2>(cloud, sltk::ReconstructionOptions{}, Agreement{}, &held);
+  const int ranks = world()->size();
+  std::printf("the most points a rank's run read: %lld of %zu\n", static_cast<long long>(held), cloud.Points.size());
+  if (ranks > 1)
+  {
+    EXPECT_LT(held, static_cast<sltk::Index>(0.8 * static_cast<double>(cloud.Points.size())));
+  }
 }
 
 TEST(ReconstructionSlabs, SphereWithTheThesisParametersIsTheOneRankReconstruction)

@@ -5,8 +5,9 @@ binary PLY of points (vertex records), then the ranks gather the shares in file
 order. The surface is then the one of the same points read whole (a .vtp, which
 every rank reads through VTK), for a text file with CRLF ends, a header, comments,
 blank lines and no final newline, and for a binary PLY; --json says points_total,
-points_read_max (about half on two ranks) and points_held_max (every point: the
-points are not yet moved to their owners). A bad line in rank 1's share ends both
+points_read_max (about half on two ranks), points_held_max (every point: the
+points are not yet moved to their owners) and run_points_held_max (the most a rank's
+runs read: the points reconstructed on one rank, at most that on two). A bad line in rank 1's share ends both
 ranks with the one-rank message.
 Run by pvpython (VTK writes the .vtp): TestCloudReadRanks.py SLTK MPIEXEC OUTDIR"""
 import json
@@ -96,13 +97,17 @@ for cloud, whole in ((text, write_vtp("cloud.vtp", points)), (ply, write_vtp("mi
     kind = os.path.basename(cloud)
     split, summary = reconstruct(2, cloud, kind + ".2")
     reference, whole_summary = reconstruct(2, whole, kind + ".whole.2")
-    one, _ = reconstruct(1, cloud, kind + ".1")
+    one, one_summary = reconstruct(1, cloud, kind + ".1")
     check(split != b"" and split == reference,
           "%s on 2 ranks: the surface of the same points read whole (%d bytes)" % (kind, len(split)))
     check(len(one) > 0 and len(split) > 0, "%s on 1 rank: a surface" % kind)
     check(summary.get("points_total") == N and summary.get("points_held_max") == N,
           "%s: points_total %s and points_held_max %s are the cloud's %d" % (
               kind, summary.get("points_total"), summary.get("points_held_max"), N))
+    kept = one_summary.get("points_reconstructed", -1)
+    check(one_summary.get("run_points_held_max") == kept and 0 < summary.get("run_points_held_max", 0) <= kept,
+          "%s: run_points_held_max %s on 1 rank is the %d points reconstructed, %s on 2 ranks at most that" % (
+              kind, one_summary.get("run_points_held_max"), kept, summary.get("run_points_held_max")))
     check(N // 2 - 60 <= summary.get("points_read_max", 0) <= N // 2 + 60,
           "%s: points_read_max %s is about half the cloud" % (kind, summary.get("points_read_max")))
     check(whole_summary.get("points_read_max") == N, "the .vtp is read whole by every rank (points_read_max %s)" %

@@ -389,6 +389,7 @@ public:
   {
     double error = 0.0;
     cloudErrors<Interp>(this->Field, this->Plan.Cloud, far, this->Ctx, this->Distribution, error, record.FarPoints);
+    record.PointsHeld = this->Plan.Cloud.size(); // every rank reads the whole cloud here
     if (record.Iterations == 0)
     {
       record.CloudError = error;

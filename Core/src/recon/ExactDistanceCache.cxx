@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -186,12 +187,63 @@ Index ExactDistanceCache<D>::ensure(const NodeList& band, const Context& ctx, Gr
       }
     },
     1);
+  if (this->Comm && this->Comm->size() > 1 && std::isfinite(this->Reach))
+  {
+    this->settleBeyondReach(pending, padded, ctx, dist);
+  }
   Index computed = 0;
   for (const std::vector<Index>& mine : pending)
   {
     computed += static_cast<Index>(mine.size());
   }
   return computed;
+}
+
+template <int D>
+void ExactDistanceCache<D>::settleBeyondReach(const std::vector<std::vector<Index>>& pending,
+  const std::array<Index, D>& padded, const Context& ctx, GridField<D>& dist) const
+{
+  double* values = dist.storage().data();
+  std::vector<Index> far;
+  std::vector<std::array<double, D>> mine;
+  for (const std::vector<Index>& slots : pending)
+  {
+    for (const Index slot : slots)
+    {
+      if (values[slot] > this->Reach)
+      {
+        far.push_back(slot);
+        mine.push_back(BoxBatch<D>::position(slot, padded, dist));
+      }
+    }
+  }
+  // Every rank's far nodes, each measured against every rank's points: the
+  // least is the whole cloud's distance (each point is held by some rank).
+  std::vector<std::int64_t> counts;
+  const std::vector<std::array<double, D>> all = this->Comm->allGatherV(mine, &counts);
+  if (all.empty())
+  {
+    return;
+  }
+  std::vector<double> nearest(all.size());
+  ctx.parallelFor(0, static_cast<Index>(all.size()),
+    [&](Index b, Index e)
+    {
+      for (Index k = b; k < e; ++k)
+      {
+        nearest[static_cast<size_t>(k)] = this->Locator->nearest(all[static_cast<size_t>(k)]).Distance;
+      }
+    });
+  this->Comm->allReduce(nearest.data(), nearest.size(), ReduceOp::Min);
+  size_t first = 0;
+  for (int r = 0; r < this->Comm->rank(); ++r)
+  {
+    first += static_cast<size_t>(counts[static_cast<size_t>(r)]);
+  }
+  for (size_t k = 0; k < far.size(); ++k)
+  {
+    values[far[k]] = nearest[first + k];
+  }
 }
 
 template class ExactDistanceCache<2>;

@@ -53,18 +53,13 @@ void carryDescent(const GridField<D, double>& distance, const std::vector<Index>
 }
 
 /// The part shared by the one-rank and slab versions: rho queried near the
-/// cloud (elsewhere the largest factor), and `order`, the nodes to carry it to.
+/// cloud (elsewhere `largest`, the whole cloud's largest factor), and `order`,
+/// the nodes to carry it to.
 template <int D>
 Status queryNearCloud(const GridField<D, double>& distance, const PointLocator<D>& locator,
-  const std::vector<double>& sparsity, double reach, const Context& ctx, GridField<D, double>& rho,
+  const std::vector<double>& sparsity, double largest, double reach, const Context& ctx, GridField<D, double>& rho,
   std::vector<Index>& order)
 {
-  const PointCloud<D>& cloud = locator.cloud();
-  if (sparsity.size() != static_cast<size_t>(cloud.size()) || sparsity.empty())
-  {
-    return Status::invalidArgument("locallyScaledDistance: one sparsity factor per cloud point is needed");
-  }
-  const double largest = *std::max_element(sparsity.begin(), sparsity.end());
   const GridSpec<D>& g = distance.spec();
   const Index nodes = g.nodeCount();
   double near = 0.0;
@@ -144,9 +139,16 @@ Status locallyScaledDistanceSlabs(const GridField<D, double>& distance, const Po
   const std::vector<double>& sparsity, double reach, const SlabPlan& slab, const Communicator& comm, const Context& ctx,
   GridField<D, double>& scaled)
 {
+  // A rank's locator may hold only the points near its window (recon/RunPoints.h):
+  // the nodes queried lie within two cell diagonals of the cloud, nearer than they reach.
+  const Status sized = sparsity.size() != static_cast<size_t>(locator.cloud().size()) || sparsity.empty()
+    ? Status::invalidArgument("locallyScaledDistance: one sparsity factor per cloud point is needed")
+    : Status::ok();
+  SLTK_RETURN_IF_ERROR(comm.agree(sized));
+  const double largest = comm.allReduce(*std::max_element(sparsity.begin(), sparsity.end()), ReduceOp::Max);
   GridField<D, double> rho;
   std::vector<Index> order;
-  SLTK_RETURN_IF_ERROR(comm.agree(queryNearCloud(distance, locator, sparsity, reach, ctx, rho, order)));
+  SLTK_RETURN_IF_ERROR(comm.agree(queryNearCloud(distance, locator, sparsity, largest, reach, ctx, rho, order)));
   // The window's edge rows, when they are ghost rows, take the owners' values;
   // every other node is carried from its neighbours, until no ghost row changes.
   const Index keepBelow = slab.First < slab.Begin ? 1 : 0;

@@ -18,6 +18,7 @@
 #include "sltk/recon/LevelSetStep.h"
 #include "sltk/recon/Reconstruction.h"
 
+#include "RunPoints.h"
 #include "RunSlab.h"
 
 #include <cmath>
@@ -40,9 +41,9 @@ class SlabBand
 {
 public:
   /// The band of phi (|phi| < gamma, (1.48)) on the owned rows; d made exact on it by prepare().
-  SlabBand(const PointCloud<D>& cloud, const ReconstructionOptions& options, const Context& ctx,
+  SlabBand(const RunPoints<D>& points, const ReconstructionOptions& options, const Context& ctx,
     ExactDistanceCache<D>& exact, const RunSlab<D>& slab, GridField<D>& phi, GridField<D>& dist)
-    : Cloud(cloud)
+    : Points(points)
     , Options(options)
     , Ctx(ctx)
     , Exact(exact)
@@ -82,16 +83,23 @@ public:
   double farFraction(double far) const
   {
     const SlabPlan& s = this->Slab.slab();
-    const double count = sumOverPoints<D, Interp>(this->Phi, this->Cloud, this->Ctx, s.Begin, s.End, this->Slab.rows(),
-      [far](double v) { return std::fabs(v) > far ? 1.0 : 0.0; });
-    return this->Slab.sum(count) / static_cast<double>(this->Cloud.size());
+    const double count = sumOverPoints<D, Interp>(this->Phi, this->Points.cloud(), this->Ctx, s.Begin, s.End,
+      this->Slab.rows(), [far](double v) { return std::fabs(v) > far ? 1.0 : 0.0; });
+    return this->Slab.sum(count) / static_cast<double>(this->Points.total());
   }
 
-  /// This rank's points (those of its owned cells) with I[phi](Q) > threshold, ascending.
+  /// This rank's points (those of its owned cells) with I[phi](Q) > threshold,
+  /// ascending, numbered in the plan's cloud.
   std::vector<OutsidePoint> outsidePoints(double threshold) const
   {
     const SlabPlan& s = this->Slab.slab();
-    return pointsOutside<D, Interp>(this->Phi, this->Cloud, threshold, s.Begin, s.End, this->Slab.rows());
+    std::vector<OutsidePoint> outside =
+      pointsOutside<D, Interp>(this->Phi, this->Points.cloud(), threshold, s.Begin, s.End, this->Slab.rows());
+    for (OutsidePoint& p : outside)
+    {
+      p.Point = this->Points.original(p.Point); // the order is kept: still ascending
+    }
+    return outside;
   }
 
   Status step(const LevelSetStepParameters& step)
@@ -146,7 +154,7 @@ public:
   {
     const SlabPlan& s = this->Slab.slab();
     double sums[5] = { 0.0, 0.0,
-      cloudErrorSum<D, Interp>(this->Phi, this->Cloud, this->Ctx, s.Begin, s.End, this->Slab.rows()),
+      cloudErrorSum<D, Interp>(this->Phi, this->Points.cloud(), this->Ctx, s.Begin, s.End, this->Slab.rows()),
       static_cast<double>(this->Band.size()), interrupted ? 1.0 : 0.0 };
     // eps_1 of (4.34), summed in fixed chunks (ThreadPool.h: the same on any thread count)
     const Index size = static_cast<Index>(this->ReinitBand.size());
@@ -173,7 +181,7 @@ public:
       });
     this->Slab.comm().allReduce(sums, 5, ReduceOp::Sum);
     it.Change = sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
-    it.CloudError = sums[2] / static_cast<double>(this->Cloud.size());
+    it.CloudError = sums[2] / static_cast<double>(this->Points.total());
     it.BandSize = static_cast<Index>(sums[3]);
     return sums[4] > 0.0;
   }
@@ -194,13 +202,14 @@ public:
   {
     record.GhostRows = this->Slab.slab().Ghost;
     record.FarFeet = this->FarFeetCount;
+    record.PointsHeld = this->Slab.comm().allReduce(std::int64_t(this->Points.held()), ReduceOp::Max);
     if (record.Iterations == 0)
     {
       this->Phi.fillGhosts();
       const SlabPlan& s = this->Slab.slab();
-      record.CloudError =
-        this->Slab.sum(cloudErrorSum<D, Interp>(this->Phi, this->Cloud, this->Ctx, s.Begin, s.End, this->Slab.rows())) /
-        static_cast<double>(this->Cloud.size());
+      record.CloudError = this->Slab.sum(cloudErrorSum<D, Interp>(
+                            this->Phi, this->Points.cloud(), this->Ctx, s.Begin, s.End, this->Slab.rows())) /
+        static_cast<double>(this->Points.total());
     }
     record.FarPoints = this->farFraction(far);
   }
@@ -208,7 +217,7 @@ public:
   std::string describe() const { return {}; }
 
 private:
-  const PointCloud<D>& Cloud;
+  const RunPoints<D>& Points;
   const ReconstructionOptions& Options;
   const Context& Ctx;
   ExactDistanceCache<D>& Exact;

@@ -16,6 +16,7 @@
 #include "sltk/recon/LocalOffset.h"
 #include "sltk/recon/SlabPolicy.h"
 
+#include "RunPoints.h"
 #include "RunSlab.h"
 #include "SlabBand.h"
 #include "sltk/recon/RunIterations.h"
@@ -66,10 +67,11 @@ Status transfer(
   return Status::ok();
 }
 
-/// Run 1's phi0 from the distance (4.4.4), with the local offset when the plan has one.
+/// Run 1's phi0 from the distance (4.4.4), with the local offset when the plan
+/// has one (rho from this rank's points).
 template <int D>
-Status cloudInitialDataOn(const ReconstructionPlan<D>& plan, double outsideFactor, const GridField<D>& dist,
-  const RunSlab<D>& slab, const Context& ctx, GridField<D>& phi)
+Status cloudInitialDataOn(const ReconstructionPlan<D>& plan, const RunPoints<D>& points, double outsideFactor,
+  const GridField<D>& dist, const RunSlab<D>& slab, const Context& ctx, GridField<D>& phi)
 {
   InitialDataOptions io;
   io.Ghost = PhiGhost;
@@ -84,17 +86,17 @@ Status cloudInitialDataOn(const ReconstructionPlan<D>& plan, double outsideFacto
   const double sparsest = *std::max_element(plan.Sparsity.begin(), plan.Sparsity.end());
   const double reach = sparsest * outsideFactor * plan.CloudSpacing;
   GridField<D> scaled;
-  SLTK_RETURN_IF_ERROR(
-    locallyScaledDistanceSlabs(dist, *plan.Locator, plan.Sparsity, reach, slab.slab(), slab.comm(), ctx, scaled));
+  SLTK_RETURN_IF_ERROR(locallyScaledDistanceSlabs(
+    dist, points.locator(), points.sparsity(), reach, slab.slab(), slab.comm(), ctx, scaled));
   return phi0(scaled);
 }
 
 /// Initial data of a run: run 1 from the cloud (4.4.4) or an ellipsoid, later
 /// runs from the previous result; cut (1.49) and made a distance near the front.
 template <int D>
-Status initialData(const ReconstructionPlan<D>& plan, double outsideFactor, const GridField<D>& dist,
-  const GridField<D>* previous, const RunSlab<D>* previousSlab, const FarPointSeeds<D>& seeds, const RunSlab<D>& slab,
-  const Context& ctx, GridField<D>& phi)
+Status initialData(const ReconstructionPlan<D>& plan, const RunPoints<D>& points, double outsideFactor,
+  const GridField<D>& dist, const GridField<D>* previous, const RunSlab<D>* previousSlab, const FarPointSeeds<D>& seeds,
+  const RunSlab<D>& slab, const Context& ctx, GridField<D>& phi)
 {
   const ReconstructionOptions& options = plan.Options;
   const GridSpec<D> grid = slab.window();
@@ -115,7 +117,7 @@ Status initialData(const ReconstructionPlan<D>& plan, double outsideFactor, cons
   }
   else
   {
-    SLTK_RETURN_IF_ERROR(cloudInitialDataOn(plan, outsideFactor, dist, slab, ctx, phi));
+    SLTK_RETURN_IF_ERROR(cloudInitialDataOn(plan, points, outsideFactor, dist, slab, ctx, phi));
   }
   cutLevelSet(phi, gamma, ctx);
   if (previous)
@@ -144,7 +146,7 @@ public:
     , Options(options)
     , Grids(grids)
     , Ctx(ctx)
-    , Exact(plan.Cloud, *plan.Locator)
+    , Exact(*plan.Locator)
     , Slab(comm)
     , PreviousSlab(comm)
   {
@@ -157,13 +159,16 @@ public:
     const GridSpec<D>& grid = this->Grids[static_cast<size_t>(run - 1)];
     const auto setup = std::chrono::steady_clock::now();
     SLTK_RETURN_IF_ERROR(this->Slab.plan(grid, this->Plan.Cloud, run > 1 ? &this->PreviousSlab : nullptr));
+    const Communicator& comm = this->Slab.comm();
+    this->Points.select(
+      this->Plan, this->Slab.window(), PhiGhost, RunPoints<D>::reachFor(this->Plan, grid, run, outsideFactor), comm);
+    this->Exact.bind(this->Points.locator(), this->Points.reach(), comm);
     if (run == 1)
     {
       DistanceOptions dopt;
       dopt.Ghost = PhiGhost;
-      const Communicator& comm = this->Slab.comm();
       SLTK_RETURN_IF_ERROR(distanceToCloudSlabs(
-        *this->Plan.Locator, grid, this->Slab.slab(), comm, this->Ctx, this->Dist, dopt)); // (4.4.2)
+        this->Points.locator(), grid, this->Slab.slab(), comm, this->Ctx, this->Dist, dopt)); // (4.4.2)
     }
     else
     {
@@ -172,8 +177,9 @@ public:
       this->Dist.fillGhosts();
     }
     const double distanceSeconds = detail::secondsSince(setup);
-    SLTK_RETURN_IF_ERROR(initialData(this->Plan, outsideFactor, this->Dist, run > 1 ? &this->Previous : nullptr,
-      run > 1 ? &this->PreviousSlab : nullptr, this->Seeds, this->Slab, this->Ctx, this->Phi));
+    SLTK_RETURN_IF_ERROR(
+      initialData(this->Plan, this->Points, outsideFactor, this->Dist, run > 1 ? &this->Previous : nullptr,
+        run > 1 ? &this->PreviousSlab : nullptr, this->Seeds, this->Slab, this->Ctx, this->Phi));
     std::ostringstream log;
     log << "run " << run << ": grid " << grid.nodeCount() << " nodes, distance " << distanceSeconds
         << " s, initial data " << detail::secondsSince(setup) - distanceSeconds << " s";
@@ -185,7 +191,8 @@ public:
     {
       const SlabPlan& s = this->Slab.slab();
       log << "; rank " << this->Slab.comm().rank() << " of " << this->Slab.comm().size() << " owns rows " << s.Begin
-          << ".." << s.End - 1 << " of " << this->Slab.rows() << " (" << s.Ghost << " ghost rows)";
+          << ".." << s.End - 1 << " of " << this->Slab.rows() << " (" << s.Ghost << " ghost rows), reads "
+          << this->Points.held() << " of the " << this->Points.total() << " points";
     }
     this->Ctx.logger().log(LogLevel::Info, log.str());
     return Status::ok();
@@ -193,8 +200,7 @@ public:
 
   Status iterate(int run, ReconstructionResult<D>& result, bool& vanished)
   {
-    SlabBand<D, Interp> band(
-      this->Plan.Cloud, this->Options, this->Ctx, this->Exact, this->Slab, this->Phi, this->Dist);
+    SlabBand<D, Interp> band(this->Points, this->Options, this->Ctx, this->Exact, this->Slab, this->Phi, this->Dist);
     const Status status = iterateRun<D>(band, this->Options, run, this->Plan.CloudSpacing, this->Ctx, result, vanished);
     const bool ran = status.isOk() && !vanished;
     this->Seeds =
@@ -255,6 +261,7 @@ private:
   const std::vector<GridSpec<D>>& Grids;
   const Context& Ctx;
   ExactDistanceCache<D> Exact; // one for all runs
+  RunPoints<D> Points;         // this run's points on this rank (RunPoints.h)
   GridField<D> Phi, Previous, Dist, PreviousDist;
   RunSlab<D> Slab, PreviousSlab;
   FarPointSeeds<D> Seeds; // what the last run left outside, for the next (FarPointSeeds.h)

@@ -12,14 +12,23 @@
 /// nodes grouped by boxes of 4^D nodes and each box's distances found with one
 /// search (PointLocator::nearestDistances, bit for bit the per-node query);
 /// a band node whose stencil is already exact costs one flag read.
+///
+/// On slabs a rank's locator may hold only the points within `reach` of its
+/// window (recon/RunPoints.h): a distance found there that is at most reach is
+/// the whole cloud's; the farther ones are settled over the ranks (every rank
+/// computes them from its points, the minimum is taken), so ensure() is then a
+/// collective call.
 
 #include "sltk/cloud/PointLocator.h"
+#include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
 #include "sltk/levelset/NarrowBand.h"
 
+#include <array>
 #include <atomic>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -30,11 +39,20 @@ template <int D>
 class ExactDistanceCache
 {
 public:
-  /// The cloud and its locator must outlive the cache.
-  ExactDistanceCache(const PointCloud<D>& cloud, const PointLocator<D>& locator)
-    : Cloud(&cloud)
-    , Locator(&locator)
+  /// The locator (on the whole cloud) must outlive the cache, or its next bind().
+  explicit ExactDistanceCache(const PointLocator<D>& locator)
+    : Locator(&locator)
   {
+  }
+
+  /// Queries `locator`, which holds every point within `reach` of the nodes
+  /// ensure() is given; the farther distances are settled over `comm`'s ranks
+  /// (every rank must then call ensure() as often). Both must outlive the cache's use.
+  void bind(const PointLocator<D>& locator, double reach, const Communicator& comm)
+  {
+    this->Locator = &locator;
+    this->Reach = reach;
+    this->Comm = &comm;
   }
 
   /// Forgets what was computed (a new grid or a new field); dist needs one ghost layer.
@@ -47,8 +65,13 @@ public:
   Index ensure(const NodeList& band, const Context& ctx, GridField<D>& dist);
 
 private:
-  const PointCloud<D>* Cloud;
+  /// The slots of `pending` whose distance exceeds Reach take the least over the ranks.
+  void settleBeyondReach(const std::vector<std::vector<Index>>& pending, const std::array<Index, D>& padded,
+    const Context& ctx, GridField<D>& dist) const;
+
   const PointLocator<D>* Locator;
+  double Reach = std::numeric_limits<double>::infinity();
+  const Communicator* Comm = nullptr;
   static constexpr std::uint8_t SlotExact = 1;    ///< d is exact there (or claimed by the call computing it)
   static constexpr std::uint8_t StencilExact = 2; ///< the node's whole stencil is SlotExact
   /// Per storage slot: SlotExact | StencilExact flags.

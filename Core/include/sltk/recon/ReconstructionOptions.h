@@ -225,6 +225,9 @@ struct RunFigures
   Index MeanBandSize = 0;
   Index GhostRows = 0; ///< on several ranks: each slab's ghost rows (RunSlab.h); 0 on one rank
   Index FarFeet = 0;   ///< on several ranks: feet of the run's steps interpolated by another rank (all ranks')
+  /// The most points one rank's run read: on slabs its window's and those within reach of it
+  /// (recon/RunPoints.h); the whole cloud on one rank and on the tiled band.
+  Index PointsHeld = 0;
   /// Single-node specks of the run's result given their neighbours' mean (levelset/IsolatedNodes.h)
   Index MergedNodes = 0;
 };
