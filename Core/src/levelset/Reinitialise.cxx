@@ -221,7 +221,7 @@ private:
     }
     if (interior)
     {
-      this->Stencil.block(i, block);
+      this->Stencil.blockInterior(this->Phi.storage().data() + this->Offset[p], block);
     }
     if (this->Options.Method == ReinitMethod::Constrained)
     {

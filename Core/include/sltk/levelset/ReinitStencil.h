@@ -163,21 +163,58 @@ public:
   /// u[sum_a (o_a + 1) 3^a] = node i + o for o in {-1, 0, 1}^D.
   void block(const std::array<Index, D>& i, double* u) const
   {
-    const bool inside = this->interior(i);
-    const double* p = this->Field->pointer(i);
-    const auto& s = this->Field->strides();
+    if (this->interior(i))
+    {
+      this->blockInterior(this->Field->pointer(i), u);
+      return;
+    }
     for (int c = 0; c < BlockSize; ++c)
     {
       std::array<int, D> o{};
-      Index offset = 0;
       int rest = c;
       for (int a = 0; a < D; ++a)
       {
         o[a] = rest % 3 - 1;
         rest /= 3;
-        offset += o[a] * s[a];
       }
-      u[c] = inside ? p[offset] : this->at(i, o);
+      u[c] = this->at(i, o);
+    }
+  }
+
+  /// block() of an interior node (interior()) at `p`: plain reads, x fastest.
+  void blockInterior(const double* p, double* u) const
+  {
+    const auto& s = this->Field->strides();
+    int c = 0;
+    if constexpr (D == 1)
+    {
+      for (int x = -1; x <= 1; ++x)
+      {
+        u[c++] = p[x * s[0]];
+      }
+    }
+    else if constexpr (D == 2)
+    {
+      for (int y = -1; y <= 1; ++y)
+      {
+        for (int x = -1; x <= 1; ++x)
+        {
+          u[c++] = p[y * s[1] + x * s[0]];
+        }
+      }
+    }
+    else
+    {
+      for (int z = -1; z <= 1; ++z)
+      {
+        for (int y = -1; y <= 1; ++y)
+        {
+          for (int x = -1; x <= 1; ++x)
+          {
+            u[c++] = p[z * s[2] + y * s[1] + x * s[0]];
+          }
+        }
+      }
     }
   }
 
