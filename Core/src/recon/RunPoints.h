@@ -9,7 +9,10 @@
 /// bit for bit (the same point, the same arithmetic; ties go to the lower index
 /// in both, the order being kept). A farther one is settled over the ranks
 /// (ExactDistanceCache.h). On one rank, or when a rank's window would hold no
-/// point, every rank reads the plan's cloud and locator as before.
+/// point, every rank reads the plan's cloud and locator as before. The runs'
+/// grids are not periodic (RunSlab::plan), so the distance along the last axis
+/// bounds the distance to a point; every point lies in some rank's selection,
+/// which the settling over the ranks needs.
 ///
 /// Today the plan still gathers the whole cloud on every rank (its statistics);
 /// these points are selected from it, so a rank's runs query and scan only

@@ -49,9 +49,11 @@ Status distanceToCloud(const PointLocator<D>& locator, const GridSpec<D>& grid, 
 /// `distance` becomes the window's field (rows slab.First .. slab.Stop - 1 at
 /// the whole grid's coordinates); the exact boxes are those of the whole grid
 /// (a point's box is clipped to the whole grid, then to the window), and the
-/// sweeps exchange their edge rows (FastSweepingSlabs.h). Every rank holds the
-/// whole cloud in `locator`. A collective call; with SweepTolerance 0 the
-/// one-rank distance up to rounding.
+/// sweeps exchange their edge rows (FastSweepingSlabs.h). `locator` holds the
+/// whole cloud, or at least every point within ExactHalfWidth + 1 rows and two
+/// cell diagonals of the window (recon/RunPoints.h): the exact nodes and their
+/// values are then the whole cloud's. A collective call; with SweepTolerance 0
+/// the one-rank distance up to rounding.
 template <int D>
 Status distanceToCloudSlabs(const PointLocator<D>& locator, const GridSpec<D>& whole, const SlabPlan& slab,
   const Communicator& comm, const Context& ctx, GridField<D, double>& distance, const DistanceOptions& options = {},
