@@ -8,9 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
+#include <random>
 
 namespace
 {
@@ -100,6 +103,47 @@ TEST(DistanceFunction, GodunovUpdateSolvesTheDiscreteEikonal)
   EXPECT_NEAR(sltk::godunovEikonal(two, h2, 2), 1.0 / std::sqrt(1.25), 1e-15);
   const double none[2] = { inf, inf };
   EXPECT_EQ(sltk::godunovEikonal(none, h, 2), inf);
+}
+
+TEST(DistanceFunction, TheUniformSpacingsUpdateIsTheGeneralOneBitForBit)
+{
+  // Random neighbour values around one spacing (every case of one, two and
+  // three axes entering), with ties, infinities and zeros, in 1, 2 and 3 axes.
+  const double inf = std::numeric_limits<double>::infinity();
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> value(0.0, 2.5);
+  std::uniform_int_distribution<int> kind(0, 9);
+  int differing = 0;
+  int twoAxes = 0, threeAxes = 0;
+  for (const double h : { 1.0, 0.037, 3.1e-4 })
+  {
+    const double spacings[3] = { h, h, h };
+    for (int trial = 0; trial < 200000; ++trial)
+    {
+      double a[3];
+      for (double& v : a)
+      {
+        const int k = kind(random);
+        v = k == 0 ? inf : k == 1 ? 0.0 : value(random) * h;
+      }
+      if (kind(random) == 0)
+      {
+        a[2] = a[0]; // a tie
+      }
+      for (int dims = 1; dims <= 3; ++dims)
+      {
+        const double general = sltk::godunovEikonal(a, spacings, dims);
+        const double uniform = sltk::godunovEikonalUniform(a, h, dims);
+        differing += std::memcmp(&general, &uniform, sizeof(double)) != 0 ? 1 : 0;
+        const double sorted[3] = { std::min({ a[0], a[1], a[2] }), 0.0, 0.0 };
+        twoAxes += dims == 3 && general < sorted[0] + h ? 1 : 0;
+        threeAxes += dims == 3 && general < sorted[0] + h && a[0] < inf && a[1] < inf && a[2] < inf ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_EQ(differing, 0);
+  EXPECT_GT(twoAxes, 1000);
+  EXPECT_GT(threeAxes, 1000);
 }
 
 TEST(DistanceFunction, CircleCloudExactNearPointsAndSweptErrorSmall)

@@ -59,6 +59,66 @@ inline double godunovUpdate(const double* a, const double* h, const double* w, i
 }
 } // namespace
 
+namespace
+{
+/// godunovUpdate() when every axis has the spacing h (w = 1 / h^2), bit for
+/// bit (Documentation/Profile.md, "The fast sweeping's Godunov update without
+/// its chain of branches"): the values sorted by a min/max network (equal
+/// values are interchangeable when the spacings are), and the two- and
+/// three-axis solutions computed side by side, by godunovUpdate()'s
+/// expressions in its order, then chosen by its tests. In the sweeps a node's
+/// update waits for its x neighbour's, so the time of one update is the
+/// length of this chain: one square root and one division instead of two of
+/// each after a sort's mispredicted branches.
+template <int Dims>
+inline double godunovUniform(const double* a, double h, double w)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  double v0 = a[0], v1 = inf, v2 = inf;
+  if constexpr (Dims == 2)
+  {
+    v0 = std::min(a[0], a[1]);
+    v1 = std::max(a[0], a[1]);
+  }
+  else if constexpr (Dims == 3)
+  {
+    const double low = std::min(a[0], a[1]), high = std::max(a[0], a[1]);
+    v0 = std::min(low, a[2]);
+    const double middle = std::max(low, a[2]);
+    v1 = std::min(high, middle);
+    v2 = std::max(high, middle);
+  }
+  if (!(v0 < inf))
+  {
+    return inf;
+  }
+  const double one = v0 + h;
+  if constexpr (Dims == 1)
+  {
+    return one;
+  }
+  const double sw1 = w + w;
+  const double swa1 = w * v0 + w * v1;
+  const double swa21 = w * v0 * v0 + w * v1 * v1;
+  const double two = (swa1 + std::sqrt(std::max(0.0, swa1 * swa1 - sw1 * (swa21 - 1.0)))) / sw1;
+  double three = two;
+  if constexpr (Dims == 3)
+  {
+    const double sw2 = sw1 + w;
+    const double swa2 = swa1 + w * v2;
+    const double swa22 = swa21 + w * v2 * v2;
+    three = (swa2 + std::sqrt(std::max(0.0, swa2 * swa2 - sw2 * (swa22 - 1.0)))) / sw2;
+  }
+  return one <= v1 ? one : (Dims == 2 || two <= v2 ? two : three);
+}
+} // namespace
+
+double godunovEikonalUniform(const double* a, double h, int dims)
+{
+  const double w = 1.0 / (h * h);
+  return dims == 1 ? godunovUniform<1>(a, h, w) : dims == 2 ? godunovUniform<2>(a, h, w) : godunovUniform<3>(a, h, w);
+}
+
 double godunovEikonal(const double* a, const double* h, int dims)
 {
   double w[3] = { 1.0, 1.0, 1.0 };
@@ -84,58 +144,85 @@ struct Sweeper
   Index NodeStep[3] = { 1, 1, 1 };
   double H[3] = { 1.0, 1.0, 1.0 };
   double W[3] = { 1.0, 1.0, 1.0 }; ///< 1 / h^2
+  bool Uniform = false;            ///< every axis has the spacing H[0]: godunovUniform()
   double* U = nullptr;
   const std::uint8_t* Frozen = nullptr;
   /// The locks, relaxed atomics: with two threads on neighbouring planes both may
   /// unlock one node (to the same value).
   std::unique_ptr<std::atomic<std::uint8_t>[]> Live;
+  /// The x lines swept together, each a node behind the previous (lines()).
+  static constexpr Index LineGroup = 4;
 
   void unlock(Index node) const { this->Live[node].store(!this->Frozen[node], std::memory_order_relaxed); }
 
-  /// The x line j of sweep-order plane kk in sweep order `back`; returns the
-  /// largest decrease.
-  double line(const bool* back, Index kk, Index jj) const
+  /// Node i of the x line j of plane k (storage row `row`, node index
+  /// `lineNode` of its first node): unless locked, the Godunov update, applied
+  /// when it decreases the value, which unlocks the axis neighbours.
+  void visit(Index i, Index j, Index k, double* row, Index lineNode, double& change) const
   {
     const double inf = std::numeric_limits<double>::infinity();
-    const Index k = back[2] ? this->N[2] - 1 - kk : kk;
-    const Index j = back[1] ? this->N[1] - 1 - jj : jj;
-    const Index lineNode = this->N[0] * (j + this->N[1] * k);
-    double* row = this->U + j * this->Stride[1] + k * this->Stride[2];
-    double change = 0.0;
-    for (Index ii = 0; ii < this->N[0]; ++ii)
+    const Index node = lineNode + i;
+    if (!this->Live[node].load(std::memory_order_relaxed))
     {
-      const Index i = back[0] ? this->N[0] - 1 - ii : ii;
-      const Index node = lineNode + i;
-      if (!this->Live[node].load(std::memory_order_relaxed))
-      {
-        continue;
-      }
-      this->Live[node].store(0, std::memory_order_relaxed);
-      double* q = row + i * this->Stride[0];
-      const Index idx[3] = { i, j, k };
-      double nb[3] = { inf, inf, inf };
+      return;
+    }
+    this->Live[node].store(0, std::memory_order_relaxed);
+    double* q = row + i * this->Stride[0];
+    const Index idx[3] = { i, j, k };
+    double nb[3] = { inf, inf, inf };
+    for (int a = 0; a < D; ++a)
+    {
+      const double lo = idx[a] > 0 ? q[-this->Stride[a]] : inf;
+      const double hi = idx[a] < this->N[a] - 1 ? q[this->Stride[a]] : inf;
+      nb[a] = std::min(lo, hi);
+    }
+    const double v =
+      this->Uniform ? godunovUniform<D>(nb, this->H[0], this->W[0]) : godunovUpdate(nb, this->H, this->W, D);
+    if (v < *q)
+    {
+      change = std::max(change, std::isfinite(*q) ? *q - v : inf);
+      *q = v;
       for (int a = 0; a < D; ++a)
       {
-        const double lo = idx[a] > 0 ? q[-this->Stride[a]] : inf;
-        const double hi = idx[a] < this->N[a] - 1 ? q[this->Stride[a]] : inf;
-        nb[a] = std::min(lo, hi);
-      }
-      const double v = godunovUpdate(nb, this->H, this->W, D);
-      if (v < *q)
-      {
-        change = std::max(change, std::isfinite(*q) ? *q - v : inf);
-        *q = v;
-        for (int a = 0; a < D; ++a)
+        if (idx[a] > 0)
         {
-          if (idx[a] > 0)
-          {
-            this->unlock(node - this->NodeStep[a]);
-          }
-          if (idx[a] < this->N[a] - 1)
-          {
-            this->unlock(node + this->NodeStep[a]);
-          }
+          this->unlock(node - this->NodeStep[a]);
         }
+        if (idx[a] < this->N[a] - 1)
+        {
+          this->unlock(node + this->NodeStep[a]);
+        }
+      }
+    }
+  }
+
+  /// The x lines jj .. jj + count - 1 (count <= LineGroup) of sweep-order plane
+  /// kk in sweep order `back`, each one node behind the previous: at step t,
+  /// node t - g of line jj + g. Every pair of axis neighbours is visited in the
+  /// serial order (along x as in a line; (i, j) one step before (i, j + 1)), so
+  /// each node reads the values and locks the serial sweep shows it, bit for
+  /// bit; but the nodes of a step do not wait for one another, so their
+  /// updates (a chain of a square root and a division each, behind the x
+  /// neighbour's) overlap. Returns the largest decrease.
+  double lines(const bool* back, Index kk, Index jj, Index count) const
+  {
+    const Index k = back[2] ? this->N[2] - 1 - kk : kk;
+    double* row[LineGroup];
+    Index lineNode[LineGroup], j[LineGroup];
+    for (Index g = 0; g < count; ++g)
+    {
+      j[g] = back[1] ? this->N[1] - 1 - (jj + g) : jj + g;
+      lineNode[g] = this->N[0] * (j[g] + this->N[1] * k);
+      row[g] = this->U + j[g] * this->Stride[1] + k * this->Stride[2];
+    }
+    double change = 0.0;
+    const Index n = this->N[0];
+    for (Index t = 0; t < n + count - 1; ++t)
+    {
+      for (Index g = std::max<Index>(0, t - n + 1); g < std::min(count, t + 1); ++g)
+      {
+        const Index ii = t - g;
+        this->visit(back[0] ? n - 1 - ii : ii, j[g], k, row[g], lineNode[g], change);
       }
     }
     return change;
@@ -146,9 +233,9 @@ struct Sweeper
     double change = 0.0;
     for (Index kk = 0; kk < this->N[2]; ++kk)
     {
-      for (Index jj = 0; jj < this->N[1]; ++jj)
+      for (Index jj = 0; jj < this->N[1]; jj += LineGroup)
       {
-        change = std::max(change, this->line(back, kk, jj));
+        change = std::max(change, this->lines(back, kk, jj, std::min(LineGroup, this->N[1] - jj)));
       }
     }
     return change;
@@ -177,9 +264,10 @@ struct Sweeper
         for (Index kk = first; kk < this->N[2]; kk += 2)
         {
           Index seen = kk > 0 ? 0 : this->N[1]; // lines of plane kk - 1 known to be done
-          for (Index jj = 0; jj < this->N[1]; ++jj)
+          for (Index jj = 0; jj < this->N[1]; jj += LineGroup)
           {
-            for (int spin = 0; seen <= jj; ++spin)
+            const Index count = std::min(LineGroup, this->N[1] - jj);
+            for (int spin = 0; seen < jj + count; ++spin)
             {
               seen = planes[kk - 1].LinesDone.load(std::memory_order_acquire);
               if (spin > 64)
@@ -187,10 +275,10 @@ struct Sweeper
                 std::this_thread::yield(); // the other thread may share this core (oversubscribed ranks)
               }
             }
-            change[first] = std::max(change[first], this->line(back, kk, jj));
-            if ((jj + 1) % PublishEvery == 0 || jj + 1 == this->N[1])
+            change[first] = std::max(change[first], this->lines(back, kk, jj, count));
+            if ((jj + count) % PublishEvery == 0 || jj + count == this->N[1])
             {
-              planes[kk].LinesDone.store(jj + 1, std::memory_order_release);
+              planes[kk].LinesDone.store(jj + count, std::memory_order_release);
             }
           }
         }
@@ -221,6 +309,7 @@ Status fastSweep(GridField<D, double>& u, const std::vector<std::uint8_t>& froze
     sweeper.W[a] = 1.0 / (sweeper.H[a] * sweeper.H[a]);
     minH = std::min(minH, sweeper.H[a]);
   }
+  sweeper.Uniform = std::all_of(sweeper.H, sweeper.H + D, [&](double h) { return h == sweeper.H[0]; });
   sweeper.NodeStep[1] = sweeper.N[0];
   sweeper.NodeStep[2] = sweeper.N[0] * sweeper.N[1];
   sweeper.U = u.origin();

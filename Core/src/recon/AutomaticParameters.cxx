@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/recon/AutomaticParameters.h"
 
+#include "sltk/exec/ThreadPool.h"
 #include "sltk/recon/CloudInitialData.h"
 #include "sltk/recon/DistanceFunction.h"
 #include "sltk/recon/LocalOffset.h"
@@ -40,6 +41,51 @@ double outsideFactorWithRestart(double factor)
 {
   return std::max(factor, nextOutsideFactor(factor));
 }
+
+namespace
+{
+/// For every rung K of the ladder, the nodes the initial surface at gamma_P =
+/// K h_P (4.4.4) encloses: d >= gamma_P with no way out above it (bottleneck
+/// below it). One pass over the nodes for all the rungs; the counts are
+/// integers, the same whatever the chunks.
+template <int D>
+std::vector<Index> enclosedNodes(
+  const GridField<D, double>& distance, const std::vector<double>& bottleneck, double cloudSpacing, const Context& ctx)
+{
+  const std::vector<double>& ladder = outsideFactorLadder();
+  const size_t rungs = ladder.size();
+  std::vector<double> threshold(rungs);
+  for (size_t r = 0; r < rungs; ++r)
+  {
+    threshold[r] = ladder[r] * cloudSpacing;
+  }
+  const Index nodes = distance.spec().nodeCount();
+  const Index grain = std::max<Index>(4096, (nodes + 63) / 64);
+  std::vector<Index> partial(static_cast<size_t>(ThreadPool::chunkCount(0, nodes, grain)) * rungs, 0);
+  ctx.parallelFor(
+    0, nodes,
+    [&](Index b, Index e)
+    {
+      Index* count = partial.data() + static_cast<size_t>(b / grain) * rungs;
+      for (Index k = b; k < e; ++k)
+      {
+        const double d = distance(distance.nodeIndex(k));
+        const double way = bottleneck[static_cast<size_t>(k)];
+        for (size_t r = 0; r < rungs; ++r)
+        {
+          count[r] += d >= threshold[r] && way < threshold[r] ? 1 : 0;
+        }
+      }
+    },
+    grain);
+  std::vector<Index> enclosed(rungs, 0);
+  for (size_t c = 0; c < partial.size(); ++c)
+  {
+    enclosed[c % rungs] += partial[c];
+  }
+  return enclosed;
+}
+} // namespace
 
 template <int D>
 Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds, double cloudSpacing, double dx,
@@ -83,34 +129,15 @@ Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds,
   }
   std::vector<double> bottleneck;
   SLTK_RETURN_IF_ERROR(outsideBottleneck(distance, ctx, bottleneck));
-  const size_t rungs = ladder.size();
-  std::vector<double> enclosed(rungs, 0.0);
-  for (size_t r = 0; r < rungs; ++r)
-  {
-    const double threshold = ladder[r] * cloudSpacing; // gamma_P = K h_P (4.4.4)
-    enclosed[r] = ctx.parallelSum(0, grid.nodeCount(),
-      [&](Index b, Index e)
-      {
-        double count = 0.0;
-        for (Index k = b; k < e; ++k)
-        {
-          const double d = distance(distance.nodeIndex(k));
-          count += d >= threshold && bottleneck[static_cast<size_t>(k)] < threshold ? 1.0 : 0.0;
-        }
-        return count;
-      });
-  }
+  const std::vector<Index> enclosed = enclosedNodes(distance, bottleneck, cloudSpacing, ctx);
   size_t best = first;
-  for (size_t r = first + 1; r < rungs; ++r)
+  for (size_t r = first + 1; r < enclosed.size(); ++r)
   {
     best = enclosed[r] > enclosed[best] ? r : best;
   }
   choice.Factor = ladder[best];
   choice.FirstRung = first;
-  for (double count : enclosed)
-  {
-    choice.EnclosedNodes.push_back(static_cast<Index>(count));
-  }
+  choice.EnclosedNodes = enclosed;
   choice.ProbeNodes = grid.nodeCount();
   choice.ProbeSpacing = grid.Spacing[0];
   return Status::ok();

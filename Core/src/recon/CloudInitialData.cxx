@@ -3,6 +3,7 @@
 
 #include "ExternalMarking.h"
 #include "sltk/core/DisjointSets.h"
+#include "sltk/core/SortByKey.h"
 #include "sltk/recon/CloudInitialDataSlabs.h"
 
 #include <algorithm>
@@ -45,24 +46,29 @@ Status widestWayOut(const GridField<D, double>& distance, const Context& ctx, st
   const Index nodes = g.nodeCount();
   const double inf = std::numeric_limits<double>::infinity();
   constexpr Id Inactive = std::numeric_limits<Id>::max(), Boundary = Inactive - 1; // parent of a node not in the forest
-  std::vector<Id> parent(static_cast<size_t>(nodes), Inactive), order;
-  bottleneck.resize(static_cast<size_t>(nodes));
+  std::vector<Id> parent(static_cast<size_t>(nodes), Inactive);
+  std::vector<std::uint64_t> key; // decreasing d: the complement of its key
+  std::vector<Id> order;
   for (Index k = 0; k < nodes; ++k)
   {
     const std::array<Index, D> i = distance.nodeIndex(k);
     const double d = distance(i);
     const bool edge = onBoundary<D>(i, g, 0, g.Dims[D - 1]);
-    bottleneck[static_cast<size_t>(k)] = edge ? inf : d; // the sort's keys, then the result
     parent[static_cast<size_t>(k)] = edge ? Boundary : Inactive;
     if (!edge && !std::isnan(d)) // a NaN is never reached (the widest paths compare it false)
     {
+      key.push_back(~orderedKey(d));
       order.push_back(static_cast<Id>(k));
     }
   }
-  std::sort(order.begin(), order.end(), [&](Id p, Id q) { return bottleneck[p] > bottleneck[q]; });
-  for (const Id v : order)
+  sortByKey(key, order); // (before `bottleneck` is allocated: the sort's buffers come first)
+  key = {};
+  bottleneck.resize(static_cast<size_t>(nodes));
+  for (Index k = 0; k < nodes; ++k)
   {
-    bottleneck[v] = -inf; // not reached yet
+    const double d = distance(distance.nodeIndex(k));
+    const bool edge = parent[static_cast<size_t>(k)] == Boundary;
+    bottleneck[static_cast<size_t>(k)] = edge ? inf : std::isnan(d) ? d : -inf; // -inf: not reached yet
   }
   std::vector<Id> next(static_cast<size_t>(nodes));
   std::vector<std::uint8_t> rank(static_cast<size_t>(nodes), 0), open(static_cast<size_t>(nodes), 0);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/recon/LocalOffset.h"
 
+#include "sltk/core/SortByKey.h"
 #include "sltk/grid/SlabExchange.h"
 
 #include <algorithm>
@@ -72,13 +73,15 @@ Status queryNearCloud(const GridField<D, double>& distance, const PointLocator<D
   // down the steepest descent of d (the axis neighbour with the smallest d, which
   // is nearer the same points), in increasing order of d.
   rho.resize(g, 0, largest);
-  std::vector<std::pair<double, Index>> byDistance; // (d, node): sorted without a look-up a comparison
+  std::vector<std::uint64_t> key; // of d
+  order.clear();
   for (Index k = 0; k < nodes; ++k)
   {
     const double d = distance(distance.nodeIndex(k));
     if (d >= near && d < reach)
     {
-      byDistance.emplace_back(d, k);
+      key.push_back(orderedKey(d));
+      order.push_back(k);
     }
   }
   ctx.parallelFor(0, nodes,
@@ -98,13 +101,9 @@ Status queryNearCloud(const GridField<D, double>& distance, const PointLocator<D
         }
       }
     });
-  // Increasing d, ties by node index: a total order, so the same list whatever the sort.
-  std::sort(byDistance.begin(), byDistance.end());
-  order.resize(byDistance.size());
-  for (size_t j = 0; j < byDistance.size(); ++j)
-  {
-    order[j] = byDistance[j].second;
-  }
+  // Increasing d, ties by node index (a stable sort of the nodes in index
+  // order; d > 0, so equal distances have equal keys): a total order.
+  sortByKey(key, order);
   return Status::ok();
 }
 

@@ -28,7 +28,7 @@ namespace sltk
 
 struct FastSweepingOptions
 {
-  int MaxCycles = 50;      ///< a cycle is 2^D sweeps; stop after this many
+  int MaxCycles = 50; ///< a cycle is 2^D sweeps; stop after this many
   /// Stop when no value decreased by more than Tolerance * min dx in a cycle
   /// (1e-6: far below the O(dx) error of the scheme; 0: until nothing changes).
   double Tolerance = 1e-6;
@@ -45,6 +45,11 @@ struct FastSweepingReport
 /// smallest neighbour value per axis `a` (infinity: no information along
 /// that axis) and the spacings `h`.
 double godunovEikonal(const double* a, const double* h, int dims);
+
+/// godunovEikonal() with the spacing h on every axis, bit for bit, by a
+/// shorter chain of operations (the sweeps' update on the reconstruction's
+/// cubic cells).
+double godunovEikonalUniform(const double* a, double h, int dims);
 
 /// Sweeps u (interior nodes only). `frozen` has one entry per interior node
 /// in x-fastest order; nonzero entries are fixed data.
