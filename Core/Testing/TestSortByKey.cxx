@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
@@ -22,6 +23,11 @@ TEST(SortByKey, OrderedKeysFollowTheDoublesOrder)
     EXPECT_LT(sltk::orderedKey(values[a]), sltk::orderedKey(values[a + 1])) << values[a] << " < " << values[a + 1];
   }
   EXPECT_EQ(sltk::orderedKey(0.75), sltk::orderedKey(3.0 / 4.0));
+  for (const double v : values)
+  {
+    const double back = sltk::fromOrderedKey(sltk::orderedKey(v));
+    EXPECT_EQ(std::memcmp(&back, &v, sizeof v), 0) << v;
+  }
 }
 
 TEST(SortByKey, SortsAsStdStableSortDoesItemsInIncreasingOrder)

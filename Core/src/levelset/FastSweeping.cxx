@@ -62,8 +62,9 @@ inline double godunovUpdate(const double* a, const double* h, const double* w, i
 namespace
 {
 /// godunovUpdate() when every axis has the spacing h (w = 1 / h^2), bit for
-/// bit (Documentation/Profile.md, "The fast sweeping's Godunov update without
-/// its chain of branches"): the values sorted by a min/max network (equal
+/// bit for values that are not NaN (the sweeps hold distances and +infinity;
+/// std::min would drop a NaN that godunovUpdate() passes on)
+/// (Documentation/Profile.md, "The automatic K_P's probe"): the values sorted by a min/max network (equal
 /// values are interchangeable when the spacings are), and the two- and
 /// three-axis solutions computed side by side, by godunovUpdate()'s
 /// expressions in its order, then chosen by its tests. In the sweeps a node's
@@ -251,6 +252,7 @@ struct Sweeper
     // One cache line per plane's counter, published every few lines: a line whose
     // nodes are locked takes less time than a cache line's trip between cores.
     constexpr Index PublishEvery = 8;
+    static_assert(PublishEvery % LineGroup == 0, "a group of lines must end where progress is published");
     struct alignas(64) Progress
     {
       std::atomic<Index> LinesDone{ 0 };

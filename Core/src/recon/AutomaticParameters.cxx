@@ -66,7 +66,7 @@ std::vector<Index> enclosedNodes(
     0, nodes,
     [&](Index b, Index e)
     {
-      Index* count = partial.data() + static_cast<size_t>(b / grain) * rungs;
+      std::vector<Index> count(rungs, 0); // this chunk's, stored once (no line shared between threads)
       for (Index k = b; k < e; ++k)
       {
         const double d = distance(distance.nodeIndex(k));
@@ -76,6 +76,7 @@ std::vector<Index> enclosedNodes(
           count[r] += d >= threshold[r] && way < threshold[r] ? 1 : 0;
         }
       }
+      std::copy(count.begin(), count.end(), partial.begin() + static_cast<std::ptrdiff_t>(b / grain * rungs));
     },
     grain);
   std::vector<Index> enclosed(rungs, 0);

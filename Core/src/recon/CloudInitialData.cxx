@@ -61,8 +61,10 @@ Status widestWayOut(const GridField<D, double>& distance, const Context& ctx, st
       order.push_back(static_cast<Id>(k));
     }
   }
-  sortByKey(key, order); // (before `bottleneck` is allocated: the sort's buffers come first)
-  key = {};
+  // Sorted before `bottleneck` and the forest's arrays exist, so that the
+  // sort's buffers (16 bytes a node) are the peak; its keys stay for the loop,
+  // which takes each node's d from them in order (a cache miss a node at v).
+  sortByKey(key, order);
   bottleneck.resize(static_cast<size_t>(nodes));
   for (Index k = 0; k < nodes; ++k)
   {
@@ -102,10 +104,11 @@ Status widestWayOut(const GridField<D, double>& distance, const Context& ctx, st
     nodeStride[a] = stride;
   }
   Index added = 0;
-  for (const Id v : order)
+  for (size_t j = 0; j < order.size(); ++j)
   {
+    const Id v = order[j];
     const std::array<Index, D> i = distance.nodeIndex(static_cast<Index>(v));
-    const double t = distance(i);
+    const double t = fromOrderedKey(~key[j]); // d at v, bit for bit
     parent[v] = v;
     next[v] = v;
     Id root = v;

@@ -46,9 +46,9 @@ struct FastSweepingReport
 /// that axis) and the spacings `h`.
 double godunovEikonal(const double* a, const double* h, int dims);
 
-/// godunovEikonal() with the spacing h on every axis, bit for bit, by a
-/// shorter chain of operations (the sweeps' update on the reconstruction's
-/// cubic cells).
+/// godunovEikonal() with the spacing h on every axis, bit for bit when no
+/// value of `a` is NaN, by a shorter chain of operations (the sweeps' update
+/// on the reconstruction's cubic cells).
 double godunovEikonalUniform(const double* a, double h, int dims);
 
 /// Sweeps u (interior nodes only). `frozen` has one entry per interior node
