@@ -63,8 +63,8 @@ namespace
 {
 /// godunovUpdate() when every axis has the spacing h (w = 1 / h^2), bit for
 /// bit for values that are not NaN (the sweeps hold distances and +infinity;
-/// std::min would drop a NaN that godunovUpdate() passes on)
-/// (Documentation/Profile.md, "The automatic K_P's probe"): the values sorted by a min/max network (equal
+/// std::min would drop a NaN that godunovUpdate() passes on; Profile.md, "The
+/// automatic K_P's probe"): the values sorted by a min/max network (equal
 /// values are interchangeable when the spacings are), and the two- and
 /// three-axis solutions computed side by side, by godunovUpdate()'s
 /// expressions in its order, then chosen by its tests. In the sweeps a node's

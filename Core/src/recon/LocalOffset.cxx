@@ -101,8 +101,8 @@ Status queryNearCloud(const GridField<D, double>& distance, const PointLocator<D
         }
       }
     });
-  // Increasing d, ties by node index (a stable sort of the nodes in index
-  // order; d > 0, so equal distances have equal keys): a total order.
+  // Increasing d, ties by node index (sortByKey orders equal keys by their
+  // items; d > 0, so equal distances have equal keys): a total order.
   sortByKey(key, order);
   return Status::ok();
 }
