@@ -395,7 +395,7 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
     vtkErrorWithObjectMacro(self, "Reconstruction failed: " << status.message());
     return 0;
   }
-  const std::int64_t bytesSent = counted.bytesSent(), collectives = counted.collectives();
+  const sltk::CommTraffic traffic = counted.traffic();
   grid->Initialize();
   // Each rank outputs its own trees and contours its own blocks of tiles (its ghosts hold the
   // nodes around them): the pieces join.
@@ -417,8 +417,9 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
   }
   summary = sltk::summarize(result, plan.Options.FrameShift); // places in the user's coordinates
   summary.Ranks = comm.size();
-  summary.BytesSent = bytesSent;
-  summary.Collectives = collectives;
+  summary.BytesSent = traffic.PointToPointBytes;
+  summary.CollectiveBytes = traffic.CollectiveBytes;
+  summary.Collectives = traffic.Collectives;
   sltk::vtkbridge::communicationSummary(summary, grid);
   if (comm.rank() > 0)
   {
@@ -464,8 +465,9 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionOp
   sltk::vtkbridge::toImage(result, z, ghostLevels, image);
   summary = sltk::summarize(result, plan.Options.FrameShift); // places in the user's coordinates
   summary.Ranks = comm.size();
-  summary.BytesSent = counted.bytesSent();
-  summary.Collectives = counted.collectives();
+  summary.BytesSent = counted.traffic().PointToPointBytes;
+  summary.CollectiveBytes = counted.traffic().CollectiveBytes;
+  summary.Collectives = counted.traffic().Collectives;
   sltk::vtkbridge::runSummary(summary, image);
   sltk::vtkbridge::communicationSummary(summary, image);
   if (comm.rank() == 0) // every rank has it; ParaView would append one copy per rank

@@ -178,15 +178,16 @@ SurfaceTopology printSurface(vtkPolyData* surface, bool planar)
 }
 
 /// The time, the peak memory and, under mpirun, the busiest rank's traffic.
-void printTotals(double seconds, double peakMb, int ranks, double bytesSent, double collectives, bool octree)
+void printTotals(
+  double seconds, double peakMb, int ranks, double bytesSent, double collectiveBytes, double collectives, bool octree)
 {
   std::printf(ranks > 1 ? "total      %.2f s, peak memory %.0f MB (the largest rank's), %d ranks\n"
                         : "total      %.2f s, peak memory %.0f MB\n",
     seconds, peakMb, ranks);
   if (ranks > 1)
   {
-    std::printf("traffic    %.1f MB sent by the busiest rank (%s), %.0f collective calls\n", bytesSent / 1e6,
-      octree ? "ghost rows of run 1, then ghost tiles" : "ghost rows", collectives);
+    std::printf("traffic    %.1f MB sent by the busiest rank (%s), %.1f MB in %.0f collective calls\n", bytesSent / 1e6,
+      octree ? "ghost rows of run 1, then ghost tiles" : "ghost rows", collectiveBytes / 1e6, collectives);
   }
 }
 
@@ -223,8 +224,36 @@ nlohmann::ordered_json missedPlacesJson(const std::vector<sltk::MissedPlace<3>>&
   return list;
 }
 
+/// Each run's traffic (RunFigures::Traffic), each count its busiest rank's (a collective call).
+std::vector<sltk::CommTraffic> busiestRankPerRun(const std::vector<sltk::RunSummary>& runs)
+{
+  std::vector<double> values;
+  for (const sltk::RunSummary& run : runs)
+  {
+    values.insert(values.end(),
+      { static_cast<double>(run.Traffic.PointToPointBytes), static_cast<double>(run.Traffic.CollectiveBytes),
+        static_cast<double>(run.Traffic.Collectives) });
+  }
+  MpiSession::maxOverRanks(values);
+  std::vector<sltk::CommTraffic> busiest(runs.size());
+  for (size_t r = 0; r < runs.size(); ++r)
+  {
+    busiest[r] = { static_cast<std::int64_t>(values[3 * r]), static_cast<std::int64_t>(values[3 * r + 1]),
+      static_cast<std::int64_t>(values[3 * r + 2]) };
+  }
+  return busiest;
+}
+
+nlohmann::ordered_json trafficJson(const sltk::CommTraffic& t)
+{
+  return { { "bytes_sent_max", static_cast<long long>(t.PointToPointBytes) },
+    { "collective_bytes_max", static_cast<long long>(t.CollectiveBytes) },
+    { "collectives_max", static_cast<long long>(t.Collectives) } };
+}
+
 /// The runs' table on standard output and their records for --json.
-nlohmann::ordered_json printRuns(const sltk::ReconstructionSummary& summary, int ranks)
+nlohmann::ordered_json printRuns(
+  const sltk::ReconstructionSummary& summary, int ranks, const std::vector<sltk::CommTraffic>& runTraffic)
 {
   std::printf("\n run            grid   iterations      energy E_2     Err_P        time\n");
   nlohmann::ordered_json runRecords = nlohmann::ordered_json::array();
@@ -243,8 +272,15 @@ nlohmann::ordered_json printRuns(const sltk::ReconstructionSummary& summary, int
       { "points_held", static_cast<long long>(run.PointsHeld) }, { "seconds", run.Seconds } });
     if (ranks > 1)
     {
+      const sltk::CommTraffic& t = runTraffic[static_cast<size_t>(number - 1)];
       runRecords.back()["ghost_rows"] = static_cast<long long>(run.GhostRows);
       runRecords.back()["far_feet"] = static_cast<long long>(run.FarFeet);
+      runRecords.back()["bytes_sent_max"] = static_cast<long long>(t.PointToPointBytes);
+      runRecords.back()["collective_bytes_max"] = static_cast<long long>(t.CollectiveBytes);
+      runRecords.back()["collectives_max"] = static_cast<long long>(t.Collectives);
+      std::printf("      traffic of the busiest rank: %.1f MB point to point, %.1f MB in %lld collective calls\n",
+        static_cast<double>(t.PointToPointBytes) / 1e6, static_cast<double>(t.CollectiveBytes) / 1e6,
+        static_cast<long long>(t.Collectives));
     }
     if (summary.OctreeStorage)
     {
@@ -446,8 +482,10 @@ int Reconstruct::run() const
   if (this->Verbose)
   {
     std::fprintf(stderr,
-      "read       %lld points in %.3f s (parsed in %.3f s): at most %lld parsed and %lld held by a rank\n",
-      counts.Total, readSeconds, counts.ParseSeconds, counts.ReadMax, counts.HeldMax);
+      "read       %lld points in %.3f s (parsed in %.3f s): at most %lld parsed and %lld held by a rank; "
+      "%.1f MB in %lld collective calls by the busiest rank\n",
+      counts.Total, readSeconds, counts.ParseSeconds, counts.ReadMax, counts.HeldMax,
+      static_cast<double>(counts.Traffic.CollectiveBytes) / 1e6, static_cast<long long>(counts.Traffic.Collectives));
   }
   double bounds[6];
   cloud->GetBounds(bounds);
@@ -503,7 +541,9 @@ int Reconstruct::run() const
   // The filter's typed summary of this rank (its field data hold the same for ParaView users).
   const sltk::ReconstructionSummary& result = *filter->GetLastSummary();
   const double bytesSent = MpiSession::maxOverRanks(static_cast<double>(result.BytesSent));
+  const double collectiveBytes = MpiSession::maxOverRanks(static_cast<double>(result.CollectiveBytes));
   const double collectives = MpiSession::maxOverRanks(static_cast<double>(result.Collectives));
+  const std::vector<sltk::CommTraffic> runTraffic = busiestRankPerRun(result.Runs);
   // Rank 0 joins the ranks' pieces of the surface and writes the one set of outputs.
   const vtkSmartPointer<vtkPolyData> joined = gatherSurface(
     vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1)), vtkMultiProcessController::GetGlobalController());
@@ -515,11 +555,11 @@ int Reconstruct::run() const
 
   // Summary table.
   printCloud(result, path, cloud->GetNumberOfPoints());
-  const nlohmann::ordered_json runRecords = printRuns(result, ranks);
+  const nlohmann::ordered_json runRecords = printRuns(result, ranks, runTraffic);
   warnAboutResult(result);
   const bool fits = result.FitsCloud; // Core's verdict (StoppingRule.h FitShare)
   const SurfaceTopology topology = printSurface(surface, planar);
-  printTotals(seconds, peakMb, ranks, bytesSent, collectives, this->octree());
+  printTotals(seconds, peakMb, ranks, bytesSent, collectiveBytes, collectives, this->octree());
   SurfaceDistances distances;
   if (this->given("--reference"))
   {
@@ -559,7 +599,9 @@ int Reconstruct::run() const
       { "fits_cloud", fits }, { "separate_groups", result.SeparateGroups },
       { "pieces", static_cast<long long>(result.Pieces) },
       { "cloud_components", static_cast<long long>(result.CloudComponents) }, { "seconds", seconds },
-      { "peak_memory_mb", peakMb }, { "ranks", ranks }, { "bytes_sent_max", bytesSent }, { "collectives", collectives },
+      { "peak_memory_mb", peakMb }, { "ranks", ranks }, { "bytes_sent_max", bytesSent },
+      { "collective_bytes_max", collectiveBytes }, { "collectives", collectives },
+      { "read_traffic", trafficJson(counts.Traffic) },
       { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) }, { "surface_pieces", topology.Pieces },
       { "euler_characteristic", planar ? nlohmann::ordered_json() : nlohmann::ordered_json(topology.Euler) },
       { "runs", runRecords }, { "missed_places", missedPlacesJson(result.MissedPlaces) } };

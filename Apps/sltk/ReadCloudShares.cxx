@@ -8,6 +8,7 @@
 
 #include "sltk/cloud/PlyCloudFile.h"
 #include "sltk/cloud/TextCloudFile.h"
+#include "sltk/exec/CountingCommunicator.h"
 #include "sltk/exec/FirstError.h"
 
 #include <vtkNew.h>
@@ -59,14 +60,23 @@ vtkSmartPointer<vtkPointSet> gatherShares(sltk::CloudShare& share, const sltk::C
   cloud->SetPoints(points);
   return cloud;
 }
+/// Each of `mine`'s counts at its largest over the ranks (uncounted: one reduction after the read).
+sltk::CommTraffic busiestRank(const sltk::CommTraffic& mine, const sltk::Communicator& comm)
+{
+  std::int64_t values[3] = { mine.PointToPointBytes, mine.CollectiveBytes, mine.Collectives };
+  comm.allReduce(values, 3, sltk::ReduceOp::Max);
+  return { values[0], values[1], values[2] };
+}
 } // namespace
 
 sltk::Status readCloudOnRanks(const std::string& path, vtkSmartPointer<vtkPointSet>& cloud, CloudReadCounts& counts)
 {
   cloud = nullptr;
   counts = CloudReadCounts();
-  std::unique_ptr<sltk::Communicator> comm;
-  SLTK_RETURN_IF_ERROR(sltk::vtkbridge::makeCommunicator(nullptr, comm));
+  std::unique_ptr<sltk::Communicator> ranks;
+  SLTK_RETURN_IF_ERROR(sltk::vtkbridge::makeCommunicator(nullptr, ranks));
+  const sltk::CountingCommunicator counted(*ranks);
+  const sltk::Communicator* comm = &counted; // the read's traffic: counts.Traffic
   SLTK_RETURN_IF_ERROR(sltk::agreeOnFirstError(*comm, sltk::checkCloudFile(path)));
   const std::string ext = extensionOf(path);
   const bool text = isTextCloudExtension(ext);
@@ -76,6 +86,7 @@ sltk::Status readCloudOnRanks(const std::string& path, vtkSmartPointer<vtkPointS
   {
     const sltk::Status whole = readPointCloud(path, cloud); // every rank the whole file, as before
     counts.Total = counts.ReadMax = counts.HeldMax = whole.isOk() ? cloud->GetNumberOfPoints() : 0;
+    counts.Traffic = busiestRank(counted.traffic(), *ranks);
     return whole;
   }
   SLTK_RETURN_IF_ERROR(checked);
@@ -89,6 +100,7 @@ sltk::Status readCloudOnRanks(const std::string& path, vtkSmartPointer<vtkPointS
   counts.ReadMax = comm->allReduce(static_cast<std::int64_t>(share.Points.size()), sltk::ReduceOp::Max);
   cloud = gatherShares(share, *comm, text || layout.Wide ? VTK_DOUBLE : VTK_FLOAT);
   counts.HeldMax = comm->allReduce(static_cast<std::int64_t>(cloud->GetNumberOfPoints()), sltk::ReduceOp::Max);
+  counts.Traffic = busiestRank(counted.traffic(), *ranks);
   return sltk::Status::ok();
 }
 

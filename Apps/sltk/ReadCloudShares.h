@@ -13,6 +13,7 @@
 /// readPointCloud reads, the same points in the same order.
 
 #include "sltk/core/Status.h"
+#include "sltk/exec/CommTraffic.h"
 
 #include <vtkPointSet.h>
 #include <vtkSmartPointer.h>
@@ -29,6 +30,8 @@ struct CloudReadCounts
   long long ReadMax = 0;     ///< points_read_max: the most points a rank parsed from the file
   long long HeldMax = 0;     ///< points_held_max: the most points a rank holds after the read (today every point)
   double ParseSeconds = 0.0; ///< parse_seconds: the slowest rank's parse of its share (before the gather)
+  /// read_traffic: the read's traffic (the checks' agreements, the gather), each count its busiest rank's
+  sltk::CommTraffic Traffic;
 };
 
 /// Collective under mpirun (every rank calls it; every rank returns the same

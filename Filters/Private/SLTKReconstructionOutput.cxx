@@ -411,14 +411,29 @@ void historyTable(const std::vector<IterationRecord>& history, vtkTable* table)
 
 void communicationSummary(const ReconstructionSummary& summary, vtkDataObject* image)
 {
-  const std::pair<const char*, double> values[3] = { { "Ranks", static_cast<double>(summary.Ranks) },
+  const std::pair<const char*, double> values[4] = { { "Ranks", static_cast<double>(summary.Ranks) },
     { "RankBytesSent", static_cast<double>(summary.BytesSent) },
+    { "RankCollectiveBytes", static_cast<double>(summary.CollectiveBytes) },
     { "RankCollectives", static_cast<double>(summary.Collectives) } };
   for (const auto& value : values)
   {
     vtkNew<vtkDoubleArray> array;
     array->SetName(value.first);
     array->InsertNextValue(value.second);
+    image->GetFieldData()->AddArray(array);
+  }
+  // Each run's share of the same (one value a run): the volume per phase.
+  using Field = std::int64_t CommTraffic::*;
+  const std::pair<const char*, Field> perRun[3] = { { "RunRankBytesSent", &CommTraffic::PointToPointBytes },
+    { "RunRankCollectiveBytes", &CommTraffic::CollectiveBytes }, { "RunRankCollectives", &CommTraffic::Collectives } };
+  for (const auto& field : perRun)
+  {
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(field.first);
+    for (const RunSummary& run : summary.Runs)
+    {
+      array->InsertNextValue(static_cast<double>(run.Traffic.*field.second));
+    }
     image->GetFieldData()->AddArray(array);
   }
 }

@@ -56,8 +56,11 @@ constexpr int ImageGhostLevelsAvailable = static_cast<int>(SlabGhostRows) - 1;
 void runSummary(const ReconstructionSummary& summary, vtkDataObject* image);
 
 /// The distributed run's traffic as field data of the image: Ranks, and this
-/// rank's RankBytesSent (point to point: the ghost-row exchanges) and
-/// RankCollectives (reductions and agreements) (CountingCommunicator.h).
+/// rank's RankBytesSent (point to point: the ghost-row exchanges),
+/// RankCollectiveBytes (its payload of the collectives times the ranks it
+/// reached) and RankCollectives (reductions, agreements, gathers), with each
+/// run's share in RunRankBytesSent, RunRankCollectiveBytes and
+/// RunRankCollectives, one value a run (CommTraffic.h).
 void communicationSummary(const ReconstructionSummary& summary, vtkDataObject* image);
 
 /// Zero level set of the image's SignedDistance: triangles (3D, flying edges)

@@ -3,6 +3,7 @@
 // `mpiexec -n 2` (ctest label mpi); also right on 4 ranks. The agreement tests
 // make one rank fail and check that every rank returns the same error and
 // then meets the others in the next collective (a hang would hit the ctest timeout).
+#include "sltk/exec/CountingCommunicator.h"
 #include "sltk/mpi/MpiCommunicator.h"
 
 #include <gtest/gtest.h>
@@ -162,6 +163,34 @@ TEST(MpiCommunicator, ExchangesWithNeighboursOnly)
   EXPECT_TRUE(comm->neighbourExchange(out, in));
   EXPECT_EQ(
     fromBefore, std::vector<unsigned char>(static_cast<size_t>(100 + before), static_cast<unsigned char>(before)));
+}
+
+TEST(MpiCommunicator, CountsEachRanksTrafficByKind)
+{
+  auto comm = world();
+  const sltk::CountingCommunicator counted(*comm);
+  const int r = counted.rank(), n = counted.size();
+  const std::int64_t others = n - 1;
+  EXPECT_EQ(comm->traffic().Collectives, 0) << "an uncounted communicator reports zeros";
+  double sums[3] = { 1.0, 2.0, 3.0 };
+  counted.allReduce(sums, 3, ReduceOp::Sum); // 24 bytes to each other rank
+  const sltk::CommTraffic afterReduce = counted.traffic();
+  std::vector<char> mine(static_cast<size_t>(10 + r), 'x');
+  counted.allGatherV(mine); // 10 + r bytes to each other rank
+  int value = r;
+  counted.broadcast(&value, sizeof value, 0); // the root's 4 bytes to each other rank
+  std::vector<std::int64_t> sendCounts(static_cast<size_t>(n), 5);
+  std::vector<unsigned char> send(static_cast<size_t>(5 * n), 1), received;
+  std::vector<std::int64_t> receiveCounts;
+  counted.allToAllV(send.data(), sendCounts, received, receiveCounts); // 5 bytes point to point to each other rank
+  const sltk::CommTraffic t = counted.traffic();
+  EXPECT_EQ(t.Collectives, 4);
+  EXPECT_EQ(t.CollectiveBytes, (24 + 10 + r + (r == 0 ? 4 : 0)) * others);
+  EXPECT_EQ(t.PointToPointBytes, 5 * others);
+  const sltk::CommTraffic since = t.since(afterReduce);
+  EXPECT_EQ(since.Collectives, 3);
+  EXPECT_EQ(since.CollectiveBytes, (10 + r + (r == 0 ? 4 : 0)) * others);
+  EXPECT_EQ(counted.bytesSent(), t.PointToPointBytes);
 }
 
 TEST(MpiCommunicator, AgreementOkWhenEveryRankIsOk)

@@ -5,7 +5,7 @@ binary PLY of points (vertex records), then the ranks gather the shares in file
 order. The surface is then the one of the same points read whole (a .vtp, which
 every rank reads through VTK), for a text file with CRLF ends, a header, comments,
 blank lines and no final newline, and for a binary PLY; --json says points_total,
-points_read_max (about half on two ranks), points_held_max (every point: the
+points_read_max (about half on two ranks), read_traffic and each run's traffic, points_held_max (every point: the
 points are not yet moved to their owners) and run_points_held_max (the most a rank's
 runs read: the points reconstructed on one rank, at most that on two). A bad line in rank 1's share ends both
 ranks with the one-rank message.
@@ -112,6 +112,21 @@ for cloud, whole in ((text, write_vtp("cloud.vtp", points)), (ply, write_vtp("mi
           "%s: points_read_max %s is about half the cloud" % (kind, summary.get("points_read_max")))
     check(whole_summary.get("points_read_max") == N, "the .vtp is read whole by every rank (points_read_max %s)" %
           whole_summary.get("points_read_max"))
+    # The traffic per phase: the read gathers the shares (the busiest rank's, at least half the cloud's
+    # 24-byte points, reach the other rank); every run exchanges ghost rows; the runs' busiest ranks
+    # together sent at least what the whole reconstruction's busiest rank sent.
+    read = summary.get("read_traffic", {})
+    check(read.get("collective_bytes_max", 0) >= 24 * N // 2 and read.get("bytes_sent_max") == 0,
+          "%s: the read's gather sends at least half the cloud (%s)" % (kind, read))
+    runs = summary.get("runs", [])
+    check(len(runs) > 0 and all(r.get("bytes_sent_max", 0) > 0 and r.get("collectives_max", 0) > 0 for r in runs),
+          "%s: every run's traffic on 2 ranks (%s)" % (kind, [(r.get("bytes_sent_max"), r.get("collectives_max"))
+                                                          for r in runs]))
+    check(sum(r.get("bytes_sent_max", 0) for r in runs) >= summary.get("bytes_sent_max", -1) > 0,
+          "%s: the runs' point-to-point bytes make up the reconstruction's (%s)" % (
+              kind, summary.get("bytes_sent_max")))
+    check("read_traffic" in one_summary and "bytes_sent_max" not in one_summary["runs"][0],
+          "%s on 1 rank: no traffic per run" % kind)
 
 # A bad line past the middle of the file (rank 1's share): both ranks stop with the one-rank message.
 bad = path("bad.xyz")

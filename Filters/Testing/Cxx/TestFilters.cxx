@@ -142,13 +142,15 @@ void checkSummary(vtkSLLevelSetReconstruct* recon, const std::string& what)
   bool same = s && !s->Runs.empty() && s->CloudSpacing == fieldValue(grid, "CloudSpacing") &&
     s->CellSizeFactor == fieldValue(grid, "CellSizeFactor") &&
     static_cast<double>(s->Cleaning.OutputPoints) == fieldValue(grid, "ReconstructedPoints") &&
-    static_cast<double>(s->BytesSent) == fieldValue(grid, "RankBytesSent");
+    static_cast<double>(s->BytesSent) == fieldValue(grid, "RankBytesSent") &&
+    static_cast<double>(s->CollectiveBytes) == fieldValue(grid, "RankCollectiveBytes");
   for (size_t r = 0; same && r < s->Runs.size(); ++r)
   {
     const auto k = static_cast<vtkIdType>(r);
     const sltk::RunSummary& run = s->Runs[r];
     same = run.Iterations == fieldValue(grid, "RunIterations", k) &&
       run.CloudError == fieldValue(grid, "RunCloudError", k) && run.Seconds == fieldValue(grid, "RunSeconds", k) &&
+      static_cast<double>(run.Traffic.Collectives) == fieldValue(grid, "RunRankCollectives", k) &&
       (!s->OctreeStorage || static_cast<double>(run.StoredNodes) == fieldValue(grid, "RunStoredNodes", k));
   }
   check(same, what + ": the typed summary holds port 0's field data");

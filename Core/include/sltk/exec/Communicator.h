@@ -15,6 +15,7 @@
 /// that no rank waits in a collective the failed rank never enters.
 
 #include "sltk/core/Status.h"
+#include "sltk/exec/CommTraffic.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -104,6 +105,10 @@ public:
   /// The implementation's native handle (SLTK::Mpi: a pointer to its
   /// MPI_Comm, which p4est takes); nullptr for the serial communicator.
   virtual void* nativeHandle() const { return nullptr; }
+
+  /// This rank's traffic so far when it is counted (CountingCommunicator.h),
+  /// else zeros: the runs read it at their start and end (RunFigures::Traffic).
+  virtual CommTraffic traffic() const { return {}; }
 
   /// One value reduced over the ranks.
   double allReduce(double value, ReduceOp op) const

@@ -4,6 +4,7 @@
 /// Parameters of Algorithm 1 (thesis 4.3-4.5) and the records it returns.
 
 #include "sltk/cloud/CloudCleaning.h"
+#include "sltk/exec/CommTraffic.h"
 #include "sltk/grid/GridSpec.h"
 #include "sltk/interp/InterpolatorKind.h"
 #include "sltk/levelset/ReinitOptions.h"
@@ -230,6 +231,9 @@ struct RunFigures
   Index PointsHeld = 0;
   /// Single-node specks of the run's result given their neighbours' mean (levelset/IsolatedNodes.h)
   Index MergedNodes = 0;
+  /// This rank's traffic from the run's set-up to the end of its iterations and the
+  /// summaries after them (zeros unless the communicator counts it, CountingCommunicator.h).
+  CommTraffic Traffic;
 };
 
 template <int D>

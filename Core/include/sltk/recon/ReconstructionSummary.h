@@ -33,10 +33,12 @@ struct ReconstructionSummary : ReconstructionReport
 {
   std::vector<RunSummary> Runs;
   bool OctreeStorage = false; ///< the runs' StoredNodes, UniformNodes, Leaves and LargestRankLeaves are set
-  /// The ranks the reconstruction ran on, and this rank's traffic: bytes sent point
-  /// to point (the ghost exchanges) and collective calls (CountingCommunicator.h).
+  /// The ranks the reconstruction ran on, and this rank's traffic (CommTraffic.h): bytes
+  /// sent point to point (the ghost exchanges), its payload of the collectives times the
+  /// ranks it reached, and collective calls (CountingCommunicator.h); each run's in Runs.
   int Ranks = 1;
   std::int64_t BytesSent = 0;
+  std::int64_t CollectiveBytes = 0;
   std::int64_t Collectives = 0;
   /// Where the last run's surface misses points (MissedPlaces.h), the largest places first,
   /// in the user's coordinates (the front end's local frame added back); z = 0 in 2D.
