@@ -706,6 +706,64 @@ TEST(Reinit, SerialAndThreadedAreBitIdentical)
   }
 }
 
+TEST(Reinit, BandNodesInLanesAreTheNodeByNodeValuesBitForBit)
+{
+  // The band's nodes are stepped four (or two) at a time, and a group with a node next to the
+  // grid's end node by node (Reinitialise.cxx). Interleaving a node of the grid's faces after every
+  // three nodes of the band (far from it, so no band node reads it) sends every group node by
+  // node: the band's values must be the lanes' bit for bit, for the three methods, after the
+  // classification alone (which the interleaving must not disturb) and after five steps.
+  const auto g = sltk::uniformBox<3>(41, -1.0, 1.0);
+  const GridField<3> initial = distortedSphere<3>(g);
+  const auto band = sphereBand<3>(initial, 3.0);
+  std::vector<Index> faces;
+  for (Index k = 0; k < g.nodeCount(); ++k)
+  {
+    const auto i = initial.nodeIndex(k);
+    if (std::any_of(i.begin(), i.end(), [&](Index c) { return c == 0 || c == g.Dims[0] - 1; }))
+    {
+      faces.push_back(k);
+    }
+  }
+  ASSERT_GT(3 * faces.size(), band.size()) << "a face node for every three band nodes";
+  std::vector<Index> interleaved;
+  for (size_t j = 0; j < band.size(); ++j)
+  {
+    interleaved.push_back(band[j]);
+    if (j % 3 == 2)
+    {
+      interleaved.push_back(faces[j / 3]);
+    }
+  }
+  for (ReinitMethod method : { ReinitMethod::Plain, ReinitMethod::RussoSmereka, ReinitMethod::Constrained })
+  {
+    for (int steps : { 0, 5 })
+    {
+      GridField<3> inLanes = initial;
+      GridField<3> nodeByNode = initial;
+      ReinitOptions o = options(method);
+      o.MaxIterations = steps;
+      o.Tolerance = 0.0;
+      sltk::ReinitReport a, b;
+      ASSERT_TRUE(sltk::reinitialise<3>(inLanes, band, o, sltk::Context(), &a).isOk());
+      ASSERT_TRUE(sltk::reinitialise<3>(nodeByNode, interleaved, o, sltk::Context(), &b).isOk());
+      EXPECT_EQ(a.InterfaceNodes, b.InterfaceNodes) << name(method);
+      size_t differ = 0, moved = 0;
+      for (Index k : band)
+      {
+        const double x = inLanes(inLanes.nodeIndex(k)), y = nodeByNode(nodeByNode.nodeIndex(k));
+        differ += std::memcmp(&x, &y, sizeof(double)) != 0 ? 1 : 0;
+        moved += x != initial(initial.nodeIndex(k)) ? 1 : 0;
+      }
+      EXPECT_EQ(differ, 0u) << name(method) << ", " << steps << " steps";
+      if (steps > 0 || method == ReinitMethod::Constrained) // else nothing is written
+      {
+        EXPECT_GT(moved, band.size() / 20) << name(method) << ", " << steps << " steps";
+      }
+    }
+  }
+}
+
 TEST(Reinit, PeriodicAndExtrapolatedBoundaries)
 {
   // A front x = x0 crossing a periodic y axis; the band reaches the x ends of the
