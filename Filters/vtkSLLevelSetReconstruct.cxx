@@ -417,9 +417,7 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
   }
   summary = sltk::summarize(result, plan.Options.FrameShift); // places in the user's coordinates
   summary.Ranks = comm.size();
-  summary.BytesSent = traffic.PointToPointBytes;
-  summary.CollectiveBytes = traffic.CollectiveBytes;
-  summary.Collectives = traffic.Collectives;
+  summary.Traffic = traffic;
   sltk::vtkbridge::communicationSummary(summary, grid);
   if (comm.rank() > 0)
   {
@@ -465,9 +463,7 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionOp
   sltk::vtkbridge::toImage(result, z, ghostLevels, image);
   summary = sltk::summarize(result, plan.Options.FrameShift); // places in the user's coordinates
   summary.Ranks = comm.size();
-  summary.BytesSent = counted.traffic().PointToPointBytes;
-  summary.CollectiveBytes = counted.traffic().CollectiveBytes;
-  summary.Collectives = counted.traffic().Collectives;
+  summary.Traffic = counted.traffic();
   sltk::vtkbridge::runSummary(summary, image);
   sltk::vtkbridge::communicationSummary(summary, image);
   if (comm.rank() == 0) // every rank has it; ParaView would append one copy per rank

@@ -10,6 +10,7 @@
 #include "ProgressBar.h"
 #include "ReadCloudShares.h"
 #include "RenderPng.h"
+#include "SLTKCommunicator.h"
 #include "SurfaceDistance.h"
 #include "SurfacePieces.h"
 #include "TreeImage.h"
@@ -17,6 +18,7 @@
 #include "WritePieces.h"
 #include "WriteSurface.h"
 
+#include "sltk/exec/CountingCommunicator.h"
 #include "sltk/exec/Memory.h"
 #include "sltk/exec/ThreadPool.h"
 #include "sltk/interp/InterpolatorKind.h"
@@ -178,16 +180,17 @@ SurfaceTopology printSurface(vtkPolyData* surface, bool planar)
 }
 
 /// The time, the peak memory and, under mpirun, the busiest rank's traffic.
-void printTotals(
-  double seconds, double peakMb, int ranks, double bytesSent, double collectiveBytes, double collectives, bool octree)
+void printTotals(double seconds, double peakMb, int ranks, const sltk::CommTraffic& traffic, bool octree)
 {
   std::printf(ranks > 1 ? "total      %.2f s, peak memory %.0f MB (the largest rank's), %d ranks\n"
                         : "total      %.2f s, peak memory %.0f MB\n",
     seconds, peakMb, ranks);
   if (ranks > 1)
   {
-    std::printf("traffic    %.1f MB sent by the busiest rank (%s), %.1f MB in %.0f collective calls\n", bytesSent / 1e6,
-      octree ? "ghost rows of run 1, then ghost tiles" : "ghost rows", collectiveBytes / 1e6, collectives);
+    std::printf("traffic    %.1f MB sent by the busiest rank (%s), %.1f MB in %lld collective calls\n",
+      static_cast<double>(traffic.PointToPointBytes) / 1e6,
+      octree ? "ghost rows of run 1, then ghost tiles" : "ghost rows",
+      static_cast<double>(traffic.CollectiveBytes) / 1e6, static_cast<long long>(traffic.Collectives));
   }
 }
 
@@ -224,24 +227,18 @@ nlohmann::ordered_json missedPlacesJson(const std::vector<sltk::MissedPlace<3>>&
   return list;
 }
 
-/// Each run's traffic (RunFigures::Traffic), each count its busiest rank's (a collective call).
-std::vector<sltk::CommTraffic> busiestRankPerRun(const std::vector<sltk::RunSummary>& runs)
+/// The busiest rank's traffic (each count its largest over the ranks): the whole
+/// reconstruction's first, then each run's (RunFigures::Traffic). One collective call.
+std::vector<sltk::CommTraffic> busiestRankTraffic(const sltk::ReconstructionSummary& summary)
 {
-  std::vector<double> values;
-  for (const sltk::RunSummary& run : runs)
+  std::vector<sltk::CommTraffic> phases = { summary.Traffic };
+  for (const sltk::RunSummary& run : summary.Runs)
   {
-    values.insert(values.end(),
-      { static_cast<double>(run.Traffic.PointToPointBytes), static_cast<double>(run.Traffic.CollectiveBytes),
-        static_cast<double>(run.Traffic.Collectives) });
+    phases.push_back(run.Traffic);
   }
-  MpiSession::maxOverRanks(values);
-  std::vector<sltk::CommTraffic> busiest(runs.size());
-  for (size_t r = 0; r < runs.size(); ++r)
-  {
-    busiest[r] = { static_cast<std::int64_t>(values[3 * r]), static_cast<std::int64_t>(values[3 * r + 1]),
-      static_cast<std::int64_t>(values[3 * r + 2]) };
-  }
-  return busiest;
+  std::unique_ptr<sltk::Communicator> comm; // the read made the same one: it cannot fail here
+  return sltk::vtkbridge::makeCommunicator(nullptr, comm).isOk() ? sltk::busiestRanks(std::move(phases), *comm)
+                                                                 : phases;
 }
 
 nlohmann::ordered_json trafficJson(const sltk::CommTraffic& t)
@@ -251,7 +248,7 @@ nlohmann::ordered_json trafficJson(const sltk::CommTraffic& t)
     { "collectives_max", static_cast<long long>(t.Collectives) } };
 }
 
-/// The runs' table on standard output and their records for --json.
+/// The runs' table on standard output and their records for --json; `runTraffic`: busiestRankTraffic().
 nlohmann::ordered_json printRuns(
   const sltk::ReconstructionSummary& summary, int ranks, const std::vector<sltk::CommTraffic>& runTraffic)
 {
@@ -272,7 +269,7 @@ nlohmann::ordered_json printRuns(
       { "points_held", static_cast<long long>(run.PointsHeld) }, { "seconds", run.Seconds } });
     if (ranks > 1)
     {
-      const sltk::CommTraffic& t = runTraffic[static_cast<size_t>(number - 1)];
+      const sltk::CommTraffic& t = runTraffic[static_cast<size_t>(number)]; // [0]: the whole reconstruction's
       runRecords.back()["ghost_rows"] = static_cast<long long>(run.GhostRows);
       runRecords.back()["far_feet"] = static_cast<long long>(run.FarFeet);
       runRecords.back()["bytes_sent_max"] = static_cast<long long>(t.PointToPointBytes);
@@ -540,10 +537,7 @@ int Reconstruct::run() const
   const double peakMb = MpiSession::maxOverRanks(static_cast<double>(sltk::peakResidentBytes()) / 1e6);
   // The filter's typed summary of this rank (its field data hold the same for ParaView users).
   const sltk::ReconstructionSummary& result = *filter->GetLastSummary();
-  const double bytesSent = MpiSession::maxOverRanks(static_cast<double>(result.BytesSent));
-  const double collectiveBytes = MpiSession::maxOverRanks(static_cast<double>(result.CollectiveBytes));
-  const double collectives = MpiSession::maxOverRanks(static_cast<double>(result.Collectives));
-  const std::vector<sltk::CommTraffic> runTraffic = busiestRankPerRun(result.Runs);
+  const std::vector<sltk::CommTraffic> traffic = busiestRankTraffic(result);
   // Rank 0 joins the ranks' pieces of the surface and writes the one set of outputs.
   const vtkSmartPointer<vtkPolyData> joined = gatherSurface(
     vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1)), vtkMultiProcessController::GetGlobalController());
@@ -555,11 +549,11 @@ int Reconstruct::run() const
 
   // Summary table.
   printCloud(result, path, cloud->GetNumberOfPoints());
-  const nlohmann::ordered_json runRecords = printRuns(result, ranks, runTraffic);
+  const nlohmann::ordered_json runRecords = printRuns(result, ranks, traffic);
   warnAboutResult(result);
   const bool fits = result.FitsCloud; // Core's verdict (StoppingRule.h FitShare)
   const SurfaceTopology topology = printSurface(surface, planar);
-  printTotals(seconds, peakMb, ranks, bytesSent, collectiveBytes, collectives, this->octree());
+  printTotals(seconds, peakMb, ranks, traffic[0], this->octree());
   SurfaceDistances distances;
   if (this->given("--reference"))
   {
@@ -599,9 +593,10 @@ int Reconstruct::run() const
       { "fits_cloud", fits }, { "separate_groups", result.SeparateGroups },
       { "pieces", static_cast<long long>(result.Pieces) },
       { "cloud_components", static_cast<long long>(result.CloudComponents) }, { "seconds", seconds },
-      { "peak_memory_mb", peakMb }, { "ranks", ranks }, { "bytes_sent_max", bytesSent },
-      { "collective_bytes_max", collectiveBytes }, { "collectives", collectives },
-      { "read_traffic", trafficJson(counts.Traffic) },
+      { "peak_memory_mb", peakMb }, { "ranks", ranks },
+      { "bytes_sent_max", static_cast<double>(traffic[0].PointToPointBytes) },
+      { "collective_bytes_max", static_cast<double>(traffic[0].CollectiveBytes) },
+      { "collectives", static_cast<double>(traffic[0].Collectives) }, { "read_traffic", trafficJson(counts.Traffic) },
       { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) }, { "surface_pieces", topology.Pieces },
       { "euler_characteristic", planar ? nlohmann::ordered_json() : nlohmann::ordered_json(topology.Euler) },
       { "runs", runRecords }, { "missed_places", missedPlacesJson(result.MissedPlaces) } };

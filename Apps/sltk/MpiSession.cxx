@@ -77,15 +77,4 @@ double MpiSession::maxOverRanks(double value)
   return largest;
 }
 
-void MpiSession::maxOverRanks(std::vector<double>& values)
-{
-  auto* global = vtkMultiProcessController::GetGlobalController();
-  if (!global || global->GetNumberOfProcesses() < 2 || values.empty())
-  {
-    return;
-  }
-  const std::vector<double> mine = values;
-  global->AllReduce(mine.data(), values.data(), static_cast<vtkIdType>(values.size()), vtkCommunicator::MAX_OP);
-}
-
 } // namespace sltkcli

@@ -15,8 +15,6 @@
 
 class vtkMPIController;
 
-#include <vector>
-
 namespace sltkcli
 {
 
@@ -33,8 +31,6 @@ public:
   static int size();
   /// The largest `value` over the ranks (a collective call: every rank makes it).
   static double maxOverRanks(double value);
-  /// Each of `values` at its largest over the ranks, in place (one collective call).
-  static void maxOverRanks(std::vector<double>& values);
 
 private:
   vtkSmartPointer<vtkMPIController> Controller;

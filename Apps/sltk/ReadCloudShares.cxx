@@ -60,13 +60,6 @@ vtkSmartPointer<vtkPointSet> gatherShares(sltk::CloudShare& share, const sltk::C
   cloud->SetPoints(points);
   return cloud;
 }
-/// Each of `mine`'s counts at its largest over the ranks (uncounted: one reduction after the read).
-sltk::CommTraffic busiestRank(const sltk::CommTraffic& mine, const sltk::Communicator& comm)
-{
-  std::int64_t values[3] = { mine.PointToPointBytes, mine.CollectiveBytes, mine.Collectives };
-  comm.allReduce(values, 3, sltk::ReduceOp::Max);
-  return { values[0], values[1], values[2] };
-}
 } // namespace
 
 sltk::Status readCloudOnRanks(const std::string& path, vtkSmartPointer<vtkPointSet>& cloud, CloudReadCounts& counts)
@@ -86,7 +79,7 @@ sltk::Status readCloudOnRanks(const std::string& path, vtkSmartPointer<vtkPointS
   {
     const sltk::Status whole = readPointCloud(path, cloud); // every rank the whole file, as before
     counts.Total = counts.ReadMax = counts.HeldMax = whole.isOk() ? cloud->GetNumberOfPoints() : 0;
-    counts.Traffic = busiestRank(counted.traffic(), *ranks);
+    counts.Traffic = sltk::busiestRanks({ counted.traffic() }, *ranks)[0]; // uncounted
     return whole;
   }
   SLTK_RETURN_IF_ERROR(checked);
@@ -100,7 +93,7 @@ sltk::Status readCloudOnRanks(const std::string& path, vtkSmartPointer<vtkPointS
   counts.ReadMax = comm->allReduce(static_cast<std::int64_t>(share.Points.size()), sltk::ReduceOp::Max);
   cloud = gatherShares(share, *comm, text || layout.Wide ? VTK_DOUBLE : VTK_FLOAT);
   counts.HeldMax = comm->allReduce(static_cast<std::int64_t>(cloud->GetNumberOfPoints()), sltk::ReduceOp::Max);
-  counts.Traffic = busiestRank(counted.traffic(), *ranks);
+  counts.Traffic = sltk::busiestRanks({ counted.traffic() }, *ranks)[0]; // uncounted
   return sltk::Status::ok();
 }
 

@@ -411,30 +411,26 @@ void historyTable(const std::vector<IterationRecord>& history, vtkTable* table)
 
 void communicationSummary(const ReconstructionSummary& summary, vtkDataObject* image)
 {
-  const std::pair<const char*, double> values[4] = { { "Ranks", static_cast<double>(summary.Ranks) },
-    { "RankBytesSent", static_cast<double>(summary.BytesSent) },
-    { "RankCollectiveBytes", static_cast<double>(summary.CollectiveBytes) },
-    { "RankCollectives", static_cast<double>(summary.Collectives) } };
-  for (const auto& value : values)
-  {
-    vtkNew<vtkDoubleArray> array;
-    array->SetName(value.first);
-    array->InsertNextValue(value.second);
-    image->GetFieldData()->AddArray(array);
-  }
-  // Each run's share of the same (one value a run): the volume per phase.
+  vtkNew<vtkDoubleArray> ranks;
+  ranks->SetName("Ranks");
+  ranks->InsertNextValue(static_cast<double>(summary.Ranks));
+  image->GetFieldData()->AddArray(ranks);
+  // The whole reconstruction's counts (Rank*), and each run's share (Run*, one value a run).
   using Field = std::int64_t CommTraffic::*;
-  const std::pair<const char*, Field> perRun[3] = { { "RunRankBytesSent", &CommTraffic::PointToPointBytes },
-    { "RunRankCollectiveBytes", &CommTraffic::CollectiveBytes }, { "RunRankCollectives", &CommTraffic::Collectives } };
-  for (const auto& field : perRun)
+  const std::pair<const char*, Field> counts[3] = { { "RankBytesSent", &CommTraffic::PointToPointBytes },
+    { "RankCollectiveBytes", &CommTraffic::CollectiveBytes }, { "RankCollectives", &CommTraffic::Collectives } };
+  for (const auto& count : counts)
   {
-    vtkNew<vtkDoubleArray> array;
-    array->SetName(field.first);
+    vtkNew<vtkDoubleArray> whole, perRun;
+    whole->SetName(count.first);
+    whole->InsertNextValue(static_cast<double>(summary.Traffic.*count.second));
+    perRun->SetName((std::string("Run") + count.first).c_str());
     for (const RunSummary& run : summary.Runs)
     {
-      array->InsertNextValue(static_cast<double>(run.Traffic.*field.second));
+      perRun->InsertNextValue(static_cast<double>(run.Traffic.*count.second));
     }
-    image->GetFieldData()->AddArray(array);
+    image->GetFieldData()->AddArray(whole);
+    image->GetFieldData()->AddArray(perRun);
   }
 }
 

@@ -124,6 +124,9 @@ public:
   {
   }
 
+  /// The ranks the runs are split over.
+  const Communicator& comm() const { return this->Distribution.comm(); }
+
   Status setUp(int run, double outsideFactor)
   {
     if (run == 1)
@@ -131,7 +134,6 @@ public:
       return this->First.setUp(1, outsideFactor);
     }
     const auto setup = std::chrono::steady_clock::now();
-    this->TrafficAtSetUp = this->Distribution.comm().traffic();
     const FarPointSeeds<D>& seeds = run == 2 ? this->First.seeds() : this->Seeds;
     this->Field = TiledField<D>{};
     SLTK_RETURN_IF_ERROR(transferToTiles(this->Previous, this->PreviousGamma, seeds,
@@ -160,7 +162,6 @@ public:
     TiledRunRecord storage;
     storage.PeakTiles = this->Field.tileCount(); // the transfer's and the setup reinitialisation's
     TiledBand<D, Interp> band(this->Plan, run, this->Ctx, this->Field, this->Distribution, storage);
-    const size_t runs = records.Runs.size();
     const Status status =
       iterateRun<D>(band, this->Options, run, this->Plan.CloudSpacing, this->Ctx, records, vanished);
     const bool ran = status.isOk() && !vanished;
@@ -169,10 +170,6 @@ public:
     records.MissedPlaces = missedPlacesAfterRun(band, *this->Plan.Locator, this->Plan.CloudSpacing, this->Options, run,
       ran, records.Runs, this->Distribution.comm());
     recordStorage(this->Field, run, storage, this->Distribution, this->Out.Storage);
-    if (records.Runs.size() > runs) // the run's record (iterateRun adds none when it fails)
-    {
-      records.Runs.back().Traffic = this->Distribution.comm().traffic().since(this->TrafficAtSetUp);
-    }
     return status;
   }
 
@@ -259,7 +256,6 @@ private:
   TiledField<D> Field, Last;    // this run's tiles; the previous run's until this one is set up
   PreviousLevelSet<D> Previous; // what the next run is transferred from
   FarPointSeeds<D> Seeds;       // what the last tiled run left outside, for the next
-  CommTraffic TrafficAtSetUp;   // this rank's counters when the run's set-up began
   double PreviousGamma = 0.0;
   Index FirstRunLeaves = 0, FirstRunLargestRankLeaves = 0;
 };

@@ -20,7 +20,10 @@
 ///  - `Status keepPrevious(int run, ReconstructionResult<D>&)`: the result is
 ///    the previous run's (or the reason the storage no longer holds it);
 ///  - `std::int64_t pieces(const ReconstructionResult<D>&)`: the kept result's
-///    pieces (InsideComponents.h).
+///    pieces (InsideComponents.h);
+///  - `const Communicator& comm()`: the ranks the runs are split over (each
+///    run's record takes this rank's traffic from its set-up to the end of
+///    iterate(), RunFigures::Traffic).
 
 #include "sltk/cloud/LocalFrame.h"
 #include "sltk/exec/Communicator.h"
@@ -134,6 +137,8 @@ Status runAlgorithm1(Runs& runs, const ReconstructionPlan<D>& plan, const Recons
   for (int run = 1; run <= options.Runs; ++run)
   {
     ctx.interrupter().start("run " + std::to_string(run) + "/" + std::to_string(options.Runs));
+    const CommTraffic trafficBefore = runs.comm().traffic();
+    const size_t records = result.Runs.size();
     const Status setUp = runs.setUp(run, outsideFactor);
     if (!setUp.isOk())
     {
@@ -143,6 +148,10 @@ Status runAlgorithm1(Runs& runs, const ReconstructionPlan<D>& plan, const Recons
     bool vanished = false;
     const Status status = runs.iterate(run, result, vanished);
     ctx.interrupter().end();
+    if (result.Runs.size() > records) // the run's record (iterateRun adds none when it fails)
+    {
+      result.Runs.back().Traffic = runs.comm().traffic().since(trafficBefore);
+    }
     const double wider = nextOutsideFactor(outsideFactor);
     if (vanished && run == 1 && wider > 0.0 && wider <= outsideRoom)
     {

@@ -158,7 +158,6 @@ public:
   {
     const GridSpec<D>& grid = this->Grids[static_cast<size_t>(run - 1)];
     const auto setup = std::chrono::steady_clock::now();
-    this->TrafficAtSetUp = this->Slab.comm().traffic();
     SLTK_RETURN_IF_ERROR(this->Slab.plan(grid, this->Plan.Cloud, run > 1 ? &this->PreviousSlab : nullptr));
     const Communicator& comm = this->Slab.comm();
     this->Points.select(
@@ -202,7 +201,6 @@ public:
   Status iterate(int run, ReconstructionResult<D>& result, bool& vanished)
   {
     SlabBand<D, Interp> band(this->Points, this->Options, this->Ctx, this->Exact, this->Slab, this->Phi, this->Dist);
-    const size_t records = result.Runs.size();
     const Status status = iterateRun<D>(band, this->Options, run, this->Plan.CloudSpacing, this->Ctx, result, vanished);
     const bool ran = status.isOk() && !vanished;
     this->Seeds =
@@ -212,12 +210,11 @@ public:
     // d was made exact where each rank's band reached: the ghost rows take the
     // owners' values (the next run interpolates them; the blocks share a row).
     this->Slab.exchange(this->Dist);
-    if (result.Runs.size() > records) // the run's record (iterateRun adds none when it fails)
-    {
-      result.Runs.back().Traffic = this->Slab.comm().traffic().since(this->TrafficAtSetUp);
-    }
     return status;
   }
+
+  /// The ranks the runs are split over.
+  const Communicator& comm() const { return this->Slab.comm(); }
 
   /// The balls the next run adds: the points this run left outside (empty after the last run).
   const FarPointSeeds<D>& seeds() const { return this->Seeds; }
@@ -270,8 +267,7 @@ private:
   RunPoints<D> Points;         // this run's points on this rank (RunPoints.h)
   GridField<D> Phi, Previous, Dist, PreviousDist;
   RunSlab<D> Slab, PreviousSlab;
-  FarPointSeeds<D> Seeds;     // what the last run left outside, for the next (FarPointSeeds.h)
-  CommTraffic TrafficAtSetUp; // this rank's counters when the run's set-up began
+  FarPointSeeds<D> Seeds; // what the last run left outside, for the next (FarPointSeeds.h)
 };
 
 } // namespace sltk

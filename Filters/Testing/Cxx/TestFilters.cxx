@@ -142,8 +142,8 @@ void checkSummary(vtkSLLevelSetReconstruct* recon, const std::string& what)
   bool same = s && !s->Runs.empty() && s->CloudSpacing == fieldValue(grid, "CloudSpacing") &&
     s->CellSizeFactor == fieldValue(grid, "CellSizeFactor") &&
     static_cast<double>(s->Cleaning.OutputPoints) == fieldValue(grid, "ReconstructedPoints") &&
-    static_cast<double>(s->BytesSent) == fieldValue(grid, "RankBytesSent") &&
-    static_cast<double>(s->CollectiveBytes) == fieldValue(grid, "RankCollectiveBytes");
+    static_cast<double>(s->Traffic.PointToPointBytes) == fieldValue(grid, "RankBytesSent") &&
+    static_cast<double>(s->Traffic.CollectiveBytes) == fieldValue(grid, "RankCollectiveBytes");
   for (size_t r = 0; same && r < s->Runs.size(); ++r)
   {
     const auto k = static_cast<vtkIdType>(r);

@@ -25,9 +25,8 @@ public:
   {
   }
 
-  /// Bytes this rank sent point to point, and its collective calls, so far.
+  /// Bytes this rank sent point to point so far (traffic() has every count).
   std::int64_t bytesSent() const { return this->Counted.PointToPointBytes; }
-  std::int64_t collectives() const { return this->Counted.Collectives; }
   CommTraffic traffic() const override { return this->Counted; }
   using Communicator::allGatherV;
   using Communicator::allReduce;
@@ -102,5 +101,22 @@ private:
   const Communicator* Inner;
   mutable CommTraffic Counted;
 };
+
+/// Every count of each of `phases` (this rank's traffic per phase) at its largest over the
+/// ranks: the busiest rank's traffic per phase, in one reduction (collective).
+inline std::vector<CommTraffic> busiestRanks(std::vector<CommTraffic> phases, const Communicator& comm)
+{
+  std::vector<std::int64_t> counts;
+  for (const CommTraffic& t : phases)
+  {
+    counts.insert(counts.end(), { t.PointToPointBytes, t.CollectiveBytes, t.Collectives });
+  }
+  comm.allReduce(counts.data(), counts.size(), ReduceOp::Max);
+  for (size_t k = 0; k < phases.size(); ++k)
+  {
+    phases[k] = { counts[3 * k], counts[3 * k + 1], counts[3 * k + 2] };
+  }
+  return phases;
+}
 
 } // namespace sltk

@@ -37,9 +37,7 @@ struct ReconstructionSummary : ReconstructionReport
   /// sent point to point (the ghost exchanges), its payload of the collectives times the
   /// ranks it reached, and collective calls (CountingCommunicator.h); each run's in Runs.
   int Ranks = 1;
-  std::int64_t BytesSent = 0;
-  std::int64_t CollectiveBytes = 0;
-  std::int64_t Collectives = 0;
+  CommTraffic Traffic;
   /// Where the last run's surface misses points (MissedPlaces.h), the largest places first,
   /// in the user's coordinates (the front end's local frame added back); z = 0 in 2D.
   std::vector<MissedPlace<3>> MissedPlaces;
