@@ -18,6 +18,7 @@
 /// same on any number of threads and ranks.
 
 #include "sltk/cloud/PointLocator.h"
+#include "sltk/cloud/PointOwners.h"
 #include "sltk/core/Status.h"
 #include "sltk/exec/Context.h"
 
@@ -32,7 +33,21 @@ constexpr Index NoiseSamples = 2000;
 template <int D>
 Status cloudNoise(const PointLocator<D>& locator, double cloudSpacing, const Context& ctx, double& noise);
 
+/// cloudNoise() of a cloud of `total` points spread over the ranks by slabs
+/// (PointOwners.h), bit for bit the value of the whole cloud on one rank: the
+/// owners of the sampled points fit their quadrics among the points they hold
+/// (with the nearest points of the ranks a fit's neighbours may lie on, when
+/// they may lie beyond the halo), and the residuals meet in the sample's order
+/// on every rank. Collective.
+template <int D>
+Status cloudNoiseOnRanks(const OwnedPoints<D>& points, std::int64_t total, double cloudSpacing,
+  const Communicator& comm, const Context& ctx, double& noise);
+
 extern template Status cloudNoise(const PointLocator<2>&, double, const Context&, double&);
 extern template Status cloudNoise(const PointLocator<3>&, double, const Context&, double&);
+extern template Status cloudNoiseOnRanks(
+  const OwnedPoints<2>&, std::int64_t, double, const Communicator&, const Context&, double&);
+extern template Status cloudNoiseOnRanks(
+  const OwnedPoints<3>&, std::int64_t, double, const Communicator&, const Context&, double&);
 
 } // namespace sltk

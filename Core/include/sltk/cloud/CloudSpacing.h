@@ -16,6 +16,8 @@
 /// scans the density spacing shrinks only by sqrt(m).
 
 #include "sltk/cloud/PointLocator.h"
+#include "sltk/cloud/PointOwners.h"
+#include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 
 #include <cmath>
@@ -51,9 +53,25 @@ template <int D>
 Status cloudSpacing(
   const PointLocator<D>& locator, const Context& ctx, double& spacing, const CloudSpacingOptions& options = {});
 
+/// cloudSpacing() of a cloud of `total` points spread over the ranks by
+/// slabs (PointOwners.h), bit for bit the value of the whole cloud on one rank:
+/// every rank draws the same sample of global indices, the owners of the
+/// sampled points find their neighbours among the points they hold, and the
+/// distances are added in the sample's order. A neighbour farther than the
+/// halo may have a closer rival on another rank: then the ranks within its
+/// distance send their nearest points (`remote`, optional: the samples so
+/// answered). Collective; fails on every rank alike.
+template <int D>
+Status cloudSpacingOnRanks(const OwnedPoints<D>& points, std::int64_t total, const Communicator& comm,
+  const Context& ctx, double& spacing, const CloudSpacingOptions& options = {}, std::int64_t* remote = nullptr);
+
 extern template Status cloudSpacing(const PointCloud<2>&, const Context&, double&, const CloudSpacingOptions&);
 extern template Status cloudSpacing(const PointCloud<3>&, const Context&, double&, const CloudSpacingOptions&);
 extern template Status cloudSpacing(const PointLocator<2>&, const Context&, double&, const CloudSpacingOptions&);
 extern template Status cloudSpacing(const PointLocator<3>&, const Context&, double&, const CloudSpacingOptions&);
+extern template Status cloudSpacingOnRanks(const OwnedPoints<2>&, std::int64_t, const Communicator&, const Context&,
+  double&, const CloudSpacingOptions&, std::int64_t*);
+extern template Status cloudSpacingOnRanks(const OwnedPoints<3>&, std::int64_t, const Communicator&, const Context&,
+  double&, const CloudSpacingOptions&, std::int64_t*);
 
 } // namespace sltk

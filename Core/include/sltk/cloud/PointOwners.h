@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file PointOwners.h
+/// A cloud spread over the ranks by slabs along one axis, each point on the
+/// rank that owns its slab, with a halo of the neighbouring slabs' points
+/// (Documentation/Distributed.md, "Points to their owners"): the shares a
+/// parallel read leaves on the ranks (in file order, CloudFileShares.h) move
+/// by one personalised all-to-all, each point with its global index (its
+/// place in the file), so that every rank can answer neighbour queries about
+/// its own points without the whole cloud.
+///
+/// The halo makes such queries exact: a point this rank does not hold lies
+/// farther than Halo along the axis from every point it owns, so a neighbour
+/// found within Halo of an owned point has no closer rival elsewhere.
+
+#include "sltk/cloud/PointCloud.h"
+#include "sltk/core/Status.h"
+#include "sltk/exec/Communicator.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace sltk
+{
+
+/// The slabs of the ranks: rank r owns the points with Lower[r] <= x_Axis <
+/// Lower[r + 1] (Lower[0] = -inf, Lower[size] = +inf).
+struct SlabCuts
+{
+  int Axis = 0;
+  std::vector<double> Lower;
+
+  int ranks() const { return static_cast<int>(this->Lower.size()) - 1; }
+  /// The rank whose slab holds coordinate x along Axis.
+  int ownerOf(double x) const;
+};
+
+/// The points one rank holds, its own and its halo, in increasing global
+/// index as the whole cloud holds them (so that a neighbour query breaks ties
+/// by index as on one rank): Ids[j] is the global index of Cloud.Points[j],
+/// Mine[j] whether this rank owns it.
+template <int D>
+struct OwnedPoints
+{
+  PointCloud<D> Cloud;
+  std::vector<std::int64_t> Ids;
+  std::vector<std::uint8_t> Mine;
+  std::int64_t Owned = 0; ///< the points this rank owns (Mine's count)
+  double Halo = 0.0; ///< the held points are those within Halo of the slab along the axis (+inf: all, as on one rank)
+  SlabCuts Cuts;
+
+  std::int64_t held() const { return this->Cloud.size(); }
+  /// The position in Cloud of the point with global index `id` when this rank owns it, else -1.
+  std::int64_t ownedLocal(std::int64_t id) const;
+};
+
+/// Cuts along the longest axis of the cloud's bounding box that give the
+/// ranks about equal numbers of points (within about 1% on clouds much larger
+/// than 128 points per rank): every rank's `local` points (any share of the
+/// cloud) contribute 128 regularly spaced order statistics, weighted by the
+/// points they stand for, and the cuts fall where the weights add up to
+/// multiples of 1/size. Collective; the same cuts on every rank.
+template <int D>
+SlabCuts balancedCuts(const PointCloud<D>& local, const Communicator& comm);
+
+/// Moves every rank's `local` points (global indices firstId, firstId + 1, ...)
+/// to their owners under `cuts`, with the points within `halo` (>= 0, +inf for
+/// every point on every rank) of each slab as its halo. Collective.
+template <int D>
+Status sendToOwners(const PointCloud<D>& local, std::int64_t firstId, const SlabCuts& cuts, double halo,
+  const Communicator& comm, OwnedPoints<D>& out);
+
+/// A question about the neighbours of a point this rank owns that the points
+/// it holds may not answer: the neighbours of X (the point of global index Id)
+/// within Radius.
+template <int D>
+struct NeighbourRequest
+{
+  std::array<double, D> X;
+  std::int64_t Id;
+  double Radius;
+  int Neighbours;
+};
+
+/// A neighbour of request Request's point: its global index and place.
+template <int D>
+struct NeighbourCandidate
+{
+  std::int64_t Request;
+  std::int64_t Id;
+  std::array<double, D> X;
+};
+
+/// For every request of this rank, the Neighbours nearest points to X closer
+/// than Radius among the points each rank owns (with the points tied with the
+/// farthest of them), except the point itself: the ranks whose slabs come
+/// within Radius of X answer, so `candidates` (ordered by request, then
+/// global index) hold the cloud's nearest neighbours of X whenever Radius
+/// reaches at least that far. Collective.
+template <int D>
+Status nearestOwnedOnRanks(const OwnedPoints<D>& points, const std::vector<NeighbourRequest<D>>& requests,
+  const Communicator& comm, std::vector<NeighbourCandidate<D>>& candidates);
+
+/// Keeps the points this rank owns whose flag in `keep` (one per held point)
+/// is set: the others leave the cloud, every kept point takes its index in the
+/// kept cloud (its index less the points dropped before it, which the ranks
+/// gather: few), and the halo is sent again. `dropped`: the points dropped on
+/// every rank. Collective.
+template <int D>
+Status keepOwned(
+  OwnedPoints<D>& points, const std::vector<std::uint8_t>& keep, const Communicator& comm, std::int64_t& dropped);
+
+/// The global index of this rank's first point when every rank holds `count`
+/// consecutive points in rank order (an exclusive prefix sum). Collective.
+std::int64_t firstGlobalIndex(std::int64_t count, const Communicator& comm);
+
+extern template SlabCuts balancedCuts(const PointCloud<2>&, const Communicator&);
+extern template SlabCuts balancedCuts(const PointCloud<3>&, const Communicator&);
+extern template Status sendToOwners(
+  const PointCloud<2>&, std::int64_t, const SlabCuts&, double, const Communicator&, OwnedPoints<2>&);
+extern template Status sendToOwners(
+  const PointCloud<3>&, std::int64_t, const SlabCuts&, double, const Communicator&, OwnedPoints<3>&);
+extern template Status nearestOwnedOnRanks(const OwnedPoints<2>&, const std::vector<NeighbourRequest<2>>&,
+  const Communicator&, std::vector<NeighbourCandidate<2>>&);
+extern template Status nearestOwnedOnRanks(const OwnedPoints<3>&, const std::vector<NeighbourRequest<3>>&,
+  const Communicator&, std::vector<NeighbourCandidate<3>>&);
+extern template Status keepOwned(OwnedPoints<2>&, const std::vector<std::uint8_t>&, const Communicator&, std::int64_t&);
+extern template Status keepOwned(OwnedPoints<3>&, const std::vector<std::uint8_t>&, const Communicator&, std::int64_t&);
+extern template struct OwnedPoints<2>;
+extern template struct OwnedPoints<3>;
+
+} // namespace sltk

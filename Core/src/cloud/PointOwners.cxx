@@ -1,0 +1,418 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/cloud/PointOwners.h"
+
+#include "sltk/cloud/PointLocator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <numeric>
+
+namespace sltk
+{
+
+int SlabCuts::ownerOf(double x) const
+{
+  // The last slab whose lower cut is at most x (Lower[0] = -inf holds every x).
+  const auto above = std::upper_bound(this->Lower.begin() + 1, this->Lower.end() - 1, x);
+  return static_cast<int>(above - this->Lower.begin()) - 1;
+}
+
+std::int64_t firstGlobalIndex(std::int64_t count, const Communicator& comm)
+{
+  std::vector<std::int64_t> counts(static_cast<size_t>(comm.size()));
+  comm.allGather(&count, sizeof(count), counts.data());
+  return std::accumulate(counts.begin(), counts.begin() + comm.rank(), std::int64_t(0));
+}
+
+namespace
+{
+constexpr int SamplesPerRank = 128;
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+
+/// An order statistic of one rank's coordinates and the points it stands for.
+struct WeightedSample
+{
+  double Value;
+  double Weight;
+};
+
+/// The longest axis of the bounding box of every rank's points (the first of equal ones).
+template <int D>
+int longestAxis(const std::vector<std::array<double, D>>& local, const Communicator& comm)
+{
+  double low[D], high[D];
+  std::fill(low, low + D, Infinity);
+  std::fill(high, high + D, -Infinity);
+  for (const auto& p : local)
+  {
+    for (int a = 0; a < D; ++a)
+    {
+      low[a] = std::min(low[a], p[a]);
+      high[a] = std::max(high[a], p[a]);
+    }
+  }
+  comm.allReduce(low, D, ReduceOp::Min);
+  comm.allReduce(high, D, ReduceOp::Max);
+  int axis = 0;
+  for (int a = 1; a < D; ++a)
+  {
+    axis = high[a] - low[a] > high[axis] - low[axis] ? a : axis;
+  }
+  return axis;
+}
+
+/// Where each rank's part starts in a buffer grouped by rank (`counts` elements each), and its end.
+std::vector<size_t> startsOf(const std::vector<std::int64_t>& counts)
+{
+  std::vector<size_t> first(counts.size() + 1, 0);
+  for (size_t r = 0; r < counts.size(); ++r)
+  {
+    first[r + 1] = first[r] + static_cast<size_t>(counts[r]);
+  }
+  return first;
+}
+
+/// The element counts of a received all-to-all as the offsets of each rank's part.
+std::vector<size_t> partsOf(std::vector<std::int64_t> bytes, size_t recordSize)
+{
+  for (auto& b : bytes)
+  {
+    b /= static_cast<std::int64_t>(recordSize);
+  }
+  return startsOf(bytes);
+}
+
+/// One personalised all-to-all of records, `send` grouped by destination rank (`counts` records each).
+template <class Record>
+std::vector<Record> exchangeRecords(const std::vector<Record>& send, std::vector<std::int64_t> counts,
+  const Communicator& comm, std::vector<size_t>& parts)
+{
+  for (auto& c : counts)
+  {
+    c *= static_cast<std::int64_t>(sizeof(Record));
+  }
+  std::vector<unsigned char> bytes;
+  std::vector<std::int64_t> received;
+  comm.allToAllV(send.data(), counts, bytes, received);
+  std::vector<Record> records(bytes.size() / sizeof(Record));
+  if (!records.empty())
+  {
+    std::memcpy(static_cast<void*>(records.data()), bytes.data(), records.size() * sizeof(Record));
+  }
+  parts = partsOf(received, sizeof(Record));
+  return records;
+}
+
+/// A point and its global index, as the exchange sends it.
+template <int D>
+struct PointRecord
+{
+  std::int64_t Id;
+  std::array<double, D> X;
+};
+
+/// The ranks that hold coordinate x (its owner and the slabs within `halo`), in increasing order.
+template <class Visit>
+void holdersOf(double x, const SlabCuts& cuts, double halo, Visit visit)
+{
+  const int ranks = cuts.ranks();
+  if (std::isinf(halo))
+  {
+    for (int r = 0; r < ranks; ++r)
+    {
+      visit(r);
+    }
+    return;
+  }
+  const int owner = cuts.ownerOf(x);
+  int first = owner;
+  while (first > 0 && x < cuts.Lower[static_cast<size_t>(first)] + halo) // within halo of slab first - 1
+  {
+    --first;
+  }
+  for (int r = first; r < owner; ++r)
+  {
+    visit(r);
+  }
+  visit(owner);
+  for (int r = owner + 1; r < ranks && x >= cuts.Lower[static_cast<size_t>(r)] - halo; ++r)
+  {
+    visit(r);
+  }
+}
+
+/// The exchange of sendToOwners and keepOwned: points with their global indices.
+template <int D>
+Status exchange(const std::vector<std::array<double, D>>& points, const std::vector<std::int64_t>& ids,
+  const SlabCuts& cuts, double halo, const Communicator& comm, OwnedPoints<D>& out)
+{
+  if (cuts.ranks() != comm.size() || cuts.Axis < 0 || cuts.Axis >= D)
+  {
+    return Status::invalidArgument("the slab cuts are for " + std::to_string(cuts.ranks()) + " ranks, not the " +
+      std::to_string(comm.size()) + " running");
+  }
+  if (!(halo >= 0.0))
+  {
+    return Status::invalidArgument("the halo of the points' slabs must be >= 0");
+  }
+  const size_t ranks = static_cast<size_t>(comm.size());
+  const int axis = cuts.Axis;
+  std::vector<std::int64_t> counts(ranks, 0);
+  for (const auto& p : points)
+  {
+    holdersOf(p[axis], cuts, halo, [&](int r) { ++counts[static_cast<size_t>(r)]; });
+  }
+  std::vector<size_t> next = startsOf(counts);
+  std::vector<PointRecord<D>> send(next[ranks]);
+  for (size_t j = 0; j < points.size(); ++j)
+  {
+    holdersOf(points[j][axis], cuts, halo,
+      [&](int r) {
+        send[next[static_cast<size_t>(r)]++] = { ids[j], points[j] };
+      });
+  }
+  std::vector<size_t> parts;
+  std::vector<PointRecord<D>> records = exchangeRecords(send, counts, comm, parts);
+  // In increasing global index, whatever the shares were.
+  std::sort(
+    records.begin(), records.end(), [](const PointRecord<D>& a, const PointRecord<D>& b) { return a.Id < b.Id; });
+  const int me = comm.rank();
+  out.Cloud.Points.resize(records.size());
+  out.Ids.resize(records.size());
+  out.Mine.resize(records.size());
+  out.Owned = 0;
+  for (size_t j = 0; j < records.size(); ++j)
+  {
+    out.Cloud.Points[j] = records[j].X;
+    out.Ids[j] = records[j].Id;
+    out.Mine[j] = cuts.ownerOf(records[j].X[axis]) == me ? 1 : 0;
+    out.Owned += out.Mine[j];
+  }
+  out.Halo = cuts.ranks() == 1 ? Infinity : halo; // one rank holds every point
+  out.Cuts = cuts;
+  return Status::ok();
+}
+} // namespace
+
+template <int D>
+SlabCuts balancedCuts(const PointCloud<D>& cloud, const Communicator& comm)
+{
+  const std::vector<std::array<double, D>>& local = cloud.Points;
+  SlabCuts cuts;
+  cuts.Axis = longestAxis<D>(local, comm);
+  const int ranks = comm.size();
+  cuts.Lower.assign(static_cast<size_t>(ranks) + 1, Infinity);
+  cuts.Lower[0] = -Infinity;
+  if (ranks == 1)
+  {
+    return cuts;
+  }
+  std::vector<double> x(local.size());
+  for (size_t j = 0; j < local.size(); ++j)
+  {
+    x[j] = local[j][cuts.Axis];
+  }
+  std::sort(x.begin(), x.end());
+  const size_t samples = std::min<size_t>(SamplesPerRank, x.size());
+  std::vector<WeightedSample> mine(samples);
+  for (size_t s = 0; s < samples; ++s)
+  {
+    // The middle of the s-th of `samples` equal runs of the sorted coordinates.
+    const size_t at = static_cast<size_t>((static_cast<double>(s) + 0.5) * static_cast<double>(x.size()) / samples);
+    mine[s] = { x[std::min(at, x.size() - 1)], static_cast<double>(x.size()) / static_cast<double>(samples) };
+  }
+  std::vector<WeightedSample> all = comm.allGatherV(mine);
+  std::sort(all.begin(), all.end(), [](const WeightedSample& a, const WeightedSample& b) { return a.Value < b.Value; });
+  double total = 0.0;
+  for (const WeightedSample& s : all)
+  {
+    total += s.Weight;
+  }
+  double before = 0.0; // the weight of the samples below the current one
+  size_t k = 0;
+  for (int r = 1; r < ranks; ++r)
+  {
+    const double target = total * r / ranks;
+    while (k < all.size() && before + all[k].Weight < target)
+    {
+      before += all[k++].Weight;
+    }
+    cuts.Lower[static_cast<size_t>(r)] = k < all.size() ? all[k].Value : Infinity;
+  }
+  return cuts;
+}
+
+template <int D>
+Status sendToOwners(const PointCloud<D>& local, std::int64_t firstId, const SlabCuts& cuts, double halo,
+  const Communicator& comm, OwnedPoints<D>& out)
+{
+  std::vector<std::int64_t> ids(local.Points.size());
+  std::iota(ids.begin(), ids.end(), firstId);
+  return exchange<D>(local.Points, ids, cuts, halo, comm, out);
+}
+
+namespace
+{
+/// A request as it travels: its index on the asking rank.
+template <int D>
+struct RequestRecord
+{
+  std::array<double, D> X;
+  double Radius;
+  std::int64_t Id;
+  std::int64_t Request;
+  std::int64_t Neighbours;
+};
+
+/// The owned points nearest to a request's point (its Neighbours, with ties), from the held points' locator.
+template <int D>
+void answerRequest(const OwnedPoints<D>& points, const PointLocator<D>& locator, const RequestRecord<D>& q,
+  std::vector<std::int64_t>& found, std::vector<std::pair<double, std::int64_t>>& near)
+{
+  locator.within(q.X, std::nextafter(q.Radius, Infinity), -1, found);
+  near.clear();
+  for (const std::int64_t j : found)
+  {
+    if (points.Mine[static_cast<size_t>(j)] && points.Ids[static_cast<size_t>(j)] != q.Id)
+    {
+      double d2 = 0.0;
+      for (int a = 0; a < D; ++a)
+      {
+        const double t = points.Cloud.Points[static_cast<size_t>(j)][a] - q.X[a];
+        d2 += t * t;
+      }
+      near.push_back({ d2, j });
+    }
+  }
+  std::sort(near.begin(), near.end());
+  // The k nearest and every point as near as the k-th (a margin for another rounding of the distance).
+  size_t keep = std::min(near.size(), static_cast<size_t>(q.Neighbours));
+  const double last = keep > 0 ? near[keep - 1].first * (1.0 + 1e-12) : 0.0;
+  while (keep < near.size() && near[keep].first <= last)
+  {
+    ++keep;
+  }
+  near.resize(keep);
+}
+} // namespace
+
+template <int D>
+Status nearestOwnedOnRanks(const OwnedPoints<D>& points, const std::vector<NeighbourRequest<D>>& requests,
+  const Communicator& comm, std::vector<NeighbourCandidate<D>>& candidates)
+{
+  const size_t ranks = static_cast<size_t>(comm.size());
+  const int axis = points.Cuts.Axis;
+  // To the ranks whose slabs come within Radius of X along the axis.
+  const auto reached = [&](const NeighbourRequest<D>& q, int& first, int& last)
+  {
+    first = points.Cuts.ownerOf(q.X[axis] - q.Radius);
+    last = points.Cuts.ownerOf(q.X[axis] + q.Radius);
+  };
+  std::vector<std::int64_t> counts(ranks, 0);
+  for (const auto& q : requests)
+  {
+    int first = 0, last = 0;
+    reached(q, first, last);
+    for (int r = first; r <= last; ++r)
+    {
+      ++counts[static_cast<size_t>(r)];
+    }
+  }
+  std::vector<size_t> next = startsOf(counts);
+  std::vector<RequestRecord<D>> send(next[ranks]);
+  for (size_t i = 0; i < requests.size(); ++i)
+  {
+    const auto& q = requests[i];
+    int first = 0, last = 0;
+    reached(q, first, last);
+    for (int r = first; r <= last; ++r)
+    {
+      send[next[static_cast<size_t>(r)]++] = { q.X, q.Radius, q.Id, static_cast<std::int64_t>(i), q.Neighbours };
+    }
+  }
+  std::vector<size_t> parts;
+  const std::vector<RequestRecord<D>> asked = exchangeRecords(send, counts, comm, parts);
+  // Each request's nearest owned points, back to the rank that asked.
+  std::vector<NeighbourCandidate<D>> answers;
+  std::fill(counts.begin(), counts.end(), 0);
+  if (!asked.empty() && points.held() > 0)
+  {
+    const PointLocator<D> locator(points.Cloud);
+    std::vector<std::int64_t> found;
+    std::vector<std::pair<double, std::int64_t>> near;
+    for (size_t r = 0; r < ranks; ++r)
+    {
+      for (size_t m = parts[r]; m < parts[r + 1]; ++m)
+      {
+        answerRequest(points, locator, asked[m], found, near);
+        for (const auto& n : near)
+        {
+          answers.push_back({ asked[m].Request, points.Ids[static_cast<size_t>(n.second)],
+            points.Cloud.Points[static_cast<size_t>(n.second)] });
+        }
+        counts[r] += static_cast<std::int64_t>(near.size());
+      }
+    }
+  }
+  candidates = exchangeRecords(answers, counts, comm, parts);
+  std::sort(candidates.begin(), candidates.end(),
+    [](const NeighbourCandidate<D>& a, const NeighbourCandidate<D>& b)
+    { return a.Request != b.Request ? a.Request < b.Request : a.Id < b.Id; });
+  return Status::ok();
+}
+
+template <int D>
+Status keepOwned(
+  OwnedPoints<D>& points, const std::vector<std::uint8_t>& keep, const Communicator& comm, std::int64_t& dropped)
+{
+  std::vector<std::int64_t> gone;
+  for (size_t j = 0; j < points.Ids.size(); ++j)
+  {
+    if (points.Mine[j] && !keep[j])
+    {
+      gone.push_back(points.Ids[j]);
+    }
+  }
+  std::vector<std::int64_t> all = comm.allGatherV(gone);
+  std::sort(all.begin(), all.end());
+  dropped = static_cast<std::int64_t>(all.size());
+  std::vector<std::array<double, D>> mine;
+  std::vector<std::int64_t> ids;
+  for (size_t j = 0; j < points.Ids.size(); ++j)
+  {
+    if (points.Mine[j] && keep[j])
+    {
+      mine.push_back(points.Cloud.Points[j]);
+      ids.push_back(points.Ids[j] - (std::lower_bound(all.begin(), all.end(), points.Ids[j]) - all.begin()));
+    }
+  }
+  const SlabCuts cuts = points.Cuts;
+  return exchange<D>(mine, ids, cuts, points.Halo, comm, points);
+}
+
+template <int D>
+std::int64_t OwnedPoints<D>::ownedLocal(std::int64_t id) const
+{
+  const auto it = std::lower_bound(this->Ids.begin(), this->Ids.end(), id);
+  const std::int64_t j = it - this->Ids.begin();
+  return it != this->Ids.end() && *it == id && this->Mine[static_cast<size_t>(j)] ? j : -1;
+}
+
+template Status keepOwned(OwnedPoints<2>&, const std::vector<std::uint8_t>&, const Communicator&, std::int64_t&);
+template Status keepOwned(OwnedPoints<3>&, const std::vector<std::uint8_t>&, const Communicator&, std::int64_t&);
+template struct OwnedPoints<2>;
+template struct OwnedPoints<3>;
+template SlabCuts balancedCuts(const PointCloud<2>&, const Communicator&);
+template SlabCuts balancedCuts(const PointCloud<3>&, const Communicator&);
+template Status sendToOwners(
+  const PointCloud<2>&, std::int64_t, const SlabCuts&, double, const Communicator&, OwnedPoints<2>&);
+template Status sendToOwners(
+  const PointCloud<3>&, std::int64_t, const SlabCuts&, double, const Communicator&, OwnedPoints<3>&);
+template Status nearestOwnedOnRanks(const OwnedPoints<2>&, const std::vector<NeighbourRequest<2>>&, const Communicator&,
+  std::vector<NeighbourCandidate<2>>&);
+template Status nearestOwnedOnRanks(const OwnedPoints<3>&, const std::vector<NeighbourRequest<3>>&, const Communicator&,
+  std::vector<NeighbourCandidate<3>>&);
+
+} // namespace sltk

@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+/// \file SampleOnOwners.h
+/// A statistic of a sample of the cloud's points computed where the points
+/// live (PointOwners.h): the owner of each sampled point answers a neighbour
+/// query about it among the points it holds, and every rank receives the
+/// answers in the sample's order, as one rank holding the whole cloud computes
+/// them. The clouds' statistics without the whole cloud on every rank
+/// (Documentation/Distributed.md, "Points to their owners").
+
+#include "sltk/cloud/PointLocator.h"
+#include "sltk/cloud/PointOwners.h"
+#include "sltk/exec/Context.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace sltk
+{
+
+/// A query's answer about one point, and the farthest neighbour it read: the
+/// answer is exact when that neighbour lies within the point's slab and its
+/// halo along the axis (then no point held elsewhere could have been nearer);
+/// else the ranks it may reach answer it again.
+struct OwnedAnswer
+{
+  double Value = 0.0;
+  double Reach = 0.0; ///< +inf: too few points held to answer
+};
+
+/// The diameter of the box around every rank's points: a radius that reaches every point.
+template <int D>
+double cloudDiameter(const OwnedPoints<D>& points, const Communicator& comm)
+{
+  std::array<double, D> low, high;
+  low.fill(std::numeric_limits<double>::infinity());
+  high.fill(-std::numeric_limits<double>::infinity());
+  for (const auto& p : points.Cloud.Points)
+  {
+    for (int a = 0; a < D; ++a)
+    {
+      low[a] = std::min(low[a], p[a]);
+      high[a] = std::max(high[a], p[a]);
+    }
+  }
+  comm.allReduce(low.data(), D, ReduceOp::Min);
+  comm.allReduce(high.data(), D, ReduceOp::Max);
+  double d2 = 0.0;
+  for (int a = 0; a < D; ++a)
+  {
+    d2 += (high[a] - low[a]) * (high[a] - low[a]);
+  }
+  return std::sqrt(d2) * 1.001 + std::numeric_limits<double>::min();
+}
+
+/// The query about request i's point, asked again among its nearest points
+/// on every rank (`candidates`, from nearestOwnedOnRanks): the point and
+/// them in increasing global index, as the whole cloud orders them.
+template <int D, class Query>
+OwnedAnswer answerAmongCandidates(const NeighbourRequest<D>& request, const NeighbourCandidate<D>* first,
+  const NeighbourCandidate<D>* last, Query& query)
+{
+  PointCloud<D> near;
+  std::int64_t self = 0;
+  for (const NeighbourCandidate<D>* c = first; c != last; ++c)
+  {
+    self += c->Id < request.Id ? 1 : 0;
+  }
+  near.Points.reserve(static_cast<size_t>(last - first) + 1);
+  for (const NeighbourCandidate<D>* c = first; c != last; ++c)
+  {
+    if (static_cast<std::int64_t>(near.Points.size()) == self)
+    {
+      near.Points.push_back(request.X);
+    }
+    near.Points.push_back(c->X);
+  }
+  if (static_cast<std::int64_t>(near.Points.size()) == self)
+  {
+    near.Points.push_back(request.X);
+  }
+  const PointLocator<D> locator(near);
+  std::vector<typename PointLocator<D>::Hit> hits;
+  return query(locator, self, hits);
+}
+
+/// The answers of `query(locator, local, hits)` (an OwnedAnswer about held
+/// point `local`, reading its `neighbours` nearest) about this rank's own
+/// points of global indices `ids`, in their order, exactly as one rank holding
+/// the whole cloud answers: a query that read beyond the halo is asked again
+/// among the nearest points of every rank whose slab it reaches
+/// (nearestOwnedOnRanks); `remote` counts those over every rank. Collective.
+template <int D, class Query>
+Status answerOnOwners(const OwnedPoints<D>& points, const std::vector<std::int64_t>& ids, int neighbours,
+  const Communicator& comm, const Context& ctx, Query query, std::vector<double>& values, std::int64_t& remote)
+{
+  values.assign(ids.size(), 0.0);
+  std::vector<double> reach(ids.size(), 0.0);
+  if (!ids.empty())
+  {
+    const PointLocator<D> locator(points.Cloud);
+    ctx.parallelFor(0, static_cast<Index>(ids.size()),
+      [&](Index b, Index e)
+      {
+        std::vector<typename PointLocator<D>::Hit> hits;
+        for (Index s = b; s < e; ++s)
+        {
+          const OwnedAnswer a = query(locator, points.ownedLocal(ids[static_cast<size_t>(s)]), hits);
+          values[static_cast<size_t>(s)] = a.Value;
+          reach[static_cast<size_t>(s)] = a.Reach;
+        }
+      });
+  }
+  // Exact when the query read no farther than the point's slab and its halo
+  // reach along the axis (a margin for the rounding of the slabs' bounds).
+  std::vector<NeighbourRequest<D>> requests;
+  std::vector<size_t> asking;
+  const int axis = points.Cuts.Axis;
+  const int me = comm.rank();
+  for (size_t s = 0; s < ids.size(); ++s)
+  {
+    const double x = points.Cloud.Points[static_cast<size_t>(points.ownedLocal(ids[s]))][axis];
+    const double inside = std::min(x - points.Cuts.Lower[static_cast<size_t>(me)],
+      points.Cuts.Lower[static_cast<size_t>(me) + 1] - x); // +inf on one rank
+    if (!(reach[s] * (1.0 + 1e-9) <= points.Halo + inside))
+    {
+      requests.push_back(
+        { points.Cloud.Points[static_cast<size_t>(points.ownedLocal(ids[s]))], ids[s], reach[s], neighbours });
+      asking.push_back(s);
+    }
+  }
+  remote = comm.allReduce(static_cast<std::int64_t>(requests.size()), ReduceOp::Sum);
+  if (remote == 0)
+  {
+    return Status::ok();
+  }
+  const double diameter = cloudDiameter(points, comm);
+  for (auto& q : requests)
+  {
+    q.Radius = std::min(q.Radius, diameter); // +inf: this rank held too few points
+  }
+  std::vector<NeighbourCandidate<D>> candidates;
+  SLTK_RETURN_IF_ERROR(nearestOwnedOnRanks(points, requests, comm, candidates));
+  size_t c = 0;
+  for (size_t i = 0; i < requests.size(); ++i)
+  {
+    const size_t first = c;
+    while (c < candidates.size() && candidates[c].Request == static_cast<std::int64_t>(i))
+    {
+      ++c;
+    }
+    values[asking[i]] =
+      answerAmongCandidates(requests[i], candidates.data() + first, candidates.data() + c, query).Value;
+  }
+  return Status::ok();
+}
+
+/// The answers (answerOnOwners) about the points of global indices `sample`,
+/// in the sample's order, on every rank: each owner answers about its own. Collective.
+template <int D, class Query>
+Status sampleOnOwners(const OwnedPoints<D>& points, const std::vector<std::int64_t>& sample, int neighbours,
+  const Communicator& comm, const Context& ctx, Query query, std::vector<double>& values, std::int64_t& remote)
+{
+  struct Answered
+  {
+    std::int64_t Position;
+    double Value;
+  };
+  std::vector<std::int64_t> position, ids; // this rank's sampled points
+  for (size_t i = 0; i < sample.size(); ++i)
+  {
+    if (points.ownedLocal(sample[i]) >= 0)
+    {
+      position.push_back(static_cast<std::int64_t>(i));
+      ids.push_back(sample[i]);
+    }
+  }
+  std::vector<double> answers;
+  SLTK_RETURN_IF_ERROR(answerOnOwners(points, ids, neighbours, comm, ctx, query, answers, remote));
+  std::vector<Answered> mine(ids.size());
+  for (size_t s = 0; s < ids.size(); ++s)
+  {
+    mine[s] = { position[s], answers[s] };
+  }
+  values.assign(sample.size(), 0.0);
+  for (const Answered& a : comm.allGatherV(mine))
+  {
+    values[static_cast<size_t>(a.Position)] = a.Value;
+  }
+  return Status::ok();
+}
+
+} // namespace sltk

@@ -1,0 +1,352 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Points sent to the ranks that own their slabs, with halos (PointOwners.h), and
+// h_P computed from them (CloudSpacing.h cloudSpacingOnRanks): on any number of
+// ranks, and whatever share of the cloud each rank read, the one-rank value bit for bit.
+#include "MpiWorld.h"
+
+#include "sltk/cloud/CloudCleaning.h"
+#include "sltk/cloud/CloudFileShares.h"
+#include "sltk/cloud/CloudNoise.h"
+#include "sltk/cloud/CloudOutliers.h"
+#include "sltk/cloud/CloudSpacing.h"
+#include "sltk/cloud/PointOwners.h"
+#include "sltk/cloud/SyntheticClouds.h"
+#include "sltk/core/ExactSum.h"
+#include "sltk/exec/OrderStatistics.h"
+#include "sltk/exec/ThreadPool.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <set>
+
+namespace
+{
+using Points = std::vector<std::array<double, 3>>;
+
+/// Rank `rank`'s share of `cloud` as a parallel read leaves it (CloudFileShares.h's
+/// cut); `allOnRankZero`: rank 0 read the whole file, the others nothing.
+Points shareOf(const Points& cloud, const sltk::Communicator& comm, bool allOnRankZero = false)
+{
+  const std::int64_t n = static_cast<std::int64_t>(cloud.size());
+  sltk::FileShare s = sltk::shareOf(0, n, comm.rank(), comm.size());
+  if (allOnRankZero)
+  {
+    s = comm.rank() == 0 ? sltk::FileShare{ 0, n } : sltk::FileShare{ n, n };
+  }
+  return Points(cloud.begin() + s.Begin, cloud.begin() + s.End);
+}
+
+/// The 10 registered Stanford bunny scans, merged (362,272 points); none when /work/shared is absent.
+Points stanfordScans()
+{
+  Points cloud;
+  std::ifstream in("/work/shared/data/clouds/bunny/scans/bunny_scans_registered.xyz");
+  double x, y, z;
+  while (in >> x >> y >> z)
+  {
+    cloud.push_back({ x, y, z });
+  }
+  return cloud;
+}
+
+/// `n` points uniform in a box [0, 4] x [0, 1] x [0, 1], the same on every rank.
+Points boxCloud(int n, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Points p(static_cast<size_t>(n));
+  for (auto& x : p)
+  {
+    x = { 4.0 * u(rng), u(rng), u(rng) };
+  }
+  return p;
+}
+
+sltk::OwnedPoints<3> owners(const Points& cloud, const sltk::Communicator& comm, double halo, bool allOnRankZero)
+{
+  const sltk::PointCloud<3> mine{ shareOf(cloud, comm, allOnRankZero) };
+  const sltk::SlabCuts cuts = sltk::balancedCuts(mine, comm);
+  sltk::OwnedPoints<3> owned;
+  const sltk::Status s = sltk::sendToOwners(mine, sltk::firstGlobalIndex(mine.size(), comm), cuts, halo, comm, owned);
+  EXPECT_TRUE(s.isOk()) << s.message();
+  return owned;
+}
+
+/// h_P on the ranks (starting from `halo`) against one rank's, bit for bit.
+void expectOneRankSpacing(const Points& cloud, int k, double halo, bool allOnRankZero = false)
+{
+  auto comm = world();
+  sltk::ThreadPool pool(2);
+  sltk::Context ctx;
+  ctx.Executor = &pool;
+  sltk::CloudSpacingOptions options;
+  options.DensityNeighbours = k;
+  double one = 0.0;
+  ASSERT_TRUE(sltk::cloudSpacing(sltk::PointCloud<3>{ cloud }, ctx, one, options).isOk());
+  sltk::OwnedPoints<3> owned = owners(cloud, *comm, halo, allOnRankZero);
+  double ranks = 0.0;
+  std::int64_t remote = 0;
+  const sltk::Status s =
+    sltk::cloudSpacingOnRanks(owned, static_cast<std::int64_t>(cloud.size()), *comm, ctx, ranks, options, &remote);
+  ASSERT_TRUE(s.isOk()) << s.message();
+  EXPECT_EQ(ranks, one) << "k = " << k << " on " << comm->size() << " ranks, halo " << halo;
+  EXPECT_TRUE(comm->size() > 1 || remote == 0); // one rank holds every neighbour
+}
+
+/// The cloud's noise on the ranks (from a halo of 0) against one rank's, bit for bit.
+void expectOneRankNoise(const Points& cloud, bool allOnRankZero = false)
+{
+  auto comm = world();
+  sltk::ThreadPool pool(2);
+  sltk::Context ctx;
+  ctx.Executor = &pool;
+  const sltk::PointCloud<3> whole{ cloud };
+  const sltk::PointLocator<3> locator(whole);
+  double spacing = 0.0, one = 0.0;
+  ASSERT_TRUE(sltk::cloudSpacing(locator, ctx, spacing).isOk());
+  ASSERT_TRUE(sltk::cloudNoise(locator, spacing, ctx, one).isOk());
+  sltk::OwnedPoints<3> owned = owners(cloud, *comm, 0.0, allOnRankZero);
+  double ranks = 0.0;
+  const sltk::Status s =
+    sltk::cloudNoiseOnRanks(owned, static_cast<std::int64_t>(cloud.size()), spacing, *comm, ctx, ranks);
+  ASSERT_TRUE(s.isOk()) << s.message();
+  EXPECT_EQ(ranks, one) << "on " << comm->size() << " ranks";
+}
+} // namespace
+
+TEST(PointOwners, EveryPointHasOneOwnerAndItsSlabsNeighboursAsHalo)
+{
+  auto comm = world();
+  const Points cloud = boxCloud(4000, 7);
+  const double width = 0.05;
+  for (bool allOnRankZero : { false, true })
+  {
+    const sltk::OwnedPoints<3> owned = owners(cloud, *comm, width, allOnRankZero);
+    const sltk::SlabCuts& cuts = owned.Cuts;
+    ASSERT_EQ(cuts.ranks(), comm->size());
+    EXPECT_EQ(cuts.Axis, 0); // the box's longest axis
+    // Every global index once over the ranks' own points.
+    std::vector<std::int64_t> mine, halo;
+    for (size_t j = 0; j < owned.Ids.size(); ++j)
+    {
+      (owned.Mine[j] ? mine : halo).push_back(owned.Ids[j]);
+      ASSERT_TRUE(j == 0 || owned.Ids[j - 1] < owned.Ids[j]); // increasing global index, as one rank holds them
+      ASSERT_EQ(owned.ownedLocal(owned.Ids[j]), owned.Mine[j] ? static_cast<std::int64_t>(j) : -1);
+    }
+    EXPECT_EQ(static_cast<std::int64_t>(mine.size()), owned.Owned);
+    std::vector<std::int64_t> all = comm->allGatherV(mine);
+    std::sort(all.begin(), all.end());
+    ASSERT_EQ(all.size(), cloud.size());
+    for (size_t j = 0; j < all.size(); ++j)
+    {
+      ASSERT_EQ(all[j], static_cast<std::int64_t>(j));
+    }
+    // About a rank's share each (the cuts from 128 order statistics per rank).
+    EXPECT_NEAR(static_cast<double>(owned.Owned), 4000.0 / comm->size(), 0.05 * 4000.0 / comm->size());
+    // The held points: exactly the cloud's points within the halo of this rank's slab.
+    const double lower = cuts.Lower[static_cast<size_t>(comm->rank())];
+    const double upper = cuts.Lower[static_cast<size_t>(comm->rank()) + 1];
+    std::vector<std::int64_t> own, halos;
+    for (size_t j = 0; j < cloud.size(); ++j)
+    {
+      const double x = cloud[j][0];
+      if (x >= lower && x < upper)
+      {
+        own.push_back(static_cast<std::int64_t>(j));
+      }
+      else if (x >= lower - width && x < upper + width)
+      {
+        halos.push_back(static_cast<std::int64_t>(j));
+      }
+    }
+    EXPECT_EQ(mine, own);
+    EXPECT_EQ(halo, halos);
+    for (size_t j = 0; j < owned.Ids.size(); ++j)
+    {
+      ASSERT_EQ(owned.Cloud.Points[j], cloud[static_cast<size_t>(owned.Ids[j])]);
+    }
+  }
+}
+
+TEST(PointOwners, AnInfiniteHaloHoldsTheWholeCloudAndBadCutsAreRefused)
+{
+  auto comm = world();
+  const Points cloud = boxCloud(300, 3);
+  const sltk::OwnedPoints<3> owned = owners(cloud, *comm, std::numeric_limits<double>::infinity(), true);
+  EXPECT_EQ(owned.held(), 300);
+  std::set<std::int64_t> ids(owned.Ids.begin(), owned.Ids.end());
+  EXPECT_EQ(ids.size(), 300u);
+  sltk::OwnedPoints<3> out;
+  sltk::SlabCuts wrong;
+  wrong.Lower = { -1.0, 1.0 }; // one rank's cuts
+  wrong.Lower.resize(static_cast<size_t>(comm->size()) + 2, 2.0);
+  EXPECT_FALSE(sltk::sendToOwners(sltk::PointCloud<3>{ cloud }, 0, wrong, 0.1, *comm, out).isOk());
+  EXPECT_FALSE(sltk::sendToOwners(sltk::PointCloud<3>{ cloud }, 0, owned.Cuts, -1.0, *comm, out).isOk());
+}
+
+TEST(CloudSpacingOnRanks, IsTheOneRankValueBitForBit)
+{
+  const Points box = boxCloud(5000, 11);
+  for (int k : { 0, 8 })
+  {
+    expectOneRankSpacing(box, k, 0.0);       // every neighbour across a cut found by the ranks beyond it
+    expectOneRankSpacing(box, k, 0.2, true); // a halo wide enough at once; one rank read everything
+  }
+  // A sphere's samples, and the same points twice (duplicates: distance 0, skipped).
+  const sltk::PointCloud<3> sphere = sltk::sphereCloud(3000);
+  expectOneRankSpacing(sphere.Points, 0, 0.0);
+  Points twice = sphere.Points;
+  twice.insert(twice.end(), sphere.Points.begin(), sphere.Points.begin() + 1000);
+  expectOneRankSpacing(twice, 0, 0.0);
+  expectOneRankSpacing(twice, 8, 0.0);
+  // Points on a line along the cut axis, spaced unevenly: every neighbour is across a slab's end
+  // for some point, and a rank may own only a few.
+  Points line;
+  for (int i = 0; i < 400; ++i)
+  {
+    line.push_back({ i * (1.0 + 0.01 * (i % 7)), 0.5 * (i % 3), 0.0 });
+  }
+  expectOneRankSpacing(line, 0, 0.0);
+  expectOneRankSpacing(line, 8, 0.0);
+}
+
+TEST(CloudNoiseOnRanks, IsTheOneRankValueBitForBit)
+{
+  expectOneRankNoise(boxCloud(5000, 13));
+  expectOneRankNoise(boxCloud(30000, 17), true); // more points than samples: every 15th
+  Points noisy = sltk::sphereCloud(4000).Points;
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> jitter(0.0, 0.01);
+  for (auto& p : noisy)
+  {
+    p = { p[0] + jitter(rng), p[1] + jitter(rng), p[2] + jitter(rng) };
+  }
+  expectOneRankNoise(noisy);
+  // Equidistant neighbours (a lattice): the fits take them in the order one rank does.
+  Points lattice;
+  for (int i = 0; i < 40; ++i)
+  {
+    for (int j = 0; j < 20; ++j)
+    {
+      lattice.push_back({ 0.5 * i, 0.5 * j, 0.01 * ((i * 7 + j * 3) % 5) });
+    }
+  }
+  expectOneRankNoise(lattice);
+  sltk::OwnedPoints<3> few = owners(lattice, *world(), 0.0, false);
+  double noise = 0.0;
+  EXPECT_FALSE(sltk::cloudNoiseOnRanks(few, 12, 1.0, *world(), sltk::Context{}, noise).isOk()); // 12 points: too few
+}
+
+TEST(CloudSpacingOnRanks, TheMergedStanfordScansGiveTheOneRankSpacingAndNoise)
+{
+  const Points cloud = stanfordScans();
+  if (cloud.empty())
+  {
+    GTEST_SKIP() << "the Stanford scans (/work/shared) are not available";
+  }
+  expectOneRankSpacing(cloud, 0, 0.0);
+  expectOneRankSpacing(cloud, 8, 0.0);
+  expectOneRankNoise(cloud);
+}
+
+namespace
+{
+/// The outlier test on the ranks against one rank's: the same report, and the
+/// same points kept, each under its index in the kept cloud.
+void expectOneRankOutliers(const Points& cloud, const sltk::OutlierOptions& options, std::int64_t removed)
+{
+  auto comm = world();
+  sltk::ThreadPool pool(2);
+  sltk::Context ctx;
+  ctx.Executor = &pool;
+  sltk::PointCloud<3> kept;
+  sltk::OutlierReport one, ranks;
+  ASSERT_TRUE(sltk::removeOutliers(sltk::PointCloud<3>{ cloud }, options, ctx, kept, one).isOk());
+  EXPECT_EQ(one.Removed, removed);
+  sltk::OwnedPoints<3> owned = owners(cloud, *comm, 0.0, false);
+  std::int64_t total = static_cast<std::int64_t>(cloud.size());
+  const sltk::Status s = sltk::removeOutliersOnRanks(owned, total, options, *comm, ctx, ranks);
+  ASSERT_TRUE(s.isOk()) << s.message();
+  EXPECT_EQ(ranks.Removed, one.Removed);
+  EXPECT_EQ(ranks.Threshold, one.Threshold);
+  EXPECT_EQ(ranks.MeanNeighbourDistance, one.MeanNeighbourDistance);
+  EXPECT_EQ(ranks.LargestRatio, one.LargestRatio);
+  ASSERT_EQ(total, kept.size());
+  for (size_t j = 0; j < owned.Ids.size(); ++j)
+  {
+    ASSERT_LT(owned.Ids[j], total);
+    ASSERT_EQ(owned.Cloud.Points[j], kept.Points[static_cast<size_t>(owned.Ids[j])]) << "global index " << owned.Ids[j];
+  }
+  EXPECT_EQ(comm->allReduce(owned.Owned, sltk::ReduceOp::Sum), total);
+}
+} // namespace
+
+TEST(RemoveOutliersOnRanks, RemovesTheOneRankPointsAndRenumbersTheRest)
+{
+  Points cloud = sltk::sphereCloud(3000).Points;
+  // Gross outliers among the points (their indices interleave with the sphere's), one beyond the cloud's end.
+  cloud.insert(cloud.begin() + 100, { 9.0, 0.0, 0.0 });
+  cloud.insert(cloud.begin() + 2000, { 0.0, -7.0, 0.5 });
+  cloud.push_back({ 0.0, 0.0, 12.0 });
+  sltk::OutlierOptions options;
+  expectOneRankOutliers(cloud, options, 3);
+  options.GrossRatio = 20.0; // the automatic cleaning's gate: these are gross
+  expectOneRankOutliers(cloud, options, 3);
+  options.GrossRatio = 1e6; // no point that far: none removed
+  expectOneRankOutliers(cloud, options, 0);
+  Points box = boxCloud(4000, 23); // a uniform box: the 3-sigma tail alone
+  options = sltk::OutlierOptions{};
+  sltk::PointCloud<3> kept;
+  sltk::OutlierReport report;
+  ASSERT_TRUE(sltk::removeOutliers(sltk::PointCloud<3>{ box }, options, sltk::Context{}, kept, report).isOk());
+  ASSERT_GT(report.Removed, 0);
+  expectOneRankOutliers(box, options, report.Removed);
+}
+
+TEST(RankStatistics, ExactSumsAndOrderStatisticsAreTheOneRankValues)
+{
+  auto comm = world();
+  std::mt19937_64 rng(29);
+  std::lognormal_distribution<double> spread(0.0, 3.0);
+  std::vector<double> all(10001);
+  for (double& v : all)
+  {
+    v = spread(rng) * (rng() % 5 == 0 ? -1.0 : 1.0);
+  }
+  all[17] = all[400] = all[9000]; // equal values
+  // Each rank its residue class: a split unlike any contiguous share.
+  std::vector<double> mine;
+  sltk::ExactSum split, whole;
+  for (size_t j = 0; j < all.size(); ++j)
+  {
+    whole.add(all[j]);
+    if (static_cast<int>(j % static_cast<size_t>(comm->size())) == comm->rank())
+    {
+      mine.push_back(all[j]);
+      split.add(all[j]);
+    }
+  }
+  split.reduceOver(*comm);
+  EXPECT_EQ(split.value(), whole.value());
+  std::vector<double> sorted = all;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::int64_t k :
+    { std::int64_t(0), std::int64_t(1), std::int64_t(5000), std::int64_t(9999), std::int64_t(10000) })
+  {
+    EXPECT_EQ(sltk::kthSmallestOverRanks(mine, k, *comm), sorted[static_cast<size_t>(k)]) << "k = " << k;
+  }
+}
+
+TEST(RemoveOutliersOnRanks, TheMergedStanfordScansLoseTheOneRankPoints)
+{
+  const Points cloud = stanfordScans();
+  if (cloud.empty())
+  {
+    GTEST_SKIP() << "the Stanford scans (/work/shared) are not available";
+  }
+  sltk::OutlierOptions options;
+  options.GrossRatio = sltk::GrossOutlierRatio; // the automatic cleaning's
+  expectOneRankOutliers(cloud, options, 509);
+}

@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The cloud's statistics on ranks that hold only their part of it
+// (Documentation/Distributed.md, "Points to their owners"): run under
+// `mpirun -np P sltkBenchCloudRanks --cloud FILE.xyz`. Each rank takes the share
+// of the file a parallel read leaves it, the points move to the owners of
+// their slabs, and h_P, the density spacing, the outlier test and the noise
+// are computed there. Per phase, the busiest rank's time, point-to-point and
+// collective megabytes, the queries answered with other ranks' points, and the
+// points held per rank against the cloud; then whether each value is the
+// one-rank value bit for bit (rank 0 computes it from the whole cloud).
+#include "common/BenchCli.h"
+#include "common/ReadXyz.h"
+
+#include "sltk/cloud/CloudCleaning.h"
+#include "sltk/cloud/CloudFileShares.h"
+#include "sltk/cloud/CloudNoise.h"
+#include "sltk/cloud/CloudOutliers.h"
+#include "sltk/cloud/CloudSpacing.h"
+#include "sltk/cloud/PointLocator.h"
+#include "sltk/cloud/PointOwners.h"
+#include "sltk/exec/CountingCommunicator.h"
+#include "sltk/exec/ThreadPool.h"
+#include "sltk/mpi/MpiCommunicator.h"
+
+#include <mpi.h>
+
+#include <chrono>
+#include <cstdio>
+#include <functional>
+
+namespace
+{
+struct Phase
+{
+  const char* Name;
+  double Seconds;
+  sltk::CommTraffic Traffic;
+  std::int64_t Remote;
+  std::int64_t HeldMax;
+};
+
+/// Runs `step` on every rank and records the busiest rank's time and traffic.
+Phase measure(const char* name, const sltk::CountingCommunicator& comm, const std::function<std::int64_t()>& step,
+  const sltk::OwnedPoints<3>& points)
+{
+  comm.barrier();
+  const sltk::CommTraffic before = comm.traffic();
+  const auto start = std::chrono::steady_clock::now();
+  const std::int64_t remote = step();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const sltk::CommTraffic used = comm.traffic().since(before);
+  double busiest[3] = { seconds, static_cast<double>(used.PointToPointBytes),
+    static_cast<double>(used.CollectiveBytes) };
+  comm.allReduce(busiest, 3, sltk::ReduceOp::Max);
+  sltk::CommTraffic traffic;
+  traffic.PointToPointBytes = static_cast<std::int64_t>(busiest[1]);
+  traffic.CollectiveBytes = static_cast<std::int64_t>(busiest[2]);
+  return { name, busiest[0], traffic, remote, comm.allReduce(points.held(), sltk::ReduceOp::Max) };
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  MPI_Init(&argc, &argv);
+  int code = 0;
+  {
+    CLI::App app("The cloud's statistics on ranks that hold only their part of it");
+    std::string path;
+    int threads = 1;
+    app.add_option("--cloud", path, "x y z per line")->required();
+    app.add_option("--threads", threads, "threads per rank");
+    if (const auto exit = sltkbench::parseCommandLine(app, argc, argv))
+    {
+      MPI_Finalize();
+      return *exit;
+    }
+    std::unique_ptr<sltk::mpi::MpiCommunicator> world;
+    sltk::mpi::MpiCommunicator::world(world);
+    const sltk::CountingCommunicator comm(*world);
+    sltk::PointCloud<3> cloud;
+    if (!sltkbench::readXyz(path, cloud))
+    {
+      std::fprintf(stderr, "%s: no points\n", path.c_str());
+      MPI_Finalize();
+      return 1;
+    }
+    const std::int64_t n = cloud.size();
+    const sltk::FileShare s = sltk::shareOf(0, n, comm.rank(), comm.size());
+    const sltk::PointCloud<3> share{ { cloud.Points.begin() + s.Begin, cloud.Points.begin() + s.End } };
+    sltk::ThreadPool pool(threads);
+    sltk::Context ctx;
+    ctx.Executor = &pool;
+
+    sltk::OwnedPoints<3> owned;
+    std::int64_t total = n;
+    double spacing = 0.0, density = 0.0, noise = 0.0;
+    sltk::OutlierReport outliers;
+    sltk::OutlierOptions gross;
+    gross.GrossRatio = sltk::GrossOutlierRatio;
+    sltk::CloudSpacingOptions densityOptions;
+    densityOptions.DensityNeighbours = 8;
+    std::vector<Phase> phases;
+    phases.push_back(measure(
+      "points to owners", comm,
+      [&]
+      {
+        const sltk::SlabCuts cuts = sltk::balancedCuts(share, comm);
+        sltk::sendToOwners(share, sltk::firstGlobalIndex(share.size(), comm), cuts, 0.0, comm, owned);
+        return std::int64_t(0);
+      },
+      owned));
+    phases.push_back(measure(
+      "outliers (k = 8, gross)", comm,
+      [&]
+      {
+        sltk::removeOutliersOnRanks(owned, total, gross, comm, ctx, outliers);
+        return std::int64_t(-1);
+      },
+      owned));
+    phases.push_back(measure(
+      "h_P (4.36)", comm,
+      [&]
+      {
+        std::int64_t remote = 0;
+        sltk::cloudSpacingOnRanks(owned, total, comm, ctx, spacing, {}, &remote);
+        return remote;
+      },
+      owned));
+    phases.push_back(measure(
+      "density spacing (k = 8)", comm,
+      [&]
+      {
+        std::int64_t remote = 0;
+        sltk::cloudSpacingOnRanks(owned, total, comm, ctx, density, densityOptions, &remote);
+        return remote;
+      },
+      owned));
+    phases.push_back(measure(
+      "noise", comm,
+      [&]
+      {
+        sltk::cloudNoiseOnRanks(owned, total, spacing, comm, ctx, noise);
+        return std::int64_t(-1);
+      },
+      owned));
+    if (comm.rank() == 0)
+    {
+      std::printf("%s: %lld points on %d rank(s), %d thread(s) each; slabs along axis %d\n", path.c_str(),
+        static_cast<long long>(n), comm.size(), threads, owned.Cuts.Axis);
+      std::printf(
+        "%-26s %9s %12s %14s %10s %16s\n", "phase", "seconds", "p2p MB", "collective MB", "remote", "held max / N");
+      for (const Phase& p : phases)
+      {
+        std::printf("%-26s %9.3f %12.3f %14.3f %10s %16.4f\n", p.Name, p.Seconds, p.Traffic.PointToPointBytes / 1e6,
+          p.Traffic.CollectiveBytes / 1e6, p.Remote < 0 ? "-" : std::to_string(p.Remote).c_str(),
+          static_cast<double>(p.HeldMax) / static_cast<double>(n));
+      }
+      // One rank's values from the whole cloud, as the reconstruction's plan computes them.
+      sltk::PointCloud<3> kept;
+      sltk::OutlierReport one;
+      sltk::removeOutliers(cloud, gross, ctx, kept, one);
+      const sltk::PointLocator<3> locator(kept);
+      double oneSpacing = 0.0, oneDensity = 0.0, oneNoise = 0.0;
+      sltk::cloudSpacing(locator, ctx, oneSpacing);
+      sltk::cloudSpacing(locator, ctx, oneDensity, densityOptions);
+      sltk::cloudNoise(locator, oneSpacing, ctx, oneNoise);
+      const bool same = one.Removed == outliers.Removed && one.Threshold == outliers.Threshold &&
+        oneSpacing == spacing && oneDensity == density && oneNoise == noise;
+      std::printf("outliers removed %lld, h_P %.17g, density spacing %.17g, noise %.17g h_P: %s\n",
+        static_cast<long long>(outliers.Removed), spacing, density, noise,
+        same ? "the one-rank values bit for bit" : "DIFFERENT from one rank's");
+      code = same ? 0 : 1;
+    }
+  }
+  MPI_Finalize();
+  return code;
+}
