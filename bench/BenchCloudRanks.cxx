@@ -99,13 +99,21 @@ int main(int argc, char** argv)
     gross.GrossRatio = sltk::GrossOutlierRatio;
     sltk::CloudSpacingOptions densityOptions;
     densityOptions.DensityNeighbours = 8;
+    sltk::Status failed; // the first failure (the same on every rank)
+    const auto check = [&failed](const sltk::Status& status)
+    {
+      if (failed.isOk() && !status.isOk())
+      {
+        failed = status;
+      }
+    };
     std::vector<Phase> phases;
     phases.push_back(measure(
       "points to owners", comm,
       [&]
       {
         const sltk::SlabCuts cuts = sltk::balancedCuts(share, comm);
-        sltk::sendToOwners(share, sltk::firstGlobalIndex(share.size(), comm), cuts, 0.0, comm, owned);
+        check(sltk::sendToOwners(share, sltk::firstGlobalIndex(share.size(), comm), cuts, 0.0, comm, owned));
         return std::int64_t(0);
       },
       owned));
@@ -113,7 +121,7 @@ int main(int argc, char** argv)
       "outliers (k = 8, gross)", comm,
       [&]
       {
-        sltk::removeOutliersOnRanks(owned, total, gross, comm, ctx, outliers);
+        check(sltk::removeOutliersOnRanks(owned, total, gross, comm, ctx, outliers));
         return std::int64_t(-1);
       },
       owned));
@@ -122,7 +130,7 @@ int main(int argc, char** argv)
       [&]
       {
         std::int64_t remote = 0;
-        sltk::cloudSpacingOnRanks(owned, total, comm, ctx, spacing, {}, &remote);
+        check(sltk::cloudSpacingOnRanks(owned, total, comm, ctx, spacing, {}, &remote));
         return remote;
       },
       owned));
@@ -131,7 +139,7 @@ int main(int argc, char** argv)
       [&]
       {
         std::int64_t remote = 0;
-        sltk::cloudSpacingOnRanks(owned, total, comm, ctx, density, densityOptions, &remote);
+        check(sltk::cloudSpacingOnRanks(owned, total, comm, ctx, density, densityOptions, &remote));
         return remote;
       },
       owned));
@@ -139,10 +147,19 @@ int main(int argc, char** argv)
       "noise", comm,
       [&]
       {
-        sltk::cloudNoiseOnRanks(owned, total, spacing, comm, ctx, noise);
+        check(sltk::cloudNoiseOnRanks(owned, total, spacing, comm, ctx, noise));
         return std::int64_t(-1);
       },
       owned));
+    if (!failed.isOk())
+    {
+      if (comm.rank() == 0)
+      {
+        std::fprintf(stderr, "%s: %s\n", path.c_str(), failed.message().c_str());
+      }
+      MPI_Finalize();
+      return 1;
+    }
     if (comm.rank() == 0)
     {
       std::printf("%s: %lld points on %d rank(s), %d thread(s) each; slabs along axis %d\n", path.c_str(),

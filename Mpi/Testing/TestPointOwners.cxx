@@ -350,3 +350,55 @@ TEST(RemoveOutliersOnRanks, TheMergedStanfordScansLoseTheOneRankPoints)
   options.GrossRatio = sltk::GrossOutlierRatio; // the automatic cleaning's
   expectOneRankOutliers(cloud, options, 509);
 }
+
+TEST(CloudSpacingOnRanks, AHaloAtSurveyCoordinatesKeepsTheOneRankValue)
+{
+  // A cut at 5e6 with a halo of 0.1: U + 0.1 rounds below the real sum there, so a point at
+  // fl(U + 0.1) is not sent to the lower slab though it lies within 0.1 of the cut; a point just
+  // below the cut must then not take a held neighbour 0.1000000007 away as its nearest.
+  const double cut = 5e6, halo = 0.1, x = std::nextafter(cut, 0.0);
+  const Points cloud = { { cut - 10, 0, 0 }, { cut - 10, 1, 0 }, { cut - 10, 2, 0 }, { x, 0, 0 },
+    { x, 0.1000000007, 0 }, { cut, 5, 0 }, { cut + halo, 0, 0 }, { cut + 10, 0, 0 }, { cut + 10, 1, 0 },
+    { cut + 10, 2, 0 }, { cut + 10, 3, 0 } };
+  expectOneRankSpacing(cloud, 0, halo);
+}
+
+TEST(PointOwners, ANeighbourTiedAtTheRadiusAcrossACutIsACandidate)
+{
+  // y lies at exactly the computed distance R = x_a - y_a from x, but below fl(x_a - R), where the
+  // cut is: the rank that owns y must still be asked about x's neighbours within R.
+  auto comm = world();
+  const double xa = 0.763774618976614, ya = -0.2550690257394217, radius = xa - ya;
+  const Points cloud = { { ya, 0, 0 }, { xa, radius, 0 }, { xa, 0, 0 } }; // y (index 0), z, x
+  sltk::SlabCuts cuts;
+  cuts.Lower.assign(static_cast<size_t>(comm->size()) + 1, std::numeric_limits<double>::infinity());
+  cuts.Lower[0] = -std::numeric_limits<double>::infinity();
+  if (comm->size() > 1)
+  {
+    cuts.Lower[1] = xa - radius;
+    ASSERT_LT(ya, cuts.Lower[1]);
+  }
+  sltk::OwnedPoints<3> owned;
+  const sltk::PointCloud<3> mine{ comm->rank() == 0 ? cloud : Points{} };
+  ASSERT_TRUE(sltk::sendToOwners(mine, 0, cuts, 0.0, *comm, owned).isOk());
+  std::vector<sltk::NeighbourRequest<3>> requests;
+  if (owned.ownedLocal(2) >= 0)
+  {
+    requests.push_back({ cloud[2], 2, radius, 1 });
+  }
+  ASSERT_EQ(comm->allReduce(static_cast<std::int64_t>(requests.size()), sltk::ReduceOp::Sum), 1); // x's owner asks
+  std::vector<sltk::NeighbourCandidate<3>> candidates;
+  ASSERT_TRUE(sltk::nearestOwnedOnRanks(owned, requests, *comm, candidates).isOk());
+  if (!requests.empty())
+  {
+    ASSERT_EQ(candidates.size(), 2u); // y and z, tied
+    EXPECT_EQ(candidates[0].Id, 0);
+    EXPECT_EQ(candidates[1].Id, 1);
+  }
+  sltk::SlabCuts unsorted = cuts;
+  if (comm->size() > 1)
+  {
+    unsorted.Lower[1] = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_FALSE(sltk::sendToOwners(mine, 0, unsorted, 0.0, *comm, owned).isOk());
+  }
+}

@@ -128,6 +128,7 @@ Status cloudNoiseOnRanks(const OwnedPoints<D>& points, std::int64_t total, doubl
   const Communicator& comm, const Context& ctx, double& noise)
 {
   SLTK_RETURN_IF_ERROR(checkNoiseInputs(total, cloudSpacing));
+  SLTK_RETURN_IF_ERROR(checkTotal(points, total, comm));
   std::vector<double> residuals;
   std::int64_t remote = 0;
   SLTK_RETURN_IF_ERROR(

@@ -128,6 +128,7 @@ Status removeOutliersOnRanks(OwnedPoints<D>& points, std::int64_t& total, const 
 {
   report = OutlierReport{};
   SLTK_RETURN_IF_ERROR(checkOptions(options));
+  SLTK_RETURN_IF_ERROR(checkTotal(points, total, comm));
   if (total <= options.Neighbours)
   {
     return Status::ok();

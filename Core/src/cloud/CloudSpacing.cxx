@@ -56,7 +56,8 @@ std::vector<std::int64_t> sampleIndices(std::int64_t n, std::int64_t m, std::uin
     std::uniform_int_distribution<std::int64_t> pick(i, n - 1);
     const std::int64_t j = pick(rng);
     const std::int64_t picked = at(j);
-    moved[j] = at(i); // swap(order[i], order[j])
+    const std::int64_t first = at(i);
+    moved[j] = first; // swap(order[i], order[j]); position i is not read again
     sample[static_cast<size_t>(i)] = picked;
   }
   return sample;
@@ -147,6 +148,7 @@ Status cloudSpacingOnRanks(const OwnedPoints<D>& points, std::int64_t total, con
   spacing = 0.0;
   std::int64_t m = 0;
   SLTK_RETURN_IF_ERROR(sampleSize(total, options, m));
+  SLTK_RETURN_IF_ERROR(checkTotal(points, total, comm));
   const int kth = options.DensityNeighbours;
   std::vector<double> nearest;
   std::int64_t asked = 0;

@@ -153,6 +153,13 @@ Status exchange(const std::vector<std::array<double, D>>& points, const std::vec
     return Status::invalidArgument("the slab cuts are for " + std::to_string(cuts.ranks()) + " ranks, not the " +
       std::to_string(comm.size()) + " running");
   }
+  for (size_t r = 1; r < cuts.Lower.size(); ++r)
+  {
+    if (!(cuts.Lower[r - 1] <= cuts.Lower[r])) // NaN fails too
+    {
+      return Status::invalidArgument("the slab cuts must be non-decreasing numbers");
+    }
+  }
   if (!(halo >= 0.0))
   {
     return Status::invalidArgument("the halo of the points' slabs must be >= 0");
@@ -307,8 +314,10 @@ Status nearestOwnedOnRanks(const OwnedPoints<D>& points, const std::vector<Neigh
   // To the ranks whose slabs come within Radius of X along the axis.
   const auto reached = [&](const NeighbourRequest<D>& q, int& first, int& last)
   {
-    first = points.Cuts.ownerOf(q.X[axis] - q.Radius);
-    last = points.Cuts.ownerOf(q.X[axis] + q.Radius);
+    // A neighbour at distance Radius may lie past the rounded X -+ Radius along the axis: a margin.
+    const double margin = (std::fabs(q.X[axis]) + q.Radius) * 1e-12;
+    first = points.Cuts.ownerOf(q.X[axis] - q.Radius - margin);
+    last = points.Cuts.ownerOf(q.X[axis] + q.Radius + margin);
   };
   std::vector<std::int64_t> counts(ranks, 0);
   for (const auto& q : requests)

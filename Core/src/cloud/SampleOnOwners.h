@@ -16,20 +16,35 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace sltk
 {
 
 /// A query's answer about one point, and the farthest neighbour it read: the
-/// answer is exact when that neighbour lies within the point's slab and its
-/// halo along the axis (then no point held elsewhere could have been nearer);
-/// else the ranks it may reach answer it again.
+/// answer is exact when the ball of that radius around the point stays short
+/// of the halo's end along the axis (then no point held elsewhere could have
+/// been as near); else the ranks it may reach answer it again.
 struct OwnedAnswer
 {
   double Value = 0.0;
   double Reach = 0.0; ///< +inf: too few points held to answer
 };
+
+/// Fails on every rank alike unless the ranks own `total` points together (a
+/// sample index nobody owns would otherwise read as a duplicate). Collective.
+template <int D>
+Status checkTotal(const OwnedPoints<D>& points, std::int64_t total, const Communicator& comm)
+{
+  const std::int64_t owned = comm.allReduce(points.Owned, ReduceOp::Sum);
+  if (owned != total)
+  {
+    return Status::invalidArgument("the ranks own " + std::to_string(owned) + " points together, not the " +
+      std::to_string(total) + " of the cloud given");
+  }
+  return Status::ok();
+}
 
 /// The diameter of the box around every rank's points: a radius that reaches every point.
 template <int D>
@@ -114,8 +129,9 @@ Status answerOnOwners(const OwnedPoints<D>& points, const std::vector<std::int64
         }
       });
   }
-  // Exact when the query read no farther than the point's slab and its halo
-  // reach along the axis (a margin for the rounding of the slabs' bounds).
+  // Exact when the ball the query read stays short of the halo's ends along the
+  // axis, computed with the exchange's rounding (holdersOf): a point not held
+  // lies at least that far along the axis. The margin makes it strict.
   std::vector<NeighbourRequest<D>> requests;
   std::vector<size_t> asking;
   const int axis = points.Cuts.Axis;
@@ -123,9 +139,10 @@ Status answerOnOwners(const OwnedPoints<D>& points, const std::vector<std::int64
   for (size_t s = 0; s < ids.size(); ++s)
   {
     const double x = points.Cloud.Points[static_cast<size_t>(points.ownedLocal(ids[s]))][axis];
-    const double inside = std::min(x - points.Cuts.Lower[static_cast<size_t>(me)],
-      points.Cuts.Lower[static_cast<size_t>(me) + 1] - x); // +inf on one rank
-    if (!(reach[s] * (1.0 + 1e-9) <= points.Halo + inside))
+    const double below = points.Cuts.Lower[static_cast<size_t>(me)] - points.Halo;
+    const double above = points.Cuts.Lower[static_cast<size_t>(me) + 1] + points.Halo;
+    const double room = std::min(x - below, above - x); // +inf on one rank
+    if (!(reach[s] * (1.0 + 1e-9) <= room))
     {
       requests.push_back(
         { points.Cloud.Points[static_cast<size_t>(points.ownedLocal(ids[s]))], ids[s], reach[s], neighbours });

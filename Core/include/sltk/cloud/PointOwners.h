@@ -9,9 +9,11 @@
 /// place in the file), so that every rank can answer neighbour queries about
 /// its own points without the whole cloud.
 ///
-/// The halo makes such queries exact: a point this rank does not hold lies
-/// farther than Halo along the axis from every point it owns, so a neighbour
-/// found within Halo of an owned point has no closer rival elsewhere.
+/// A point this rank does not hold lies, along the axis, at least as far from
+/// an owned point as the halo's end beyond that point's slab (computed with
+/// the rounding the exchange used), so a neighbour query about an owned point
+/// whose ball stays short of that end is exact; the others are asked again of
+/// the ranks the ball reaches (nearestOwnedOnRanks).
 
 #include "sltk/cloud/PointCloud.h"
 #include "sltk/core/Status.h"
@@ -64,8 +66,9 @@ template <int D>
 SlabCuts balancedCuts(const PointCloud<D>& local, const Communicator& comm);
 
 /// Moves every rank's `local` points (global indices firstId, firstId + 1, ...)
-/// to their owners under `cuts`, with the points within `halo` (>= 0, +inf for
-/// every point on every rank) of each slab as its halo. Collective.
+/// to their owners under `cuts` (non-decreasing, for the ranks running), with
+/// the points within `halo` (>= 0, +inf for every point on every rank) of each
+/// slab as its halo. Collective.
 template <int D>
 Status sendToOwners(const PointCloud<D>& local, std::int64_t firstId, const SlabCuts& cuts, double halo,
   const Communicator& comm, OwnedPoints<D>& out);
@@ -91,20 +94,20 @@ struct NeighbourCandidate
   std::array<double, D> X;
 };
 
-/// For every request of this rank, the Neighbours nearest points to X closer
-/// than Radius among the points each rank owns (with the points tied with the
-/// farthest of them), except the point itself: the ranks whose slabs come
-/// within Radius of X answer, so `candidates` (ordered by request, then
-/// global index) hold the cloud's nearest neighbours of X whenever Radius
-/// reaches at least that far. Collective.
+/// For every request of this rank, the Neighbours nearest points to X no
+/// farther than Radius among the points each rank owns (with the points tied
+/// with the farthest of them), except the point itself: the ranks whose slabs
+/// come within Radius of X (a margin for the rounding of X +- Radius) answer,
+/// so `candidates` (ordered by request, then global index) hold the cloud's
+/// nearest neighbours of X whenever Radius reaches at least that far. Collective.
 template <int D>
 Status nearestOwnedOnRanks(const OwnedPoints<D>& points, const std::vector<NeighbourRequest<D>>& requests,
   const Communicator& comm, std::vector<NeighbourCandidate<D>>& candidates);
 
 /// Keeps the points this rank owns whose flag in `keep` (one per held point)
 /// is set: the others leave the cloud, every kept point takes its index in the
-/// kept cloud (its index less the points dropped before it, which the ranks
-/// gather: few), and the halo is sent again. `dropped`: the points dropped on
+/// kept cloud (its index less the points dropped before it: the dropped
+/// indices, 8 bytes each, are gathered on every rank), and the halo is sent again. `dropped`: the points dropped on
 /// every rank. Collective.
 template <int D>
 Status keepOwned(

@@ -17,7 +17,8 @@ namespace sltk
 
 /// The value of rank k (0-based: k = 0 the smallest) among every rank's finite
 /// `local` values (0 <= k < their total count; -0 and +0 count as distinct,
-/// -0 first). Collective: the same value on every rank, 64 reductions.
+/// -0 first; on one rank a selection, which may return either zero). Collective:
+/// the same value on every rank, 64 reductions.
 double kthSmallestOverRanks(const std::vector<double>& local, std::int64_t k, const Communicator& comm);
 
 } // namespace sltk
