@@ -133,12 +133,12 @@ Status removeOutliersOnRanks(OwnedPoints<D>& points, std::int64_t& total, const 
   {
     return Status::ok();
   }
-  std::vector<std::int64_t> own;
+  std::vector<std::int64_t> own; // positions of this rank's points in points.Cloud
   for (size_t j = 0; j < points.Ids.size(); ++j)
   {
     if (points.Mine[j])
     {
-      own.push_back(points.Ids[j]);
+      own.push_back(static_cast<std::int64_t>(j));
     }
   }
   std::vector<double> meanDistance;
@@ -157,7 +157,7 @@ Status removeOutliersOnRanks(OwnedPoints<D>& points, std::int64_t& total, const 
   std::vector<std::uint8_t> keep(points.Ids.size(), 1);
   for (size_t s = 0; s < own.size(); ++s)
   {
-    keep[static_cast<size_t>(points.ownedLocal(own[s]))] = meanDistance[s] <= report.Threshold ? 1 : 0;
+    keep[static_cast<size_t>(own[s])] = meanDistance[s] <= report.Threshold ? 1 : 0;
   }
   SLTK_RETURN_IF_ERROR(comm.agree(keepOwned(points, keep, comm, report.Removed)));
   total -= report.Removed;

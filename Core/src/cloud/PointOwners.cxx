@@ -19,6 +19,28 @@ int SlabCuts::ownerOf(double x) const
   return static_cast<int>(above - this->Lower.begin()) - 1;
 }
 
+template <int D>
+Box<D> boundingBoxOverRanks(const PointCloud<D>& local, const Communicator& comm)
+{
+  Box<D> box;
+  box.Min.fill(std::numeric_limits<double>::infinity());
+  box.Max.fill(-std::numeric_limits<double>::infinity());
+  for (const auto& p : local.Points)
+  {
+    for (int a = 0; a < D; ++a)
+    {
+      box.Min[a] = std::min(box.Min[a], p[a]);
+      box.Max[a] = std::max(box.Max[a], p[a]);
+    }
+  }
+  comm.allReduce(box.Min.data(), D, ReduceOp::Min);
+  comm.allReduce(box.Max.data(), D, ReduceOp::Max);
+  return box;
+}
+
+template Box<2> boundingBoxOverRanks(const PointCloud<2>&, const Communicator&);
+template Box<3> boundingBoxOverRanks(const PointCloud<3>&, const Communicator&);
+
 std::int64_t firstGlobalIndex(std::int64_t count, const Communicator& comm)
 {
   std::vector<std::int64_t> counts(static_cast<size_t>(comm.size()));
@@ -40,25 +62,13 @@ struct WeightedSample
 
 /// The longest axis of the bounding box of every rank's points (the first of equal ones).
 template <int D>
-int longestAxis(const std::vector<std::array<double, D>>& local, const Communicator& comm)
+int longestAxis(const PointCloud<D>& local, const Communicator& comm)
 {
-  double low[D], high[D];
-  std::fill(low, low + D, Infinity);
-  std::fill(high, high + D, -Infinity);
-  for (const auto& p : local)
-  {
-    for (int a = 0; a < D; ++a)
-    {
-      low[a] = std::min(low[a], p[a]);
-      high[a] = std::max(high[a], p[a]);
-    }
-  }
-  comm.allReduce(low, D, ReduceOp::Min);
-  comm.allReduce(high, D, ReduceOp::Max);
+  const Box<D> box = boundingBoxOverRanks(local, comm);
   int axis = 0;
   for (int a = 1; a < D; ++a)
   {
-    axis = high[a] - low[a] > high[axis] - low[axis] ? a : axis;
+    axis = box.extent(a) > box.extent(axis) ? a : axis;
   }
   return axis;
 }
@@ -208,7 +218,7 @@ SlabCuts balancedCuts(const PointCloud<D>& cloud, const Communicator& comm)
 {
   const std::vector<std::array<double, D>>& local = cloud.Points;
   SlabCuts cuts;
-  cuts.Axis = longestAxis<D>(local, comm);
+  cuts.Axis = longestAxis(cloud, comm);
   const int ranks = comm.size();
   cuts.Lower.assign(static_cast<size_t>(ranks) + 1, Infinity);
   cuts.Lower[0] = -Infinity;

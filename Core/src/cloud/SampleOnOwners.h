@@ -50,23 +50,11 @@ Status checkTotal(const OwnedPoints<D>& points, std::int64_t total, const Commun
 template <int D>
 double cloudDiameter(const OwnedPoints<D>& points, const Communicator& comm)
 {
-  std::array<double, D> low, high;
-  low.fill(std::numeric_limits<double>::infinity());
-  high.fill(-std::numeric_limits<double>::infinity());
-  for (const auto& p : points.Cloud.Points)
-  {
-    for (int a = 0; a < D; ++a)
-    {
-      low[a] = std::min(low[a], p[a]);
-      high[a] = std::max(high[a], p[a]);
-    }
-  }
-  comm.allReduce(low.data(), D, ReduceOp::Min);
-  comm.allReduce(high.data(), D, ReduceOp::Max);
+  const Box<D> box = boundingBoxOverRanks(points.Cloud, comm);
   double d2 = 0.0;
   for (int a = 0; a < D; ++a)
   {
-    d2 += (high[a] - low[a]) * (high[a] - low[a]);
+    d2 += box.extent(a) * box.extent(a);
   }
   return std::sqrt(d2) * 1.001 + std::numeric_limits<double>::min();
 }
@@ -104,26 +92,26 @@ OwnedAnswer answerAmongCandidates(const NeighbourRequest<D>& request, const Neig
 
 /// The answers of `query(locator, local, hits)` (an OwnedAnswer about held
 /// point `local`, reading its `neighbours` nearest) about this rank's own
-/// points of global indices `ids`, in their order, exactly as one rank holding
+/// points at positions `locals` of points.Cloud, in their order, exactly as one rank holding
 /// the whole cloud answers: a query that read beyond the halo is asked again
 /// among the nearest points of every rank whose slab it reaches
 /// (nearestOwnedOnRanks); `remote` counts those over every rank. Collective.
 template <int D, class Query>
-Status answerOnOwners(const OwnedPoints<D>& points, const std::vector<std::int64_t>& ids, int neighbours,
+Status answerOnOwners(const OwnedPoints<D>& points, const std::vector<std::int64_t>& locals, int neighbours,
   const Communicator& comm, const Context& ctx, Query query, std::vector<double>& values, std::int64_t& remote)
 {
-  values.assign(ids.size(), 0.0);
-  std::vector<double> reach(ids.size(), 0.0);
-  if (!ids.empty())
+  values.assign(locals.size(), 0.0);
+  std::vector<double> reach(locals.size(), 0.0);
+  if (!locals.empty())
   {
     const PointLocator<D> locator(points.Cloud);
-    ctx.parallelFor(0, static_cast<Index>(ids.size()),
+    ctx.parallelFor(0, static_cast<Index>(locals.size()),
       [&](Index b, Index e)
       {
         std::vector<typename PointLocator<D>::Hit> hits;
         for (Index s = b; s < e; ++s)
         {
-          const OwnedAnswer a = query(locator, points.ownedLocal(ids[static_cast<size_t>(s)]), hits);
+          const OwnedAnswer a = query(locator, locals[static_cast<size_t>(s)], hits);
           values[static_cast<size_t>(s)] = a.Value;
           reach[static_cast<size_t>(s)] = a.Reach;
         }
@@ -136,16 +124,16 @@ Status answerOnOwners(const OwnedPoints<D>& points, const std::vector<std::int64
   std::vector<size_t> asking;
   const int axis = points.Cuts.Axis;
   const int me = comm.rank();
-  for (size_t s = 0; s < ids.size(); ++s)
+  for (size_t s = 0; s < locals.size(); ++s)
   {
-    const double x = points.Cloud.Points[static_cast<size_t>(points.ownedLocal(ids[s]))][axis];
+    const auto& p = points.Cloud.Points[static_cast<size_t>(locals[s])];
+    const double x = p[axis];
     const double below = points.Cuts.Lower[static_cast<size_t>(me)] - points.Halo;
     const double above = points.Cuts.Lower[static_cast<size_t>(me) + 1] + points.Halo;
     const double room = std::min(x - below, above - x); // +inf on one rank
     if (!(reach[s] * (1.0 + 1e-9) <= room))
     {
-      requests.push_back(
-        { points.Cloud.Points[static_cast<size_t>(points.ownedLocal(ids[s]))], ids[s], reach[s], neighbours });
+      requests.push_back({ p, points.Ids[static_cast<size_t>(locals[s])], reach[s], neighbours });
       asking.push_back(s);
     }
   }
@@ -186,19 +174,20 @@ Status sampleOnOwners(const OwnedPoints<D>& points, const std::vector<std::int64
     std::int64_t Position;
     double Value;
   };
-  std::vector<std::int64_t> position, ids; // this rank's sampled points
+  std::vector<std::int64_t> position, locals; // this rank's sampled points
   for (size_t i = 0; i < sample.size(); ++i)
   {
-    if (points.ownedLocal(sample[i]) >= 0)
+    const std::int64_t j = points.ownedLocal(sample[i]);
+    if (j >= 0)
     {
       position.push_back(static_cast<std::int64_t>(i));
-      ids.push_back(sample[i]);
+      locals.push_back(j);
     }
   }
   std::vector<double> answers;
-  SLTK_RETURN_IF_ERROR(answerOnOwners(points, ids, neighbours, comm, ctx, query, answers, remote));
-  std::vector<Answered> mine(ids.size());
-  for (size_t s = 0; s < ids.size(); ++s)
+  SLTK_RETURN_IF_ERROR(answerOnOwners(points, locals, neighbours, comm, ctx, query, answers, remote));
+  std::vector<Answered> mine(locals.size());
+  for (size_t s = 0; s < locals.size(); ++s)
   {
     mine[s] = { position[s], answers[s] };
   }

@@ -113,6 +113,11 @@ template <int D>
 Status keepOwned(
   OwnedPoints<D>& points, const std::vector<std::uint8_t>& keep, const Communicator& comm, std::int64_t& dropped);
 
+/// The box around every rank's `local` points (inverted, +inf to -inf, when
+/// no rank has any): boundingBox() over the ranks. Collective.
+template <int D>
+Box<D> boundingBoxOverRanks(const PointCloud<D>& local, const Communicator& comm);
+
 /// The global index of this rank's first point when every rank holds `count`
 /// consecutive points in rank order (an exclusive prefix sum). Collective.
 std::int64_t firstGlobalIndex(std::int64_t count, const Communicator& comm);
@@ -129,6 +134,8 @@ extern template Status nearestOwnedOnRanks(const OwnedPoints<3>&, const std::vec
   const Communicator&, std::vector<NeighbourCandidate<3>>&);
 extern template Status keepOwned(OwnedPoints<2>&, const std::vector<std::uint8_t>&, const Communicator&, std::int64_t&);
 extern template Status keepOwned(OwnedPoints<3>&, const std::vector<std::uint8_t>&, const Communicator&, std::int64_t&);
+extern template Box<2> boundingBoxOverRanks(const PointCloud<2>&, const Communicator&);
+extern template Box<3> boundingBoxOverRanks(const PointCloud<3>&, const Communicator&);
 extern template struct OwnedPoints<2>;
 extern template struct OwnedPoints<3>;
 
