@@ -25,13 +25,9 @@ Box<D> boundingBoxOverRanks(const PointCloud<D>& local, const Communicator& comm
   Box<D> box;
   box.Min.fill(std::numeric_limits<double>::infinity());
   box.Max.fill(-std::numeric_limits<double>::infinity());
-  for (const auto& p : local.Points)
+  if (local.size() > 0)
   {
-    for (int a = 0; a < D; ++a)
-    {
-      box.Min[a] = std::min(box.Min[a], p[a]);
-      box.Max[a] = std::max(box.Max[a], p[a]);
-    }
+    box = boundingBox(local);
   }
   comm.allReduce(box.Min.data(), D, ReduceOp::Min);
   comm.allReduce(box.Max.data(), D, ReduceOp::Max);
