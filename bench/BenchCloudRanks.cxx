@@ -3,8 +3,9 @@
 // (Documentation/Distributed.md, "Points to their owners"): run under
 // `mpirun -np P sltkBenchCloudRanks --cloud FILE.xyz`. Each rank takes the share
 // of the file a parallel read leaves it, the points move to the owners of
-// their slabs, and h_P, the density spacing, the outlier test and the noise
-// are computed there. Per phase, the busiest rank's time, point-to-point and
+// their slabs, and h_P, the density spacing, the outlier test, the noise and
+// the local sparsity factors are computed there; last the cloud is thinned
+// there (cells of 2.5 density spacings, as `--thin 2.5`). Per phase, the busiest rank's time, point-to-point and
 // collective megabytes, the queries answered with other ranks' points, and the
 // points held per rank against the cloud; then whether each value is the
 // one-rank value bit for bit (rank 0 computes it from the whole cloud).
@@ -16,8 +17,11 @@
 #include "sltk/cloud/CloudNoise.h"
 #include "sltk/cloud/CloudOutliers.h"
 #include "sltk/cloud/CloudSpacing.h"
+#include "sltk/cloud/CloudThinning.h"
+#include "sltk/cloud/LocalSpacing.h"
 #include "sltk/cloud/PointLocator.h"
 #include "sltk/cloud/PointOwners.h"
+#include "sltk/core/ExactSum.h"
 #include "sltk/exec/CountingCommunicator.h"
 #include "sltk/exec/ThreadPool.h"
 #include "sltk/mpi/MpiCommunicator.h"
@@ -151,6 +155,49 @@ int main(int argc, char** argv)
         return std::int64_t(-1);
       },
       owned));
+    std::vector<double> sparsity;
+    phases.push_back(measure(
+      "sparsity factors (k = 16)", comm,
+      [&]
+      {
+        std::int64_t remote = 0;
+        check(sltk::sparsityFactorsOnRanks(
+          owned, sltk::CloudCleaningOptions{}.DensityNeighbours, comm, ctx, sparsity, &remote));
+        return remote;
+      },
+      owned));
+    // The factors checked without gathering them: two exact sums over the owned points
+    // (of rho and of rho times the global index + 1), the same for any split.
+    sltk::ExactSum rhoSum, weightedSum;
+    for (size_t j = 0; j < owned.Ids.size() && j < sparsity.size(); ++j)
+    {
+      if (owned.Mine[j])
+      {
+        rhoSum.add(sparsity[j]);
+        weightedSum.add(sparsity[j] * static_cast<double>(owned.Ids[j] + 1));
+      }
+    }
+    rhoSum.reduceOver(comm);
+    weightedSum.reduceOver(comm);
+    std::int64_t thinned = 0;
+    phases.push_back(measure(
+      "thinning (2.5 density)", comm,
+      [&]
+      {
+        check(sltk::thinOnRanks(owned, 2.5 * density, comm, thinned));
+        return std::int64_t(-1);
+      },
+      owned));
+    // The thinned points checked as the factors are.
+    sltk::ExactSum thinSum;
+    for (size_t j = 0; j < owned.Ids.size(); ++j)
+    {
+      for (int a = 0; owned.Mine[j] && a < 3; ++a)
+      {
+        thinSum.add(owned.Cloud.Points[j][a] * static_cast<double>(owned.Ids[j] + 1 + a));
+      }
+    }
+    thinSum.reduceOver(comm);
     if (!failed.isOk())
     {
       if (comm.rank() == 0)
@@ -181,11 +228,32 @@ int main(int argc, char** argv)
       sltk::cloudSpacing(locator, ctx, oneSpacing);
       sltk::cloudSpacing(locator, ctx, oneDensity, densityOptions);
       sltk::cloudNoise(locator, oneSpacing, ctx, oneNoise);
-      const bool same = one.Removed == outliers.Removed && one.Threshold == outliers.Threshold &&
-        oneSpacing == spacing && oneDensity == density && oneNoise == noise;
-      std::printf("outliers removed %lld, h_P %.17g, density spacing %.17g, noise %.17g h_P: %s\n",
-        static_cast<long long>(outliers.Removed), spacing, density, noise,
-        same ? "the one-rank values bit for bit" : "DIFFERENT from one rank's");
+      std::vector<double> oneSparsity;
+      sltk::sparsityFactors(locator, sltk::CloudCleaningOptions{}.DensityNeighbours, ctx, oneSparsity);
+      sltk::ExactSum oneRho, oneWeighted;
+      for (size_t j = 0; j < oneSparsity.size(); ++j)
+      {
+        oneRho.add(oneSparsity[j]);
+        oneWeighted.add(oneSparsity[j] * static_cast<double>(j + 1));
+      }
+      sltk::PointCloud<3> oneThinned;
+      sltk::thinCloud(kept, 2.5 * oneDensity, oneThinned);
+      sltk::ExactSum oneThin;
+      for (size_t j = 0; j < oneThinned.Points.size(); ++j)
+      {
+        for (int a = 0; a < 3; ++a)
+        {
+          oneThin.add(oneThinned.Points[j][a] * static_cast<double>(j + 1 + a));
+        }
+      }
+      const bool same = oneThinned.size() == thinned && oneThin.value() == thinSum.value() &&
+        one.Removed == outliers.Removed && one.Threshold == outliers.Threshold && oneSpacing == spacing &&
+        oneDensity == density && oneNoise == noise && oneRho.value() == rhoSum.value() &&
+        oneWeighted.value() == weightedSum.value();
+      std::printf("outliers removed %lld, h_P %.17g, density spacing %.17g, noise %.17g h_P, mean rho %.17g, "
+                  "thinned to %lld: %s\n",
+        static_cast<long long>(outliers.Removed), spacing, density, noise, rhoSum.value() / static_cast<double>(total),
+        static_cast<long long>(thinned), same ? "the one-rank values bit for bit" : "DIFFERENT from one rank's");
       code = same ? 0 : 1;
     }
   }

@@ -9,6 +9,8 @@
 #include "sltk/cloud/CloudNoise.h"
 #include "sltk/cloud/CloudOutliers.h"
 #include "sltk/cloud/CloudSpacing.h"
+#include "sltk/cloud/CloudThinning.h"
+#include "sltk/cloud/LocalSpacing.h"
 #include "sltk/cloud/PointOwners.h"
 #include "sltk/cloud/SyntheticClouds.h"
 #include "sltk/core/ExactSum.h"
@@ -401,4 +403,121 @@ TEST(PointOwners, ANeighbourTiedAtTheRadiusAcrossACutIsACandidate)
     unsorted.Lower[1] = std::numeric_limits<double>::quiet_NaN();
     EXPECT_FALSE(sltk::sendToOwners(mine, 0, unsorted, 0.0, *comm, owned).isOk());
   }
+}
+
+namespace
+{
+/// The sparsity factors on the ranks (from a halo of 0) against one rank's,
+/// bit for bit at every owned point; the halo's points get 1.
+void expectOneRankSparsity(const Points& cloud, int k, bool allOnRankZero = false)
+{
+  auto comm = world();
+  sltk::ThreadPool pool(2);
+  sltk::Context ctx;
+  ctx.Executor = &pool;
+  const sltk::PointCloud<3> whole{ cloud };
+  std::vector<double> one;
+  ASSERT_TRUE(sltk::sparsityFactors(sltk::PointLocator<3>(whole), k, ctx, one).isOk());
+  const sltk::OwnedPoints<3> owned = owners(cloud, *comm, 0.0, allOnRankZero);
+  std::vector<double> ranks;
+  std::int64_t remote = 0;
+  const sltk::Status s = sltk::sparsityFactorsOnRanks(owned, k, *comm, ctx, ranks, &remote);
+  ASSERT_TRUE(s.isOk()) << s.message();
+  ASSERT_EQ(ranks.size(), owned.Ids.size());
+  std::int64_t differ = 0;
+  for (size_t j = 0; j < owned.Ids.size(); ++j)
+  {
+    const double expected = owned.Mine[j] ? one[static_cast<size_t>(owned.Ids[j])] : 1.0;
+    differ += ranks[j] == expected ? 0 : 1;
+  }
+  EXPECT_EQ(comm->allReduce(differ, sltk::ReduceOp::Sum), 0) << "k = " << k << " on " << comm->size() << " ranks";
+  EXPECT_TRUE(comm->size() > 1 || remote == 0); // one rank holds every neighbour
+  EXPECT_TRUE(comm->size() == 1 || cloud.size() <= 64 || remote > 0) << "no point near a cut was asked again";
+}
+} // namespace
+
+TEST(SparsityFactorsOnRanks, AreTheOneRankFactorsBitForBit)
+{
+  // Half a box sampled four times more sparsely: factors well above 1 there, 1 elsewhere.
+  Points cloud = boxCloud(6000, 31);
+  Points uneven;
+  for (size_t j = 0; j < cloud.size(); ++j)
+  {
+    if (cloud[j][0] < 2.0 || j % 4 == 0)
+    {
+      uneven.push_back(cloud[j]);
+    }
+  }
+  expectOneRankSparsity(uneven, 16);
+  expectOneRankSparsity(uneven, 16, true); // every point read by rank 0
+  expectOneRankSparsity(uneven, 3);
+  // Exact duplicates: ties at every distance, broken by global index as on one rank.
+  Points doubled = boxCloud(1500, 5);
+  doubled.insert(doubled.end(), doubled.begin(), doubled.end());
+  expectOneRankSparsity(doubled, 8);
+  // Fewer points than neighbours + 1: every factor 1.
+  expectOneRankSparsity(Points(boxCloud(16, 2)), 16);
+}
+
+TEST(SparsityFactorsOnRanks, TheMergedStanfordScansGiveTheOneRankFactors)
+{
+  const Points cloud = stanfordScans();
+  if (cloud.empty())
+  {
+    GTEST_SKIP() << "the Stanford scans (/work/shared) are not available";
+  }
+  expectOneRankSparsity(cloud, 16);
+}
+
+namespace
+{
+/// The thinning on the ranks against one rank's: the same means under the same
+/// indices, every one owned once.
+void expectOneRankThinning(const Points& cloud, double cell, bool allOnRankZero = false)
+{
+  auto comm = world();
+  sltk::PointCloud<3> one;
+  ASSERT_TRUE(sltk::thinCloud(sltk::PointCloud<3>{ cloud }, cell, one).isOk());
+  sltk::OwnedPoints<3> owned = owners(cloud, *comm, 0.0, allOnRankZero);
+  std::int64_t total = 0;
+  const sltk::Status s = sltk::thinOnRanks(owned, cell, *comm, total);
+  ASSERT_TRUE(s.isOk()) << s.message();
+  EXPECT_EQ(total, one.size());
+  EXPECT_EQ(comm->allReduce(owned.Owned, sltk::ReduceOp::Sum), one.size());
+  std::int64_t differ = 0;
+  for (size_t j = 0; j < owned.Ids.size(); ++j) // no ASSERT before the collective below: every rank reaches it
+  {
+    const bool known = owned.Ids[j] >= 0 && owned.Ids[j] < one.size();
+    const bool increasing = j == 0 || owned.Ids[j - 1] < owned.Ids[j]; // in global index order
+    differ += known && increasing && owned.Cloud.Points[j] == one.Points[static_cast<size_t>(owned.Ids[j])] ? 0 : 1;
+  }
+  EXPECT_EQ(comm->allReduce(differ, sltk::ReduceOp::Sum), 0) << "cell " << cell << " on " << comm->size() << " ranks";
+}
+} // namespace
+
+TEST(ThinOnRanks, GivesTheOneRankMeansUnderTheOneRankIndices)
+{
+  const Points box = boxCloud(5000, 41);
+  expectOneRankThinning(box, 0.05);      // about one point a cell
+  expectOneRankThinning(box, 0.3);       // cells straddle every cut
+  expectOneRankThinning(box, 0.3, true); // every point read by rank 0
+  expectOneRankThinning(box, 1.7);       // cells wider than a slab on 3 or more ranks
+  Points doubled = box;                  // duplicates: their cells' sums in global index order
+  doubled.insert(doubled.end(), box.begin(), box.begin() + 2500);
+  expectOneRankThinning(doubled, 0.1);
+  auto comm = world();
+  sltk::OwnedPoints<3> owned = owners(box, *comm, 0.0, false);
+  std::int64_t total = 0;
+  EXPECT_FALSE(sltk::thinOnRanks(owned, 0.0, *comm, total).isOk());
+  EXPECT_FALSE(sltk::thinOnRanks(owned, 1e-300, *comm, total).isOk()); // too many cells to number
+}
+
+TEST(ThinOnRanks, TheMergedStanfordScansThinAsOnOneRank)
+{
+  const Points cloud = stanfordScans();
+  if (cloud.empty())
+  {
+    GTEST_SKIP() << "the Stanford scans (/work/shared) are not available";
+  }
+  expectOneRankThinning(cloud, 2.5 * 4.2222732870964941e-4); // --thin 2.5 of the density spacing (k = 8)
 }

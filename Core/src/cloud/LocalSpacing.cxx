@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/cloud/LocalSpacing.h"
 
+#include "SampleOnOwners.h"
 #include "sltk/cloud/CloudSpacing.h"
+#include "sltk/exec/OrderStatistics.h"
 
 #include <algorithm>
 
@@ -51,6 +53,32 @@ double medianOf(std::vector<double> values)
   return values[middle];
 }
 
+namespace
+{
+/// The smoothed s of a point: the median of its own s and its k neighbours'
+/// (`local`: its s first, then theirs; reordered).
+double smoothedSpacing(std::vector<double>& local, int k)
+{
+  std::nth_element(local.begin(), local.begin() + k / 2, local.end());
+  return local[static_cast<size_t>(k / 2)];
+}
+
+/// rho of each smoothed s against their median over the cloud (none when 0:
+/// duplicates everywhere leave no spacing to compare with, every factor 1).
+void factorsOf(const std::vector<double>& smoothed, double median, std::vector<double>& factors)
+{
+  factors.assign(smoothed.size(), 1.0);
+  if (!(median > 0.0))
+  {
+    return;
+  }
+  for (size_t i = 0; i < smoothed.size(); ++i)
+  {
+    factors[i] = std::clamp(smoothed[i] / median, 1.0, MaximumSparsity);
+  }
+}
+} // namespace
+
 template <int D>
 Status sparsityFactors(const PointLocator<D>& locator, int k, const Context& ctx, std::vector<double>& factors)
 {
@@ -80,18 +108,81 @@ Status sparsityFactors(const PointLocator<D>& locator, int k, const Context& ctx
         {
           local[static_cast<size_t>(j + 1)] = spacing[static_cast<size_t>(neighbours[static_cast<size_t>(i * k + j)])];
         }
-        std::nth_element(local.begin(), local.begin() + k / 2, local.end());
-        smoothed[static_cast<size_t>(i)] = local[static_cast<size_t>(k / 2)];
+        smoothed[static_cast<size_t>(i)] = smoothedSpacing(local, k);
       }
     });
-  const double median = medianOf(smoothed);
-  if (!(median > 0.0))
+  factorsOf(smoothed, medianOf(smoothed), factors);
+  return Status::ok();
+}
+
+template <int D>
+Status sparsityFactorsOnRanks(const OwnedPoints<D>& points, int k, const Communicator& comm, const Context& ctx,
+  std::vector<double>& factors, std::int64_t* remote)
+{
+  factors.assign(static_cast<size_t>(points.held()), 1.0);
+  if (k < 1)
   {
-    return Status::ok(); // duplicates everywhere: no spacing to compare with
+    return Status::invalidArgument("the sparsity factors need k >= 1 neighbours");
   }
-  for (std::int64_t i = 0; i < n; ++i)
+  const std::int64_t n = comm.allReduce(points.Owned, ReduceOp::Sum);
+  if (n <= k)
   {
-    factors[static_cast<size_t>(i)] = std::clamp(smoothed[static_cast<size_t>(i)] / median, 1.0, MaximumSparsity);
+    return Status::ok();
+  }
+  std::vector<std::int64_t> own; // this rank's points, by their place in the held cloud
+  for (size_t j = 0; j < points.Mine.size(); ++j)
+  {
+    if (points.Mine[j])
+    {
+      own.push_back(static_cast<std::int64_t>(j));
+    }
+  }
+  // s (densitySpacings) of every owned point and its k nearest, exactly as on one rank.
+  std::vector<double> spacing;
+  std::vector<NeighbourCandidate<D>> neighbours;
+  std::int64_t asked = 0;
+  SLTK_RETURN_IF_ERROR(answerOnOwners(
+    points, own, k, comm, ctx,
+    [k](const PointLocator<D>& locator, std::int64_t i, std::vector<typename PointLocator<D>::Hit>& hits)
+    {
+      const bool enough = locator.cloud().size() > k;
+      hits.clear(); // too few points held: no neighbours, asked again on the ranks
+      if (enough)
+      {
+        locator.nearest(locator.cloud().Points[static_cast<size_t>(i)], k, i, hits);
+      }
+      const double reach = enough ? hits.back().Distance : std::numeric_limits<double>::infinity();
+      return OwnedAnswer{ enough ? densitySpacing<D>(reach, k) : 0.0, reach };
+    },
+    spacing, asked, &neighbours));
+  if (remote)
+  {
+    *remote = asked;
+  }
+  std::vector<double> held(static_cast<size_t>(points.held()), 0.0);
+  for (size_t s = 0; s < own.size(); ++s)
+  {
+    held[static_cast<size_t>(own[s])] = spacing[s];
+  }
+  std::vector<double> theirs; // the neighbours' s, from their owners
+  SLTK_RETURN_IF_ERROR(valuesFromOwners(points, held, neighbours, comm, theirs));
+  std::vector<double> smoothed(own.size());
+  ctx.parallelFor(0, static_cast<Index>(own.size()),
+    [&](Index b, Index e)
+    {
+      std::vector<double> local(static_cast<size_t>(k + 1));
+      for (Index s = b; s < e; ++s)
+      {
+        local[0] = spacing[static_cast<size_t>(s)];
+        std::copy_n(theirs.begin() + s * k, k, local.begin() + 1);
+        smoothed[static_cast<size_t>(s)] = smoothedSpacing(local, k);
+      }
+    });
+  std::vector<double> owned;
+  factorsOf(smoothed, kthSmallestOverRanks(smoothed, n / 2, comm), owned); // medianOf's middle
+  for (size_t s = 0; s < own.size(); ++s)
+  {
+    factors[static_cast<size_t>(own[s])] = owned[s];
   }
   return Status::ok();
 }
@@ -102,5 +193,9 @@ template Status densitySpacings(
   const PointLocator<3>&, int, const Context&, std::vector<double>&, std::vector<std::int64_t>*);
 template Status sparsityFactors(const PointLocator<2>&, int, const Context&, std::vector<double>&);
 template Status sparsityFactors(const PointLocator<3>&, int, const Context&, std::vector<double>&);
+template Status sparsityFactorsOnRanks(
+  const OwnedPoints<2>&, int, const Communicator&, const Context&, std::vector<double>&, std::int64_t*);
+template Status sparsityFactorsOnRanks(
+  const OwnedPoints<3>&, int, const Communicator&, const Context&, std::vector<double>&, std::int64_t*);
 
 } // namespace sltk

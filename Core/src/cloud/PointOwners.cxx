@@ -80,34 +80,15 @@ std::vector<size_t> startsOf(const std::vector<std::int64_t>& counts)
   return first;
 }
 
-/// The element counts of a received all-to-all as the offsets of each rank's part.
-std::vector<size_t> partsOf(std::vector<std::int64_t> bytes, size_t recordSize)
-{
-  for (auto& b : bytes)
-  {
-    b /= static_cast<std::int64_t>(recordSize);
-  }
-  return startsOf(bytes);
-}
-
-/// One personalised all-to-all of records, `send` grouped by destination rank (`counts` records each).
+/// One personalised all-to-all of records, `send` grouped by destination rank
+/// (`counts` records each); `parts`: where each rank's records start.
 template <class Record>
-std::vector<Record> exchangeRecords(const std::vector<Record>& send, std::vector<std::int64_t> counts,
+std::vector<Record> exchangeRecords(const std::vector<Record>& send, const std::vector<std::int64_t>& counts,
   const Communicator& comm, std::vector<size_t>& parts)
 {
-  for (auto& c : counts)
-  {
-    c *= static_cast<std::int64_t>(sizeof(Record));
-  }
-  std::vector<unsigned char> bytes;
   std::vector<std::int64_t> received;
-  comm.allToAllV(send.data(), counts, bytes, received);
-  std::vector<Record> records(bytes.size() / sizeof(Record));
-  if (!records.empty())
-  {
-    std::memcpy(static_cast<void*>(records.data()), bytes.data(), records.size() * sizeof(Record));
-  }
-  parts = partsOf(received, sizeof(Record));
+  std::vector<Record> records = comm.allToAllRecords(send, counts, &received);
+  parts = startsOf(received);
   return records;
 }
 
@@ -266,6 +247,17 @@ Status sendToOwners(const PointCloud<D>& local, std::int64_t firstId, const Slab
   return exchange<D>(local.Points, ids, cuts, halo, comm, out);
 }
 
+template <int D>
+Status sendToOwners(const std::vector<std::array<double, D>>& points, const std::vector<std::int64_t>& ids,
+  const SlabCuts& cuts, double halo, const Communicator& comm, OwnedPoints<D>& out)
+{
+  if (points.size() != ids.size())
+  {
+    return Status::invalidArgument("sendToOwners: one global index per point is needed");
+  }
+  return exchange<D>(points, ids, cuts, halo, comm, out);
+}
+
 namespace
 {
 /// A request as it travels: its index on the asking rank.
@@ -408,6 +400,64 @@ Status keepOwned(
 }
 
 template <int D>
+Status valuesFromOwners(const OwnedPoints<D>& points, const std::vector<double>& held,
+  const std::vector<NeighbourCandidate<D>>& wanted, const Communicator& comm, std::vector<double>& out)
+{
+  const size_t ranks = static_cast<size_t>(comm.size());
+  const int me = comm.rank();
+  const double missing = std::numeric_limits<double>::quiet_NaN();
+  bool found = held.size() == points.Ids.size();
+  const auto lookUp = [&](std::int64_t id)
+  {
+    const std::int64_t j = points.ownedLocal(id);
+    found = found && j >= 0;
+    return j >= 0 && found ? held[static_cast<size_t>(j)] : missing;
+  };
+  out.assign(wanted.size(), missing);
+  std::vector<std::int64_t> counts(ranks, 0);
+  std::vector<int> owner(wanted.size());
+  for (size_t i = 0; i < wanted.size(); ++i)
+  {
+    owner[i] = points.Cuts.ownerOf(wanted[i].X[static_cast<size_t>(points.Cuts.Axis)]);
+    counts[static_cast<size_t>(owner[i])] += owner[i] == me ? 0 : 1;
+  }
+  // The indices to each owner in `wanted`'s order; the values come back in the order asked.
+  std::vector<size_t> next = startsOf(counts);
+  std::vector<std::int64_t> send(next[ranks]);
+  std::vector<size_t> asked(next[ranks]);
+  for (size_t i = 0; i < wanted.size(); ++i)
+  {
+    if (owner[i] == me)
+    {
+      out[i] = lookUp(wanted[i].Id);
+      continue;
+    }
+    const size_t at = next[static_cast<size_t>(owner[i])]++;
+    send[at] = wanted[i].Id;
+    asked[at] = i;
+  }
+  std::vector<size_t> parts;
+  const std::vector<std::int64_t> ids = exchangeRecords(send, counts, comm, parts);
+  std::vector<double> answers(ids.size());
+  for (size_t m = 0; m < ids.size(); ++m)
+  {
+    answers[m] = lookUp(ids[m]);
+  }
+  for (size_t r = 0; r < ranks; ++r)
+  {
+    counts[r] = static_cast<std::int64_t>(parts[r + 1] - parts[r]);
+  }
+  const std::vector<double> values = exchangeRecords(answers, counts, comm, parts);
+  for (size_t m = 0; m < values.size(); ++m)
+  {
+    out[asked[m]] = values[m];
+  }
+  return comm.agree(found ? Status::ok()
+                          : Status::invalidArgument("valuesFromOwners: a point is not owned where its place says, or "
+                                                    "the values are not one per held point"));
+}
+
+template <int D>
 std::int64_t OwnedPoints<D>::ownedLocal(std::int64_t id) const
 {
   const auto it = std::lower_bound(this->Ids.begin(), this->Ids.end(), id);
@@ -417,8 +467,16 @@ std::int64_t OwnedPoints<D>::ownedLocal(std::int64_t id) const
 
 template Status keepOwned(OwnedPoints<2>&, const std::vector<std::uint8_t>&, const Communicator&, std::int64_t&);
 template Status keepOwned(OwnedPoints<3>&, const std::vector<std::uint8_t>&, const Communicator&, std::int64_t&);
+template Status valuesFromOwners(const OwnedPoints<2>&, const std::vector<double>&,
+  const std::vector<NeighbourCandidate<2>>&, const Communicator&, std::vector<double>&);
+template Status valuesFromOwners(const OwnedPoints<3>&, const std::vector<double>&,
+  const std::vector<NeighbourCandidate<3>>&, const Communicator&, std::vector<double>&);
 template struct OwnedPoints<2>;
 template struct OwnedPoints<3>;
+template Status sendToOwners<2>(const std::vector<std::array<double, 2>>&, const std::vector<std::int64_t>&,
+  const SlabCuts&, double, const Communicator&, OwnedPoints<2>&);
+template Status sendToOwners<3>(const std::vector<std::array<double, 3>>&, const std::vector<std::int64_t>&,
+  const SlabCuts&, double, const Communicator&, OwnedPoints<3>&);
 template SlabCuts balancedCuts(const PointCloud<2>&, const Communicator&);
 template SlabCuts balancedCuts(const PointCloud<3>&, const Communicator&);
 template Status sendToOwners(

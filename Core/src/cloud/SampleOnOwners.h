@@ -61,10 +61,11 @@ double cloudDiameter(const OwnedPoints<D>& points, const Communicator& comm)
 
 /// The query about request i's point, asked again among its nearest points
 /// on every rank (`candidates`, from nearestOwnedOnRanks): the point and
-/// them in increasing global index, as the whole cloud orders them.
+/// them in increasing global index, as the whole cloud orders them. With
+/// `found`, the first `neighbours` hits the query left, as candidates.
 template <int D, class Query>
 OwnedAnswer answerAmongCandidates(const NeighbourRequest<D>& request, const NeighbourCandidate<D>* first,
-  const NeighbourCandidate<D>* last, Query& query)
+  const NeighbourCandidate<D>* last, Query& query, NeighbourCandidate<D>* found = nullptr)
 {
   PointCloud<D> near;
   std::int64_t self = 0;
@@ -87,7 +88,13 @@ OwnedAnswer answerAmongCandidates(const NeighbourRequest<D>& request, const Neig
   }
   const PointLocator<D> locator(near);
   std::vector<typename PointLocator<D>::Hit> hits;
-  return query(locator, self, hits);
+  const OwnedAnswer answer = query(locator, self, hits);
+  for (int j = 0; found && j < request.Neighbours && j < static_cast<int>(hits.size()); ++j)
+  {
+    const std::int64_t at = hits[static_cast<size_t>(j)].Index; // the point itself is at `self`
+    found[j] = first[at < self ? at : at - 1];
+  }
+  return answer;
 }
 
 /// The answers of `query(locator, local, hits)` (an OwnedAnswer about held
@@ -95,13 +102,30 @@ OwnedAnswer answerAmongCandidates(const NeighbourRequest<D>& request, const Neig
 /// points at positions `locals` of points.Cloud, in their order, exactly as one rank holding
 /// the whole cloud answers: a query that read beyond the halo is asked again
 /// among the nearest points of every rank whose slab it reaches
-/// (nearestOwnedOnRanks); `remote` counts those over every rank. Collective.
+/// (nearestOwnedOnRanks); `remote` counts those over every rank. With `found`,
+/// also the `neighbours` nearest hits each query left (nearest first, the
+/// point itself excluded by the query): `neighbours` candidates a point, their
+/// Request its position in `locals`. Collective.
 template <int D, class Query>
 Status answerOnOwners(const OwnedPoints<D>& points, const std::vector<std::int64_t>& locals, int neighbours,
-  const Communicator& comm, const Context& ctx, Query query, std::vector<double>& values, std::int64_t& remote)
+  const Communicator& comm, const Context& ctx, Query query, std::vector<double>& values, std::int64_t& remote,
+  std::vector<NeighbourCandidate<D>>* found = nullptr)
 {
   values.assign(locals.size(), 0.0);
   std::vector<double> reach(locals.size(), 0.0);
+  if (found)
+  {
+    found->assign(locals.size() * static_cast<size_t>(neighbours), NeighbourCandidate<D>{});
+  }
+  const auto keep = [&](size_t s, const std::vector<typename PointLocator<D>::Hit>& hits)
+  {
+    for (int j = 0; found && j < neighbours && j < static_cast<int>(hits.size()); ++j)
+    {
+      const size_t at = static_cast<size_t>(hits[static_cast<size_t>(j)].Index);
+      (*found)[s * static_cast<size_t>(neighbours) + static_cast<size_t>(j)] = { static_cast<std::int64_t>(s),
+        points.Ids[at], points.Cloud.Points[at] };
+    }
+  };
   if (!locals.empty())
   {
     const PointLocator<D> locator(points.Cloud);
@@ -114,6 +138,7 @@ Status answerOnOwners(const OwnedPoints<D>& points, const std::vector<std::int64
           const OwnedAnswer a = query(locator, locals[static_cast<size_t>(s)], hits);
           values[static_cast<size_t>(s)] = a.Value;
           reach[static_cast<size_t>(s)] = a.Reach;
+          keep(static_cast<size_t>(s), hits);
         }
       });
   }
@@ -157,8 +182,13 @@ Status answerOnOwners(const OwnedPoints<D>& points, const std::vector<std::int64
     {
       ++c;
     }
+    NeighbourCandidate<D>* nearest = found ? found->data() + asking[i] * static_cast<size_t>(neighbours) : nullptr;
     values[asking[i]] =
-      answerAmongCandidates(requests[i], candidates.data() + first, candidates.data() + c, query).Value;
+      answerAmongCandidates(requests[i], candidates.data() + first, candidates.data() + c, query, nearest).Value;
+    for (int j = 0; nearest && j < neighbours; ++j)
+    {
+      nearest[j].Request = static_cast<std::int64_t>(asking[i]);
+    }
   }
   return Status::ok();
 }

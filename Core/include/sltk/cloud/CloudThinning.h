@@ -10,6 +10,7 @@
 /// reduces the noise the model (4.9) would otherwise fit.
 
 #include "sltk/cloud/PointCloud.h"
+#include "sltk/cloud/PointOwners.h"
 
 namespace sltk
 {
@@ -21,7 +22,20 @@ namespace sltk
 template <int D>
 Status thinCloud(const PointCloud<D>& cloud, double cell, PointCloud<D>& thinned);
 
+/// thinCloud() of a cloud spread over the ranks by owners (PointOwners.h):
+/// the same cells (anchored at the box of every rank's points), each averaged
+/// by the rank of its lower face along the slabs' axis from its points in
+/// global index order, so every mean is the one-rank mean bit for bit; the
+/// means replace the points, each under its index in the one-rank thinned
+/// cloud (the rows of cells per rank, gathered, place them: 24 bytes a row),
+/// sent to their owners with the same cuts and halo. `total`: the thinned
+/// cloud's points over every rank. Collective.
+template <int D>
+Status thinOnRanks(OwnedPoints<D>& points, double cell, const Communicator& comm, std::int64_t& total);
+
 extern template Status thinCloud(const PointCloud<2>&, double, PointCloud<2>&);
 extern template Status thinCloud(const PointCloud<3>&, double, PointCloud<3>&);
+extern template Status thinOnRanks(OwnedPoints<2>&, double, const Communicator&, std::int64_t&);
+extern template Status thinOnRanks(OwnedPoints<3>&, double, const Communicator&, std::int64_t&);
 
 } // namespace sltk

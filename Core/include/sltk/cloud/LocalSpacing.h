@@ -17,6 +17,7 @@
 /// sets how far the cloud's points are linked into components (recon/PointClusters.h).
 
 #include "sltk/cloud/PointLocator.h"
+#include "sltk/cloud/PointOwners.h"
 #include "sltk/exec/Context.h"
 
 #include <vector>
@@ -45,11 +46,25 @@ double medianOf(std::vector<double> values);
 template <int D>
 Status sparsityFactors(const PointLocator<D>& locator, int k, const Context& ctx, std::vector<double>& factors);
 
+/// sparsityFactors() of a cloud spread over the ranks by owners (PointOwners.h),
+/// one factor per held point (1 at the halo's): each owner finds its points'
+/// k nearest (asking the ranks a ball reaches when it leaves the halo, counted
+/// in `remote` over every rank), gets the neighbours' s from their owners and
+/// takes the median of the smoothed s as an exact order statistic over the
+/// ranks, so every owned point gets the one-rank factor bit for bit. Collective.
+template <int D>
+Status sparsityFactorsOnRanks(const OwnedPoints<D>& points, int k, const Communicator& comm, const Context& ctx,
+  std::vector<double>& factors, std::int64_t* remote = nullptr);
+
 extern template Status densitySpacings(
   const PointLocator<2>&, int, const Context&, std::vector<double>&, std::vector<std::int64_t>*);
 extern template Status densitySpacings(
   const PointLocator<3>&, int, const Context&, std::vector<double>&, std::vector<std::int64_t>*);
 extern template Status sparsityFactors(const PointLocator<2>&, int, const Context&, std::vector<double>&);
 extern template Status sparsityFactors(const PointLocator<3>&, int, const Context&, std::vector<double>&);
+extern template Status sparsityFactorsOnRanks(
+  const OwnedPoints<2>&, int, const Communicator&, const Context&, std::vector<double>&, std::int64_t*);
+extern template Status sparsityFactorsOnRanks(
+  const OwnedPoints<3>&, int, const Communicator&, const Context&, std::vector<double>&, std::int64_t*);
 
 } // namespace sltk

@@ -73,6 +73,12 @@ template <int D>
 Status sendToOwners(const PointCloud<D>& local, std::int64_t firstId, const SlabCuts& cuts, double halo,
   const Communicator& comm, OwnedPoints<D>& out);
 
+/// The same for points that already carry their global indices (`ids`, one a
+/// point; a rank may send points it does not own, as after thinning). Collective.
+template <int D>
+Status sendToOwners(const std::vector<std::array<double, D>>& points, const std::vector<std::int64_t>& ids,
+  const SlabCuts& cuts, double halo, const Communicator& comm, OwnedPoints<D>& out);
+
 /// A question about the neighbours of a point this rank owns that the points
 /// it holds may not answer: the neighbours of X (the point of global index Id)
 /// within Radius.
@@ -113,6 +119,15 @@ template <int D>
 Status keepOwned(
   OwnedPoints<D>& points, const std::vector<std::uint8_t>& keep, const Communicator& comm, std::int64_t& dropped);
 
+/// The values `held` (one per held point, read at the owned ones) that the
+/// owners of the points `wanted` (their global indices and places, such as a
+/// neighbour query's candidates) hold: out[i] for wanted[i]. A point's owner
+/// is the rank of its slab, so one all-to-all asks and one answers.
+/// Collective; fails on every rank when a point is not owned where its place says.
+template <int D>
+Status valuesFromOwners(const OwnedPoints<D>& points, const std::vector<double>& held,
+  const std::vector<NeighbourCandidate<D>>& wanted, const Communicator& comm, std::vector<double>& out);
+
 /// The box around every rank's `local` points (inverted, +inf to -inf, when
 /// no rank has any): boundingBox() over the ranks. Collective.
 template <int D>
@@ -128,12 +143,20 @@ extern template Status sendToOwners(
   const PointCloud<2>&, std::int64_t, const SlabCuts&, double, const Communicator&, OwnedPoints<2>&);
 extern template Status sendToOwners(
   const PointCloud<3>&, std::int64_t, const SlabCuts&, double, const Communicator&, OwnedPoints<3>&);
+extern template Status sendToOwners<2>(const std::vector<std::array<double, 2>>&, const std::vector<std::int64_t>&,
+  const SlabCuts&, double, const Communicator&, OwnedPoints<2>&);
+extern template Status sendToOwners<3>(const std::vector<std::array<double, 3>>&, const std::vector<std::int64_t>&,
+  const SlabCuts&, double, const Communicator&, OwnedPoints<3>&);
 extern template Status nearestOwnedOnRanks(const OwnedPoints<2>&, const std::vector<NeighbourRequest<2>>&,
   const Communicator&, std::vector<NeighbourCandidate<2>>&);
 extern template Status nearestOwnedOnRanks(const OwnedPoints<3>&, const std::vector<NeighbourRequest<3>>&,
   const Communicator&, std::vector<NeighbourCandidate<3>>&);
 extern template Status keepOwned(OwnedPoints<2>&, const std::vector<std::uint8_t>&, const Communicator&, std::int64_t&);
 extern template Status keepOwned(OwnedPoints<3>&, const std::vector<std::uint8_t>&, const Communicator&, std::int64_t&);
+extern template Status valuesFromOwners(const OwnedPoints<2>&, const std::vector<double>&,
+  const std::vector<NeighbourCandidate<2>>&, const Communicator&, std::vector<double>&);
+extern template Status valuesFromOwners(const OwnedPoints<3>&, const std::vector<double>&,
+  const std::vector<NeighbourCandidate<3>>&, const Communicator&, std::vector<double>&);
 extern template Box<2> boundingBoxOverRanks(const PointCloud<2>&, const Communicator&);
 extern template Box<3> boundingBoxOverRanks(const PointCloud<3>&, const Communicator&);
 extern template struct OwnedPoints<2>;

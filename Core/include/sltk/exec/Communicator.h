@@ -149,6 +149,39 @@ public:
     return all;
   }
 
+  /// A personalised all-to-all of records (T trivially copyable): `send`
+  /// holds counts[0] records for rank 0, then counts[1] for rank 1, ...; the
+  /// result every rank's records for this one in rank order, `received`
+  /// (optional) their count from each rank.
+  template <class T>
+  std::vector<T> allToAllRecords(const std::vector<T>& send, const std::vector<std::int64_t>& counts,
+    std::vector<std::int64_t>* received = nullptr) const
+  {
+    static_assert(std::is_trivially_copyable<T>::value, "allToAllRecords sends raw bytes");
+    std::vector<std::int64_t> byteCounts(counts);
+    for (std::int64_t& c : byteCounts)
+    {
+      c *= static_cast<std::int64_t>(sizeof(T));
+    }
+    std::vector<unsigned char> bytes;
+    std::vector<std::int64_t> receivedBytes;
+    this->allToAllV(send.data(), byteCounts, bytes, receivedBytes);
+    std::vector<T> records(bytes.size() / sizeof(T));
+    if (!records.empty())
+    {
+      std::memcpy(static_cast<void*>(records.data()), bytes.data(), records.size() * sizeof(T));
+    }
+    if (received)
+    {
+      received->clear();
+      for (std::int64_t c : receivedBytes)
+      {
+        received->push_back(c / static_cast<std::int64_t>(sizeof(T)));
+      }
+    }
+    return records;
+  }
+
   /// The collective status agreement: every rank passes its own status and
   /// every rank receives the same one: ok when all are ok, otherwise the
   /// error of the lowest failing rank (code and message, the message
