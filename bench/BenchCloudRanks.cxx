@@ -4,7 +4,8 @@
 // `mpirun -np P sltkBenchCloudRanks --cloud FILE.xyz`. Each rank takes the share
 // of the file a parallel read leaves it, the points move to the owners of
 // their slabs, and h_P, the density spacing, the outlier test, the noise and
-// the local sparsity factors are computed there; last the cloud is thinned
+// the local sparsity factors are computed there, the automatic K_P's probe
+// (at C_dx 1, with the local offset) runs on them; last the cloud is thinned
 // there (cells of 2.5 density spacings, as `--thin 2.5`). Per phase, the busiest rank's time, point-to-point and
 // collective megabytes, the queries answered with other ranks' points, and the
 // points held per rank against the cloud; then whether each value is the
@@ -25,6 +26,7 @@
 #include "sltk/exec/CountingCommunicator.h"
 #include "sltk/exec/ThreadPool.h"
 #include "sltk/mpi/MpiCommunicator.h"
+#include "sltk/recon/AutomaticParameters.h"
 
 #include <mpi.h>
 
@@ -179,6 +181,16 @@ int main(int argc, char** argv)
     }
     rhoSum.reduceOver(comm);
     weightedSum.reduceOver(comm);
+    sltk::OutsideFactorChoice probe;
+    const sltk::Box<3> bounds = sltk::boundingBoxOverRanks(owned.Cloud, comm);
+    phases.push_back(measure(
+      "K_P probe (C_dx 1)", comm,
+      [&]
+      {
+        check(sltk::chooseOutsideFactorOnRanks(owned, bounds, spacing, spacing, sparsity, comm, ctx, probe));
+        return std::int64_t(-1);
+      },
+      owned));
     std::int64_t thinned = 0;
     phases.push_back(measure(
       "thinning (2.5 density)", comm,
@@ -236,6 +248,8 @@ int main(int argc, char** argv)
         oneRho.add(oneSparsity[j]);
         oneWeighted.add(oneSparsity[j] * static_cast<double>(j + 1));
       }
+      sltk::OutsideFactorChoice oneProbe;
+      sltk::chooseOutsideFactor(locator, sltk::boundingBox(kept), oneSpacing, oneSpacing, oneSparsity, ctx, oneProbe);
       sltk::PointCloud<3> oneThinned;
       sltk::thinCloud(kept, 2.5 * oneDensity, oneThinned);
       sltk::ExactSum oneThin;
@@ -246,14 +260,15 @@ int main(int argc, char** argv)
           oneThin.add(oneThinned.Points[j][a] * static_cast<double>(j + 1 + a));
         }
       }
-      const bool same = oneThinned.size() == thinned && oneThin.value() == thinSum.value() &&
-        one.Removed == outliers.Removed && one.Threshold == outliers.Threshold && oneSpacing == spacing &&
-        oneDensity == density && oneNoise == noise && oneRho.value() == rhoSum.value() &&
-        oneWeighted.value() == weightedSum.value();
+      const bool same = oneProbe.Factor == probe.Factor && oneProbe.EnclosedNodes == probe.EnclosedNodes &&
+        oneThinned.size() == thinned && oneThin.value() == thinSum.value() && one.Removed == outliers.Removed &&
+        one.Threshold == outliers.Threshold && oneSpacing == spacing && oneDensity == density && oneNoise == noise &&
+        oneRho.value() == rhoSum.value() && oneWeighted.value() == weightedSum.value();
       std::printf("outliers removed %lld, h_P %.17g, density spacing %.17g, noise %.17g h_P, mean rho %.17g, "
-                  "thinned to %lld: %s\n",
+                  "K_P %g, thinned to %lld: %s\n",
         static_cast<long long>(outliers.Removed), spacing, density, noise, rhoSum.value() / static_cast<double>(total),
-        static_cast<long long>(thinned), same ? "the one-rank values bit for bit" : "DIFFERENT from one rank's");
+        probe.Factor, static_cast<long long>(thinned),
+        same ? "the one-rank values bit for bit" : "DIFFERENT from one rank's");
       code = same ? 0 : 1;
     }
   }

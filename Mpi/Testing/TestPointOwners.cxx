@@ -16,6 +16,9 @@
 #include "sltk/core/ExactSum.h"
 #include "sltk/exec/OrderStatistics.h"
 #include "sltk/exec/ThreadPool.h"
+#include "sltk/recon/AutomaticParameters.h"
+#include "sltk/recon/DistanceFunction.h"
+#include "sltk/recon/LocalOffset.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,11 +43,11 @@ Points shareOf(const Points& cloud, const sltk::Communicator& comm, bool allOnRa
   return Points(cloud.begin() + s.Begin, cloud.begin() + s.End);
 }
 
-/// The 10 registered Stanford bunny scans, merged (362,272 points); none when /work/shared is absent.
-Points stanfordScans()
+/// The points of an x y z file of the shared data; none when /work/shared is absent.
+Points sharedCloud(const std::string& path)
 {
   Points cloud;
-  std::ifstream in("/work/shared/data/clouds/bunny/scans/bunny_scans_registered.xyz");
+  std::ifstream in("/work/shared/data/clouds/" + path);
   double x, y, z;
   while (in >> x >> y >> z)
   {
@@ -52,6 +55,20 @@ Points stanfordScans()
   }
   return cloud;
 }
+
+/// The 10 registered Stanford bunny scans, merged (362,272 points).
+Points stanfordScans()
+{
+  return sharedCloud("bunny/scans/bunny_scans_registered.xyz");
+}
+
+/// A context of two threads for the statistics.
+struct TwoThreads
+{
+  sltk::ThreadPool Pool{ 2 };
+  sltk::Context Ctx;
+  TwoThreads() { this->Ctx.Executor = &this->Pool; }
+};
 
 /// `n` points uniform in a box [0, 4] x [0, 1] x [0, 1], the same on every rank.
 Points boxCloud(int n, unsigned seed)
@@ -64,6 +81,20 @@ Points boxCloud(int n, unsigned seed)
     x = { 4.0 * u(rng), u(rng), u(rng) };
   }
   return p;
+}
+
+/// `cloud` with its x coordinates moved to axis `axis` (the others shifted along): a box long along that axis.
+Points rotated(const Points& cloud, int axis)
+{
+  Points out(cloud.size());
+  for (size_t j = 0; j < cloud.size(); ++j)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      out[j][static_cast<size_t>((a + axis) % 3)] = cloud[j][static_cast<size_t>(a)];
+    }
+  }
+  return out;
 }
 
 sltk::OwnedPoints<3> owners(const Points& cloud, const sltk::Communicator& comm, double halo, bool allOnRankZero)
@@ -412,9 +443,8 @@ namespace
 void expectOneRankSparsity(const Points& cloud, int k, bool allOnRankZero = false)
 {
   auto comm = world();
-  sltk::ThreadPool pool(2);
-  sltk::Context ctx;
-  ctx.Executor = &pool;
+  TwoThreads threads;
+  const sltk::Context& ctx = threads.Ctx;
   const sltk::PointCloud<3> whole{ cloud };
   std::vector<double> one;
   ASSERT_TRUE(sltk::sparsityFactors(sltk::PointLocator<3>(whole), k, ctx, one).isOk());
@@ -457,6 +487,9 @@ TEST(SparsityFactorsOnRanks, AreTheOneRankFactorsBitForBit)
   expectOneRankSparsity(doubled, 8);
   // Fewer points than neighbours + 1: every factor 1.
   expectOneRankSparsity(Points(boxCloud(16, 2)), 16);
+  // Slabs along y and z (the box's long side moved): the other rows of the cell and index orders.
+  expectOneRankSparsity(rotated(uneven, 1), 16);
+  expectOneRankSparsity(rotated(uneven, 2), 16);
 }
 
 TEST(SparsityFactorsOnRanks, TheMergedStanfordScansGiveTheOneRankFactors)
@@ -505,6 +538,8 @@ TEST(ThinOnRanks, GivesTheOneRankMeansUnderTheOneRankIndices)
   Points doubled = box;                  // duplicates: their cells' sums in global index order
   doubled.insert(doubled.end(), box.begin(), box.begin() + 2500);
   expectOneRankThinning(doubled, 0.1);
+  expectOneRankThinning(rotated(box, 1), 0.3); // slabs along y: rows of (z) lines
+  expectOneRankThinning(rotated(box, 2), 0.3); // slabs along z, the slowest axis: one row
   auto comm = world();
   sltk::OwnedPoints<3> owned = owners(box, *comm, 0.0, false);
   std::int64_t total = 0;
@@ -520,4 +555,90 @@ TEST(ThinOnRanks, TheMergedStanfordScansThinAsOnOneRank)
     GTEST_SKIP() << "the Stanford scans (/work/shared) are not available";
   }
   expectOneRankThinning(cloud, 2.5 * 4.2222732870964941e-4); // --thin 2.5 of the density spacing (k = 8)
+}
+
+namespace
+{
+/// The automatic K_P's probe on the ranks (from a halo of 0, with and without
+/// the local sparsity) against one rank's: the same nodes enclosed per rung
+/// and the same choice; and its fields, distance and scaled distance, bit for bit.
+void expectOneRankProbe(const Points& cloud, double cellSizeFactor, bool allOnRankZero = false)
+{
+  auto comm = world();
+  TwoThreads threads;
+  const sltk::Context& ctx = threads.Ctx;
+  const sltk::PointCloud<3> whole{ cloud };
+  const sltk::PointLocator<3> locator(whole);
+  double spacing = 0.0;
+  ASSERT_TRUE(sltk::cloudSpacing(locator, ctx, spacing).isOk());
+  const sltk::Box<3> bounds = sltk::boundingBox(whole);
+  std::vector<double> rho;
+  ASSERT_TRUE(sltk::sparsityFactors(locator, 16, ctx, rho).isOk());
+  const sltk::OwnedPoints<3> owned = owners(cloud, *comm, 0.0, allOnRankZero);
+  std::vector<double> heldRho;
+  ASSERT_TRUE(sltk::sparsityFactorsOnRanks(owned, 16, *comm, ctx, heldRho).isOk());
+  for (const bool local : { false, true })
+  {
+    sltk::OutsideFactorChoice one, ranks;
+    const double dx = cellSizeFactor * spacing;
+    ASSERT_TRUE(
+      sltk::chooseOutsideFactor(locator, bounds, spacing, dx, local ? rho : std::vector<double>{}, ctx, one).isOk());
+    const sltk::Status s = sltk::chooseOutsideFactorOnRanks(
+      owned, bounds, spacing, dx, local ? heldRho : std::vector<double>{}, *comm, ctx, ranks);
+    ASSERT_TRUE(s.isOk()) << s.message();
+    EXPECT_EQ(ranks.Factor, one.Factor) << (local ? "local offset" : "uniform offset");
+    EXPECT_EQ(ranks.EnclosedNodes, one.EnclosedNodes);
+    EXPECT_EQ(ranks.ProbeNodes, one.ProbeNodes);
+    EXPECT_EQ(ranks.FirstRung, one.FirstRung);
+  }
+  // The fields on a grid around the cloud, node by node.
+  sltk::GridSpec<3> g;
+  for (int a = 0; a < 3; ++a)
+  {
+    g.Spacing[a] = 1.5 * spacing;
+    g.Origin[a] = bounds.Min[a] - 6.0 * g.Spacing[a];
+    g.Dims[a] = static_cast<sltk::Index>(std::ceil(bounds.extent(a) / g.Spacing[a])) + 13;
+  }
+  sltk::GridField<3, double> d1, dr, u1, ur;
+  ASSERT_TRUE(sltk::distanceToCloud(locator, g, ctx, d1).isOk());
+  ASSERT_TRUE(sltk::distanceToCloudOnRanks(owned, g, *comm, ctx, dr).isOk());
+  const double reach = 8.0 * spacing;
+  ASSERT_TRUE(sltk::locallyScaledDistance(d1, locator, rho, reach, ctx, u1).isOk());
+  ASSERT_TRUE(sltk::locallyScaledDistanceOnRanks(dr, owned, heldRho, reach, *comm, ctx, ur).isOk());
+  std::int64_t differ = 0;
+  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
+  {
+    const auto i = d1.nodeIndex(k);
+    differ += d1(i) == dr(i) && u1(i) == ur(i) ? 0 : 1;
+  }
+  EXPECT_EQ(differ, 0) << "nodes of " << g.nodeCount() << " on " << comm->size() << " ranks";
+}
+} // namespace
+
+TEST(ChooseOutsideFactorOnRanks, ProbesAsOneRank)
+{
+  // A sphere with a hole in its sampling and a sparser half: the rungs enclose different counts.
+  Points cloud;
+  size_t j = 0;
+  for (const auto& p : sltk::sphereCloud(3000).Points)
+  {
+    if (p[0] > 0.8 || (p[2] > 0.0 && j++ % 3 != 0))
+    {
+      continue;
+    }
+    cloud.push_back(p);
+  }
+  expectOneRankProbe(cloud, 2.0);       // (a coarser probe than C_dx 1 gives: the test's time)
+  expectOneRankProbe(cloud, 3.0, true); // every point read by rank 0
+  expectOneRankProbe(rotated(cloud, 1), 2.0);
+}
+
+TEST(ChooseOutsideFactorOnRanks, TheBunnyProbesAsOneRank)
+{
+  const Points cloud = sharedCloud("bunny/bunny.xyz");
+  if (cloud.empty())
+  {
+    GTEST_SKIP() << "the Stanford bunny (/work/shared) is not available";
+  }
+  expectOneRankProbe(cloud, 2.08); // the automatic C_dx with no options
 }

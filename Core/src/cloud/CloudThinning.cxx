@@ -10,6 +10,12 @@ namespace sltk
 
 namespace
 {
+Status checkCell(double cell)
+{
+  return cell > 0.0 && std::isfinite(cell) ? Status::ok()
+                                           : Status::invalidArgument("the thinning cell must be positive and finite");
+}
+
 /// The cells of edge `cell` anchored at the box's minimum: their count per
 /// axis, and the number of a point's cell (x fastest).
 template <int D>
@@ -21,10 +27,7 @@ struct ThinningCells
 
   Status set(const Box<D>& box, double cell)
   {
-    if (!(cell > 0.0) || !std::isfinite(cell))
-    {
-      return Status::invalidArgument("the thinning cell must be positive and finite");
-    }
+    SLTK_RETURN_IF_ERROR(checkCell(cell));
     this->Bounds = box;
     this->Cell = cell;
     double total = 1.0;
@@ -76,7 +79,7 @@ struct CellPoint
   std::array<double, D> X;
 };
 
-/// The mean of `count` points given one by one in their order (the cloud's).
+/// The mean of points given one by one in their order (the cloud's).
 template <int D>
 class CellMean
 {
@@ -187,12 +190,11 @@ std::vector<std::int64_t> globalCellIndices(
 template <int D>
 Status thinCloud(const PointCloud<D>& cloud, double cell, PointCloud<D>& thinned)
 {
+  SLTK_RETURN_IF_ERROR(checkCell(cell));
   if (cloud.Points.empty())
   {
     thinned.Points.clear();
-    return !(cell > 0.0) || !std::isfinite(cell)
-      ? Status::invalidArgument("the thinning cell must be positive and finite")
-      : Status::ok();
+    return Status::ok();
   }
   ThinningCells<D> cells;
   SLTK_RETURN_IF_ERROR(cells.set(boundingBox(cloud), cell));
@@ -213,14 +215,16 @@ Status thinCloud(const PointCloud<D>& cloud, double cell, PointCloud<D>& thinned
 template <int D>
 Status thinOnRanks(OwnedPoints<D>& points, double cell, const Communicator& comm, std::int64_t& total)
 {
+  SLTK_RETURN_IF_ERROR(checkCell(cell));
+  SLTK_RETURN_IF_ERROR(comm.agree(points.Cuts.ranks() == comm.size()
+      ? Status::ok()
+      : Status::invalidArgument("thinOnRanks: the points' cuts are not for the ranks running")));
   const Box<D> box = boundingBoxOverRanks(points.Cloud, comm);
   ThinningCells<D> cells;
   if (comm.allReduce(points.Owned, ReduceOp::Sum) == 0)
   {
     total = 0;
-    return !(cell > 0.0) || !std::isfinite(cell)
-      ? Status::invalidArgument("the thinning cell must be positive and finite")
-      : Status::ok();
+    return Status::ok();
   }
   SLTK_RETURN_IF_ERROR(cells.set(box, cell));
   // Each cell is averaged by the rank of its lower face along the slabs' axis

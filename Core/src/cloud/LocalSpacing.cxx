@@ -120,6 +120,10 @@ Status sparsityFactorsOnRanks(const OwnedPoints<D>& points, int k, const Communi
   std::vector<double>& factors, std::int64_t* remote)
 {
   factors.assign(static_cast<size_t>(points.held()), 1.0);
+  if (remote)
+  {
+    *remote = 0;
+  }
   if (k < 1)
   {
     return Status::invalidArgument("the sparsity factors need k >= 1 neighbours");

@@ -201,6 +201,27 @@ void PointLocator<D>::search(const std::array<double, D>& x, std::int64_t exclud
 }
 
 template <int D>
+typename PointLocator<D>::Hit PointLocator<D>::nearestWithin(const std::array<double, D>& x, double radius) const
+{
+  Hit best;
+  best.Distance = radius;
+  bool found = false;
+  this->search(
+    x, -1,
+    [&](std::int64_t k, double d)
+    {
+      if (d < best.Distance || (d == best.Distance && (!found || k < best.Index)))
+      {
+        best.Distance = d;
+        best.Index = k;
+        found = true;
+      }
+    },
+    [&] { return best.Distance; });
+  return found ? best : Hit{};
+}
+
+template <int D>
 typename PointLocator<D>::Hit PointLocator<D>::nearest(const std::array<double, D>& x, std::int64_t exclude) const
 {
   Hit best;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <numeric>
 
 namespace sltk
@@ -251,10 +252,9 @@ template <int D>
 Status sendToOwners(const std::vector<std::array<double, D>>& points, const std::vector<std::int64_t>& ids,
   const SlabCuts& cuts, double halo, const Communicator& comm, OwnedPoints<D>& out)
 {
-  if (points.size() != ids.size())
-  {
-    return Status::invalidArgument("sendToOwners: one global index per point is needed");
-  }
+  SLTK_RETURN_IF_ERROR(comm.agree(points.size() == ids.size()
+      ? Status::ok()
+      : Status::invalidArgument("sendToOwners: one global index per point is needed")));
   return exchange<D>(points, ids, cuts, halo, comm, out);
 }
 
@@ -403,6 +403,9 @@ template <int D>
 Status valuesFromOwners(const OwnedPoints<D>& points, const std::vector<double>& held,
   const std::vector<NeighbourCandidate<D>>& wanted, const Communicator& comm, std::vector<double>& out)
 {
+  SLTK_RETURN_IF_ERROR(comm.agree(points.Cuts.ranks() == comm.size()
+      ? Status::ok()
+      : Status::invalidArgument("valuesFromOwners: the points' cuts are not for the ranks running")));
   const size_t ranks = static_cast<size_t>(comm.size());
   const int me = comm.rank();
   const double missing = std::numeric_limits<double>::quiet_NaN();
@@ -458,6 +461,77 @@ Status valuesFromOwners(const OwnedPoints<D>& points, const std::vector<double>&
 }
 
 template <int D>
+void nearestOverRanks(const OwnedPoints<D>& points, const std::vector<std::array<double, D>>& queries, double radius,
+  const Communicator& comm, const Context& ctx, std::vector<double>& distance, std::vector<std::int64_t>& ids)
+{
+  constexpr std::int64_t None = std::numeric_limits<std::int64_t>::max();
+  PointCloud<D> own; // this rank's points, without the halo (another rank owns those)
+  std::vector<std::int64_t> ownIds;
+  for (size_t j = 0; j < points.Mine.size(); ++j)
+  {
+    if (points.Mine[j])
+    {
+      own.Points.push_back(points.Cloud.Points[j]);
+      ownIds.push_back(points.Ids[j]);
+    }
+  }
+  const std::unique_ptr<PointLocator<D>> locator = own.size() > 0 ? std::make_unique<PointLocator<D>>(own) : nullptr;
+  distance.assign(queries.size(), Infinity);
+  ids.assign(queries.size(), None);
+  // The nearest of every rank for the queries `asked`, `bounded` within the radius.
+  const auto answer = [&](const std::vector<size_t>& asked, bool bounded)
+  {
+    std::vector<double> d(asked.size(), Infinity);
+    std::vector<std::int64_t> id(asked.size(), None);
+    if (locator)
+    {
+      ctx.parallelFor(0, static_cast<Index>(asked.size()),
+        [&](Index b, Index e)
+        {
+          for (Index q = b; q < e; ++q)
+          {
+            const auto& x = queries[asked[static_cast<size_t>(q)]];
+            const auto hit = bounded ? locator->nearestWithin(x, radius) : locator->nearest(x);
+            d[static_cast<size_t>(q)] = hit.Distance;
+            id[static_cast<size_t>(q)] = hit.Index >= 0 ? ownIds[static_cast<size_t>(hit.Index)] : None;
+          }
+        });
+    }
+    std::vector<double> least(d);
+    comm.allReduce(least.data(), least.size(), ReduceOp::Min);
+    for (size_t q = 0; q < asked.size(); ++q)
+    {
+      id[q] = d[q] == least[q] ? id[q] : None;
+    }
+    comm.allReduce(id.data(), id.size(), ReduceOp::Min);
+    for (size_t q = 0; q < asked.size(); ++q)
+    {
+      distance[asked[q]] = least[q];
+      ids[asked[q]] = id[q];
+    }
+  };
+  std::vector<size_t> asked(queries.size());
+  std::iota(asked.begin(), asked.end(), size_t(0));
+  answer(asked, true);
+  asked.clear();
+  for (size_t q = 0; q < queries.size(); ++q)
+  {
+    if (ids[q] == None)
+    {
+      asked.push_back(q); // the same on every rank: after the reductions
+    }
+  }
+  if (!asked.empty() && comm.allReduce(points.Owned, ReduceOp::Sum) > 0)
+  {
+    answer(asked, false);
+  }
+  for (auto& id : ids)
+  {
+    id = id == None ? -1 : id;
+  }
+}
+
+template <int D>
 std::int64_t OwnedPoints<D>::ownedLocal(std::int64_t id) const
 {
   const auto it = std::lower_bound(this->Ids.begin(), this->Ids.end(), id);
@@ -471,6 +545,10 @@ template Status valuesFromOwners(const OwnedPoints<2>&, const std::vector<double
   const std::vector<NeighbourCandidate<2>>&, const Communicator&, std::vector<double>&);
 template Status valuesFromOwners(const OwnedPoints<3>&, const std::vector<double>&,
   const std::vector<NeighbourCandidate<3>>&, const Communicator&, std::vector<double>&);
+template void nearestOverRanks<2>(const OwnedPoints<2>&, const std::vector<std::array<double, 2>>&, double,
+  const Communicator&, const Context&, std::vector<double>&, std::vector<std::int64_t>&);
+template void nearestOverRanks<3>(const OwnedPoints<3>&, const std::vector<std::array<double, 3>>&, double,
+  const Communicator&, const Context&, std::vector<double>&, std::vector<std::int64_t>&);
 template struct OwnedPoints<2>;
 template struct OwnedPoints<3>;
 template Status sendToOwners<2>(const std::vector<std::array<double, 2>>&, const std::vector<std::int64_t>&,

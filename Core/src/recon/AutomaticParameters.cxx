@@ -88,9 +88,16 @@ std::vector<Index> enclosedNodes(
 }
 } // namespace
 
-template <int D>
-Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds, double cloudSpacing, double dx,
-  const std::vector<double>& sparsity, const Context& ctx, OutsideFactorChoice& choice)
+namespace
+{
+/// The probe of chooseOutsideFactor(): its grid around `bounds` (run 1's
+/// spacing dx, doubled until it has at most MaximumProbeNodes nodes),
+/// `scaledDistance(grid, reach, distance)` on it (the distance to the cloud
+/// (4.4.2), divided by the local sparsity within `reach` when `local`), and
+/// the rung chosen from the nodes each encloses.
+template <int D, class ScaledDistance>
+Status probeOutsideFactor(const Box<D>& bounds, double cloudSpacing, double dx, double largestSparsity,
+  const Context& ctx, ScaledDistance scaledDistance, OutsideFactorChoice& choice)
 {
   choice = OutsideFactorChoice{};
   const std::vector<double>& ladder = outsideFactorLadder();
@@ -98,7 +105,6 @@ Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds,
   po.Runs = 1;
   po.MemoryBudget = std::numeric_limits<std::uint64_t>::max(); // the probe is bounded below instead
   GridPlan<D> probe;
-  const double largest = sparsity.empty() ? 1.0 : *std::max_element(sparsity.begin(), sparsity.end());
   const size_t first = firstOutsideRung(dx / cloudSpacing);
   for (;;)
   {
@@ -118,16 +124,7 @@ Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds,
   }
   const GridSpec<D>& grid = probe.Runs[0];
   GridField<D, double> distance;
-  DistanceOptions dopt;
-  dopt.Ghost = 0;
-  SLTK_RETURN_IF_ERROR(distanceToCloud(locator, grid, ctx, distance, dopt)); // (4.4.2)
-  if (!sparsity.empty())
-  {
-    GridField<D, double> scaled;
-    const double reach = largest * ladder.back() * cloudSpacing;
-    SLTK_RETURN_IF_ERROR(locallyScaledDistance(distance, locator, sparsity, reach, ctx, scaled));
-    distance = std::move(scaled);
-  }
+  SLTK_RETURN_IF_ERROR(scaledDistance(grid, largestSparsity * ladder.back() * cloudSpacing, distance));
   std::vector<double> bottleneck;
   SLTK_RETURN_IF_ERROR(outsideBottleneck(distance, ctx, bottleneck));
   const std::vector<Index> enclosed = enclosedNodes(distance, bottleneck, cloudSpacing, ctx);
@@ -142,6 +139,65 @@ Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds,
   choice.ProbeNodes = grid.nodeCount();
   choice.ProbeSpacing = grid.Spacing[0];
   return Status::ok();
+}
+} // namespace
+
+template <int D>
+Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds, double cloudSpacing, double dx,
+  const std::vector<double>& sparsity, const Context& ctx, OutsideFactorChoice& choice)
+{
+  const double largest = sparsity.empty() ? 1.0 : *std::max_element(sparsity.begin(), sparsity.end());
+  return probeOutsideFactor(
+    bounds, cloudSpacing, dx, largest, ctx,
+    [&](const GridSpec<D>& grid, double reach, GridField<D, double>& distance)
+    {
+      DistanceOptions dopt;
+      dopt.Ghost = 0;
+      SLTK_RETURN_IF_ERROR(distanceToCloud(locator, grid, ctx, distance, dopt)); // (4.4.2)
+      if (sparsity.empty())
+      {
+        return Status::ok();
+      }
+      GridField<D, double> scaled;
+      SLTK_RETURN_IF_ERROR(locallyScaledDistance(distance, locator, sparsity, reach, ctx, scaled));
+      distance = std::move(scaled);
+      return Status::ok();
+    },
+    choice);
+}
+
+template <int D>
+Status chooseOutsideFactorOnRanks(const OwnedPoints<D>& points, const Box<D>& bounds, double cloudSpacing, double dx,
+  const std::vector<double>& sparsity, const Communicator& comm, const Context& ctx, OutsideFactorChoice& choice)
+{
+  const bool local = comm.anyRank(!sparsity.empty());
+  double largest = 1.0;
+  if (local)
+  {
+    largest = 0.0;
+    for (size_t j = 0; j < sparsity.size() && j < points.Mine.size(); ++j)
+    {
+      largest = points.Mine[j] ? std::max(largest, sparsity[j]) : largest;
+    }
+    largest = comm.allReduce(largest, ReduceOp::Max);
+  }
+  return probeOutsideFactor(
+    bounds, cloudSpacing, dx, largest, ctx,
+    [&](const GridSpec<D>& grid, double reach, GridField<D, double>& distance)
+    {
+      DistanceOptions dopt;
+      dopt.Ghost = 0;
+      SLTK_RETURN_IF_ERROR(distanceToCloudOnRanks(points, grid, comm, ctx, distance, dopt)); // (4.4.2)
+      if (!local)
+      {
+        return Status::ok();
+      }
+      GridField<D, double> scaled;
+      SLTK_RETURN_IF_ERROR(locallyScaledDistanceOnRanks(distance, points, sparsity, reach, comm, ctx, scaled));
+      distance = std::move(scaled);
+      return Status::ok();
+    },
+    choice);
 }
 
 size_t firstOutsideRung(double cellSizeFactor)
@@ -180,6 +236,10 @@ template Status chooseOutsideFactor(const PointLocator<2>&, const Box<2>&, doubl
   const Context&, OutsideFactorChoice&);
 template Status chooseOutsideFactor(const PointLocator<3>&, const Box<3>&, double, double, const std::vector<double>&,
   const Context&, OutsideFactorChoice&);
+template Status chooseOutsideFactorOnRanks(const OwnedPoints<2>&, const Box<2>&, double, double,
+  const std::vector<double>&, const Communicator&, const Context&, OutsideFactorChoice&);
+template Status chooseOutsideFactorOnRanks(const OwnedPoints<3>&, const Box<3>&, double, double,
+  const std::vector<double>&, const Communicator&, const Context&, OutsideFactorChoice&);
 template Status chooseCellSizeFactor(const Box<2>&, double, GridPlanOptions, double&);
 template Status chooseCellSizeFactor(const Box<3>&, double, GridPlanOptions, double&);
 

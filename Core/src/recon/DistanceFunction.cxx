@@ -49,22 +49,20 @@ Status checkDistanceInput(const PointCloud<D>& cloud, const GridSpec<D>& grid, c
   return Status::ok();
 }
 
-/// The exact distance on the nodes of the 4^D box around each point (the cell
-/// of Q in the whole grid, clipped to it, and ExactHalfWidth - 1 more layers),
-/// for the nodes of `distance`: the rows from `firstRow` of the last axis of
-/// `whole` (all of it for one rank). `exact` marks them (one entry a node).
+/// Marks the nodes of the 4^D box around each of `points` (the cell of Q in
+/// the whole grid, clipped to it, and ExactHalfWidth - 1 more layers) among
+/// the nodes of `window`: the rows from `firstRow` of the last axis of
+/// `whole` (all of it for one rank). `exact` gets one entry a node.
 template <int D>
-Status exactNearPoints(const PointLocator<D>& locator, const GridSpec<D>& whole, Index firstRow, const Context& ctx,
-  const DistanceOptions& options, GridField<D, double>& distance, std::vector<std::uint8_t>& exact, Index& count)
+void markExactBoxes(const std::vector<std::array<double, D>>& points, const GridSpec<D>& whole, Index firstRow,
+  const GridSpec<D>& window, const DistanceOptions& options, std::vector<std::uint8_t>& exact)
 {
-  const GridSpec<D>& window = distance.spec();
-  const Index nodes = window.nodeCount();
-  exact.assign(static_cast<size_t>(nodes), 0);
+  exact.assign(static_cast<size_t>(window.nodeCount()), 0);
   // Marking is idempotent, so the mask does not depend on the order; it is
   // done serially (O(|P| 4^D)) to avoid races.
   const Index w = options.ExactHalfWidth;
   const Index lastRow = firstRow + window.Dims[D - 1] - 1;
-  for (const auto& q : locator.cloud().Points)
+  for (const auto& q : points)
   {
     const CellLocation<D> loc = locate(whole, q.data());
     std::array<Index, D> lo, hi;
@@ -90,8 +88,16 @@ Status exactNearPoints(const PointLocator<D>& locator, const GridSpec<D>& whole,
         exact[static_cast<size_t>(lin)] = 1;
       });
   }
-  // Exact distance on the marked nodes, per node: independent of the thread count.
-  count = static_cast<Index>(ctx.parallelSum(0, nodes,
+}
+
+/// The distance to the locator's cloud at the marked nodes of `distance`, per
+/// node (independent of the thread count); returns how many are marked.
+template <int D>
+Index distanceAtMarked(const PointLocator<D>& locator, const std::vector<std::uint8_t>& exact, const Context& ctx,
+  GridField<D, double>& distance)
+{
+  const GridSpec<D>& window = distance.spec();
+  return static_cast<Index>(ctx.parallelSum(0, window.nodeCount(),
     [&](Index b, Index e)
     {
       double marked = 0.0;
@@ -112,7 +118,39 @@ Status exactNearPoints(const PointLocator<D>& locator, const GridSpec<D>& whole,
       }
       return marked;
     }));
+}
+
+/// The exact distance on the nodes of the boxes around the locator's points (markExactBoxes).
+template <int D>
+Status exactNearPoints(const PointLocator<D>& locator, const GridSpec<D>& whole, Index firstRow, const Context& ctx,
+  const DistanceOptions& options, GridField<D, double>& distance, std::vector<std::uint8_t>& exact, Index& count)
+{
+  markExactBoxes<D>(locator.cloud().Points, whole, firstRow, distance.spec(), options, exact);
+  count = distanceAtMarked(locator, exact, ctx, distance);
   return ctx.interrupter().wasInterrupted() ? Status::aborted() : Status::ok();
+}
+
+/// The fast sweeping (4.4.2) from the exact nodes, then the ghost layers.
+template <int D>
+Status sweepFromExact(GridField<D, double>& distance, const std::vector<std::uint8_t>& exact, const SlabPlan& slab,
+  const Communicator& comm, const Context& ctx, const DistanceOptions& options, Index exactNodes,
+  DistanceReport* report)
+{
+  FastSweepingOptions sweep;
+  sweep.MaxCycles = options.MaxSweepCycles;
+  sweep.Tolerance = options.SweepTolerance;
+  FastSweepingSlabsReport swept;
+  SLTK_RETURN_IF_ERROR(fastSweepSlabs(distance, exact, slab, comm, ctx, sweep, &swept));
+  if (options.Ghost > 0)
+  {
+    distance.fillGhosts();
+  }
+  if (report)
+  {
+    report->ExactNodes = exactNodes;
+    report->SweepCycles = swept.Cycles;
+  }
+  return Status::ok();
 }
 } // namespace
 
@@ -150,21 +188,66 @@ Status distanceToCloudSlabs(const PointLocator<D>& locator, const GridSpec<D>& w
   Index exactNodes = 0;
   SLTK_RETURN_IF_ERROR(
     comm.agree(exactNearPoints(locator, whole, slab.First, ctx, options, distance, exact, exactNodes)));
-  FastSweepingOptions sweep;
-  sweep.MaxCycles = options.MaxSweepCycles;
-  sweep.Tolerance = options.SweepTolerance;
-  FastSweepingSlabsReport swept;
-  SLTK_RETURN_IF_ERROR(fastSweepSlabs(distance, exact, slab, comm, ctx, sweep, &swept));
-  if (options.Ghost > 0)
+  return sweepFromExact(distance, exact, slab, comm, ctx, options, exactNodes, report);
+}
+
+template <int D>
+Status distanceToCloudOnRanks(const OwnedPoints<D>& points, const GridSpec<D>& grid, const Communicator& comm,
+  const Context& ctx, GridField<D, double>& distance, const DistanceOptions& options, DistanceReport* report)
+{
+  const std::int64_t total = comm.allReduce(points.held(), ReduceOp::Sum);
+  Status checked = total == 0 ? emptyCloud() : Status::ok();
+  if (checked.isOk())
   {
-    distance.fillGhosts();
+    PointCloud<D> probe; // the input checks on this rank's points; an empty share passes them
+    probe.Points = points.Cloud.Points;
+    if (probe.Points.empty())
+    {
+      probe.Points.push_back({});
+    }
+    checked = checkDistanceInput(probe, grid, options);
   }
-  if (report)
+  SLTK_RETURN_IF_ERROR(comm.agree(checked));
+  distance.resize(grid, options.Ghost, std::numeric_limits<double>::infinity());
+  // The boxes of every rank's points, and at their nodes the nearest of every
+  // rank's: the whole cloud's marks and distances, bit for bit.
+  std::vector<std::uint8_t> exact;
+  markExactBoxes<D>(points.Cloud.Points, grid, 0, grid, options, exact);
+  std::vector<std::int64_t> marks(exact.begin(), exact.end());
+  comm.allReduce(marks.data(), marks.size(), ReduceOp::Max);
+  std::copy(marks.begin(), marks.end(), exact.begin());
+  marks = {};
+  std::vector<Index> at;
+  std::vector<std::array<double, D>> x;
+  for (Index k = 0; k < grid.nodeCount(); ++k)
   {
-    report->ExactNodes = exactNodes;
-    report->SweepCycles = swept.Cycles;
+    if (exact[static_cast<size_t>(k)])
+    {
+      const auto i = distance.nodeIndex(k);
+      at.push_back(k);
+      x.emplace_back();
+      for (int a = 0; a < D; ++a)
+      {
+        x.back()[a] = grid.coordinate(a, i[a]);
+      }
+    }
   }
-  return Status::ok();
+  // A marked node lies within ExactHalfWidth cells of a point along every axis.
+  double reach = 0.0;
+  for (int a = 0; a < D; ++a)
+  {
+    reach += std::pow(options.ExactHalfWidth * grid.Spacing[a], 2);
+  }
+  std::vector<double> nearest;
+  std::vector<std::int64_t> ids;
+  nearestOverRanks<D>(points, x, std::sqrt(reach) * (1.0 + 1e-9), comm, ctx, nearest, ids);
+  for (size_t m = 0; m < at.size(); ++m)
+  {
+    distance(distance.nodeIndex(at[m])) = nearest[m];
+  }
+  SLTK_RETURN_IF_ERROR(comm.agree(ctx.interrupter().wasInterrupted() ? Status::aborted() : Status::ok()));
+  return sweepFromExact(distance, exact, wholeSlab(grid.Dims[D - 1]), serialCommunicator(), ctx, options,
+    static_cast<Index>(at.size()), report);
 }
 
 template Status distanceToCloud(const PointCloud<2>&, const GridSpec<2>&, const Context&, GridField<2, double>&,
@@ -175,6 +258,10 @@ template Status distanceToCloud(const PointLocator<2>&, const GridSpec<2>&, cons
   const DistanceOptions&, DistanceReport*);
 template Status distanceToCloud(const PointLocator<3>&, const GridSpec<3>&, const Context&, GridField<3, double>&,
   const DistanceOptions&, DistanceReport*);
+template Status distanceToCloudOnRanks(const OwnedPoints<2>&, const GridSpec<2>&, const Communicator&, const Context&,
+  GridField<2, double>&, const DistanceOptions&, DistanceReport*);
+template Status distanceToCloudOnRanks(const OwnedPoints<3>&, const GridSpec<3>&, const Communicator&, const Context&,
+  GridField<3, double>&, const DistanceOptions&, DistanceReport*);
 template Status distanceToCloudSlabs(const PointLocator<2>&, const GridSpec<2>&, const SlabPlan&, const Communicator&,
   const Context&, GridField<2, double>&, const DistanceOptions&, DistanceReport*);
 template Status distanceToCloudSlabs(const PointLocator<3>&, const GridSpec<3>&, const SlabPlan&, const Communicator&,

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -53,57 +54,66 @@ void carryDescent(const GridField<D, double>& distance, const std::vector<Index>
   }
 }
 
+/// The nodes where rho is queried, within two cell diagonals of the cloud (a
+/// nearest-point query is cheap there), and `order`, the nodes it is carried to
+/// (near <= d < reach), in increasing d, ties by node index (sortByKey orders
+/// equal keys by their items; d > 0, so equal distances have equal keys): a total order.
+template <int D>
+void nodesNearCloud(
+  const GridField<D, double>& distance, double reach, std::vector<Index>& queried, std::vector<Index>& order)
+{
+  const GridSpec<D>& g = distance.spec();
+  double near = 0.0;
+  for (int a = 0; a < D; ++a)
+  {
+    near += g.Spacing[a] * g.Spacing[a];
+  }
+  near = 2.0 * std::sqrt(near);
+  std::vector<std::uint64_t> key; // of d
+  queried.clear();
+  order.clear();
+  for (Index k = 0; k < g.nodeCount(); ++k)
+  {
+    const double d = distance(distance.nodeIndex(k));
+    if (d < near)
+    {
+      queried.push_back(k);
+    }
+    else if (d < reach)
+    {
+      key.push_back(orderedKey(d));
+      order.push_back(k);
+    }
+  }
+  sortByKey(key, order);
+}
+
 /// The part shared by the one-rank and slab versions: rho queried near the
 /// cloud (elsewhere `largest`, the whole cloud's largest factor), and `order`,
-/// the nodes to carry it to.
+/// the nodes to carry it to (nodesNearCloud).
 template <int D>
 Status queryNearCloud(const GridField<D, double>& distance, const PointLocator<D>& locator,
   const std::vector<double>& sparsity, double largest, double reach, const Context& ctx, GridField<D, double>& rho,
   std::vector<Index>& order)
 {
   const GridSpec<D>& g = distance.spec();
-  const Index nodes = g.nodeCount();
-  double near = 0.0;
-  for (int a = 0; a < D; ++a)
-  {
-    near += g.Spacing[a] * g.Spacing[a];
-  }
-  near = 2.0 * std::sqrt(near); // two cell diagonals: a nearest-point query is cheap there
-  // rho at every node with d < reach: queried near the cloud, and farther carried
-  // down the steepest descent of d (the axis neighbour with the smallest d, which
-  // is nearer the same points), in increasing order of d.
   rho.resize(g, 0, largest);
-  std::vector<std::uint64_t> key; // of d
-  order.clear();
-  for (Index k = 0; k < nodes; ++k)
-  {
-    const double d = distance(distance.nodeIndex(k));
-    if (d >= near && d < reach)
-    {
-      key.push_back(orderedKey(d));
-      order.push_back(k);
-    }
-  }
-  ctx.parallelFor(0, nodes,
+  std::vector<Index> queried;
+  nodesNearCloud(distance, reach, queried, order);
+  ctx.parallelFor(0, static_cast<Index>(queried.size()),
     [&](Index b, Index e)
     {
       std::array<double, D> x;
-      for (Index k = b; k < e; ++k)
+      for (Index q = b; q < e; ++q)
       {
-        const auto i = distance.nodeIndex(k);
-        if (distance(i) < near)
+        const auto i = distance.nodeIndex(queried[static_cast<size_t>(q)]);
+        for (int a = 0; a < D; ++a)
         {
-          for (int a = 0; a < D; ++a)
-          {
-            x[a] = g.coordinate(a, i[a]);
-          }
-          rho(i) = sparsity[static_cast<size_t>(locator.nearest(x).Index)];
+          x[a] = g.coordinate(a, i[a]);
         }
+        rho(i) = sparsity[static_cast<size_t>(locator.nearest(x).Index)];
       }
     });
-  // Increasing d, ties by node index (sortByKey orders equal keys by their
-  // items; d > 0, so equal distances have equal keys): a total order.
-  sortByKey(key, order);
   return Status::ok();
 }
 
@@ -173,10 +183,70 @@ Status locallyScaledDistanceSlabs(const GridField<D, double>& distance, const Po
   return Status::ok();
 }
 
+template <int D>
+Status locallyScaledDistanceOnRanks(const GridField<D, double>& distance, const OwnedPoints<D>& points,
+  const std::vector<double>& sparsity, double reach, const Communicator& comm, const Context& ctx,
+  GridField<D, double>& scaled)
+{
+  const std::int64_t total = comm.allReduce(points.Owned, ReduceOp::Sum);
+  const Status sized = sparsity.size() != static_cast<size_t>(points.held()) || total == 0
+    ? Status::invalidArgument("locallyScaledDistance: one sparsity factor per held point is needed")
+    : Status::ok();
+  SLTK_RETURN_IF_ERROR(comm.agree(sized));
+  double largest = 0.0; // over the owned points (a halo point's factor is its owner's)
+  for (size_t j = 0; j < points.Mine.size(); ++j)
+  {
+    largest = points.Mine[j] ? std::max(largest, sparsity[j]) : largest;
+  }
+  largest = comm.allReduce(largest, ReduceOp::Max);
+  GridField<D, double> rho;
+  rho.resize(distance.spec(), 0, largest);
+  std::vector<Index> queried, order;
+  nodesNearCloud(distance, reach, queried, order);
+  // The nearest of every rank's points (ties by the lowest global index, as
+  // one rank's locator), and its factor from its owner.
+  const GridSpec<D>& g = distance.spec();
+  std::vector<std::array<double, D>> x(queried.size());
+  double near = 0.0;
+  for (int a = 0; a < D; ++a)
+  {
+    near += g.Spacing[a] * g.Spacing[a];
+  }
+  for (size_t q = 0; q < queried.size(); ++q)
+  {
+    const auto i = distance.nodeIndex(queried[q]);
+    for (int a = 0; a < D; ++a)
+    {
+      x[q][a] = g.coordinate(a, i[a]);
+    }
+  }
+  std::vector<double> nearest;
+  std::vector<std::int64_t> ids;
+  nearestOverRanks<D>(points, x, 2.0 * std::sqrt(near) * (1.0 + 1e-9), comm, ctx, nearest, ids);
+  std::vector<double> factor(queried.size(), 0.0); // factors are >= 1: the owner's is the largest
+  for (size_t q = 0; q < queried.size(); ++q)
+  {
+    const std::int64_t j = points.ownedLocal(ids[q]);
+    factor[q] = j >= 0 ? sparsity[static_cast<size_t>(j)] : 0.0;
+  }
+  comm.allReduce(factor.data(), factor.size(), ReduceOp::Max);
+  for (size_t q = 0; q < queried.size(); ++q)
+  {
+    rho(distance.nodeIndex(queried[q])) = factor[q];
+  }
+  carryDescent(distance, order, 0, distance.spec().Dims[D - 1], rho);
+  divideByRho(distance, rho, ctx, scaled);
+  return Status::ok();
+}
+
 template Status locallyScaledDistance(const GridField<2, double>&, const PointLocator<2>&, const std::vector<double>&,
   double, const Context&, GridField<2, double>&);
 template Status locallyScaledDistance(const GridField<3, double>&, const PointLocator<3>&, const std::vector<double>&,
   double, const Context&, GridField<3, double>&);
+template Status locallyScaledDistanceOnRanks(const GridField<2, double>&, const OwnedPoints<2>&,
+  const std::vector<double>&, double, const Communicator&, const Context&, GridField<2, double>&);
+template Status locallyScaledDistanceOnRanks(const GridField<3, double>&, const OwnedPoints<3>&,
+  const std::vector<double>&, double, const Communicator&, const Context&, GridField<3, double>&);
 template Status locallyScaledDistanceSlabs(const GridField<2, double>&, const PointLocator<2>&,
   const std::vector<double>&, double, const SlabPlan&, const Communicator&, const Context&, GridField<2, double>&);
 template Status locallyScaledDistanceSlabs(const GridField<3, double>&, const PointLocator<3>&,

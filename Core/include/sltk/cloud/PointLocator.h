@@ -31,6 +31,11 @@ public:
   /// Nearest cloud point to x, skipping the point with index `exclude` (-1: none).
   Hit nearest(const std::array<double, D>& x, std::int64_t exclude = -1) const;
 
+  /// nearest(x) when the nearest point lies within `radius` (inclusive), else
+  /// no hit (Index -1, Distance +inf): the search stops at the radius, so a
+  /// query far from the cloud is as cheap as a near one.
+  Hit nearestWithin(const std::array<double, D>& x, double radius) const;
+
   /// The k nearest cloud points to x, nearest first (ties by index), skipping
   /// `exclude`; fewer when the cloud has fewer other points. `hits` is reused.
   void nearest(const std::array<double, D>& x, int k, std::int64_t exclude, std::vector<Hit>& hits) const;

@@ -18,6 +18,7 @@
 #include "sltk/cloud/PointCloud.h"
 #include "sltk/core/Status.h"
 #include "sltk/exec/Communicator.h"
+#include "sltk/exec/Context.h"
 
 #include <cstdint>
 #include <vector>
@@ -128,6 +129,18 @@ template <int D>
 Status valuesFromOwners(const OwnedPoints<D>& points, const std::vector<double>& held,
   const std::vector<NeighbourCandidate<D>>& wanted, const Communicator& comm, std::vector<double>& out);
 
+/// The nearest point to each of `queries` (the same on every rank) among
+/// every rank's own points, ties by the lowest global index (one rank's
+/// PointLocator rule): `distance` and `ids` (+inf and -1 when no rank owns a
+/// point), the same on every rank. Each rank searches its points within
+/// `radius` (PointLocator::nearestWithin: a query far from a rank's slab costs
+/// little there); the queries no rank answers within it are searched again
+/// without bound. Two reductions of one value a query (and two more for those).
+/// Collective.
+template <int D>
+void nearestOverRanks(const OwnedPoints<D>& points, const std::vector<std::array<double, D>>& queries, double radius,
+  const Communicator& comm, const Context& ctx, std::vector<double>& distance, std::vector<std::int64_t>& ids);
+
 /// The box around every rank's `local` points (inverted, +inf to -inf, when
 /// no rank has any): boundingBox() over the ranks. Collective.
 template <int D>
@@ -157,6 +170,10 @@ extern template Status valuesFromOwners(const OwnedPoints<2>&, const std::vector
   const std::vector<NeighbourCandidate<2>>&, const Communicator&, std::vector<double>&);
 extern template Status valuesFromOwners(const OwnedPoints<3>&, const std::vector<double>&,
   const std::vector<NeighbourCandidate<3>>&, const Communicator&, std::vector<double>&);
+extern template void nearestOverRanks<2>(const OwnedPoints<2>&, const std::vector<std::array<double, 2>>&, double,
+  const Communicator&, const Context&, std::vector<double>&, std::vector<std::int64_t>&);
+extern template void nearestOverRanks<3>(const OwnedPoints<3>&, const std::vector<std::array<double, 3>>&, double,
+  const Communicator&, const Context&, std::vector<double>&, std::vector<std::int64_t>&);
 extern template Box<2> boundingBoxOverRanks(const PointCloud<2>&, const Communicator&);
 extern template Box<3> boundingBoxOverRanks(const PointCloud<3>&, const Communicator&);
 extern template struct OwnedPoints<2>;

@@ -28,6 +28,7 @@
 ///    sheet, a thin tube) keeps the thesis's K_P = 2.
 
 #include "sltk/cloud/PointLocator.h"
+#include "sltk/cloud/PointOwners.h"
 #include "sltk/exec/Context.h"
 #include "sltk/recon/GridPlan.h"
 
@@ -93,6 +94,16 @@ template <int D>
 Status chooseOutsideFactor(const PointLocator<D>& locator, const Box<D>& bounds, double cloudSpacing, double dx,
   const std::vector<double>& sparsity, const Context& ctx, OutsideFactorChoice& choice);
 
+/// chooseOutsideFactor() for a cloud spread over the ranks by owners
+/// (PointOwners.h), with one sparsity factor per held point
+/// (sparsityFactorsOnRanks) or none on every rank: every rank holds the probe
+/// grid whole (at most 4M nodes), its distance and local offset are the
+/// one-rank fields bit for bit (distanceToCloudOnRanks,
+/// locallyScaledDistanceOnRanks), and every rank computes the same choice. Collective.
+template <int D>
+Status chooseOutsideFactorOnRanks(const OwnedPoints<D>& points, const Box<D>& bounds, double cloudSpacing, double dx,
+  const std::vector<double>& sparsity, const Communicator& comm, const Context& ctx, OutsideFactorChoice& choice);
+
 /// The ladder of automatic C_dx values: 1, CellSizeLadderStep, CellSizeLadderStep^2, ...
 constexpr double CellSizeLadderStep = 1.02;
 
@@ -105,6 +116,10 @@ extern template Status chooseOutsideFactor(const PointLocator<2>&, const Box<2>&
   const std::vector<double>&, const Context&, OutsideFactorChoice&);
 extern template Status chooseOutsideFactor(const PointLocator<3>&, const Box<3>&, double, double,
   const std::vector<double>&, const Context&, OutsideFactorChoice&);
+extern template Status chooseOutsideFactorOnRanks(const OwnedPoints<2>&, const Box<2>&, double, double,
+  const std::vector<double>&, const Communicator&, const Context&, OutsideFactorChoice&);
+extern template Status chooseOutsideFactorOnRanks(const OwnedPoints<3>&, const Box<3>&, double, double,
+  const std::vector<double>&, const Communicator&, const Context&, OutsideFactorChoice&);
 extern template Status chooseCellSizeFactor(const Box<2>&, double, GridPlanOptions, double&);
 extern template Status chooseCellSizeFactor(const Box<3>&, double, GridPlanOptions, double&);
 

@@ -12,6 +12,7 @@
 /// mask, and the locator (O(|P|)); work O(|P| 4^D) + O(nodes) per sweep.
 
 #include "sltk/cloud/PointLocator.h"
+#include "sltk/cloud/PointOwners.h"
 #include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
@@ -59,6 +60,18 @@ Status distanceToCloudSlabs(const PointLocator<D>& locator, const GridSpec<D>& w
   const Communicator& comm, const Context& ctx, GridField<D, double>& distance, const DistanceOptions& options = {},
   DistanceReport* report = nullptr);
 
+/// The same on a grid every rank holds whole, from a cloud spread over the
+/// ranks by owners (PointOwners.h; halo points count as the cloud's own): the
+/// exact boxes of every rank's points (a maximum over the ranks of one mark a
+/// node) and at their nodes the nearest point of every rank (a minimum of the
+/// marked nodes' distances), then every rank sweeps the whole grid: the
+/// one-rank distance bit for bit, for grids small enough to hold on every
+/// rank (the automatic K_P's probe, AutomaticParameters.h). Collective.
+template <int D>
+Status distanceToCloudOnRanks(const OwnedPoints<D>& points, const GridSpec<D>& grid, const Communicator& comm,
+  const Context& ctx, GridField<D, double>& distance, const DistanceOptions& options = {},
+  DistanceReport* report = nullptr);
+
 extern template Status distanceToCloud(const PointCloud<2>&, const GridSpec<2>&, const Context&, GridField<2, double>&,
   const DistanceOptions&, DistanceReport*);
 extern template Status distanceToCloud(const PointCloud<3>&, const GridSpec<3>&, const Context&, GridField<3, double>&,
@@ -67,6 +80,10 @@ extern template Status distanceToCloud(const PointLocator<2>&, const GridSpec<2>
   GridField<2, double>&, const DistanceOptions&, DistanceReport*);
 extern template Status distanceToCloud(const PointLocator<3>&, const GridSpec<3>&, const Context&,
   GridField<3, double>&, const DistanceOptions&, DistanceReport*);
+extern template Status distanceToCloudOnRanks(const OwnedPoints<2>&, const GridSpec<2>&, const Communicator&,
+  const Context&, GridField<2, double>&, const DistanceOptions&, DistanceReport*);
+extern template Status distanceToCloudOnRanks(const OwnedPoints<3>&, const GridSpec<3>&, const Communicator&,
+  const Context&, GridField<3, double>&, const DistanceOptions&, DistanceReport*);
 extern template Status distanceToCloudSlabs(const PointLocator<2>&, const GridSpec<2>&, const SlabPlan&,
   const Communicator&, const Context&, GridField<2, double>&, const DistanceOptions&, DistanceReport*);
 extern template Status distanceToCloudSlabs(const PointLocator<3>&, const GridSpec<3>&, const SlabPlan&,

@@ -9,6 +9,7 @@
 /// rho = 1 and u = d (Documentation/Numerics.md, "Local offset").
 
 #include "sltk/cloud/PointLocator.h"
+#include "sltk/cloud/PointOwners.h"
 #include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
@@ -39,10 +40,26 @@ Status locallyScaledDistanceSlabs(const GridField<D, double>& distance, const Po
   const std::vector<double>& sparsity, double reach, const SlabPlan& slab, const Communicator& comm, const Context& ctx,
   GridField<D, double>& scaled);
 
+/// locallyScaledDistance() on a grid every rank holds whole (`distance`, the
+/// same on every rank: distanceToCloudOnRanks), from a cloud spread over the
+/// ranks by owners with one factor per held point (sparsityFactorsOnRanks):
+/// each node near the cloud takes the factor of the nearest of every rank's
+/// own points (ties by the lowest global index, as one rank's locator), by
+/// three reductions over those nodes; the rest is the one-rank arithmetic, so
+/// the result is the one-rank field bit for bit. Collective.
+template <int D>
+Status locallyScaledDistanceOnRanks(const GridField<D, double>& distance, const OwnedPoints<D>& points,
+  const std::vector<double>& sparsity, double reach, const Communicator& comm, const Context& ctx,
+  GridField<D, double>& scaled);
+
 extern template Status locallyScaledDistance(const GridField<2, double>&, const PointLocator<2>&,
   const std::vector<double>&, double, const Context&, GridField<2, double>&);
 extern template Status locallyScaledDistance(const GridField<3, double>&, const PointLocator<3>&,
   const std::vector<double>&, double, const Context&, GridField<3, double>&);
+extern template Status locallyScaledDistanceOnRanks(const GridField<2, double>&, const OwnedPoints<2>&,
+  const std::vector<double>&, double, const Communicator&, const Context&, GridField<2, double>&);
+extern template Status locallyScaledDistanceOnRanks(const GridField<3, double>&, const OwnedPoints<3>&,
+  const std::vector<double>&, double, const Communicator&, const Context&, GridField<3, double>&);
 extern template Status locallyScaledDistanceSlabs(const GridField<2, double>&, const PointLocator<2>&,
   const std::vector<double>&, double, const SlabPlan&, const Communicator&, const Context&, GridField<2, double>&);
 extern template Status locallyScaledDistanceSlabs(const GridField<3, double>&, const PointLocator<3>&,
