@@ -171,16 +171,7 @@ Status chooseOutsideFactorOnRanks(const OwnedPoints<D>& points, const Box<D>& bo
   const std::vector<double>& sparsity, const Communicator& comm, const Context& ctx, OutsideFactorChoice& choice)
 {
   const bool local = comm.anyRank(!sparsity.empty());
-  double largest = 1.0;
-  if (local)
-  {
-    largest = 0.0;
-    for (size_t j = 0; j < sparsity.size() && j < points.Mine.size(); ++j)
-    {
-      largest = points.Mine[j] ? std::max(largest, sparsity[j]) : largest;
-    }
-    largest = comm.allReduce(largest, ReduceOp::Max);
-  }
+  const double largest = local ? largestOwnedFactor(points, sparsity, comm) : 1.0;
   return probeOutsideFactor(
     bounds, cloudSpacing, dx, largest, ctx,
     [&](const GridSpec<D>& grid, double reach, GridField<D, double>& distance)

@@ -22,12 +22,14 @@ Status emptyCloud()
   return Status::invalidArgument("the distance function needs a non-empty point cloud");
 }
 
-/// The checks every distance computation makes (the cloud, the options, the grid).
+/// The checks every distance computation makes (the cloud, the options, the
+/// grid); `empty`: whether the cloud is empty (on ranks, every rank's share).
 template <int D>
-Status checkDistanceInput(const PointCloud<D>& cloud, const GridSpec<D>& grid, const DistanceOptions& options)
+Status checkDistanceInput(
+  const PointCloud<D>& cloud, bool empty, const GridSpec<D>& grid, const DistanceOptions& options)
 {
   SLTK_RETURN_IF_ERROR(grid.validate());
-  if (cloud.size() == 0)
+  if (empty)
   {
     return emptyCloud();
   }
@@ -179,7 +181,7 @@ Status distanceToCloudSlabs(const PointLocator<D>& locator, const GridSpec<D>& w
   const Communicator& comm, const Context& ctx, GridField<D, double>& distance, const DistanceOptions& options,
   DistanceReport* report)
 {
-  SLTK_RETURN_IF_ERROR(comm.agree(checkDistanceInput(locator.cloud(), whole, options)));
+  SLTK_RETURN_IF_ERROR(comm.agree(checkDistanceInput(locator.cloud(), locator.cloud().size() == 0, whole, options)));
   GridSpec<D> window = whole; // the slab's rows at the whole grid's coordinates, bitwise
   window.Dims[D - 1] = slab.windowRows();
   window.Offset[D - 1] = whole.Offset[D - 1] + slab.First;
@@ -195,18 +197,8 @@ template <int D>
 Status distanceToCloudOnRanks(const OwnedPoints<D>& points, const GridSpec<D>& grid, const Communicator& comm,
   const Context& ctx, GridField<D, double>& distance, const DistanceOptions& options, DistanceReport* report)
 {
-  const std::int64_t total = comm.allReduce(points.held(), ReduceOp::Sum);
-  Status checked = total == 0 ? emptyCloud() : Status::ok();
-  if (checked.isOk())
-  {
-    PointCloud<D> probe; // the input checks on this rank's points; an empty share passes them
-    probe.Points = points.Cloud.Points;
-    if (probe.Points.empty())
-    {
-      probe.Points.push_back({});
-    }
-    checked = checkDistanceInput(probe, grid, options);
-  }
+  const bool empty = comm.allReduce(points.held(), ReduceOp::Sum) == 0;
+  const Status checked = checkDistanceInput(points.Cloud, empty, grid, options);
   SLTK_RETURN_IF_ERROR(comm.agree(checked));
   distance.resize(grid, options.Ghost, std::numeric_limits<double>::infinity());
   // The boxes of every rank's points, and at their nodes the nearest of every

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <utility>
 #include <vector>
 
@@ -54,8 +53,31 @@ void carryDescent(const GridField<D, double>& distance, const std::vector<Index>
   }
 }
 
-/// The nodes where rho is queried, within two cell diagonals of the cloud (a
-/// nearest-point query is cheap there), and `order`, the nodes it is carried to
+/// Two cell diagonals: rho is queried at the nodes this near the cloud (a
+/// nearest-point query is cheap there).
+template <int D>
+double queryRadius(const GridSpec<D>& g)
+{
+  double diagonal = 0.0;
+  for (int a = 0; a < D; ++a)
+  {
+    diagonal += g.Spacing[a] * g.Spacing[a];
+  }
+  return 2.0 * std::sqrt(diagonal);
+}
+
+template <int D>
+std::array<double, D> nodePosition(const GridSpec<D>& g, const std::array<Index, D>& i)
+{
+  std::array<double, D> x;
+  for (int a = 0; a < D; ++a)
+  {
+    x[a] = g.coordinate(a, i[a]);
+  }
+  return x;
+}
+
+/// The nodes where rho is queried, within queryRadius of the cloud, and `order`, the nodes it is carried to
 /// (near <= d < reach), in increasing d, ties by node index (sortByKey orders
 /// equal keys by their items; d > 0, so equal distances have equal keys): a total order.
 template <int D>
@@ -63,12 +85,7 @@ void nodesNearCloud(
   const GridField<D, double>& distance, double reach, std::vector<Index>& queried, std::vector<Index>& order)
 {
   const GridSpec<D>& g = distance.spec();
-  double near = 0.0;
-  for (int a = 0; a < D; ++a)
-  {
-    near += g.Spacing[a] * g.Spacing[a];
-  }
-  near = 2.0 * std::sqrt(near);
+  const double near = queryRadius(g);
   std::vector<std::uint64_t> key; // of d
   queried.clear();
   order.clear();
@@ -103,15 +120,10 @@ Status queryNearCloud(const GridField<D, double>& distance, const PointLocator<D
   ctx.parallelFor(0, static_cast<Index>(queried.size()),
     [&](Index b, Index e)
     {
-      std::array<double, D> x;
       for (Index q = b; q < e; ++q)
       {
         const auto i = distance.nodeIndex(queried[static_cast<size_t>(q)]);
-        for (int a = 0; a < D; ++a)
-        {
-          x[a] = g.coordinate(a, i[a]);
-        }
-        rho(i) = sparsity[static_cast<size_t>(locator.nearest(x).Index)];
+        rho(i) = sparsity[static_cast<size_t>(locator.nearest(nodePosition<D>(g, i)).Index)];
       }
     });
   return Status::ok();
@@ -184,6 +196,17 @@ Status locallyScaledDistanceSlabs(const GridField<D, double>& distance, const Po
 }
 
 template <int D>
+double largestOwnedFactor(const OwnedPoints<D>& points, const std::vector<double>& sparsity, const Communicator& comm)
+{
+  double largest = 0.0; // a halo point's factor is its owner's
+  for (size_t j = 0; j < points.Mine.size() && j < sparsity.size(); ++j)
+  {
+    largest = points.Mine[j] ? std::max(largest, sparsity[j]) : largest;
+  }
+  return comm.allReduce(largest, ReduceOp::Max);
+}
+
+template <int D>
 Status locallyScaledDistanceOnRanks(const GridField<D, double>& distance, const OwnedPoints<D>& points,
   const std::vector<double>& sparsity, double reach, const Communicator& comm, const Context& ctx,
   GridField<D, double>& scaled)
@@ -193,12 +216,7 @@ Status locallyScaledDistanceOnRanks(const GridField<D, double>& distance, const 
     ? Status::invalidArgument("locallyScaledDistance: one sparsity factor per held point is needed")
     : Status::ok();
   SLTK_RETURN_IF_ERROR(comm.agree(sized));
-  double largest = 0.0; // over the owned points (a halo point's factor is its owner's)
-  for (size_t j = 0; j < points.Mine.size(); ++j)
-  {
-    largest = points.Mine[j] ? std::max(largest, sparsity[j]) : largest;
-  }
-  largest = comm.allReduce(largest, ReduceOp::Max);
+  const double largest = largestOwnedFactor(points, sparsity, comm);
   GridField<D, double> rho;
   rho.resize(distance.spec(), 0, largest);
   std::vector<Index> queried, order;
@@ -207,22 +225,13 @@ Status locallyScaledDistanceOnRanks(const GridField<D, double>& distance, const 
   // one rank's locator), and its factor from its owner.
   const GridSpec<D>& g = distance.spec();
   std::vector<std::array<double, D>> x(queried.size());
-  double near = 0.0;
-  for (int a = 0; a < D; ++a)
-  {
-    near += g.Spacing[a] * g.Spacing[a];
-  }
   for (size_t q = 0; q < queried.size(); ++q)
   {
-    const auto i = distance.nodeIndex(queried[q]);
-    for (int a = 0; a < D; ++a)
-    {
-      x[q][a] = g.coordinate(a, i[a]);
-    }
+    x[q] = nodePosition<D>(g, distance.nodeIndex(queried[q]));
   }
   std::vector<double> nearest;
   std::vector<std::int64_t> ids;
-  nearestOverRanks<D>(points, x, 2.0 * std::sqrt(near) * (1.0 + 1e-9), comm, ctx, nearest, ids);
+  nearestOverRanks<D>(points, x, queryRadius(g) * (1.0 + 1e-9), comm, ctx, nearest, ids);
   std::vector<double> factor(queried.size(), 0.0); // factors are >= 1: the owner's is the largest
   for (size_t q = 0; q < queried.size(); ++q)
   {
@@ -243,6 +252,8 @@ template Status locallyScaledDistance(const GridField<2, double>&, const PointLo
   double, const Context&, GridField<2, double>&);
 template Status locallyScaledDistance(const GridField<3, double>&, const PointLocator<3>&, const std::vector<double>&,
   double, const Context&, GridField<3, double>&);
+template double largestOwnedFactor(const OwnedPoints<2>&, const std::vector<double>&, const Communicator&);
+template double largestOwnedFactor(const OwnedPoints<3>&, const std::vector<double>&, const Communicator&);
 template Status locallyScaledDistanceOnRanks(const GridField<2, double>&, const OwnedPoints<2>&,
   const std::vector<double>&, double, const Communicator&, const Context&, GridField<2, double>&);
 template Status locallyScaledDistanceOnRanks(const GridField<3, double>&, const OwnedPoints<3>&,

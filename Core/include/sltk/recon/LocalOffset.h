@@ -40,6 +40,11 @@ Status locallyScaledDistanceSlabs(const GridField<D, double>& distance, const Po
   const std::vector<double>& sparsity, double reach, const SlabPlan& slab, const Communicator& comm, const Context& ctx,
   GridField<D, double>& scaled);
 
+/// The largest factor of every rank's own points (one per held point in
+/// `sparsity`; 0 when there are none). Collective.
+template <int D>
+double largestOwnedFactor(const OwnedPoints<D>& points, const std::vector<double>& sparsity, const Communicator& comm);
+
 /// locallyScaledDistance() on a grid every rank holds whole (`distance`, the
 /// same on every rank: distanceToCloudOnRanks), from a cloud spread over the
 /// ranks by owners with one factor per held point (sparsityFactorsOnRanks):
@@ -56,6 +61,8 @@ extern template Status locallyScaledDistance(const GridField<2, double>&, const 
   const std::vector<double>&, double, const Context&, GridField<2, double>&);
 extern template Status locallyScaledDistance(const GridField<3, double>&, const PointLocator<3>&,
   const std::vector<double>&, double, const Context&, GridField<3, double>&);
+extern template double largestOwnedFactor(const OwnedPoints<2>&, const std::vector<double>&, const Communicator&);
+extern template double largestOwnedFactor(const OwnedPoints<3>&, const std::vector<double>&, const Communicator&);
 extern template Status locallyScaledDistanceOnRanks(const GridField<2, double>&, const OwnedPoints<2>&,
   const std::vector<double>&, double, const Communicator&, const Context&, GridField<2, double>&);
 extern template Status locallyScaledDistanceOnRanks(const GridField<3, double>&, const OwnedPoints<3>&,
