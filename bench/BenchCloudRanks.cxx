@@ -6,10 +6,11 @@
 // their slabs, and h_P, the density spacing, the outlier test, the noise and
 // the local sparsity factors are computed there, the automatic K_P's probe
 // (at C_dx 1, with the local offset) runs on them; last the cloud is thinned
-// there (cells of 2.5 density spacings, as `--thin 2.5`). Per phase, the busiest rank's time, point-to-point and
-// collective megabytes, the queries answered with other ranks' points, and the
-// points held per rank against the cloud; then whether each value is the
-// one-rank value bit for bit (rank 0 computes it from the whole cloud).
+// there (cells of 2.5 density spacings, as `--thin 2.5`), and the thinned cloud's components (the summary's)
+// and groups far apart (the advice of separate runs) are found there. Per phase, the busiest rank's time,
+// point-to-point and collective megabytes, the queries answered with other ranks' points, and the points held per rank
+// against the cloud; then whether each value is the one-rank value bit for bit (rank 0 computes it from the whole
+// cloud).
 #include "common/BenchCli.h"
 #include "common/ReadXyz.h"
 
@@ -27,6 +28,8 @@
 #include "sltk/exec/ThreadPool.h"
 #include "sltk/mpi/MpiCommunicator.h"
 #include "sltk/recon/AutomaticParameters.h"
+#include "sltk/recon/PointClusters.h"
+#include "sltk/recon/StoppingRule.h"
 
 #include <mpi.h>
 
@@ -200,6 +203,25 @@ int main(int argc, char** argv)
         return std::int64_t(-1);
       },
       owned));
+    std::int64_t components = 0;
+    phases.push_back(measure(
+      "components (4 h_P or s)", comm,
+      [&]
+      {
+        check(sltk::cloudComponentsOnRanks(owned, spacing, sltk::PieceLinkFactor,
+          sltk::CloudCleaningOptions{}.DensityNeighbours, comm, ctx, components));
+        return std::int64_t(-1);
+      },
+      owned));
+    std::vector<sltk::Box<3>> groups;
+    phases.push_back(measure(
+      "groups (4 h_P links)", comm,
+      [&]
+      {
+        check(sltk::groupBoxesOnRanks(owned, sltk::PieceLinkFactor * spacing, 16, comm, ctx, groups));
+        return std::int64_t(-1);
+      },
+      owned));
     // The thinned points checked as the factors are.
     sltk::ExactSum thinSum;
     for (size_t j = 0; j < owned.Ids.size(); ++j)
@@ -260,14 +282,26 @@ int main(int argc, char** argv)
           oneThin.add(oneThinned.Points[j][a] * static_cast<double>(j + 1 + a));
         }
       }
-      const bool same = oneProbe.Factor == probe.Factor && oneProbe.EnclosedNodes == probe.EnclosedNodes &&
-        oneThinned.size() == thinned && oneThin.value() == thinSum.value() && one.Removed == outliers.Removed &&
-        one.Threshold == outliers.Threshold && oneSpacing == spacing && oneDensity == density && oneNoise == noise &&
-        oneRho.value() == rhoSum.value() && oneWeighted.value() == weightedSum.value();
+      const sltk::PointLocator<3> thinnedLocator(oneThinned);
+      const sltk::Index oneComponents = sltk::cloudComponents(
+        thinnedLocator, oneSpacing, sltk::PieceLinkFactor, sltk::CloudCleaningOptions{}.DensityNeighbours, ctx);
+      std::vector<sltk::Box<3>> oneGroups;
+      sltk::groupBoxesOnRanks(sltk::ownedOnOneRank(oneThinned), sltk::PieceLinkFactor * oneSpacing, 16,
+        sltk::serialCommunicator(), ctx, oneGroups);
+      bool sameGroups = oneGroups.size() == groups.size();
+      for (size_t g = 0; sameGroups && g < groups.size(); ++g)
+      {
+        sameGroups = oneGroups[g].Min == groups[g].Min && oneGroups[g].Max == groups[g].Max;
+      }
+      const bool same = sameGroups && oneComponents == components && oneProbe.Factor == probe.Factor &&
+        oneProbe.EnclosedNodes == probe.EnclosedNodes && oneThinned.size() == thinned &&
+        oneThin.value() == thinSum.value() && one.Removed == outliers.Removed && one.Threshold == outliers.Threshold &&
+        oneSpacing == spacing && oneDensity == density && oneNoise == noise && oneRho.value() == rhoSum.value() &&
+        oneWeighted.value() == weightedSum.value();
       std::printf("outliers removed %lld, h_P %.17g, density spacing %.17g, noise %.17g h_P, mean rho %.17g, "
-                  "K_P %g, thinned to %lld: %s\n",
+                  "K_P %g, thinned to %lld, %lld component(s), %zu separate group(s): %s\n",
         static_cast<long long>(outliers.Removed), spacing, density, noise, rhoSum.value() / static_cast<double>(total),
-        probe.Factor, static_cast<long long>(thinned),
+        probe.Factor, static_cast<long long>(thinned), static_cast<long long>(components), groups.size(),
         same ? "the one-rank values bit for bit" : "DIFFERENT from one rank's");
       code = same ? 0 : 1;
     }

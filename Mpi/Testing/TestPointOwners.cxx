@@ -10,6 +10,7 @@
 #include "sltk/cloud/CloudOutliers.h"
 #include "sltk/cloud/CloudSpacing.h"
 #include "sltk/cloud/CloudThinning.h"
+#include "sltk/cloud/LinkedComponents.h"
 #include "sltk/cloud/LocalSpacing.h"
 #include "sltk/cloud/PointOwners.h"
 #include "sltk/cloud/SyntheticClouds.h"
@@ -19,10 +20,13 @@
 #include "sltk/recon/AutomaticParameters.h"
 #include "sltk/recon/DistanceFunction.h"
 #include "sltk/recon/LocalOffset.h"
+#include "sltk/recon/PointClusters.h"
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
+#include <map>
 #include <random>
 #include <set>
 
@@ -641,4 +645,215 @@ TEST(ChooseOutsideFactorOnRanks, TheBunnyProbesAsOneRank)
     GTEST_SKIP() << "the Stanford bunny (/work/shared) is not available";
   }
   expectOneRankProbe(cloud, 2.08); // the automatic C_dx with no options
+}
+
+namespace
+{
+/// Clumps of points along [0, 4] x [0, 1] x [0, 1], a chain through every slab
+/// that joins some of them, and scattered points: components that cross the
+/// cuts, two of one rank joined only through another's slab, and singletons.
+Points clumpsAndChain(unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), v(0.0, 1.0);
+  Points cloud;
+  for (const double x : { 0.3, 1.0, 1.2, 1.95, 2.05, 2.7, 3.7 })
+  {
+    for (int j = 0; j < 150; ++j)
+    {
+      cloud.push_back({ x + 0.1 * u(rng), 0.5 + 0.1 * u(rng), 0.5 + 0.1 * u(rng) });
+    }
+  }
+  for (double x = 1.0; x <= 3.7; x += 0.02) // along y = 0.5 from the clump at 1.0 to 3.7 ...
+  {
+    cloud.push_back({ x, 0.85, 0.5 });
+  }
+  cloud.push_back({ 1.0, 0.8, 0.5 }); // ... joined to the clumps at 1.0 and 3.7 only
+  cloud.push_back({ 3.7, 0.8, 0.5 });
+  for (int j = 0; j < 40; ++j)
+  {
+    cloud.push_back({ 4.0 * v(rng), v(rng), v(rng) });
+  }
+  std::shuffle(cloud.begin(), cloud.end(), rng); // the file's order is not the slabs'
+  return cloud;
+}
+
+/// Every point's label on one rank (linkWithinRadii over the whole cloud): the
+/// smallest index in its component.
+std::vector<std::int64_t> oneRankLabels(const Points& cloud, const std::vector<double>& radius)
+{
+  const sltk::PointCloud<3> whole{ cloud };
+  const sltk::PointLocator<3> locator(whole);
+  std::vector<std::int64_t> parent = sltk::singletonForest<std::int64_t>(cloud.size());
+  sltk::linkWithinRadii(locator, radius, nullptr, parent);
+  std::vector<std::int64_t> least(cloud.size(), std::numeric_limits<std::int64_t>::max()), label(cloud.size());
+  for (size_t j = 0; j < cloud.size(); ++j)
+  {
+    std::int64_t& l = least[static_cast<size_t>(sltk::findRoot(parent, static_cast<std::int64_t>(j)))];
+    l = std::min(l, static_cast<std::int64_t>(j));
+  }
+  for (size_t j = 0; j < cloud.size(); ++j)
+  {
+    label[j] = least[static_cast<size_t>(sltk::findRoot(parent, static_cast<std::int64_t>(j)))];
+  }
+  return label;
+}
+
+/// The components on the ranks (from a halo `halo`) against one rank's: the
+/// count, and every owned point's label.
+void expectOneRankComponents(
+  const Points& cloud, const std::vector<double>& radius, double halo, bool allOnRankZero = false)
+{
+  auto comm = world();
+  TwoThreads threads;
+  const std::vector<std::int64_t> one = oneRankLabels(cloud, radius);
+  const std::int64_t count = static_cast<std::int64_t>(std::set<std::int64_t>(one.begin(), one.end()).size());
+  const sltk::OwnedPoints<3> owned = owners(cloud, *comm, halo, allOnRankZero);
+  std::vector<double> held(owned.Ids.size());
+  for (size_t j = 0; j < held.size(); ++j)
+  {
+    held[j] = radius[static_cast<size_t>(owned.Ids[j])];
+  }
+  sltk::LinkedComponents ranks;
+  const sltk::Status s = sltk::linkedComponentsOnRanks(owned, held, *comm, threads.Ctx, ranks);
+  ASSERT_TRUE(s.isOk()) << s.message();
+  EXPECT_EQ(ranks.Count, count) << "on " << comm->size() << " ranks, halo " << halo;
+  std::int64_t differ = 0;
+  for (size_t j = 0; j < owned.Ids.size(); ++j)
+  {
+    differ += owned.Mine[j] ? (ranks.Label[j] == one[static_cast<size_t>(owned.Ids[j])] ? 0 : 1)
+                            : (ranks.Label[j] == -1 ? 0 : 1);
+  }
+  EXPECT_EQ(comm->allReduce(differ, sltk::ReduceOp::Sum), 0) << "labels on " << comm->size() << " ranks";
+}
+
+/// Radii from 0.03 to 0.09 by index: links that only the end with the larger radius sees.
+std::vector<double> unevenRadii(size_t n)
+{
+  std::vector<double> r(n);
+  for (size_t j = 0; j < n; ++j)
+  {
+    r[j] = 0.03 * (1.0 + static_cast<double>(j % 7) / 3.0);
+  }
+  return r;
+}
+} // namespace
+
+TEST(LinkedComponentsOnRanks, AreTheOneRankComponentsAndLabels)
+{
+  const Points cloud = clumpsAndChain(7);
+  const std::vector<double> r = unevenRadii(cloud.size());
+  expectOneRankComponents(cloud, r, 0.0);       // the halo widened to the largest radius
+  expectOneRankComponents(cloud, r, 0.5);       // wide enough already
+  expectOneRankComponents(cloud, r, 0.0, true); // every point read by rank 0
+  expectOneRankComponents(rotated(cloud, 1), r, 0.0);
+  expectOneRankComponents(rotated(cloud, 2), r, 0.0);
+  expectOneRankComponents(cloud, std::vector<double>(cloud.size(), 0.0), 0.0); // no links: every point alone
+  expectOneRankComponents(cloud, std::vector<double>(cloud.size(), 5.0), 0.0); // one component
+}
+
+TEST(LinkedComponentsOnRanks, RefusesABadRadiusOnEveryRank)
+{
+  auto comm = world();
+  TwoThreads threads;
+  const sltk::OwnedPoints<3> owned = owners(clumpsAndChain(3), *comm, 0.0, false);
+  std::vector<double> r(owned.Ids.size(), 0.05);
+  if (comm->rank() == comm->size() - 1 && !r.empty())
+  {
+    r.back() = std::numeric_limits<double>::quiet_NaN(); // on one rank only: every rank refuses
+  }
+  sltk::LinkedComponents c;
+  const sltk::Status s = sltk::linkedComponentsOnRanks(owned, r, *comm, threads.Ctx, c);
+  EXPECT_FALSE(s.isOk());
+  EXPECT_NE(s.message().find("radius"), std::string::npos) << s.message();
+}
+
+namespace
+{
+/// The cloud's components (cloudComponents: radii from the local spacing) on the
+/// ranks against one rank's count.
+void expectOneRankCloudComponents(const Points& cloud, int k, bool allOnRankZero = false)
+{
+  auto comm = world();
+  TwoThreads threads;
+  const sltk::PointCloud<3> whole{ cloud };
+  const sltk::PointLocator<3> locator(whole);
+  double spacing = 0.0;
+  ASSERT_TRUE(sltk::cloudSpacing(locator, threads.Ctx, spacing).isOk());
+  const sltk::Index one = sltk::cloudComponents(locator, spacing, sltk::PieceLinkFactor, k, threads.Ctx);
+  const sltk::OwnedPoints<3> owned = owners(cloud, *comm, 0.0, allOnRankZero);
+  std::int64_t ranks = 0;
+  const sltk::Status s =
+    sltk::cloudComponentsOnRanks(owned, spacing, sltk::PieceLinkFactor, k, *comm, threads.Ctx, ranks);
+  ASSERT_TRUE(s.isOk()) << s.message();
+  EXPECT_EQ(ranks, one) << "k = " << k << " on " << comm->size() << " ranks";
+}
+} // namespace
+
+TEST(CloudComponentsOnRanks, AreTheOneRankCount)
+{
+  const Points cloud = clumpsAndChain(11);
+  expectOneRankCloudComponents(cloud, 16);
+  expectOneRankCloudComponents(cloud, 16, true);
+  expectOneRankCloudComponents(cloud, 0); // h_P alone
+  expectOneRankCloudComponents(rotated(cloud, 2), 4);
+  expectOneRankCloudComponents(Points(cloud.begin(), cloud.begin() + 10), 16); // at most k points: h_P alone
+}
+
+TEST(CloudComponentsOnRanks, TheBunnyIsOneComponentOnAnyRanks)
+{
+  const Points cloud = sharedCloud("bunny/bunny.xyz");
+  if (cloud.empty())
+  {
+    GTEST_SKIP() << "the Stanford bunny (/work/shared) is not available";
+  }
+  expectOneRankCloudComponents(cloud, 16);
+}
+
+TEST(GroupBoxesOnRanks, AreTheOneRankGroupsBoxes)
+{
+  auto comm = world();
+  TwoThreads threads;
+  Points cloud = clumpsAndChain(5);
+  const double link = 0.12; // the clumps at 1.95 and 2.05 and the chain's ends join
+  // One rank's groups (pointGroups, the points closer than the link) and their boxes.
+  std::vector<sltk::OutsidePoint> all(cloud.size());
+  for (size_t j = 0; j < all.size(); ++j)
+  {
+    all[j].Point = static_cast<sltk::Index>(j);
+  }
+  const std::vector<sltk::Index> group = sltk::pointGroups(sltk::PointCloud<3>{ cloud }, all, link);
+  std::map<sltk::Index, sltk::Box<3>> oneBoxes;
+  for (size_t j = 0; j < cloud.size(); ++j)
+  {
+    auto [it, created] = oneBoxes.try_emplace(group[j], sltk::Box<3>{ cloud[j], cloud[j] });
+    for (int a = 0; a < 3 && !created; ++a)
+    {
+      it->second.Min[a] = std::min(it->second.Min[a], cloud[j][a]);
+      it->second.Max[a] = std::max(it->second.Max[a], cloud[j][a]);
+    }
+  }
+  std::set<std::array<double, 6>> expected;
+  for (const auto& entry : oneBoxes)
+  {
+    const auto& b = entry.second;
+    expected.insert({ b.Min[0], b.Min[1], b.Min[2], b.Max[0], b.Max[1], b.Max[2] });
+  }
+  const sltk::OwnedPoints<3> owned = owners(cloud, *comm, 0.0, false);
+  std::vector<sltk::Box<3>> boxes;
+  ASSERT_TRUE(sltk::groupBoxesOnRanks(owned, link, 64, *comm, threads.Ctx, boxes).isOk());
+  std::set<std::array<double, 6>> got;
+  for (const auto& b : boxes)
+  {
+    got.insert({ b.Min[0], b.Min[1], b.Min[2], b.Max[0], b.Max[1], b.Max[2] });
+  }
+  EXPECT_GE(expected.size(), 2u);
+  EXPECT_EQ(got, expected) << expected.size() << " groups on one rank, " << got.size() << " on " << comm->size();
+  // More groups than asked for, or one group: none.
+  ASSERT_TRUE(
+    sltk::groupBoxesOnRanks(owned, link, static_cast<std::int64_t>(expected.size()) - 1, *comm, threads.Ctx, boxes)
+      .isOk());
+  EXPECT_TRUE(boxes.empty());
+  ASSERT_TRUE(sltk::groupBoxesOnRanks(owned, 5.0, 64, *comm, threads.Ctx, boxes).isOk());
+  EXPECT_TRUE(boxes.empty());
 }

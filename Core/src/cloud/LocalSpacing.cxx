@@ -116,6 +116,36 @@ Status sparsityFactors(const PointLocator<D>& locator, int k, const Context& ctx
 }
 
 template <int D>
+Status densitySpacingsOnRanks(const OwnedPoints<D>& points, int k, const Communicator& comm, const Context& ctx,
+  std::vector<std::int64_t>& own, std::vector<double>& spacing, std::int64_t& remote,
+  std::vector<NeighbourCandidate<D>>* neighbours)
+{
+  own.clear();
+  for (size_t j = 0; j < points.Mine.size(); ++j)
+  {
+    if (points.Mine[j])
+    {
+      own.push_back(static_cast<std::int64_t>(j));
+    }
+  }
+  // Each owned point's k nearest, exactly as on one rank (answerOnOwners).
+  return answerOnOwners(
+    points, own, k, comm, ctx,
+    [k](const PointLocator<D>& locator, std::int64_t i, std::vector<typename PointLocator<D>::Hit>& hits)
+    {
+      const bool enough = locator.cloud().size() > k;
+      hits.clear(); // too few points held: no neighbours, asked again on the ranks
+      if (enough)
+      {
+        locator.nearest(locator.cloud().Points[static_cast<size_t>(i)], k, i, hits);
+      }
+      const double reach = enough ? hits.back().Distance : std::numeric_limits<double>::infinity();
+      return OwnedAnswer{ enough ? densitySpacing<D>(reach, k) : 0.0, reach };
+    },
+    spacing, remote, neighbours);
+}
+
+template <int D>
 Status sparsityFactorsOnRanks(const OwnedPoints<D>& points, int k, const Communicator& comm, const Context& ctx,
   std::vector<double>& factors, std::int64_t* remote)
 {
@@ -133,32 +163,11 @@ Status sparsityFactorsOnRanks(const OwnedPoints<D>& points, int k, const Communi
   {
     return Status::ok();
   }
-  std::vector<std::int64_t> own; // this rank's points, by their place in the held cloud
-  for (size_t j = 0; j < points.Mine.size(); ++j)
-  {
-    if (points.Mine[j])
-    {
-      own.push_back(static_cast<std::int64_t>(j));
-    }
-  }
-  // s (densitySpacings) of every owned point and its k nearest, exactly as on one rank.
+  std::vector<std::int64_t> own;
   std::vector<double> spacing;
   std::vector<NeighbourCandidate<D>> neighbours;
   std::int64_t asked = 0;
-  SLTK_RETURN_IF_ERROR(answerOnOwners(
-    points, own, k, comm, ctx,
-    [k](const PointLocator<D>& locator, std::int64_t i, std::vector<typename PointLocator<D>::Hit>& hits)
-    {
-      const bool enough = locator.cloud().size() > k;
-      hits.clear(); // too few points held: no neighbours, asked again on the ranks
-      if (enough)
-      {
-        locator.nearest(locator.cloud().Points[static_cast<size_t>(i)], k, i, hits);
-      }
-      const double reach = enough ? hits.back().Distance : std::numeric_limits<double>::infinity();
-      return OwnedAnswer{ enough ? densitySpacing<D>(reach, k) : 0.0, reach };
-    },
-    spacing, asked, &neighbours));
+  SLTK_RETURN_IF_ERROR(densitySpacingsOnRanks(points, k, comm, ctx, own, spacing, asked, &neighbours));
   if (remote)
   {
     *remote = asked;
@@ -197,6 +206,10 @@ template Status densitySpacings(
   const PointLocator<3>&, int, const Context&, std::vector<double>&, std::vector<std::int64_t>*);
 template Status sparsityFactors(const PointLocator<2>&, int, const Context&, std::vector<double>&);
 template Status sparsityFactors(const PointLocator<3>&, int, const Context&, std::vector<double>&);
+template Status densitySpacingsOnRanks(const OwnedPoints<2>&, int, const Communicator&, const Context&,
+  std::vector<std::int64_t>&, std::vector<double>&, std::int64_t&, std::vector<NeighbourCandidate<2>>*);
+template Status densitySpacingsOnRanks(const OwnedPoints<3>&, int, const Communicator&, const Context&,
+  std::vector<std::int64_t>&, std::vector<double>&, std::int64_t&, std::vector<NeighbourCandidate<3>>*);
 template Status sparsityFactorsOnRanks(
   const OwnedPoints<2>&, int, const Communicator&, const Context&, std::vector<double>&, std::int64_t*);
 template Status sparsityFactorsOnRanks(

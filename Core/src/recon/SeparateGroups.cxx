@@ -3,6 +3,7 @@
 // spans mostly empty space, and the advice of their own runs (ReconstructionPlan.h).
 #include "sltk/recon/ReconstructionPlan.h"
 
+#include "sltk/cloud/LinkedComponents.h"
 #include "sltk/recon/PointClusters.h"
 #include "sltk/recon/StoppingRule.h"
 
@@ -17,6 +18,8 @@ namespace sltk
 
 namespace
 {
+constexpr std::int64_t MaxSeparateGroups = 16; ///< more groups than this: not "a few objects in one file"
+
 /// The nodes of the largest grid of the plan's runs over `box` at C_dx = cellSizeFactor, whatever the budget.
 template <int D>
 double largestGridNodes(const ReconstructionPlan<D>& plan, const Box<D>& box, double cellSizeFactor)
@@ -39,37 +42,31 @@ double largestGridNodes(const ReconstructionPlan<D>& plan, const Box<D>& box, do
 template <int D>
 std::string separateGroupsAdvice(const ReconstructionPlan<D>& plan, double cellSizeFactor, const std::string& why)
 {
-  constexpr size_t MaxSeparateGroups = 16;
-  std::vector<OutsidePoint> all(static_cast<size_t>(plan.Cloud.size()));
-  for (size_t i = 0; i < all.size(); ++i)
-  {
-    all[i].Point = static_cast<Index>(i);
-  }
-  const double link = PieceLinkFactor * plan.CloudSpacing;
-  const std::vector<Index> group = pointGroups(plan.Cloud, all, link);
-  std::map<Index, Box<D>> boxes;
-  for (size_t i = 0; i < group.size() && boxes.size() <= MaxSeparateGroups; ++i)
-  {
-    const auto& p = plan.Cloud.Points[i];
-    auto [it, created] = boxes.try_emplace(group[i]);
-    for (int a = 0; a < D; ++a)
-    {
-      it->second.Min[a] = created ? p[a] : std::min(it->second.Min[a], p[a]);
-      it->second.Max[a] = created ? p[a] : std::max(it->second.Max[a], p[a]);
-    }
-  }
-  if (boxes.size() < 2 || boxes.size() > MaxSeparateGroups)
+  std::vector<Box<D>> boxes;
+  const Status grouped = groupBoxesOnRanks(ownedOnOneRank(plan.Cloud), PieceLinkFactor * plan.CloudSpacing,
+    MaxSeparateGroups, serialCommunicator(), Context{}, boxes);
+  return grouped.isOk() && !boxes.empty()
+    ? separateGroupsAdvice(plan, boxes, boundingBox(plan.Cloud), cellSizeFactor, why)
+    : std::string{};
+}
+
+template <int D>
+std::string separateGroupsAdvice(const ReconstructionPlan<D>& plan, const std::vector<Box<D>>& boxes,
+  const Box<D>& cloudBox, double cellSizeFactor, const std::string& why)
+{
+  if (boxes.size() < 2)
   {
     return {};
   }
+  const double link = PieceLinkFactor * plan.CloudSpacing;
   double own = 0.0, largest = 0.0;
-  for (const auto& entry : boxes)
+  for (const Box<D>& box : boxes)
   {
-    const double nodes = largestGridNodes(plan, entry.second, cellSizeFactor);
+    const double nodes = largestGridNodes(plan, box, cellSizeFactor);
     own += nodes;
     largest = std::max(largest, nodes);
   }
-  const double whole = largestGridNodes(plan, boundingBox(plan.Cloud), cellSizeFactor);
+  const double whole = largestGridNodes(plan, cloudBox, cellSizeFactor);
   if (!(own < 0.25 * whole))
   {
     return {};
@@ -86,5 +83,9 @@ std::string separateGroupsAdvice(const ReconstructionPlan<D>& plan, double cellS
 
 template std::string separateGroupsAdvice(const ReconstructionPlan<2>&, double, const std::string&);
 template std::string separateGroupsAdvice(const ReconstructionPlan<3>&, double, const std::string&);
+template std::string separateGroupsAdvice(
+  const ReconstructionPlan<2>&, const std::vector<Box<2>>&, const Box<2>&, double, const std::string&);
+template std::string separateGroupsAdvice(
+  const ReconstructionPlan<3>&, const std::vector<Box<3>>&, const Box<3>&, double, const std::string&);
 
 } // namespace sltk

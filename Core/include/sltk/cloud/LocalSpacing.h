@@ -46,6 +46,17 @@ double medianOf(std::vector<double> values);
 template <int D>
 Status sparsityFactors(const PointLocator<D>& locator, int k, const Context& ctx, std::vector<double>& factors);
 
+/// densitySpacings() of a cloud spread over the ranks by owners (PointOwners.h):
+/// `spacing` holds s(Q) of this rank's own points, `own` their places in
+/// points.Cloud (ascending), bit for bit the one-rank values; a query that read
+/// beyond the halo is asked again of the ranks its ball reaches (`remote`
+/// counts those over every rank). `neighbours`, when given, gets each one's k
+/// nearest as candidates (k a point, nearest first). Collective.
+template <int D>
+Status densitySpacingsOnRanks(const OwnedPoints<D>& points, int k, const Communicator& comm, const Context& ctx,
+  std::vector<std::int64_t>& own, std::vector<double>& spacing, std::int64_t& remote,
+  std::vector<NeighbourCandidate<D>>* neighbours = nullptr);
+
 /// sparsityFactors() of a cloud spread over the ranks by owners (PointOwners.h),
 /// one factor per held point (1 at the halo's): each owner finds its points'
 /// k nearest (asking the ranks a ball reaches when it leaves the halo, counted
@@ -62,6 +73,10 @@ extern template Status densitySpacings(
   const PointLocator<3>&, int, const Context&, std::vector<double>&, std::vector<std::int64_t>*);
 extern template Status sparsityFactors(const PointLocator<2>&, int, const Context&, std::vector<double>&);
 extern template Status sparsityFactors(const PointLocator<3>&, int, const Context&, std::vector<double>&);
+extern template Status densitySpacingsOnRanks(const OwnedPoints<2>&, int, const Communicator&, const Context&,
+  std::vector<std::int64_t>&, std::vector<double>&, std::int64_t&, std::vector<NeighbourCandidate<2>>*);
+extern template Status densitySpacingsOnRanks(const OwnedPoints<3>&, int, const Communicator&, const Context&,
+  std::vector<std::int64_t>&, std::vector<double>&, std::int64_t&, std::vector<NeighbourCandidate<3>>*);
 extern template Status sparsityFactorsOnRanks(
   const OwnedPoints<2>&, int, const Communicator&, const Context&, std::vector<double>&, std::int64_t*);
 extern template Status sparsityFactorsOnRanks(

@@ -6,10 +6,12 @@
 /// that does not fit its cloud says where its missed groups lie (MissedPlaces.h); the
 /// cloud's connected components, which the result's pieces are compared with.
 
+#include "sltk/cloud/LinkedComponents.h"
 #include "sltk/cloud/LocalSpacing.h"
 #include "sltk/cloud/PointCloud.h"
 #include "sltk/core/DisjointSets.h"
 #include "sltk/core/IndexBox.h"
+#include "sltk/exec/OrderStatistics.h"
 
 #include <algorithm>
 #include <array>
@@ -114,23 +116,43 @@ Index cloudComponents(const PointLocator<D>& locator, double cloudSpacing, doubl
       radius[i] = factor * std::max(cloudSpacing, std::min(spacing[i], cap));
     }
   }
-  std::vector<Index> parent = singletonForest<Index>(static_cast<size_t>(n));
-  std::vector<std::int64_t> found;
-  for (Index i = 0; i < n; ++i)
-  {
-    // From each point out to its own radius: every pair is seen from its end with the larger one.
-    locator.within(cloud.Points[static_cast<size_t>(i)], radius[static_cast<size_t>(i)], i, found);
-    for (const std::int64_t j : found)
-    {
-      unite(parent, i, static_cast<Index>(j));
-    }
-  }
+  std::vector<std::int64_t> parent = singletonForest<std::int64_t>(static_cast<size_t>(n));
+  linkWithinRadii(locator, radius, nullptr, parent);
   Index roots = 0;
   for (Index i = 0; i < n; ++i)
   {
-    roots += findRoot(parent, i) == i ? 1 : 0;
+    roots += findRoot(parent, static_cast<std::int64_t>(i)) == i ? 1 : 0;
   }
   return roots;
+}
+
+/// cloudComponents() of a cloud spread over the ranks by owners (PointOwners.h):
+/// each point's s from its owner (densitySpacingsOnRanks), the median an exact
+/// order statistic over the ranks, the links and their joins across the cuts by
+/// linkedComponentsOnRanks. `count` is the one-rank count for any number of
+/// ranks and any cuts. Collective.
+template <int D>
+Status cloudComponentsOnRanks(const OwnedPoints<D>& points, double cloudSpacing, double factor, int k,
+  const Communicator& comm, const Context& ctx, std::int64_t& count)
+{
+  const std::int64_t n = comm.allReduce(points.Owned, ReduceOp::Sum);
+  std::vector<double> radius(static_cast<size_t>(points.held()), factor * cloudSpacing);
+  if (k >= 1 && n > k)
+  {
+    std::vector<std::int64_t> own;
+    std::vector<double> spacing;
+    std::int64_t remote = 0;
+    SLTK_RETURN_IF_ERROR(densitySpacingsOnRanks(points, k, comm, ctx, own, spacing, remote));
+    const double cap = MaximumSparsity * kthSmallestOverRanks(spacing, n / 2, comm); // medianOf's middle
+    for (size_t s = 0; s < own.size(); ++s)
+    {
+      radius[static_cast<size_t>(own[s])] = factor * std::max(cloudSpacing, std::min(spacing[s], cap));
+    }
+  }
+  LinkedComponents components;
+  SLTK_RETURN_IF_ERROR(linkedComponentsOnRanks(points, radius, comm, ctx, components));
+  count = components.Count;
+  return Status::ok();
 }
 
 } // namespace sltk

@@ -116,6 +116,12 @@ GridPlanOptions runGridOptions(const ReconstructionPlan<D>& plan, int runs, doub
 template <int D>
 std::string separateGroupsAdvice(const ReconstructionPlan<D>& plan, double cellSizeFactor, const std::string& why);
 
+/// The same from the groups' boxes (groupBoxesOnRanks, LinkedComponents.h: computed on the
+/// points' owners) and the box around every point: "" for fewer than 2 boxes.
+template <int D>
+std::string separateGroupsAdvice(const ReconstructionPlan<D>& plan, const std::vector<Box<D>>& boxes,
+  const Box<D>& cloudBox, double cellSizeFactor, const std::string& why);
+
 /// Nodes run r (1-based) will store: its grid's, or with OctreeStorage, for
 /// runs 2..R, the tiles' estimated from the cloud (estimatedTiledNodes,
 /// TiledMemory.h).
