@@ -20,6 +20,7 @@
 #include "sltk/recon/AutomaticParameters.h"
 #include "sltk/recon/DistanceFunction.h"
 #include "sltk/recon/LocalOffset.h"
+#include "sltk/recon/MissedPlaces.h"
 #include "sltk/recon/PointClusters.h"
 
 #include <algorithm>
@@ -649,33 +650,73 @@ TEST(ChooseOutsideFactorOnRanks, TheBunnyProbesAsOneRank)
 
 namespace
 {
-/// Clumps of points along [0, 4] x [0, 1] x [0, 1], a chain through every slab
-/// that joins some of them, and scattered points: components that cross the
-/// cuts, two of one rank joined only through another's slab, and singletons.
+/// Clumps of points along [0, 4] x [0, 1] x [0, 1] (radius 0.1 around y = z =
+/// 0.5), a chain from the clump at x = 0.3 out along y = 0.85 to x = 3, back
+/// along y = 0.15 and into the clump at x = 1 (two clumps of the first slab
+/// joined only through the others' slabs), two clumps that overlap across the
+/// middle, and scattered points: components across the cuts and singletons.
 Points clumpsAndChain(unsigned seed)
 {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0), v(0.0, 1.0);
   Points cloud;
-  for (const double x : { 0.3, 1.0, 1.2, 1.95, 2.05, 2.7, 3.7 })
+  for (const double x : { 0.3, 1.0, 1.35, 1.95, 2.05, 2.7, 3.7 })
   {
     for (int j = 0; j < 150; ++j)
     {
       cloud.push_back({ x + 0.1 * u(rng), 0.5 + 0.1 * u(rng), 0.5 + 0.1 * u(rng) });
     }
   }
-  for (double x = 1.0; x <= 3.7; x += 0.02) // along y = 0.5 from the clump at 1.0 to 3.7 ...
+  const auto segment = [&cloud](std::array<double, 3> from, std::array<double, 3> to)
   {
-    cloud.push_back({ x, 0.85, 0.5 });
-  }
-  cloud.push_back({ 1.0, 0.8, 0.5 }); // ... joined to the clumps at 1.0 and 3.7 only
-  cloud.push_back({ 3.7, 0.8, 0.5 });
+    const int steps = static_cast<int>(std::ceil(std::hypot(to[0] - from[0], to[1] - from[1]) / 0.02));
+    for (int k = 0; k < steps; ++k)
+    {
+      const double t = static_cast<double>(k) / steps;
+      cloud.push_back({ from[0] + t * (to[0] - from[0]), from[1] + t * (to[1] - from[1]), 0.5 });
+    }
+  };
+  segment({ 0.3, 0.5, 0.5 }, { 0.3, 0.85, 0.5 }); // out of the clump at 0.3
+  segment({ 0.3, 0.85, 0.5 }, { 3.0, 0.85, 0.5 });
+  segment({ 3.0, 0.85, 0.5 }, { 3.0, 0.15, 0.5 });
+  segment({ 3.0, 0.15, 0.5 }, { 1.0, 0.15, 0.5 });
+  segment({ 1.0, 0.15, 0.5 }, { 1.0, 0.5, 0.5 }); // into the clump at 1.0
   for (int j = 0; j < 40; ++j)
   {
     cloud.push_back({ 4.0 * v(rng), v(rng), v(rng) });
   }
   std::shuffle(cloud.begin(), cloud.end(), rng); // the file's order is not the slabs'
   return cloud;
+}
+
+/// The index of the point of `cloud` nearest to x.
+size_t nearestTo(const Points& cloud, const std::array<double, 3>& x)
+{
+  size_t best = 0;
+  double d2 = std::numeric_limits<double>::infinity();
+  for (size_t j = 0; j < cloud.size(); ++j)
+  {
+    const double e =
+      std::pow(cloud[j][0] - x[0], 2) + std::pow(cloud[j][1] - x[1], 2) + std::pow(cloud[j][2] - x[2], 2);
+    best = e < d2 ? j : best;
+    d2 = std::min(d2, e);
+  }
+  return best;
+}
+
+/// The points sent to their owners under cuts at `lower` along x (ranks - 1
+/// values, non-decreasing; equal cuts and cuts beyond the cloud leave ranks empty).
+sltk::OwnedPoints<3> ownersByCuts(const Points& cloud, const sltk::Communicator& comm, std::vector<double> lower)
+{
+  const sltk::PointCloud<3> mine{ shareOf(cloud, comm) };
+  sltk::SlabCuts cuts;
+  cuts.Lower = { -std::numeric_limits<double>::infinity() };
+  cuts.Lower.insert(cuts.Lower.end(), lower.begin(), lower.end());
+  cuts.Lower.push_back(std::numeric_limits<double>::infinity());
+  sltk::OwnedPoints<3> owned;
+  const sltk::Status s = sltk::sendToOwners(mine, sltk::firstGlobalIndex(mine.size(), comm), cuts, 0.0, comm, owned);
+  EXPECT_TRUE(s.isOk()) << s.message();
+  return owned;
 }
 
 /// Every point's label on one rank (linkWithinRadii over the whole cloud): the
@@ -699,16 +740,14 @@ std::vector<std::int64_t> oneRankLabels(const Points& cloud, const std::vector<d
   return label;
 }
 
-/// The components on the ranks (from a halo `halo`) against one rank's: the
-/// count, and every owned point's label.
-void expectOneRankComponents(
-  const Points& cloud, const std::vector<double>& radius, double halo, bool allOnRankZero = false)
+/// The components on the ranks (`owned`, the points of `cloud` on their
+/// owners) against one rank's: the count, and every owned point's label.
+void expectOneRankComponents(const Points& cloud, const std::vector<double>& radius, const sltk::OwnedPoints<3>& owned)
 {
   auto comm = world();
   TwoThreads threads;
   const std::vector<std::int64_t> one = oneRankLabels(cloud, radius);
   const std::int64_t count = static_cast<std::int64_t>(std::set<std::int64_t>(one.begin(), one.end()).size());
-  const sltk::OwnedPoints<3> owned = owners(cloud, *comm, halo, allOnRankZero);
   std::vector<double> held(owned.Ids.size());
   for (size_t j = 0; j < held.size(); ++j)
   {
@@ -717,7 +756,7 @@ void expectOneRankComponents(
   sltk::LinkedComponents ranks;
   const sltk::Status s = sltk::linkedComponentsOnRanks(owned, held, *comm, threads.Ctx, ranks);
   ASSERT_TRUE(s.isOk()) << s.message();
-  EXPECT_EQ(ranks.Count, count) << "on " << comm->size() << " ranks, halo " << halo;
+  EXPECT_EQ(ranks.Count, count) << "on " << comm->size() << " ranks, halo " << owned.Halo;
   std::int64_t differ = 0;
   for (size_t j = 0; j < owned.Ids.size(); ++j)
   {
@@ -725,6 +764,12 @@ void expectOneRankComponents(
                             : (ranks.Label[j] == -1 ? 0 : 1);
   }
   EXPECT_EQ(comm->allReduce(differ, sltk::ReduceOp::Sum), 0) << "labels on " << comm->size() << " ranks";
+}
+
+void expectOneRankComponents(
+  const Points& cloud, const std::vector<double>& radius, double halo, bool allOnRankZero = false)
+{
+  expectOneRankComponents(cloud, radius, owners(cloud, *world(), halo, allOnRankZero));
 }
 
 /// Radii from 0.03 to 0.09 by index: links that only the end with the larger radius sees.
@@ -743,6 +788,13 @@ TEST(LinkedComponentsOnRanks, AreTheOneRankComponentsAndLabels)
 {
   const Points cloud = clumpsAndChain(7);
   const std::vector<double> r = unevenRadii(cloud.size());
+  // The scenario: the clumps at x = 0.3 and 1 are one component, through the chain only.
+  const std::vector<std::int64_t> one = oneRankLabels(cloud, r);
+  const std::int64_t first = one[nearestTo(cloud, { 0.3, 0.5, 0.5 })];
+  ASSERT_EQ(first, one[nearestTo(cloud, { 1.0, 0.5, 0.5 })]);
+  ASSERT_EQ(first, one[nearestTo(cloud, { 3.0, 0.5, 0.5 })]);
+  ASSERT_NE(first, one[nearestTo(cloud, { 1.35, 0.5, 0.5 })]);
+  ASSERT_NE(first, one[nearestTo(cloud, { 2.7, 0.5, 0.5 })]);
   expectOneRankComponents(cloud, r, 0.0);       // the halo widened to the largest radius
   expectOneRankComponents(cloud, r, 0.5);       // wide enough already
   expectOneRankComponents(cloud, r, 0.0, true); // every point read by rank 0
@@ -750,6 +802,10 @@ TEST(LinkedComponentsOnRanks, AreTheOneRankComponentsAndLabels)
   expectOneRankComponents(rotated(cloud, 2), r, 0.0);
   expectOneRankComponents(cloud, std::vector<double>(cloud.size(), 0.0), 0.0); // no links: every point alone
   expectOneRankComponents(cloud, std::vector<double>(cloud.size(), 5.0), 0.0); // one component
+  // Uneven cuts: every point on the last rank, or ranks between equal cuts left empty.
+  const int p = world()->size();
+  expectOneRankComponents(cloud, r, ownersByCuts(cloud, *world(), std::vector<double>(p - 1, -1.0)));
+  expectOneRankComponents(cloud, r, ownersByCuts(cloud, *world(), std::vector<double>(p - 1, 2.0)));
 }
 
 TEST(LinkedComponentsOnRanks, RefusesABadRadiusOnEveryRank)
@@ -772,7 +828,8 @@ namespace
 {
 /// The cloud's components (cloudComponents: radii from the local spacing) on the
 /// ranks against one rank's count.
-void expectOneRankCloudComponents(const Points& cloud, int k, bool allOnRankZero = false)
+void expectOneRankCloudComponents(
+  const Points& cloud, int k, bool allOnRankZero = false, sltk::Index expectedCount = -1)
 {
   auto comm = world();
   TwoThreads threads;
@@ -781,6 +838,10 @@ void expectOneRankCloudComponents(const Points& cloud, int k, bool allOnRankZero
   double spacing = 0.0;
   ASSERT_TRUE(sltk::cloudSpacing(locator, threads.Ctx, spacing).isOk());
   const sltk::Index one = sltk::cloudComponents(locator, spacing, sltk::PieceLinkFactor, k, threads.Ctx);
+  if (expectedCount >= 0)
+  {
+    EXPECT_EQ(one, expectedCount);
+  }
   const sltk::OwnedPoints<3> owned = owners(cloud, *comm, 0.0, allOnRankZero);
   std::int64_t ranks = 0;
   const sltk::Status s =
@@ -807,7 +868,7 @@ TEST(CloudComponentsOnRanks, TheBunnyIsOneComponentOnAnyRanks)
   {
     GTEST_SKIP() << "the Stanford bunny (/work/shared) is not available";
   }
-  expectOneRankCloudComponents(cloud, 16);
+  expectOneRankCloudComponents(cloud, 16, false, 1);
 }
 
 TEST(GroupBoxesOnRanks, AreTheOneRankGroupsBoxes)
@@ -849,11 +910,229 @@ TEST(GroupBoxesOnRanks, AreTheOneRankGroupsBoxes)
   }
   EXPECT_GE(expected.size(), 2u);
   EXPECT_EQ(got, expected) << expected.size() << " groups on one rank, " << got.size() << " on " << comm->size();
-  // More groups than asked for, or one group: none.
+  // As many groups as asked for: the boxes; more, or one group: none.
+  ASSERT_TRUE(
+    sltk::groupBoxesOnRanks(owned, link, static_cast<std::int64_t>(expected.size()), *comm, threads.Ctx, boxes).isOk());
+  EXPECT_EQ(boxes.size(), expected.size());
   ASSERT_TRUE(
     sltk::groupBoxesOnRanks(owned, link, static_cast<std::int64_t>(expected.size()) - 1, *comm, threads.Ctx, boxes)
       .isOk());
   EXPECT_TRUE(boxes.empty());
   ASSERT_TRUE(sltk::groupBoxesOnRanks(owned, 5.0, 64, *comm, threads.Ctx, boxes).isOk());
   EXPECT_TRUE(boxes.empty());
+}
+
+namespace
+{
+/// The points in this rank's interval [low, high] along `axis` (pointsInIntervals)
+/// against the whole cloud's, filtered as a run selects its window's points
+/// (recon/RunPoints.h): the same points in the same order, with their values.
+void expectWholeCloudsInterval(
+  const Points& cloud, int axis, double low, double high, bool allOnRankZero = false, bool valued = true)
+{
+  auto comm = world();
+  const sltk::OwnedPoints<3> owned = owners(cloud, *comm, 0.0, allOnRankZero);
+  std::vector<double> values;
+  for (size_t j = 0; valued && j < owned.Ids.size(); ++j)
+  {
+    values.push_back(0.5 + static_cast<double>(owned.Ids[j]));
+  }
+  sltk::PointsInInterval<3> got;
+  const sltk::Status s = sltk::pointsInIntervals(owned, values, axis, low, high, *comm, got);
+  ASSERT_TRUE(s.isOk()) << s.message();
+  std::vector<std::int64_t> expected;
+  for (size_t k = 0; k < cloud.size(); ++k)
+  {
+    if (cloud[k][static_cast<size_t>(axis)] >= low && cloud[k][static_cast<size_t>(axis)] <= high)
+    {
+      expected.push_back(static_cast<std::int64_t>(k));
+    }
+  }
+  std::int64_t differ = got.Ids == expected ? 0 : 1;
+  for (size_t j = 0; differ == 0 && j < expected.size(); ++j)
+  {
+    differ += got.Cloud.Points[j] == cloud[static_cast<size_t>(expected[j])] ? 0 : 1;
+    differ += !valued || got.Values[j] == 0.5 + static_cast<double>(expected[j]) ? 0 : 1;
+  }
+  differ += valued || got.Values.empty() ? 0 : 1;
+  EXPECT_EQ(differ, 0) << "rank " << comm->rank() << " of " << comm->size() << ": " << got.Ids.size() << " points in ["
+                       << low << ", " << high << "] along " << axis << ", one rank " << expected.size();
+}
+} // namespace
+
+TEST(PointsInIntervals, AreTheWholeCloudsPointsInItsOrder)
+{
+  auto comm = world();
+  const double r = comm->rank(), p = comm->size();
+  Points cloud = boxCloud(5000, 17);
+  cloud.push_back(cloud[7]); // an exact duplicate, taken twice in the index order
+  // Windows along z overlapping their neighbours, growing with the rank (a run's slabs),
+  // across the owners' slabs along x.
+  expectWholeCloudsInterval(cloud, 2, r / p - 0.1, (r + 1) / p + 0.1);
+  expectWholeCloudsInterval(cloud, 0, 4.0 * r / p - 0.3, 4.0 * (r + 1) / p + 0.3, true); // along the owners' axis
+  // Not ordered by rank: rank r takes rank p - 1 - r's window.
+  expectWholeCloudsInterval(cloud, 2, (p - 1 - r) / p - 0.05, (p - r) / p + 0.05);
+  // Bounds exactly at points' coordinates (both ends are in), and an empty interval on rank 0.
+  expectWholeCloudsInterval(cloud, 1, cloud[3][1], cloud[9][1] > cloud[3][1] ? cloud[9][1] : cloud[3][1]);
+  const double inf = std::numeric_limits<double>::infinity();
+  expectWholeCloudsInterval(cloud, 1, r == 0 ? 2.0 : -inf, r == 0 ? 1.0 : inf, false, false);
+  expectWholeCloudsInterval(cloud, 2, r / p + 0.5, r / p + 0.4); // every interval empty, still ordered
+}
+
+TEST(PointsInIntervals, RefusesABadAxisANaNBoundOrMissingValuesOnEveryRank)
+{
+  auto comm = world();
+  const sltk::OwnedPoints<3> owned = owners(boxCloud(400, 3), *comm, 0.0, false);
+  sltk::PointsInInterval<3> got;
+  const bool last = comm->rank() == comm->size() - 1;
+  EXPECT_FALSE(sltk::pointsInIntervals(owned, {}, last ? 3 : 0, 0.0, 1.0, *comm, got).isOk());
+  EXPECT_FALSE(
+    sltk::pointsInIntervals(owned, {}, 0, last ? std::numeric_limits<double>::quiet_NaN() : 0.0, 1.0, *comm, got)
+      .isOk());
+  const std::vector<double> values(last ? 0 : owned.Ids.size(), 1.0); // one rank gives none
+  const sltk::Status s = sltk::pointsInIntervals(owned, values, 0, 0.0, 1.0, *comm, got);
+  const std::int64_t lastHeld = comm->allReduce(last ? owned.held() : std::int64_t(0), sltk::ReduceOp::Sum);
+  EXPECT_EQ(s.isOk(), comm->size() == 1 || lastHeld == 0) << s.message(); // an empty rank may give none
+  // Intervals along different axes on different ranks.
+  const sltk::Status axes = sltk::pointsInIntervals(owned, {}, last ? 1 : 0, 0.0, 1.0, *comm, got);
+  EXPECT_EQ(axes.isOk(), comm->size() == 1) << axes.message();
+}
+
+namespace
+{
+/// The missed places from the ranks' own missed points and pointsNearOnRanks (the points
+/// on their owners, `owned`) against one rank's from all of them and pointsNear.
+void expectOneRankMissedPlaces(const Points& cloud, const sltk::OwnedPoints<3>& owned, double link)
+{
+  auto comm = world();
+  const sltk::PointCloud<3> whole{ cloud };
+  const sltk::PointLocator<3> locator(whole);
+  // "Missed": the middle of the two clumps across the middle cut, the chain's lower leg and
+  // the scattered points there; their neighbours just outside count as nearby, not missed.
+  const auto missed = [](const std::array<double, 3>& x) { return (x[0] > 1.9 && x[0] < 2.1) || x[1] < 0.2; };
+  std::vector<sltk::PlacedPoint<3>> all, local;
+  for (size_t k = 0; k < cloud.size(); ++k)
+  {
+    if (missed(cloud[k]))
+    {
+      all.push_back({ static_cast<sltk::Index>(k), 1.0, cloud[k] });
+    }
+  }
+  for (size_t j = 0; j < owned.Ids.size(); ++j)
+  {
+    if (owned.Mine[j] && missed(owned.Cloud.Points[j]))
+    {
+      local.push_back({ owned.Ids[j], 1.0, owned.Cloud.Points[j] });
+    }
+  }
+  const auto one = sltk::gatherMissedPlaces<3>(all, link, sltk::serialCommunicator(),
+    [&](const std::vector<sltk::PlacedPoint<3>>& a, const std::vector<size_t>& members)
+    { return sltk::pointsNear(locator, a, members, link); });
+  const auto ranks = sltk::gatherMissedPlaces<3>(local, link, *comm,
+    [&](const std::vector<sltk::PlacedPoint<3>>& a, const std::vector<size_t>& members)
+    { return sltk::pointsNearOnRanks(owned, a, members, link, *comm); });
+  ASSERT_EQ(one.size(), sltk::MissedPlacesNamed);
+  ASSERT_EQ(ranks.size(), one.size());
+  for (size_t g = 0; g < one.size(); ++g)
+  {
+    EXPECT_EQ(ranks[g].Points, one[g].Points) << "place " << g << ", link " << link;
+    EXPECT_EQ(ranks[g].Nearby, one[g].Nearby) << "place " << g << ", link " << link;
+    EXPECT_EQ(ranks[g].Centre, one[g].Centre) << "place " << g;
+    EXPECT_EQ(ranks[g].Lower, one[g].Lower) << "place " << g;
+    EXPECT_EQ(ranks[g].Upper, one[g].Upper) << "place " << g;
+  }
+  if (link > 0.0)
+  {
+    EXPECT_GT(one[0].Nearby, one[0].Points); // the clumps' points just outside the middle are near, not missed
+  }
+}
+} // namespace
+
+TEST(MissedPlacesOnRanks, AreTheOneRankPlacesWithTheirNearbyCounts)
+{
+  Points cloud = clumpsAndChain(13);
+  cloud.push_back(cloud[nearestTo(cloud, { 2.0, 0.5, 0.5 })]); // an exact duplicate of a missed point
+  const int p = world()->size();
+  expectOneRankMissedPlaces(cloud, owners(cloud, *world(), 0.0, false), 0.05);
+  expectOneRankMissedPlaces(cloud, owners(cloud, *world(), 0.0, false), 0.0); // no link: the members alone
+  // Ranks left empty by equal cuts.
+  expectOneRankMissedPlaces(cloud, ownersByCuts(cloud, *world(), std::vector<double>(p - 1, 2.0)), 0.05);
+}
+
+namespace
+{
+/// validateCloudShares on the ranks' shares of `cloud` against validateCloud of the whole: the same verdict and
+/// message.
+void expectOneRankValidation(const Points& cloud, bool allOnRankZero = false, bool noneOnRankZero = false)
+{
+  auto comm = world();
+  const sltk::Status one = sltk::validateCloud(sltk::PointCloud<3>{ cloud });
+  sltk::PointCloud<3> mine{ shareOf(cloud, *comm, allOnRankZero) };
+  if (noneOnRankZero && comm->size() > 1) // rank 0 reads nothing, the others the file in order
+  {
+    const sltk::FileShare f = comm->rank() == 0
+      ? sltk::FileShare{ 0, 0 }
+      : sltk::shareOf(0, static_cast<std::int64_t>(cloud.size()), comm->rank() - 1, comm->size() - 1);
+    mine.Points.assign(cloud.begin() + f.Begin, cloud.begin() + f.End);
+  }
+  const sltk::Status ranks = sltk::validateCloudShares(mine, sltk::firstGlobalIndex(mine.size(), *comm), *comm);
+  EXPECT_EQ(ranks.isOk(), one.isOk()) << one.message();
+  EXPECT_EQ(ranks.message(), one.message()) << "on " << comm->size() << " ranks";
+}
+} // namespace
+
+TEST(ValidateCloudShares, GiveTheOneRankVerdictAndMessage)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const Points good = boxCloud(300, 41);
+  expectOneRankValidation(good);
+  expectOneRankValidation(good, true);
+  expectOneRankValidation(good, false, true);                      // point 0 on rank 1
+  expectOneRankValidation({});                                     // empty
+  expectOneRankValidation(Points(good.begin(), good.begin() + 3)); // fewer than D + 1
+  // The first non-finite point, wherever it is read; a later one (on the same rank, or on a later one) is not named.
+  for (const auto& [at, later] : std::vector<std::pair<size_t, size_t>>{ { 0, 7 }, { 100, 250 }, { 299, 299 } })
+  {
+    Points bad = good;
+    bad[later][2] = inf;
+    bad[at][1] = nan;
+    expectOneRankValidation(bad);
+    expectOneRankValidation(bad, false, true);
+  }
+  Points same(40, { 1.0, 2.0, 3.0 }); // every point coincides
+  expectOneRankValidation(same);
+  Points huge = good;
+  huge[200] = { 1e200, 0.0, 0.0 };
+  expectOneRankValidation(huge);
+  Points survey = good; // an extent too small against the offset
+  for (auto& p : survey)
+  {
+    p = { 1e9 + 1e-3 * p[0], 1e9 + 1e-3 * p[1], 1e9 + 1e-3 * p[2] };
+  }
+  expectOneRankValidation(survey);
+  Points line, plane, tied;
+  for (int k = 0; k < 200; ++k)
+  {
+    line.push_back({ 0.5 * k, 1.0 + 0.25 * k, -0.1 * k });
+    plane.push_back({ std::sin(0.3 * k), std::cos(0.7 * k), 0.25 });
+    tied.push_back({ static_cast<double>(k % 2), static_cast<double>((k / 2) % 2), static_cast<double>(k % 3 == 0) });
+  }
+  expectOneRankValidation(line);
+  expectOneRankValidation(plane);
+  expectOneRankValidation(plane, false, true);
+  plane[123][2] = 0.26; // one point off the plane
+  expectOneRankValidation(plane);
+  expectOneRankValidation(tied); // many points at the same largest distances: the lowest index wins
+}
+
+TEST(ValidateCloudShares, RefusesSharesNotInRankOrderOnEveryRank)
+{
+  auto comm = world();
+  const Points cloud = boxCloud(100, 9);
+  const sltk::PointCloud<3> mine{ shareOf(cloud, *comm) };
+  const std::int64_t first = sltk::firstGlobalIndex(mine.size(), *comm);
+  EXPECT_TRUE(sltk::validateCloudShares(mine, first, *comm).isOk());
+  const sltk::Status s = sltk::validateCloudShares(mine, first + (comm->rank() == comm->size() - 1 ? 1 : 0), *comm);
+  EXPECT_FALSE(s.isOk());
+  EXPECT_NE(s.message().find("consecutive"), std::string::npos) << s.message();
 }

@@ -212,9 +212,17 @@ Status linkedComponentsOnRanks(const OwnedPoints<D>& points, const std::vector<d
   // The halo must hold every point a link can reach, with the rounding of the
   // coordinates the exchange compared (a few units in the last place of the largest).
   double magnitude = 0.0;
-  for (const auto& p : points.Cloud.Points)
+  std::int64_t largestId = 0;
+  for (size_t j = 0; j < points.Cloud.Points.size(); ++j)
   {
-    magnitude = std::max(magnitude, std::fabs(p[static_cast<size_t>(points.Cuts.Axis)]));
+    const double x = std::fabs(points.Cloud.Points[j][static_cast<size_t>(points.Cuts.Axis)]);
+    magnitude = std::isfinite(x) ? std::max(magnitude, x) : magnitude; // a non-finite point links nothing
+    largestId = std::max(largestId, points.Ids[j]);
+  }
+  if (comm.allReduce(largestId, ReduceOp::Max) >= (std::int64_t(1) << 53))
+  {
+    return Status::invalidArgument("the linked components carry global indices as doubles: a cloud of more than "
+                                   "2^53 points is not supported");
   }
   const double reach = comm.allReduce(largest, ReduceOp::Max) * (1.0 + 1e-9) +
     8.0 * std::numeric_limits<double>::epsilon() * comm.allReduce(magnitude, ReduceOp::Max);

@@ -121,6 +121,12 @@ Status densitySpacingsOnRanks(const OwnedPoints<D>& points, int k, const Communi
   std::vector<NeighbourCandidate<D>>* neighbours)
 {
   own.clear();
+  spacing.clear();
+  remote = 0;
+  if (k < 1 || comm.allReduce(points.Owned, ReduceOp::Sum) <= k)
+  {
+    return Status::invalidArgument("the density spacing needs k >= 1 neighbours and a cloud of more than k points");
+  }
   for (size_t j = 0; j < points.Mine.size(); ++j)
   {
     if (points.Mine[j])

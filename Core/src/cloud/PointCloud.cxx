@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/cloud/PointCloud.h"
 
+#include "sltk/exec/Communicator.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace sltk
 {
@@ -59,70 +62,149 @@ std::array<double, 3> from(const std::array<double, D>& p, const std::array<doub
   return v;
 }
 
-/// Largest distance of any point from the line through points i0 and i1, and
-/// the point that has it: zero for collinear clouds.
+/// The point with the largest measure: its value, its global index and its place;
+/// Index -1 when no point measures more than 0.
 template <int D>
-double spreadOffLine(const PointCloud<D>& c, size_t i0, size_t i1, size_t& farthest)
+struct Farthest
 {
-  const auto& a = c.Points[i0];
-  const auto u = from<D>(c.Points[i1], a);
-  const double len = norm(u);
-  double best = 0.0;
-  farthest = i0;
-  for (size_t k = 0; k < c.Points.size(); ++k)
+  double Value = 0.0;
+  std::int64_t Index = -1;
+  std::array<double, D> X{};
+};
+
+/// A point with a non-finite coordinate: its global index and that coordinate.
+struct NonFinite
+{
+  std::int64_t Index;
+  double Value;
+};
+
+/// The points the validation reads: the whole cloud on one rank (`comm` null),
+/// or each rank's share of it (global indices firstId, firstId + 1, ...), every
+/// answer reduced over the ranks to the whole cloud's, the same on every rank.
+template <int D>
+class ValidationView
+{
+public:
+  ValidationView(const PointCloud<D>& share, std::int64_t firstId, const Communicator* comm)
+    : Share(share)
+    , FirstId(firstId)
+    , Comm(comm)
   {
-    const double d = norm(cross(u, from<D>(c.Points[k], a))) / len;
-    if (d > best)
+  }
+
+  std::int64_t count() const
+  {
+    return this->Comm ? this->Comm->allReduce(this->Share.size(), ReduceOp::Sum) : this->Share.size();
+  }
+
+  /// The first point (in global index) with a non-finite coordinate, and that coordinate.
+  bool firstNonFinite(NonFinite& found) const
+  {
+    std::vector<NonFinite> local;
+    for (size_t k = 0; k < this->Share.Points.size() && local.empty(); ++k)
     {
-      best = d;
-      farthest = k;
+      for (int a = 0; a < D && local.empty(); ++a)
+      {
+        if (!std::isfinite(this->Share.Points[k][a]))
+        {
+          local.push_back({ this->FirstId + static_cast<std::int64_t>(k), this->Share.Points[k][a] });
+        }
+      }
     }
+    const std::vector<NonFinite> all = this->Comm ? this->Comm->allGatherV(local) : local;
+    for (const NonFinite& f : all) // rank order: the first found is the lowest index
+    {
+      found = f;
+      return true;
+    }
+    return false;
   }
-  return best;
-}
 
-/// Largest distance of any point from the plane through points i0, i1, i2.
-double spreadOffPlane(const PointCloud<3>& c, size_t i0, size_t i1, size_t i2)
-{
-  const auto& a = c.Points[i0];
-  const auto n = cross(from<3>(c.Points[i1], a), from<3>(c.Points[i2], a));
-  const double nn = norm(n);
-  double best = 0.0;
-  for (const auto& p : c.Points)
+  Box<D> box() const
   {
-    const auto v = from<3>(p, a);
-    best = std::max(best, std::fabs(n[0] * v[0] + n[1] * v[1] + n[2] * v[2]) / nn);
+    Box<D> b = boundingBox(this->Share);
+    if (this->Comm)
+    {
+      this->Comm->allReduce(b.Min.data(), D, ReduceOp::Min);
+      this->Comm->allReduce(b.Max.data(), D, ReduceOp::Max);
+    }
+    return b;
   }
-  return best;
-}
-} // namespace
 
+  /// The place of the point of global index `index`.
+  std::array<double, D> point(std::int64_t index) const
+  {
+    std::array<double, D> x;
+    x.fill(std::numeric_limits<double>::infinity());
+    const std::int64_t k = index - this->FirstId;
+    if (k >= 0 && k < this->Share.size())
+    {
+      x = this->Share.Points[static_cast<size_t>(k)];
+    }
+    if (this->Comm)
+    {
+      this->Comm->allReduce(x.data(), D, ReduceOp::Min); // one rank holds it, the others +inf
+    }
+    return x;
+  }
+
+  /// The point of the largest measure(p) > 0, the lowest index among equal ones
+  /// (one rank's scan keeps the first strictly larger).
+  template <class Measure>
+  Farthest<D> farthest(Measure measure) const
+  {
+    Farthest<D> best;
+    for (size_t k = 0; k < this->Share.Points.size(); ++k)
+    {
+      const double d = measure(this->Share.Points[k]);
+      if (d > best.Value)
+      {
+        best = { d, this->FirstId + static_cast<std::int64_t>(k), this->Share.Points[k] };
+      }
+    }
+    if (!this->Comm)
+    {
+      return best;
+    }
+    Farthest<D> over;
+    for (const Farthest<D>& f :
+      this->Comm->allGatherV(std::vector<Farthest<D>>{ best })) // rank order: lower indices first
+    {
+      over = f.Value > over.Value ? f : over;
+    }
+    return over;
+  }
+
+private:
+  const PointCloud<D>& Share;
+  std::int64_t FirstId;
+  const Communicator* Comm;
+};
+
+/// validateCloud's checks on the points `view` reads, in its order, with its messages.
 template <int D>
-Status validateCloud(const PointCloud<D>& cloud)
+Status validatePoints(const ValidationView<D>& view)
 {
   const std::string dim = std::to_string(D) + "D";
-  if (cloud.Points.empty())
+  const std::int64_t n = view.count();
+  if (n == 0)
   {
     return Status::invalidArgument("the point cloud is empty: give at least " + std::to_string(D + 1) +
       " points that are not all on one " + (D == 2 ? "line" : "plane"));
   }
-  for (size_t k = 0; k < cloud.Points.size(); ++k)
+  NonFinite bad{};
+  if (view.firstNonFinite(bad))
   {
-    for (int a = 0; a < D; ++a)
-    {
-      if (!std::isfinite(cloud.Points[k][a]))
-      {
-        return Status::invalidArgument("point " + std::to_string(k) + " has a non-finite coordinate (" +
-          std::to_string(cloud.Points[k][a]) + "): remove NaN/Inf points before reconstructing");
-      }
-    }
+    return Status::invalidArgument("point " + std::to_string(bad.Index) + " has a non-finite coordinate (" +
+      std::to_string(bad.Value) + "): remove NaN/Inf points before reconstructing");
   }
-  if (cloud.size() < D + 1)
+  if (n < D + 1)
   {
-    return Status::invalidArgument("the point cloud has " + std::to_string(cloud.size()) + " point(s); a " + dim +
+    return Status::invalidArgument("the point cloud has " + std::to_string(n) + " point(s); a " + dim +
       " reconstruction needs at least " + std::to_string(D + 1));
   }
-  const Box<D> box = boundingBox(cloud);
+  const Box<D> box = view.box();
   double diameter = 0.0, magnitude = 0.0;
   for (int a = 0; a < D; ++a)
   {
@@ -141,7 +223,7 @@ Status validateCloud(const PointCloud<D>& cloud)
   }
   if (diameter == 0.0)
   {
-    return Status::invalidArgument("all " + std::to_string(cloud.size()) + " points coincide: nothing to reconstruct");
+    return Status::invalidArgument("all " + std::to_string(n) + " points coincide: nothing to reconstruct");
   }
   // A grid of ~1e4 cells per side needs ~1e-8 relative resolution to stay accurate.
   if (diameter < 1e-8 * magnitude)
@@ -151,27 +233,32 @@ Status validateCloud(const PointCloud<D>& cloud)
       "): its coordinates carry too few digits for the grid; translate the points near the origin where they are "
       "made, before they are rounded to double");
   }
-  // Two well-separated points: the first one and the one farthest from it.
-  size_t i1 = 0;
-  double far = 0.0;
-  for (size_t k = 0; k < cloud.Points.size(); ++k)
-  {
-    const double d = distance<D>(cloud.Points[0], cloud.Points[k]);
-    if (d > far)
-    {
-      far = d;
-      i1 = k;
-    }
-  }
+  // Two well-separated points: the first one and the one farthest from it; then the
+  // largest distance of any point from the line through them, and from the plane
+  // through them and the point that has it (zero for collinear, coplanar clouds).
+  const std::array<double, D> p0 = view.point(0);
+  const Farthest<D> first = view.farthest([&](const std::array<double, D>& p) { return distance<D>(p0, p); });
+  const std::array<double, D> p1 = first.Index >= 0 ? first.X : p0;
+  const auto u = from<D>(p1, p0);
+  const double len = norm(u);
+  const Farthest<D> offLine =
+    view.farthest([&](const std::array<double, D>& p) { return norm(cross(u, from<D>(p, p0))) / len; });
   const std::string closed = D == 2 ? "a closed curve" : "a closed surface";
-  size_t i2 = 0;
-  if (spreadOffLine(cloud, 0, i1, i2) <= 1e-12 * diameter)
+  if (offLine.Value <= 1e-12 * diameter)
   {
     return Status::invalidArgument("all points lie on one line: " + closed + " cannot be reconstructed from them");
   }
   if constexpr (D == 3)
   {
-    if (spreadOffPlane(cloud, 0, i1, i2) <= 1e-12 * diameter)
+    const auto normal = cross(from<3>(p1, p0), from<3>(offLine.X, p0));
+    const double nn = norm(normal);
+    const Farthest<D> offPlane = view.farthest(
+      [&](const std::array<double, 3>& p)
+      {
+        const auto v = from<3>(p, p0);
+        return std::fabs(normal[0] * v[0] + normal[1] * v[1] + normal[2] * v[2]) / nn;
+      });
+    if (offPlane.Value <= 1e-12 * diameter)
     {
       return Status::invalidArgument("all points lie on one plane: a closed surface cannot be reconstructed from "
                                      "them; for a planar outline, give the points a constant z (a 2D "
@@ -180,11 +267,40 @@ Status validateCloud(const PointCloud<D>& cloud)
   }
   return Status::ok();
 }
+} // namespace
+
+template <int D>
+Status validateCloud(const PointCloud<D>& cloud)
+{
+  return validatePoints(ValidationView<D>(cloud, 0, nullptr));
+}
+
+template <int D>
+Status validateCloudShares(const PointCloud<D>& share, std::int64_t firstId, const Communicator& comm)
+{
+  // The view's first point, first non-finite point and ties read the shares in rank order.
+  struct Share
+  {
+    std::int64_t First, Count;
+  };
+  std::int64_t next = 0;
+  for (const Share& s : comm.allGatherV(std::vector<Share>{ { firstId, share.size() } }))
+  {
+    if (s.First != next)
+    {
+      return Status::invalidArgument("validateCloudShares: the ranks' shares are not consecutive in rank order");
+    }
+    next += s.Count;
+  }
+  return validatePoints(ValidationView<D>(share, firstId, &comm));
+}
 
 template Box<2> boundingBox(const PointCloud<2>&);
 template Box<3> boundingBox(const PointCloud<3>&);
 template Status validateCloud(const PointCloud<2>&);
 template Status validateCloud(const PointCloud<3>&);
+template Status validateCloudShares(const PointCloud<2>&, std::int64_t, const Communicator&);
+template Status validateCloudShares(const PointCloud<3>&, std::int64_t, const Communicator&);
 
 bool flattenIfPlanar(const PointCloud<3>& cloud, PointCloud<2>& flat, double& z)
 {

@@ -531,6 +531,113 @@ void nearestOverRanks(const OwnedPoints<D>& points, const std::vector<std::array
   }
 }
 
+namespace
+{
+/// A point, its global index and its value, as pointsInIntervals sends them.
+template <int D>
+struct ValuedPointRecord
+{
+  std::int64_t Id;
+  std::array<double, D> X;
+  double Value;
+};
+
+/// One rank's interval of pointsInIntervals, and its axis.
+struct Interval
+{
+  double Low, High;
+  std::int64_t Axis;
+};
+
+/// Calls visit(r) for every rank r whose interval holds x, in increasing r: by a
+/// search from the first interval that ends at or after x when the intervals'
+/// both ends grow with the rank (the windows of a run's slabs), else one by one.
+template <class Visit>
+void intervalsHolding(double x, const std::vector<Interval>& intervals, bool ordered, Visit visit)
+{
+  size_t r = 0;
+  if (ordered)
+  {
+    r = static_cast<size_t>(
+      std::lower_bound(intervals.begin(), intervals.end(), x, [](const Interval& i, double v) { return i.High < v; }) -
+      intervals.begin());
+  }
+  for (; r < intervals.size() && !(ordered && intervals[r].Low > x); ++r)
+  {
+    if (intervals[r].Low <= x && x <= intervals[r].High)
+    {
+      visit(static_cast<int>(r));
+    }
+  }
+}
+} // namespace
+
+template <int D>
+Status pointsInIntervals(const OwnedPoints<D>& points, const std::vector<double>& values, int axis, double low,
+  double high, const Communicator& comm, PointsInInterval<D>& out)
+{
+  out = PointsInInterval<D>{};
+  const bool valued = comm.anyRank(!values.empty());
+  const bool usable = axis >= 0 && axis < D && !std::isnan(low) && !std::isnan(high) &&
+    (!valued || values.size() == static_cast<size_t>(points.held()));
+  SLTK_RETURN_IF_ERROR(comm.agree(usable ? Status::ok()
+                                         : Status::invalidArgument("pointsInIntervals: the axis is out of range, a "
+                                                                   "bound is NaN or the values are not one per held "
+                                                                   "point on every rank")));
+  std::vector<Interval> intervals(static_cast<size_t>(comm.size()));
+  const Interval mine{ low, high, axis };
+  comm.allGather(&mine, sizeof(Interval), intervals.data());
+  for (const Interval& i : intervals) // every rank sees the same intervals: the same verdict without a reduction
+  {
+    if (i.Axis != axis)
+    {
+      return Status::invalidArgument("pointsInIntervals: the ranks' intervals are along different axes");
+    }
+  }
+  bool ordered = true;
+  for (size_t r = 1; r < intervals.size(); ++r)
+  {
+    ordered = ordered && intervals[r].Low >= intervals[r - 1].Low && intervals[r].High >= intervals[r - 1].High;
+  }
+  const size_t ranks = intervals.size();
+  std::vector<std::int64_t> counts(ranks, 0);
+  const auto forEachOwned = [&](auto&& f)
+  {
+    for (size_t j = 0; j < points.Mine.size(); ++j)
+    {
+      if (points.Mine[j])
+      {
+        intervalsHolding(points.Cloud.Points[j][static_cast<size_t>(axis)], intervals, ordered,
+          [&](int r) { f(j, static_cast<size_t>(r)); });
+      }
+    }
+  };
+  forEachOwned([&](size_t, size_t r) { ++counts[r]; });
+  std::vector<size_t> next = startsOf(counts);
+  std::vector<ValuedPointRecord<D>> send(next.back());
+  forEachOwned(
+    [&](size_t j, size_t r) {
+      send[next[r]++] = { points.Ids[j], points.Cloud.Points[j], valued ? values[j] : 0.0 };
+    });
+  std::vector<size_t> parts;
+  std::vector<ValuedPointRecord<D>> records = exchangeRecords(send, counts, comm, parts);
+  std::sort(records.begin(), records.end(),
+    [](const ValuedPointRecord<D>& a, const ValuedPointRecord<D>& b) { return a.Id < b.Id; });
+  out.Cloud.Points.resize(records.size());
+  out.Ids.resize(records.size());
+  out.Values.resize(valued ? records.size() : 0);
+  for (size_t j = 0; j < records.size(); ++j)
+  {
+    out.Cloud.Points[j] = records[j].X;
+    out.Ids[j] = records[j].Id;
+    if (valued)
+    {
+      out.Values[j] = records[j].Value;
+    }
+  }
+  return Status::ok();
+}
+
 template <int D>
 std::int64_t OwnedPoints<D>::ownedLocal(std::int64_t id) const
 {
@@ -549,6 +656,10 @@ template void nearestOverRanks<2>(const OwnedPoints<2>&, const std::vector<std::
   const Communicator&, const Context&, std::vector<double>&, std::vector<std::int64_t>&);
 template void nearestOverRanks<3>(const OwnedPoints<3>&, const std::vector<std::array<double, 3>>&, double,
   const Communicator&, const Context&, std::vector<double>&, std::vector<std::int64_t>&);
+template Status pointsInIntervals(
+  const OwnedPoints<2>&, const std::vector<double>&, int, double, double, const Communicator&, PointsInInterval<2>&);
+template Status pointsInIntervals(
+  const OwnedPoints<3>&, const std::vector<double>&, int, double, double, const Communicator&, PointsInInterval<3>&);
 template struct OwnedPoints<2>;
 template struct OwnedPoints<3>;
 template Status sendToOwners<2>(const std::vector<std::array<double, 2>>&, const std::vector<std::int64_t>&,

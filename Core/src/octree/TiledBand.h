@@ -282,13 +282,13 @@ public:
   }
 
   /// This rank's points (those in its own slots) with I[phi](Q) > threshold.
-  std::vector<OutsidePoint> outsidePoints(double threshold) const
+  std::vector<PlacedPoint<D>> outsidePoints(double threshold) const
   {
     double error = 0.0, fraction = 0.0;
     PointsOutside outside;
     outside.Threshold = threshold;
     cloudErrors<Interp>(this->Field, this->Plan.Cloud, 0.0, this->Ctx, this->Distribution, error, fraction, &outside);
-    return std::move(outside.Points);
+    return placedPoints(outside.Points, this->Plan.Cloud, [](Index k) { return k; });
   }
 
   /// The step on this rank's band tiles, with as many ghost layers as its feet reach.

@@ -165,8 +165,7 @@ public:
     const Status status =
       iterateRun<D>(band, this->Options, run, this->Plan.CloudSpacing, this->Ctx, records, vanished);
     const bool ran = status.isOk() && !vanished;
-    this->Seeds = seedsAfterRun(
-      band, this->Plan.Cloud, this->Plan.CloudSpacing, this->Options, run, ran, this->Distribution.comm());
+    this->Seeds = seedsAfterRun<D>(band, this->Plan.CloudSpacing, this->Options, run, ran, this->Distribution.comm());
     records.MissedPlaces = missedPlacesAfterRun(band, *this->Plan.Locator, this->Plan.CloudSpacing, this->Options, run,
       ran, records.Runs, this->Distribution.comm());
     recordStorage(this->Field, run, storage, this->Distribution, this->Out.Storage);

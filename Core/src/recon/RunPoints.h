@@ -24,6 +24,7 @@
 #include "sltk/recon/ReconstructionPlan.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -60,6 +61,16 @@ public:
     return beyond + (run == 1 ? outsideFactor * sparsest : 4.0) * plan.CloudSpacing;
   }
 
+  /// The interval along the last axis whose points a rank's run reads: `window`'s
+  /// rows, `ghost` layers and a row more beyond them, and `reach` (pointsInIntervals,
+  /// PointOwners.h, sends the owners' points in it).
+  static std::array<double, 2> rowsReached(const GridSpec<D>& window, int ghost, double reach)
+  {
+    const double dz = window.Spacing[D - 1];
+    return { window.coordinate(D - 1, 0) - (ghost + 1) * dz - reach,
+      window.coordinate(D - 1, window.Dims[D - 1] - 1) + (ghost + 1) * dz + reach };
+  }
+
   /// The points of `plan`'s cloud within `reach` of `window`'s rows along the
   /// last axis (`ghost` layers of its fields beyond them and a row more
   /// included). Collective: when any rank's share is empty, or on one rank,
@@ -78,9 +89,7 @@ public:
       this->Reach = std::numeric_limits<double>::infinity();
       return;
     }
-    const double dz = window.Spacing[D - 1];
-    const double low = window.coordinate(D - 1, 0) - (ghost + 1) * dz - reach;
-    const double high = window.coordinate(D - 1, window.Dims[D - 1] - 1) + (ghost + 1) * dz + reach;
+    const auto [low, high] = rowsReached(window, ghost, reach);
     const std::vector<std::array<double, D>>& all = plan.Cloud.Points;
     for (size_t k = 0; k < all.size(); ++k)
     {

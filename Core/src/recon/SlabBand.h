@@ -90,16 +90,13 @@ public:
 
   /// This rank's points (those of its owned cells) with I[phi](Q) > threshold,
   /// ascending, numbered in the plan's cloud.
-  std::vector<OutsidePoint> outsidePoints(double threshold) const
+  std::vector<PlacedPoint<D>> outsidePoints(double threshold) const
   {
     const SlabPlan& s = this->Slab.slab();
-    std::vector<OutsidePoint> outside =
+    const std::vector<OutsidePoint> outside =
       pointsOutside<D, Interp>(this->Phi, this->Points.cloud(), threshold, s.Begin, s.End, this->Slab.rows());
-    for (OutsidePoint& p : outside)
-    {
-      p.Point = this->Points.original(p.Point); // the order is kept: still ascending
-    }
-    return outside;
+    // The whole cloud's indices: the order is kept, still ascending.
+    return placedPoints(outside, this->Points.cloud(), [this](Index k) { return this->Points.original(k); });
   }
 
   Status step(const LevelSetStepParameters& step)

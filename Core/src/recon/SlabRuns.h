@@ -203,8 +203,7 @@ public:
     SlabBand<D, Interp> band(this->Points, this->Options, this->Ctx, this->Exact, this->Slab, this->Phi, this->Dist);
     const Status status = iterateRun<D>(band, this->Options, run, this->Plan.CloudSpacing, this->Ctx, result, vanished);
     const bool ran = status.isOk() && !vanished;
-    this->Seeds =
-      seedsAfterRun(band, this->Plan.Cloud, this->Plan.CloudSpacing, this->Options, run, ran, this->Slab.comm());
+    this->Seeds = seedsAfterRun<D>(band, this->Plan.CloudSpacing, this->Options, run, ran, this->Slab.comm());
     result.MissedPlaces = missedPlacesAfterRun(
       band, *this->Plan.Locator, this->Plan.CloudSpacing, this->Options, run, ran, result.Runs, this->Slab.comm());
     // d was made exact where each rank's band reached: the ghost rows take the

@@ -14,7 +14,7 @@
 /// of one rank that holds a halo point meets, through that point, the component
 /// of the point's owner, and those meetings (a few edges a cut) are gathered on
 /// every rank and joined there (Documentation/Distributed.md, "The cloud's
-/// components on the owners").
+/// components and its groups far apart on the owners").
 
 #include "sltk/cloud/PointLocator.h"
 #include "sltk/cloud/PointOwners.h"
@@ -48,7 +48,8 @@ struct LinkedComponents
 /// held point, read at the owned ones; finite, >= 0). When points.Halo is
 /// narrower than the largest radius, the owned points are sent again with
 /// that halo first. The count and the labels are the one-rank ones for any
-/// number of ranks and any cuts. Collective.
+/// number of ranks and any cuts. Fails on every rank for a radius that is
+/// negative or not finite, or global indices of 2^53 or more. Collective.
 template <int D>
 Status linkedComponentsOnRanks(const OwnedPoints<D>& points, const std::vector<double>& radius,
   const Communicator& comm, const Context& ctx, LinkedComponents& out);

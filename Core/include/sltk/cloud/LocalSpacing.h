@@ -51,7 +51,8 @@ Status sparsityFactors(const PointLocator<D>& locator, int k, const Context& ctx
 /// points.Cloud (ascending), bit for bit the one-rank values; a query that read
 /// beyond the halo is asked again of the ranks its ball reaches (`remote`
 /// counts those over every rank). `neighbours`, when given, gets each one's k
-/// nearest as candidates (k a point, nearest first). Collective.
+/// nearest as candidates (k a point, nearest first). Fails on every rank, as
+/// densitySpacings does, for k < 1 or a cloud of at most k points. Collective.
 template <int D>
 Status densitySpacingsOnRanks(const OwnedPoints<D>& points, int k, const Communicator& comm, const Context& ctx,
   std::vector<std::int64_t>& own, std::vector<double>& spacing, std::int64_t& remote,

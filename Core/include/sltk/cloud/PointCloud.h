@@ -53,6 +53,17 @@ Box<D> boundingBox(const PointCloud<D>& cloud);
 template <int D>
 Status validateCloud(const PointCloud<D>& cloud);
 
+class Communicator;
+
+/// validateCloud() of the cloud whose shares the ranks hold (`share`: this
+/// rank's points, global indices firstId, firstId + 1, ...: a parallel read's
+/// shares, CloudFileShares.h), with the same checks, decisions and messages as
+/// on one rank holding it whole (point indices are global), the same on every
+/// rank. Fails on every rank when the shares are not consecutive in rank order
+/// (each firstId the points of the ranks before). Collective.
+template <int D>
+Status validateCloudShares(const PointCloud<D>& share, std::int64_t firstId, const Communicator& comm);
+
 /// A 3D cloud with no z extent as a 2D cloud in its plane z = `z` (2D
 /// reconstruction); false, and `flat` untouched, when the cloud has a z extent
 /// or is empty.
@@ -62,5 +73,7 @@ extern template Box<2> boundingBox(const PointCloud<2>&);
 extern template Box<3> boundingBox(const PointCloud<3>&);
 extern template Status validateCloud(const PointCloud<2>&);
 extern template Status validateCloud(const PointCloud<3>&);
+extern template Status validateCloudShares(const PointCloud<2>&, std::int64_t, const Communicator&);
+extern template Status validateCloudShares(const PointCloud<3>&, std::int64_t, const Communicator&);
 
 } // namespace sltk

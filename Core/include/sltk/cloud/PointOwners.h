@@ -129,6 +129,28 @@ template <int D>
 Status valuesFromOwners(const OwnedPoints<D>& points, const std::vector<double>& held,
   const std::vector<NeighbourCandidate<D>>& wanted, const Communicator& comm, std::vector<double>& out);
 
+/// The points every rank owns with their coordinate along one axis in an
+/// interval of this rank's, each with a value (pointsInIntervals).
+template <int D>
+struct PointsInInterval
+{
+  PointCloud<D> Cloud;           ///< in increasing global index
+  std::vector<std::int64_t> Ids; ///< their global indices
+  std::vector<double> Values;    ///< one a point; empty when no values were given
+};
+
+/// The points every rank owns whose coordinate along `axis` lies in this
+/// rank's [low, high] (each rank its own interval, such as the rows a run's
+/// window reads, recon/RunPoints.h), with their values (`values`: one per held
+/// point, read at the owned ones; empty: none), in increasing global index,
+/// the order of the whole cloud. Each point goes to the ranks whose intervals
+/// hold it, by one all-to-all (the intervals, 16 bytes a rank, are gathered
+/// first). Collective; fails on every rank for an axis out of range or not the
+/// same on every rank, a NaN bound or values not one per held point.
+template <int D>
+Status pointsInIntervals(const OwnedPoints<D>& points, const std::vector<double>& values, int axis, double low,
+  double high, const Communicator& comm, PointsInInterval<D>& out);
+
 /// The nearest point to each of `queries` (the same on every rank) among
 /// every rank's own points, ties by the lowest global index (one rank's
 /// PointLocator rule): `distance` and `ids` (+inf and -1 when no rank owns a
@@ -174,6 +196,10 @@ extern template void nearestOverRanks<2>(const OwnedPoints<2>&, const std::vecto
   const Communicator&, const Context&, std::vector<double>&, std::vector<std::int64_t>&);
 extern template void nearestOverRanks<3>(const OwnedPoints<3>&, const std::vector<std::array<double, 3>>&, double,
   const Communicator&, const Context&, std::vector<double>&, std::vector<std::int64_t>&);
+extern template Status pointsInIntervals(
+  const OwnedPoints<2>&, const std::vector<double>&, int, double, double, const Communicator&, PointsInInterval<2>&);
+extern template Status pointsInIntervals(
+  const OwnedPoints<3>&, const std::vector<double>&, int, double, double, const Communicator&, PointsInInterval<3>&);
 extern template Box<2> boundingBoxOverRanks(const PointCloud<2>&, const Communicator&);
 extern template Box<3> boundingBoxOverRanks(const PointCloud<3>&, const Communicator&);
 extern template struct OwnedPoints<2>;

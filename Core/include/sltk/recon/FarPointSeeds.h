@@ -59,9 +59,9 @@ namespace detail
 /// A ball alone in the open (a stray point, an isolated sample of a part too thin
 /// for the grids) would otherwise become a piece of its own.
 template <int D>
-std::vector<bool> attachedToSurface(const PointCloud<D>& cloud, const std::vector<OutsidePoint>& points, double radius)
+std::vector<bool> attachedToSurface(const std::vector<PlacedPoint<D>>& points, double radius)
 {
-  const std::vector<Index> group = pointGroups(cloud, points, 2.0 * radius);
+  const std::vector<Index> group = placedGroups(points, 2.0 * radius);
   const size_t n = points.size();
   std::vector<bool> rooted(n, false), kept(n);
   for (size_t j = 0; j < n; ++j)
@@ -84,19 +84,17 @@ std::vector<bool> attachedToSurface(const PointCloud<D>& cloud, const std::vecto
 /// each with a ball of SeedRadiusFactor thresholds, those not attached to the
 /// surface dropped (detail::attachedToSurface). Collective.
 template <int D>
-FarPointSeeds<D> gatherSeeds(
-  const PointCloud<D>& cloud, const std::vector<OutsidePoint>& local, double threshold, const Communicator& comm)
+FarPointSeeds<D> gatherSeeds(const std::vector<PlacedPoint<D>>& local, double threshold, const Communicator& comm)
 {
-  std::vector<OutsidePoint> all = comm.size() > 1 ? comm.allGatherV(local) : local;
-  std::sort(all.begin(), all.end(), [](const OutsidePoint& a, const OutsidePoint& b) { return a.Point < b.Point; });
+  const std::vector<PlacedPoint<D>> all = gatherPlaced(local, comm);
   FarPointSeeds<D> seeds;
   seeds.Radius = SeedRadiusFactor * threshold;
-  const std::vector<bool> kept = detail::attachedToSurface(cloud, all, seeds.Radius);
+  const std::vector<bool> kept = detail::attachedToSurface(all, seeds.Radius);
   for (size_t j = 0; j < all.size(); ++j)
   {
     if (kept[j])
     {
-      seeds.Centres.push_back(cloud.Points[static_cast<size_t>(all[j].Point)]);
+      seeds.Centres.push_back(all[j].X);
     }
   }
   return seeds;
@@ -107,15 +105,15 @@ FarPointSeeds<D> gatherSeeds(
 /// last run, after a run that failed (`ran` false) or with SeedFarPoints off.
 /// Collective.
 template <int D, class Band>
-FarPointSeeds<D> seedsAfterRun(const Band& band, const PointCloud<D>& cloud, double cloudSpacing,
-  const ReconstructionOptions& options, int run, bool ran, const Communicator& comm)
+FarPointSeeds<D> seedsAfterRun(const Band& band, double cloudSpacing, const ReconstructionOptions& options, int run,
+  bool ran, const Communicator& comm)
 {
   if (!ran || !options.SeedFarPoints || run >= options.Runs)
   {
     return {};
   }
   const double threshold = seedThreshold(band.grid().Spacing[0], cloudSpacing);
-  return gatherSeeds(cloud, band.outsidePoints(threshold), threshold, comm);
+  return gatherSeeds<D>(band.outsidePoints(threshold), threshold, comm);
 }
 
 /// phi = min(phi, |x - Q| - r) at the nodes of phi's rows [firstRow, endRow)

@@ -11,6 +11,7 @@
 
 #include "sltk/cloud/PointCloud.h"
 #include "sltk/cloud/PointLocator.h"
+#include "sltk/cloud/PointOwners.h"
 #include "sltk/exec/Communicator.h"
 #include "sltk/recon/PointClusters.h"
 #include "sltk/recon/ReconstructionOptions.h"
@@ -43,41 +44,74 @@ struct MissedPlace
 /// How many of the largest groups a result names.
 constexpr size_t MissedPlacesNamed = 3;
 
-/// How many points of `locator`'s cloud lie within `link` of one of the points `members`
-/// (indices into `all`, entries of the cloud), themselves included: the points found, sorted
-/// and counted once each (memory in the found points, not the cloud).
+/// How many points of `locator`'s cloud (the whole cloud's) lie within `link` of one of the
+/// points `members` (indices into `all`, entries of the cloud), themselves included: the
+/// points found, sorted and counted once each (memory in the found points, not the cloud).
 template <int D>
-Index pointsNear(
-  const PointLocator<D>& locator, const std::vector<OutsidePoint>& all, const std::vector<size_t>& members, double link)
+Index pointsNear(const PointLocator<D>& locator, const std::vector<PlacedPoint<D>>& all,
+  const std::vector<size_t>& members, double link)
 {
-  const PointCloud<D>& cloud = locator.cloud();
   std::vector<std::int64_t> near, found;
   for (const size_t j : members)
   {
-    const Index i = all[j].Point;
-    near.push_back(i);
-    locator.within(cloud.Points[static_cast<size_t>(i)], link, i, found);
+    near.push_back(all[j].Point);
+    locator.within(all[j].X, link, all[j].Point, found);
     near.insert(near.end(), found.begin(), found.end());
   }
   std::sort(near.begin(), near.end());
   return static_cast<Index>(std::unique(near.begin(), near.end()) - near.begin());
 }
 
+/// pointsNear() over a cloud spread over the ranks by owners (PointOwners.h):
+/// each rank counts its own points that are members or lie within `link` of a
+/// member, and the counts are added. The one-rank count. Collective.
+template <int D>
+Index pointsNearOnRanks(const OwnedPoints<D>& points, const std::vector<PlacedPoint<D>>& all,
+  const std::vector<size_t>& members, double link, const Communicator& comm)
+{
+  std::int64_t count = 0;
+  if (points.held() > 0)
+  {
+    const PointLocator<D> locator(points.Cloud);
+    std::vector<std::uint8_t> near(static_cast<size_t>(points.held()), 0);
+    const auto mark = [&](std::int64_t k)
+    {
+      count += points.Mine[static_cast<size_t>(k)] && !near[static_cast<size_t>(k)] ? 1 : 0;
+      near[static_cast<size_t>(k)] = 1;
+    };
+    std::vector<std::int64_t> found;
+    for (const size_t j : members)
+    {
+      const std::int64_t self = points.ownedLocal(all[j].Point);
+      if (self >= 0)
+      {
+        mark(self); // a member is near itself, whatever the link
+      }
+      locator.within(all[j].X, link, self, found);
+      for (const std::int64_t k : found)
+      {
+        mark(k);
+      }
+    }
+  }
+  return comm.allReduce(count, ReduceOp::Sum);
+}
+
 /// The groups of the points `local` (this rank's, beyond the misfit threshold) over
 /// every rank, largest first (then by their first point), at most MissedPlacesNamed;
-/// points closer than `link` are in one group. Collective.
-template <int D>
+/// points closer than `link` are in one group. `nearby(all, members)` counts the
+/// cloud's points near a group's members (pointsNear, pointsNearOnRanks), called
+/// for each named group in the same order on every rank. Collective.
+template <int D, class Nearby>
 std::vector<MissedPlace<D>> gatherMissedPlaces(
-  const PointLocator<D>& locator, const std::vector<OutsidePoint>& local, double link, const Communicator& comm)
+  const std::vector<PlacedPoint<D>>& local, double link, const Communicator& comm, Nearby nearby)
 {
-  const PointCloud<D>& cloud = locator.cloud();
-  std::vector<OutsidePoint> all = comm.size() > 1 ? comm.allGatherV(local) : local;
-  std::sort(all.begin(), all.end(), [](const OutsidePoint& a, const OutsidePoint& b) { return a.Point < b.Point; });
-  const std::vector<Index> group = pointGroups(cloud, all, link);
+  const std::vector<PlacedPoint<D>> all = gatherPlaced(local, comm);
+  const std::vector<Index> group = placedGroups(all, link);
   std::map<Index, MissedPlace<D>> places; // by the group's representative
   for (size_t j = 0; j < all.size(); ++j)
   {
-    const auto& p = cloud.Points[static_cast<size_t>(all[j].Point)];
+    const auto& p = all[j].X;
     auto [it, created] = places.try_emplace(group[j]);
     MissedPlace<D>& place = it->second;
     if (created)
@@ -111,7 +145,7 @@ std::vector<MissedPlace<D>> gatherMissedPlaces(
         members.push_back(j);
       }
     }
-    place.Nearby = pointsNear(locator, all, members, link);
+    place.Nearby = nearby(all, members);
     named.push_back(place);
   }
   return named;
@@ -160,7 +194,10 @@ std::vector<MissedPlace<D>> missedPlacesAfterRun(const Band& band, const PointLo
     return {};
   }
   const double threshold = misfitThreshold(band.grid().Spacing[0], cloudSpacing, options.GammaFactor);
-  return gatherMissedPlaces(locator, band.outsidePoints(threshold), 2.0 * threshold, comm);
+  const double link = 2.0 * threshold;
+  return gatherMissedPlaces<D>(band.outsidePoints(threshold), link, comm,
+    [&](const std::vector<PlacedPoint<D>>& all, const std::vector<size_t>& members)
+    { return pointsNear(locator, all, members, link); });
 }
 
 } // namespace sltk

@@ -29,6 +29,42 @@ struct OutsidePoint
   double Value = 0.0;
 };
 
+/// A point outside the surface with its place and its global index (Point), as
+/// the ranks gather them: no rank needs the whole cloud to place it.
+template <int D>
+struct PlacedPoint
+{
+  Index Point = 0;
+  double Value = 0.0;
+  std::array<double, D> X{};
+};
+
+/// The places of `points` (their Point indices into `cloud`), with the indices
+/// mapped by `index` (a run's point to the whole cloud's).
+template <int D, class Map>
+std::vector<PlacedPoint<D>> placedPoints(const std::vector<OutsidePoint>& points, const PointCloud<D>& cloud, Map index)
+{
+  std::vector<PlacedPoint<D>> placed(points.size());
+  for (size_t j = 0; j < points.size(); ++j)
+  {
+    placed[j] = { index(points[j].Point), points[j].Value, cloud.Points[static_cast<size_t>(points[j].Point)] };
+  }
+  return placed;
+}
+
+/// Every rank's `local` points on every rank, in increasing Point (the cloud's order). Collective.
+template <int D>
+std::vector<PlacedPoint<D>> gatherPlaced(const std::vector<PlacedPoint<D>>& local, const Communicator& comm)
+{
+  std::vector<PlacedPoint<D>> all = comm.size() > 1 ? comm.allGatherV(local) : local;
+  std::sort(all.begin(), all.end(), [](const PlacedPoint<D>& a, const PlacedPoint<D>& b) { return a.Point < b.Point; });
+  return all;
+}
+
+/// The groups of `points` (pointGroups below) from their places alone: the same groups.
+template <int D>
+std::vector<Index> placedGroups(const std::vector<PlacedPoint<D>>& points, double link);
+
 /// The groups of `points` (indices into `cloud`): two points closer than `link` are
 /// in one group, and so, through chains of such pairs, are their groups. Returns,
 /// for every entry of `points`, the entry that stands for its group (a union-find
@@ -93,6 +129,19 @@ std::vector<Index> pointGroups(const PointCloud<D>& cloud, const std::vector<Out
   return group;
 }
 
+template <int D>
+std::vector<Index> placedGroups(const std::vector<PlacedPoint<D>>& points, double link)
+{
+  PointCloud<D> places;
+  std::vector<OutsidePoint> entries(points.size());
+  for (size_t j = 0; j < points.size(); ++j)
+  {
+    places.Points.push_back(points[j].X);
+    entries[j] = { static_cast<Index>(j), points[j].Value };
+  }
+  return pointGroups(places, entries, link);
+}
+
 /// The cloud's connected components, what the result's pieces are compared with
 /// (Documentation/Numerics.md, "Pieces against the cloud's components"): points i and j
 /// are linked when |p_i - p_j| < max(r_i, r_j), r_i = `factor` max(h_P, min(s_i,
@@ -130,7 +179,9 @@ Index cloudComponents(const PointLocator<D>& locator, double cloudSpacing, doubl
 /// each point's s from its owner (densitySpacingsOnRanks), the median an exact
 /// order statistic over the ranks, the links and their joins across the cuts by
 /// linkedComponentsOnRanks. `count` is the one-rank count for any number of
-/// ranks and any cuts. Collective.
+/// ranks and any cuts; a spacing that makes a radius negative or not finite
+/// fails (where one rank's cloudComponents counts what such radii link).
+/// Collective.
 template <int D>
 Status cloudComponentsOnRanks(const OwnedPoints<D>& points, double cloudSpacing, double factor, int k,
   const Communicator& comm, const Context& ctx, std::int64_t& count)
