@@ -69,10 +69,15 @@ std::vector<Index> placedGroups(const std::vector<PlacedPoint<D>>& points, doubl
 /// in one group, and so, through chains of such pairs, are their groups. Returns,
 /// for every entry of `points`, the entry that stands for its group (a union-find
 /// over buckets of edge `link`); the same for any order of the ranks' points once
-/// they are sorted by index.
+/// they are sorted by index. A link of 0 or less (or NaN) links no pair: every
+/// entry is its own group.
 template <int D>
 std::vector<Index> pointGroups(const PointCloud<D>& cloud, const std::vector<OutsidePoint>& points, double link)
 {
+  if (!(link > 0.0)) // no bucket of edge link: x / link is not a bucket's index
+  {
+    return singletonForest<Index>(points.size());
+  }
   std::map<std::array<Index, D>, std::vector<Index>> buckets;
   const auto bucketOf = [&](const std::array<double, D>& x)
   {
