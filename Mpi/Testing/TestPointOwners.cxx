@@ -1136,3 +1136,71 @@ TEST(ValidateCloudShares, RefusesSharesNotInRankOrderOnEveryRank)
   EXPECT_FALSE(s.isOk());
   EXPECT_NE(s.message().find("consecutive"), std::string::npos) << s.message();
 }
+
+namespace
+{
+/// A 2D cloud: rings of points along x (each a component; two of them overlap across the
+/// middle), and a chain along y = 0.9 over every slab (a component of its own).
+std::vector<std::array<double, 2>> rings2D()
+{
+  std::vector<std::array<double, 2>> cloud;
+  for (const double x : { 0.3, 1.0, 1.55, 1.95, 2.7, 3.7 })
+  {
+    for (int k = 0; k < 120; ++k)
+    {
+      const double t = 2.0 * M_PI * k / 120.0;
+      cloud.push_back({ x + 0.25 * std::cos(t), 0.5 + 0.25 * std::sin(t) });
+    }
+  }
+  for (double x = 0.3; x <= 3.7; x += 0.01)
+  {
+    cloud.push_back({ x, 0.75 + 0.15 * (x > 0.31 && x < 3.69) });
+  }
+  return cloud;
+}
+} // namespace
+
+TEST(LinkedComponentsOnRanks, AreTheOneRankComponentsIn2D)
+{
+  auto comm = world();
+  TwoThreads threads;
+  const std::vector<std::array<double, 2>> cloud = rings2D();
+  const std::vector<double> radius(cloud.size(), 0.02);
+  // One rank's components.
+  const sltk::PointCloud<2> whole{ cloud };
+  const sltk::PointLocator<2> locator(whole);
+  std::vector<std::int64_t> parent = sltk::singletonForest<std::int64_t>(cloud.size());
+  sltk::linkWithinRadii(locator, radius, nullptr, parent);
+  std::set<std::int64_t> roots;
+  for (size_t j = 0; j < cloud.size(); ++j)
+  {
+    roots.insert(sltk::findRoot(parent, static_cast<std::int64_t>(j)));
+  }
+  // On the ranks, from their shares, with a halo of 0 (widened).
+  const sltk::FileShare f = sltk::shareOf(0, static_cast<std::int64_t>(cloud.size()), comm->rank(), comm->size());
+  const sltk::PointCloud<2> mine{ std::vector<std::array<double, 2>>(cloud.begin() + f.Begin, cloud.begin() + f.End) };
+  sltk::OwnedPoints<2> owned;
+  ASSERT_TRUE(sltk::sendToOwners(mine, f.Begin, sltk::balancedCuts(mine, *comm), 0.0, *comm, owned).isOk());
+  sltk::LinkedComponents ranks;
+  const sltk::Status s =
+    sltk::linkedComponentsOnRanks(owned, std::vector<double>(owned.Ids.size(), 0.02), *comm, threads.Ctx, ranks);
+  ASSERT_TRUE(s.isOk()) << s.message();
+  EXPECT_GE(roots.size(), 3u);
+  EXPECT_EQ(ranks.Count, static_cast<std::int64_t>(roots.size())) << "on " << comm->size() << " ranks";
+  // The groups' boxes and the validation in 2D.
+  std::vector<sltk::Box<2>> boxes;
+  ASSERT_TRUE(sltk::groupBoxesOnRanks(owned, 0.02, 16, *comm, threads.Ctx, boxes).isOk());
+  EXPECT_EQ(boxes.size(), roots.size());
+  EXPECT_EQ(sltk::validateCloudShares(mine, f.Begin, *comm).message(), sltk::validateCloud(whole).message());
+  std::vector<std::array<double, 2>> line(50);
+  for (size_t j = 0; j < line.size(); ++j)
+  {
+    line[j] = { 0.1 * static_cast<double>(j), 0.3 * static_cast<double>(j) };
+  }
+  const sltk::FileShare g = sltk::shareOf(0, 50, comm->rank(), comm->size());
+  const sltk::PointCloud<2> lineShare{ std::vector<std::array<double, 2>>(
+    line.begin() + g.Begin, line.begin() + g.End) };
+  const sltk::Status refused = sltk::validateCloudShares(lineShare, g.Begin, *comm);
+  EXPECT_FALSE(refused.isOk());
+  EXPECT_EQ(refused.message(), sltk::validateCloud(sltk::PointCloud<2>{ line }).message());
+}
