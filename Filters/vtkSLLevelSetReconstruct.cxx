@@ -30,6 +30,7 @@
 #include "vtkLogger.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
@@ -417,6 +418,7 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
   }
   summary = sltk::summarize(result, plan.Options.FrameShift); // places in the user's coordinates
   summary.Ranks = comm.size();
+  summary.PlanPointsHeldMax = plan.PointsHeldMax;
   summary.Traffic = traffic;
   sltk::vtkbridge::communicationSummary(summary, grid);
   if (comm.rank() > 0)
@@ -428,16 +430,20 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
   return 1;
 }
 
-/// Plans (ReconstructionPlan.h) and runs Algorithm 1 on `cloud` (moved in),
-/// then fills the image (lying in the plane z = `z` in 2D), the history and,
-/// with OctreeStorage, the surface.
+/// Plans (ReconstructionPlan.h) and runs Algorithm 1 on `cloud` (moved in:
+/// the whole cloud, or with `firstId` this rank's share of it, its first point's
+/// global index), then fills the image (lying in the plane z = `z` in 2D), the
+/// history and, with OctreeStorage, the surface.
 template <int D>
 int reconstructInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionOptions& options,
-  sltk::PointCloud<D> cloud, double z, const sltk::Context& ctx, const sltk::Communicator& comm, int ghostLevels,
-  vtkDataObject* output, vtkPolyData* surface, vtkTable* history, sltk::ReconstructionSummary& summary)
+  sltk::PointCloud<D> cloud, const std::int64_t* firstId, double z, const sltk::Context& ctx,
+  const sltk::Communicator& comm, int ghostLevels, vtkDataObject* output, vtkPolyData* surface, vtkTable* history,
+  sltk::ReconstructionSummary& summary)
 {
   sltk::ReconstructionPlan<D> plan;
-  sltk::Status status = comm.agree(sltk::planReconstruction(std::move(cloud), options, ctx, plan));
+  sltk::Status status = comm.agree(firstId ? sltk::planReconstructionOnRanks(cloud, *firstId, options, ctx, comm, plan)
+                                           : sltk::planReconstruction(std::move(cloud), options, ctx, plan));
+  cloud = sltk::PointCloud<D>(); // a share: the plan holds what the runs read
   if (!status.isOk())
   {
     vtkErrorWithObjectMacro(self, "Input point set rejected: " << status.message());
@@ -463,6 +469,7 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionOp
   sltk::vtkbridge::toImage(result, z, ghostLevels, image);
   summary = sltk::summarize(result, plan.Options.FrameShift); // places in the user's coordinates
   summary.Ranks = comm.size();
+  summary.PlanPointsHeldMax = plan.PointsHeldMax;
   summary.Traffic = counted.traffic();
   sltk::vtkbridge::runSummary(summary, image);
   sltk::vtkbridge::communicationSummary(summary, image);
@@ -472,16 +479,50 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionOp
   }
   return 1;
 }
+/// The surface's DistanceToCloud and the cloud's point arrays (transferCloudAttributes):
+/// from the input when every rank holds the whole cloud; from the shares' owners when the
+/// ranks hold shares (`firstId`: this rank's first point's global index) without point
+/// arrays; else from every piece gathered, now that the reconstruction's memory is free.
+/// `spacing`: h_P, in the user's units. Collective.
+void surfaceAttributes(vtkSLLevelSetReconstruct* self, vtkPointSet* input, const std::int64_t* firstId, bool joined,
+  double spacing, const sltk::Communicator& comm, const sltk::Context& ctx, vtkPolyData* surface)
+{
+  const bool arrays = comm.anyRank(input && input->GetPointData()->GetNumberOfArrays() > 0);
+  if (firstId && !arrays) // the cloud is not gathered
+  {
+    const double radius = 8.0 * spacing; // most vertices lie within a cell of a point
+    sltk::vtkbridge::distanceToShares(input, *firstId, surface, radius, comm, ctx);
+    return;
+  }
+  vtkSmartPointer<vtkPointSet> attributesFrom = input;
+  if (joined || firstId)
+  {
+    std::set<std::string> dropped;
+    attributesFrom = sltk::vtkbridge::piecesWithPointData(input, comm, &dropped);
+    for (const std::string& name : dropped)
+    {
+      vtkWarningWithObjectMacro(self,
+        "the cloud's point array '"
+          << name << "' is not on the surface: some ranks' pieces lack it or hold another type or number of "
+          << "components; give every piece the same arrays");
+    }
+  }
+  sltk::vtkbridge::transferCloudAttributes(attributesFrom, surface);
+}
 } // namespace
 
 int vtkSLLevelSetReconstruct::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // The model needs the whole cloud (h_P (4.36), the bounding box and the
-  // distance function see every point), whatever piece is asked of us.
+  // distance function see every point), whatever piece is asked of us; with
+  // CloudPiecesAreShares under MPI, each rank its share: the piece of its rank.
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  vtkMultiProcessController* ranks =
+    this->Controller ? this->Controller : vtkMultiProcessController::GetGlobalController();
+  const bool share = this->CloudPiecesAreShares && ranks && ranks->GetNumberOfProcesses() > 1;
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), share ? ranks->GetLocalProcessId() : 0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), share ? ranks->GetNumberOfProcesses() : 1);
   inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
   return 1;
 }
@@ -531,10 +572,11 @@ int vtkSLLevelSetReconstruct::RequestData(
   vtkPolyData* surface = vtkPolyData::GetData(outputVector, 1);
   vtkTable* history = vtkTable::GetData(outputVector, 2);
 
-  // Under MPI every rank has read the whole cloud (RequestUpdateExtent) and
-  // reconstructs its slab of every run (a collective call on the Controller's
-  // ranks), whatever piece it was asked for; on one rank a request for a piece
-  // other than 0 gets empty outputs (piece 0 holds the whole result).
+  // Under MPI every rank has read the whole cloud, or its share of it with
+  // CloudPiecesAreShares (RequestUpdateExtent), and reconstructs its slab of every
+  // run (a collective call on the Controller's ranks), whatever piece it was asked
+  // for; on one rank a request for a piece other than 0 gets empty outputs (piece 0
+  // holds the whole result).
   std::unique_ptr<sltk::Communicator> comm;
   const sltk::Status made = sltk::vtkbridge::makeCommunicator(this->Controller, comm);
   if (!made.isOk())
@@ -558,11 +600,21 @@ int vtkSLLevelSetReconstruct::RequestData(
     vtkErrorMacro("Input point set rejected: " << status.message());
     return 0;
   }
-  // Every rank needs the whole cloud. A caller that gave each rank its own piece (a
+  // Shares of one cloud (CloudPiecesAreShares) are planned where they are (planReconstructionOnRanks).
+  // Otherwise every rank needs the whole cloud: a caller that gave each rank its own piece (a
   // distributed data set, or points on one rank only) gets the union of the pieces
   // (CloudPieces.h); the surface's DistanceToCloud and the cloud's point arrays are then
   // taken from every piece (SLTKCloudPieces.h).
-  const bool joined = sltk::joinCloudPieces(cloud, *comm);
+  const bool shares = this->CloudPiecesAreShares && comm->size() > 1;
+  if (shares && sltk::sameCloudOnEveryRank(cloud, *comm)) // every point would count once a rank
+  {
+    vtkErrorMacro("CloudPiecesAreShares is on, but every rank holds the same "
+      << cloud.size() << " points (the whole cloud): give each rank its own share of the cloud, or turn "
+      << "CloudPiecesAreShares off");
+    return 0;
+  }
+  const std::int64_t firstId = shares ? sltk::firstGlobalIndex(cloud.size(), *comm) : 0;
+  const bool joined = !shares && sltk::joinCloudPieces(cloud, *comm);
   if (joined)
   {
     vtkLog(
@@ -571,9 +623,12 @@ int vtkSLLevelSetReconstruct::RequestData(
   // Survey coordinates: a cloud far from the origin for its size is reconstructed in its
   // local frame and the outputs are put back (LocalFrame.h). Its precision is checked
   // where the user gave it: moved, it would hide digits the file never had.
-  const std::array<double, 3> shift =
-    cloud.Points.empty() ? std::array<double, 3>{} : sltk::localFrameShift(sltk::boundingBox(cloud));
-  const sltk::Status precise = comm->agree(sltk::isZeroShift(shift) ? sltk::Status::ok() : sltk::validateCloud(cloud));
+  const sltk::Box<3> bounds = shares ? sltk::boundingBoxOverRanks(cloud, *comm) : sltk::boundingBox(cloud);
+  const bool none = !(bounds.Min[0] <= bounds.Max[0]); // no point (a NaN is refused below)
+  const std::array<double, 3> shift = none ? std::array<double, 3>{} : sltk::localFrameShift(bounds);
+  const sltk::Status precise = comm->agree(sltk::isZeroShift(shift) ? sltk::Status::ok()
+      : shares                                                      ? sltk::validateCloudShares(cloud, firstId, *comm)
+                                                                    : sltk::validateCloud(cloud));
   if (!precise.isOk())
   {
     vtkErrorMacro("Input point set rejected: " << precise.message());
@@ -611,10 +666,18 @@ int vtkSLLevelSetReconstruct::RequestData(
   sltk::PointCloud<2> flat;
   double z = 0.0;
   sltk::ReconstructionSummary summary;
-  const int done = sltk::flattenIfPlanar(cloud, flat, z)
-    ? reconstructInto<2>(this, options, std::move(flat), z, ctx, *comm, ghostLevels, output, surface, history, summary)
-    : reconstructInto<3>(
-        this, options, std::move(cloud), 0.0, ctx, *comm, ghostLevels, output, surface, history, summary);
+  sltk::Box<3> moved = bounds;
+  for (int a = 0; a < 3; ++a)
+  {
+    moved.Min[a] -= shift[a];
+    moved.Max[a] -= shift[a];
+  }
+  const std::int64_t* first = shares ? &firstId : nullptr;
+  const bool planar = shares ? sltk::flattenIfPlanar(cloud, moved, flat, z) : sltk::flattenIfPlanar(cloud, flat, z);
+  const int done = planar ? reconstructInto<2>(this, options, std::move(flat), first, z, ctx, *comm, ghostLevels,
+                              output, surface, history, summary)
+                          : reconstructInto<3>(this, options, std::move(cloud), first, 0.0, ctx, *comm, ghostLevels,
+                              output, surface, history, summary);
   if (!done)
   {
     return 0;
@@ -625,19 +688,8 @@ int vtkSLLevelSetReconstruct::RequestData(
     sltk::vtkbridge::zeroLevelSet(vtkImageData::SafeDownCast(output), surface);
   }
   sltk::vtkbridge::toUserFrame(shift, output, surface);
-  vtkSmartPointer<vtkPointSet> attributesFrom = input;
-  if (joined) // every piece with its arrays, now that the reconstruction's memory is free
-  {
-    std::set<std::string> dropped;
-    attributesFrom = sltk::vtkbridge::piecesWithPointData(input, *comm, &dropped);
-    for (const std::string& name : dropped)
-    {
-      vtkWarningMacro("the cloud's point array '"
-        << name << "' is not on the surface: some ranks' pieces lack it or hold another type or number of "
-        << "components; give every piece the same arrays");
-    }
-  }
-  sltk::vtkbridge::transferCloudAttributes(attributesFrom, surface);
+  surfaceAttributes(
+    this, input, shares ? &firstId : nullptr, joined, this->Impl->Summary->CloudSpacing, *comm, ctx, surface);
   markOutputsComplete(outputVector,
     comm->size() > 1 && !options.OctreeStorage ? std::min(ghostLevels, sltk::vtkbridge::ImageGhostLevelsAvailable)
                                                : EveryGhostLevel);
@@ -735,6 +787,7 @@ void vtkSLLevelSetReconstruct::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DetectTunnels: " << this->GetDetectTunnels() << "\n";
   os << indent << "OctreeStorage: " << this->GetOctreeStorage() << "\n";
   os << indent << "GenerateHyperTreeGrid: " << this->GenerateHyperTreeGrid << "\n";
+  os << indent << "CloudPiecesAreShares: " << this->CloudPiecesAreShares << "\n";
   os << indent << "OutlierDeviations: " << this->GetOutlierDeviations() << "\n";
   os << indent << "ThinningFactor: " << this->GetThinningFactor() << "\n";
 }

@@ -315,6 +315,21 @@ public:
   ///@}
 
   ///@{
+  /// Under MPI, whether each rank's input is its own share of one cloud (default
+  /// off): no point in two shares, and the shares in rank order make the cloud's
+  /// order, as a parallel read leaves them (the CLI's). On, the plan's cloud steps
+  /// (validation, cleaning, unit box, h_P, noise, automatic C_dx and thinning) run
+  /// on the shares, each point at the rank owning its place, and only the
+  /// cleaned and thinned cloud is gathered on every rank; the result is the one
+  /// a rank holding the whole cloud gives. Off, ranks whose inputs differ
+  /// reconstruct the union of their points, a point repeated in several pieces
+  /// (ghost points) counted once (sltk/cloud/CloudPieces.h).
+  vtkSetMacro(CloudPiecesAreShares, bool);
+  vtkGetMacro(CloudPiecesAreShares, bool);
+  vtkBooleanMacro(CloudPiecesAreShares, bool);
+  ///@}
+
+  ///@{
   /// Deprecated: use SetOctreeStorage, GetOctreeStorage, OctreeStorageOn and
   /// OctreeStorageOff (AdaptiveStorage is OctreeStorage's old name; these
   /// forwarding methods are removed in the next release).
@@ -388,6 +403,7 @@ protected:
   int NumberOfThreads = 0;
   int ThreadsUsed = 0;
   bool GenerateHyperTreeGrid = true;
+  bool CloudPiecesAreShares = false;
   vtkMultiProcessController* Controller = nullptr;
 
 private:

@@ -468,8 +468,8 @@ int Reconstruct::run() const
   const std::string& path = this->Cloud;
   vtkSmartPointer<vtkPointSet> cloud;
   CloudReadCounts counts;
-  sltk::Status status =
-    readCloudOnRanks(path, cloud, counts); // each rank its share, then all of it (ReadCloudShares.h)
+  // Each rank its share, planned where it is, or the whole cloud for --png to draw (ReadCloudShares.h).
+  sltk::Status status = readCloudOnRanks(path, this->given("--png"), cloud, counts);
   const double readSeconds =
     MpiSession::maxOverRanks(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   if (MpiSession::maxOverRanks(status.isOk() ? 0.0 : 1.0) > 0.0) // every rank stops, none waits in the filter
@@ -484,9 +484,8 @@ int Reconstruct::run() const
       counts.Total, readSeconds, counts.ParseSeconds, counts.ReadMax, counts.HeldMax,
       static_cast<double>(counts.Traffic.CollectiveBytes) / 1e6, static_cast<long long>(counts.Traffic.Collectives));
   }
-  double bounds[6];
-  cloud->GetBounds(bounds);
-  const bool planar = cloud->GetNumberOfPoints() > 0 && bounds[4] == bounds[5]; // reconstructed in 2D
+  const double* bounds = counts.Bounds.data();                    // over every rank's share
+  const bool planar = counts.Total > 0 && bounds[4] == bounds[5]; // reconstructed in 2D
   if (planar && this->given("--surface") && extensionOf(this->Surface) != "vtp")
   {
     return fail(path + " has no z extent, so its reconstruction is a curve, which " + extensionOf(this->Surface) +
@@ -503,6 +502,7 @@ int Reconstruct::run() const
     vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_INFO);
   }
   const vtkSmartPointer<vtkSLLevelSetReconstruct> filter = this->makeFilter(cloud);
+  filter->SetCloudPiecesAreShares(counts.Shares);
   vtkNew<ErrorCollector> errors;
   filter->AddObserver(vtkCommand::ErrorEvent, errors);
   vtkNew<ProgressBar> bar;
@@ -523,7 +523,7 @@ int Reconstruct::run() const
   {
     return fail(path + ": " +
       withMergedScanHint(
-        errors->Message, static_cast<size_t>(cloud->GetNumberOfPoints()), this->Options.Cleaning.ThinningFactor > 0));
+        errors->Message, static_cast<size_t>(counts.Total), this->Options.Cleaning.ThinningFactor > 0));
   }
   vtkDataObject* grid = filter->GetOutputDataObject(0); // the image, or --octree's hyper tree grid
   auto* history = vtkTable::SafeDownCast(filter->GetOutputDataObject(2));
@@ -548,7 +548,7 @@ int Reconstruct::run() const
   vtkPolyData* surface = joined;
 
   // Summary table.
-  printCloud(result, path, cloud->GetNumberOfPoints());
+  printCloud(result, path, counts.Total);
   const nlohmann::ordered_json runRecords = printRuns(result, ranks, traffic);
   warnAboutResult(result);
   const bool fits = result.FitsCloud; // Core's verdict (StoppingRule.h FitShare)
@@ -578,9 +578,9 @@ int Reconstruct::run() const
   }
   if (this->given("--json"))
   {
-    nlohmann::ordered_json summary = { { "cloud", path },
-      { "points", static_cast<long long>(cloud->GetNumberOfPoints()) }, { "points_total", counts.Total },
-      { "points_read_max", counts.ReadMax }, { "points_held_max", counts.HeldMax },
+    nlohmann::ordered_json summary = { { "cloud", path }, { "points", counts.Total }, { "points_total", counts.Total },
+      { "points_read_max", counts.ReadMax },
+      { "points_held_max", std::max<long long>(counts.HeldMax, result.PlanPointsHeldMax) },
       { "run_points_held_max", runPointsHeld(result.Runs) }, { "read_seconds", readSeconds },
       { "parse_seconds", counts.ParseSeconds },
       { "outliers_removed", static_cast<long long>(result.Cleaning.OutliersRemoved) },
@@ -653,9 +653,10 @@ Command addReconstructCommand(CLI::App& sltk)
   app
     ->add_option("--json", command->Json,
       "summary: points, points_total, points_read_max and points_held_max (the\n"
-      "most points a rank parsed from the file and holds), run_points_held_max\n"
+      "most points a rank parsed from the file, and held: its share, the plan's\n"
+      "owners, the cleaned cloud gathered), run_points_held_max\n"
       "(the most a rank's runs read: its rows' and those within reach), read_seconds\n"
-      "(parse_seconds of it: the shares' parse, before the gather),\n"
+      "(parse_seconds of it: the shares' parse),\n"
       "points_reconstructed, outliers_removed, cdx, kp,\n"
       "automatic_choices, recoveries, warnings, fits_cloud, separate_groups (a few groups\nfar apart that need "
       "their own runs), pieces (components of the\ninside), cloud_components "

@@ -6,6 +6,7 @@
 #include "ReadPointCloud.h"
 #include "SLTKCommunicator.h"
 
+#include "sltk/cloud/CloudPieces.h"
 #include "sltk/cloud/PlyCloudFile.h"
 #include "sltk/cloud/TextCloudFile.h"
 #include "sltk/exec/CountingCommunicator.h"
@@ -18,6 +19,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <limits>
 #include <memory>
 
 namespace sltkcli
@@ -43,11 +45,13 @@ bool splitPly(
   return true;
 }
 
-/// The whole cloud from every rank's share, in rank order (the file's order),
-/// in the point type of the serial reader: double for text and wide PLY coordinates, else float.
-vtkSmartPointer<vtkPointSet> gatherShares(sltk::CloudShare& share, const sltk::Communicator& comm, int type)
+/// The cloud from every rank's share, in rank order (the file's order), or with
+/// `keep` this rank's share alone, in the point type of the serial reader:
+/// double for text and wide PLY coordinates, else float.
+vtkSmartPointer<vtkPointSet> cloudOfShares(sltk::CloudShare& share, bool keep, const sltk::Communicator& comm, int type)
 {
-  std::vector<std::array<double, 3>> all = comm.size() > 1 ? comm.allGatherV(share.Points) : std::move(share.Points);
+  std::vector<std::array<double, 3>> all =
+    comm.size() > 1 && !keep ? comm.allGatherV(share.Points) : std::move(share.Points);
   share.Points = {};
   vtkNew<vtkPoints> points;
   points->SetDataType(type);
@@ -60,9 +64,32 @@ vtkSmartPointer<vtkPointSet> gatherShares(sltk::CloudShare& share, const sltk::C
   cloud->SetPoints(points);
   return cloud;
 }
+
+/// The bounds of every rank's `cloud` (vtkDataSet::GetBounds over the ranks; inverted
+/// when no rank has a point). Collective.
+std::array<double, 6> boundsOverRanks(vtkPointSet* cloud, const sltk::Communicator& comm)
+{
+  std::array<double, 3> low, high;
+  low.fill(std::numeric_limits<double>::infinity());
+  high.fill(-std::numeric_limits<double>::infinity());
+  if (cloud && cloud->GetNumberOfPoints() > 0)
+  {
+    double b[6];
+    cloud->GetBounds(b);
+    for (int a = 0; a < 3; ++a)
+    {
+      low[a] = b[2 * a];
+      high[a] = b[2 * a + 1];
+    }
+  }
+  comm.allReduce(low.data(), 3, sltk::ReduceOp::Min);
+  comm.allReduce(high.data(), 3, sltk::ReduceOp::Max);
+  return { low[0], high[0], low[1], high[1], low[2], high[2] };
+}
 } // namespace
 
-sltk::Status readCloudOnRanks(const std::string& path, vtkSmartPointer<vtkPointSet>& cloud, CloudReadCounts& counts)
+sltk::Status readCloudOnRanks(
+  const std::string& path, bool whole, vtkSmartPointer<vtkPointSet>& cloud, CloudReadCounts& counts)
 {
   cloud = nullptr;
   counts = CloudReadCounts();
@@ -77,10 +104,11 @@ sltk::Status readCloudOnRanks(const std::string& path, vtkSmartPointer<vtkPointS
   sltk::Status checked;
   if (!text && !(ext == "ply" && splitPly(path, *comm, layout, checked)))
   {
-    const sltk::Status whole = readPointCloud(path, cloud); // every rank the whole file, as before
-    counts.Total = counts.ReadMax = counts.HeldMax = whole.isOk() ? cloud->GetNumberOfPoints() : 0;
+    const sltk::Status read = readPointCloud(path, cloud); // every rank the whole file, as before
+    counts.Total = counts.ReadMax = counts.HeldMax = read.isOk() ? cloud->GetNumberOfPoints() : 0;
+    counts.Bounds = boundsOverRanks(read.isOk() ? cloud.Get() : nullptr, *comm);
     counts.Traffic = sltk::busiestRanks({ counted.traffic() }, *ranks)[0]; // uncounted
-    return whole;
+    return read;
   }
   SLTK_RETURN_IF_ERROR(checked);
   sltk::CloudShare share;
@@ -91,7 +119,13 @@ sltk::Status readCloudOnRanks(const std::string& path, vtkSmartPointer<vtkPointS
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), sltk::ReduceOp::Max);
   counts.Total = share.Total;
   counts.ReadMax = comm->allReduce(static_cast<std::int64_t>(share.Points.size()), sltk::ReduceOp::Max);
-  cloud = gatherShares(share, *comm, text || layout.Wide ? VTK_DOUBLE : VTK_FLOAT);
+  // Shares identical on every rank (a file that repeats itself, split at the repeat) would be
+  // taken by the filter for the whole cloud given to every rank: those are gathered.
+  sltk::PointCloud<3> mine{ std::move(share.Points) };
+  counts.Shares = !whole && comm->size() > 1 && !sltk::sameCloudOnEveryRank(mine, *comm);
+  share.Points = std::move(mine.Points);
+  cloud = cloudOfShares(share, counts.Shares, *comm, text || layout.Wide ? VTK_DOUBLE : VTK_FLOAT);
+  counts.Bounds = boundsOverRanks(cloud, *comm);
   counts.HeldMax = comm->allReduce(static_cast<std::int64_t>(cloud->GetNumberOfPoints()), sltk::ReduceOp::Max);
   counts.Traffic = sltk::busiestRanks({ counted.traffic() }, *ranks)[0]; // uncounted
   return sltk::Status::ok();

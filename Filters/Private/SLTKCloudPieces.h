@@ -8,6 +8,9 @@
 /// point of any piece, so every rank needs the pieces' arrays too.
 
 #include "sltk/exec/Communicator.h"
+#include "sltk/exec/Context.h"
+
+#include <cstdint>
 
 #include "vtkSmartPointer.h"
 
@@ -29,6 +32,18 @@ namespace vtkbridge
 /// `dropped` when given).
 vtkSmartPointer<vtkPolyData> piecesWithPointData(
   vtkPointSet* piece, const Communicator& comm, std::set<std::string>* dropped = nullptr);
+
+/// Collective. The DistanceToCloud array of transferCloudAttributes on every
+/// rank's `surface` piece, from the shares of the cloud the ranks hold (`share`,
+/// global indices firstId, ...: vtkSLLevelSetReconstruct's CloudPiecesAreShares)
+/// without gathering them: the shares go to their owners (PointOwners.h) and
+/// every rank's vertices are asked of every owner (nearestOverRanks, first within
+/// `radius`), in rounds of at most `round` vertices over all the ranks (each
+/// rank's round / P): the queries of a round, 24 bytes each and the same on every
+/// rank, bound the memory whatever the ranks. The same values as the nearest
+/// point of the whole cloud gives.
+void distanceToShares(vtkPointSet* share, std::int64_t firstId, vtkPolyData* surface, double radius,
+  const Communicator& comm, const Context& ctx, std::int64_t round = 1 << 15);
 
 } // namespace vtkbridge
 } // namespace sltk

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/cloud/CloudCleaning.h"
 
-#include "sltk/cloud/CloudSpacing.h"
-#include "sltk/cloud/CloudThinning.h"
+#include "sltk/cloud/CloudPoints.h"
 
 #include <cmath>
 #include <sstream>
@@ -12,7 +11,7 @@ namespace sltk
 
 template <int D>
 Status cleanCloud(
-  PointCloud<D>& cloud, const CloudCleaningOptions& options, const Context& ctx, CloudCleaningReport& report)
+  CloudPoints<D>& cloud, const CloudCleaningOptions& options, const Context& ctx, CloudCleaningReport& report)
 {
   report = CloudCleaningReport{};
   report.InputPoints = cloud.size();
@@ -29,7 +28,7 @@ Status cleanCloud(
       outlierOptions.GrossRatio = GrossOutlierRatio;
     }
     OutlierReport outliers;
-    SLTK_RETURN_IF_ERROR(removeOutliers(cloud, outlierOptions, ctx, cloud, outliers));
+    SLTK_RETURN_IF_ERROR(cloud.removeOutliers(outlierOptions, ctx, outliers));
     report.OutliersRemoved = outliers.Removed;
     report.AutomaticOutliers = automatic && outliers.Removed > 0;
     if (automatic && outliers.Removed == 0)
@@ -53,10 +52,10 @@ Status cleanCloud(
     CloudSpacingOptions so;
     so.DensityNeighbours = options.DensityNeighbours;
     double density = 0.0;
-    SLTK_RETURN_IF_ERROR(cloudSpacing(cloud, ctx, density, so));
+    SLTK_RETURN_IF_ERROR(cloud.spacing(ctx, so, density));
     report.ThinningCell = options.ThinningFactor * density;
     const std::int64_t before = cloud.size();
-    SLTK_RETURN_IF_ERROR(thinCloud(cloud, report.ThinningCell, cloud));
+    SLTK_RETURN_IF_ERROR(cloud.thin(report.ThinningCell));
     std::ostringstream log;
     log << "thinning: cell " << report.ThinningCell << " (" << options.ThinningFactor << " x density spacing "
         << density << "): " << before << " -> " << cloud.size() << " points";
@@ -66,6 +65,16 @@ Status cleanCloud(
   return Status::ok();
 }
 
+template <int D>
+Status cleanCloud(
+  PointCloud<D>& cloud, const CloudCleaningOptions& options, const Context& ctx, CloudCleaningReport& report)
+{
+  WholeCloud<D> whole(cloud, PointLocatorDefaultBucket);
+  return cleanCloud(static_cast<CloudPoints<D>&>(whole), options, ctx, report);
+}
+
+template Status cleanCloud(CloudPoints<2>&, const CloudCleaningOptions&, const Context&, CloudCleaningReport&);
+template Status cleanCloud(CloudPoints<3>&, const CloudCleaningOptions&, const Context&, CloudCleaningReport&);
 template Status cleanCloud(PointCloud<2>&, const CloudCleaningOptions&, const Context&, CloudCleaningReport&);
 template Status cleanCloud(PointCloud<3>&, const CloudCleaningOptions&, const Context&, CloudCleaningReport&);
 

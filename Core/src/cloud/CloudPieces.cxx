@@ -34,14 +34,18 @@ std::uint64_t pointHash(const std::array<double, D>& p)
   return h;
 }
 
-/// Whether the ranks hold different clouds (joinCloudPieces' rule). Collective.
-template <int D>
-bool cloudsDiffer(const PointCloud<D>& cloud, const Communicator& comm)
+/// How the ranks' clouds compare: whether their counts or hashes differ, and
+/// whether every coordinate is finite (joinCloudPieces' rule). Collective.
+struct PieceComparison
 {
-  if (comm.size() == 1)
-  {
-    return false;
-  }
+  bool Differ = false;
+  bool Finite = true;
+  std::int64_t Fewest = 0; ///< the fewest points a rank holds
+};
+
+template <int D>
+PieceComparison comparePieces(const PointCloud<D>& cloud, const Communicator& comm)
+{
   std::uint64_t sum = 0;
   std::int64_t finite = 1;
   for (const auto& p : cloud.Points)
@@ -56,11 +60,23 @@ bool cloudsDiffer(const PointCloud<D>& cloud, const Communicator& comm)
   std::int64_t high[3] = { low[0], low[1], low[2] };
   comm.allReduce(low, 3, ReduceOp::Min);
   comm.allReduce(high, 3, ReduceOp::Max);
-  if (comm.allReduce(finite, ReduceOp::Min) == 0)
+  PieceComparison c;
+  c.Finite = comm.allReduce(finite, ReduceOp::Min) != 0;
+  c.Differ = low[0] != high[0] || low[1] != high[1] || low[2] != high[2];
+  c.Fewest = low[0];
+  return c;
+}
+
+/// Whether the ranks hold different clouds (joinCloudPieces' rule). Collective.
+template <int D>
+bool cloudsDiffer(const PointCloud<D>& cloud, const Communicator& comm)
+{
+  if (comm.size() == 1)
   {
     return false;
   }
-  return low[0] != high[0] || low[1] != high[1] || low[2] != high[2];
+  const PieceComparison c = comparePieces(cloud, comm);
+  return c.Finite && c.Differ;
 }
 
 /// Every rank's points in rank order, exact duplicates of an earlier point dropped. Collective.
@@ -96,6 +112,19 @@ bool joinCloudPieces(PointCloud<D>& cloud, const Communicator& comm)
   return true;
 }
 
+template <int D>
+bool sameCloudOnEveryRank(const PointCloud<D>& cloud, const Communicator& comm)
+{
+  if (comm.size() == 1)
+  {
+    return false;
+  }
+  const PieceComparison c = comparePieces(cloud, comm);
+  return c.Finite && !c.Differ && c.Fewest > 0;
+}
+
+template bool sameCloudOnEveryRank(const PointCloud<2>&, const Communicator&);
+template bool sameCloudOnEveryRank(const PointCloud<3>&, const Communicator&);
 template bool joinCloudPieces(PointCloud<2>&, const Communicator&);
 template bool joinCloudPieces(PointCloud<3>&, const Communicator&);
 

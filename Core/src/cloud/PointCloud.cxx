@@ -80,8 +80,10 @@ struct NonFinite
 };
 
 /// The points the validation reads: the whole cloud on one rank (`comm` null),
-/// or each rank's share of it (global indices firstId, firstId + 1, ...), every
-/// answer reduced over the ranks to the whole cloud's, the same on every rank.
+/// each rank's share of it (global indices firstId, firstId + 1, ...), or the
+/// points each rank owns among those it holds (`ids` their global indices,
+/// `mine` the owned ones: OwnedPoints, PointOwners.h); every answer reduced
+/// over the ranks to the whole cloud's, the same on every rank.
 template <int D>
 class ValidationView
 {
@@ -92,38 +94,63 @@ public:
     , Comm(comm)
   {
   }
+  ValidationView(const PointCloud<D>& held, const std::vector<std::int64_t>& ids, const std::vector<std::uint8_t>& mine,
+    const Communicator& comm)
+    : Share(held)
+    , Ids(&ids)
+    , Mine(&mine)
+    , Comm(&comm)
+  {
+  }
 
   std::int64_t count() const
   {
-    return this->Comm ? this->Comm->allReduce(this->Share.size(), ReduceOp::Sum) : this->Share.size();
+    std::int64_t n = 0;
+    for (size_t k = 0; k < this->Share.Points.size(); ++k)
+    {
+      n += this->counted(k) ? 1 : 0;
+    }
+    return this->Comm ? this->Comm->allReduce(n, ReduceOp::Sum) : n;
   }
 
-  /// The first point (in global index) with a non-finite coordinate, and that coordinate.
+  /// The point of the lowest global index with a non-finite coordinate, and that coordinate.
   bool firstNonFinite(NonFinite& found) const
   {
     std::vector<NonFinite> local;
-    for (size_t k = 0; k < this->Share.Points.size() && local.empty(); ++k)
+    for (size_t k = 0; k < this->Share.Points.size() && (local.empty() || this->Ids); ++k)
     {
-      for (int a = 0; a < D && local.empty(); ++a)
+      for (int a = 0; a < D && this->counted(k); ++a)
       {
-        if (!std::isfinite(this->Share.Points[k][a]))
+        if (!std::isfinite(this->Share.Points[k][a]) && (local.empty() || this->id(k) < local[0].Index))
         {
-          local.push_back({ this->FirstId + static_cast<std::int64_t>(k), this->Share.Points[k][a] });
+          local.assign(1, { this->id(k), this->Share.Points[k][a] });
+          break;
         }
       }
     }
     const std::vector<NonFinite> all = this->Comm ? this->Comm->allGatherV(local) : local;
-    for (const NonFinite& f : all) // rank order: the first found is the lowest index
+    if (all.empty())
     {
-      found = f;
-      return true;
+      return false;
     }
-    return false;
+    found = *std::min_element(
+      all.begin(), all.end(), [](const NonFinite& x, const NonFinite& y) { return x.Index < y.Index; });
+    return true;
   }
 
   Box<D> box() const
   {
-    Box<D> b = boundingBox(this->Share);
+    Box<D> b;
+    b.Min.fill(std::numeric_limits<double>::infinity());
+    b.Max.fill(-std::numeric_limits<double>::infinity());
+    for (size_t k = 0; k < this->Share.Points.size(); ++k)
+    {
+      for (int a = 0; a < D && this->counted(k); ++a)
+      {
+        b.Min[a] = std::min(b.Min[a], this->Share.Points[k][a]);
+        b.Max[a] = std::max(b.Max[a], this->Share.Points[k][a]);
+      }
+    }
     if (this->Comm)
     {
       this->Comm->allReduce(b.Min.data(), D, ReduceOp::Min);
@@ -137,10 +164,17 @@ public:
   {
     std::array<double, D> x;
     x.fill(std::numeric_limits<double>::infinity());
-    const std::int64_t k = index - this->FirstId;
-    if (k >= 0 && k < this->Share.size())
+    if (!this->Ids)
     {
-      x = this->Share.Points[static_cast<size_t>(k)];
+      const std::int64_t k = index - this->FirstId;
+      if (k >= 0 && k < this->Share.size())
+      {
+        x = this->Share.Points[static_cast<size_t>(k)];
+      }
+    }
+    for (size_t k = 0; this->Ids && k < this->Share.Points.size(); ++k)
+    {
+      x = this->counted(k) && this->id(k) == index ? this->Share.Points[k] : x;
     }
     if (this->Comm)
     {
@@ -154,13 +188,15 @@ public:
   template <class Measure>
   Farthest<D> farthest(Measure measure) const
   {
+    const auto better = [](const Farthest<D>& x, const Farthest<D>& than)
+    { return x.Value > than.Value || (x.Value == than.Value && x.Value > 0.0 && x.Index < than.Index); };
     Farthest<D> best;
     for (size_t k = 0; k < this->Share.Points.size(); ++k)
     {
-      const double d = measure(this->Share.Points[k]);
-      if (d > best.Value)
+      if (this->counted(k))
       {
-        best = { d, this->FirstId + static_cast<std::int64_t>(k), this->Share.Points[k] };
+        const Farthest<D> here{ measure(this->Share.Points[k]), this->id(k), this->Share.Points[k] };
+        best = better(here, best) ? here : best;
       }
     }
     if (!this->Comm)
@@ -168,17 +204,21 @@ public:
       return best;
     }
     Farthest<D> over;
-    for (const Farthest<D>& f :
-      this->Comm->allGatherV(std::vector<Farthest<D>>{ best })) // rank order: lower indices first
+    for (const Farthest<D>& f : this->Comm->allGatherV(std::vector<Farthest<D>>{ best }))
     {
-      over = f.Value > over.Value ? f : over;
+      over = better(f, over) ? f : over;
     }
     return over;
   }
 
 private:
+  std::int64_t id(size_t k) const { return this->Ids ? (*this->Ids)[k] : this->FirstId + static_cast<std::int64_t>(k); }
+  bool counted(size_t k) const { return !this->Mine || (*this->Mine)[k]; }
+
   const PointCloud<D>& Share;
-  std::int64_t FirstId;
+  const std::vector<std::int64_t>* Ids = nullptr;
+  const std::vector<std::uint8_t>* Mine = nullptr;
+  std::int64_t FirstId = 0;
   const Communicator* Comm;
 };
 
@@ -295,25 +335,41 @@ Status validateCloudShares(const PointCloud<D>& share, std::int64_t firstId, con
   return validatePoints(ValidationView<D>(share, firstId, &comm));
 }
 
+template <int D>
+Status validateOwnedPoints(const PointCloud<D>& held, const std::vector<std::int64_t>& ids,
+  const std::vector<std::uint8_t>& mine, const Communicator& comm)
+{
+  const bool shaped = ids.size() == held.Points.size() && mine.size() == held.Points.size();
+  if (comm.anyRank(!shaped))
+  {
+    return Status::invalidArgument("validateOwnedPoints: one index and one owner flag a held point");
+  }
+  return validatePoints(ValidationView<D>(held, ids, mine, comm));
+}
+
 template Box<2> boundingBox(const PointCloud<2>&);
 template Box<3> boundingBox(const PointCloud<3>&);
 template Status validateCloud(const PointCloud<2>&);
 template Status validateCloud(const PointCloud<3>&);
 template Status validateCloudShares(const PointCloud<2>&, std::int64_t, const Communicator&);
 template Status validateCloudShares(const PointCloud<3>&, std::int64_t, const Communicator&);
+template Status validateOwnedPoints(
+  const PointCloud<2>&, const std::vector<std::int64_t>&, const std::vector<std::uint8_t>&, const Communicator&);
+template Status validateOwnedPoints(
+  const PointCloud<3>&, const std::vector<std::int64_t>&, const std::vector<std::uint8_t>&, const Communicator&);
 
 bool flattenIfPlanar(const PointCloud<3>& cloud, PointCloud<2>& flat, double& z)
 {
-  if (cloud.Points.empty())
+  return !cloud.Points.empty() && flattenIfPlanar(cloud, boundingBox(cloud), flat, z);
+}
+
+bool flattenIfPlanar(const PointCloud<3>& cloud, const Box<3>& whole, PointCloud<2>& flat, double& z)
+{
+  if (!(whole.Min[2] <= whole.Max[2]) || whole.extent(2) != 0.0)
   {
     return false;
   }
-  const auto box = boundingBox(cloud);
-  if (box.extent(2) != 0.0)
-  {
-    return false;
-  }
-  z = box.Min[2];
+  z = whole.Min[2];
   flat.Points.resize(cloud.Points.size());
   for (size_t k = 0; k < cloud.Points.size(); ++k)
   {

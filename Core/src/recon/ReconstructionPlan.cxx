@@ -191,13 +191,6 @@ Status validateReconstructionOptions(const ReconstructionOptions& options)
 
 namespace
 {
-/// Steps 3-4: the cloud into the unit box, its locator and h_P (4.36).
-template <int D>
-Status locate(PointCloud<D> cloud, ReconstructionPlan<D>& plan, const Context& ctx)
-{
-  return placeInUnitBox(std::move(cloud), ctx, plan.Cloud, plan.Box, plan.Locator, plan.CloudSpacing);
-}
-
 std::string number(double value)
 {
   std::ostringstream s;
@@ -208,10 +201,10 @@ std::string number(double value)
 
 /// C_dx from the finest level asked (GridPlan.h), refused when it leaves C_dx's range.
 template <int D>
-Status cellSizeFromLevel(ReconstructionPlan<D>& plan)
+Status cellSizeFromLevel(const CloudPoints<D>& points, ReconstructionPlan<D>& plan)
 {
   const int level = plan.Options.MaximumLevel, runs = plan.Options.Runs;
-  const double edge = boundingBox(plan.Cloud).largestExtent();
+  const double edge = points.box().largestExtent();
   const double cdx = cellSizeFactorForLevel(level, runs, edge, plan.CloudSpacing);
   if (!(cdx >= CellSizeFactorRange[0] && cdx <= CellSizeFactorRange[1]))
   {
@@ -268,7 +261,7 @@ Status withFittingLevel(const ReconstructionPlan<D>& plan, const Status& refusal
 /// An automatic interpolator from the cloud's noise, measured before any thinning
 /// (AutomaticParameters.h, AutomaticInterpolatorNoise).
 template <int D>
-Status chooseInterpolator(ReconstructionPlan<D>& plan, const Context& ctx)
+Status chooseInterpolator(const CloudPoints<D>& points, ReconstructionPlan<D>& plan, const Context& ctx)
 {
   plan.CloudNoise = -1.0;
   if (plan.Options.Interpolator)
@@ -276,7 +269,7 @@ Status chooseInterpolator(ReconstructionPlan<D>& plan, const Context& ctx)
     return Status::ok();
   }
   double noise = 0.0;
-  if (!cloudNoise(*plan.Locator, plan.CloudSpacing, ctx, noise).isOk())
+  if (!points.noise(plan.CloudSpacing, ctx, noise).isOk())
   {
     plan.Options.Interpolator = InterpolatorKind::Weno3; // too few points to tell
     plan.Choices.push_back("interpolator weno3: too few points to measure the noise");
@@ -295,22 +288,23 @@ Status chooseInterpolator(ReconstructionPlan<D>& plan, const Context& ctx)
 
 /// An automatic C_dx: 1, or the smallest that fits the budget (AutomaticParameters.h).
 template <int D>
-Status chooseCellSize(ReconstructionPlan<D>& plan, const GridPlanOptions& po)
+Status chooseCellSize(const CloudPoints<D>& points, ReconstructionPlan<D>& plan, const GridPlanOptions& po)
 {
   double cdx = 1.0;
-  SLTK_RETURN_IF_ERROR(chooseCellSizeFactor(boundingBox(plan.Cloud), plan.CloudSpacing, po, cdx));
+  SLTK_RETURN_IF_ERROR(chooseCellSizeFactor(points.box(), plan.CloudSpacing, po, cdx));
   plan.Options.CellSizeFactor = cdx;
   return Status::ok();
 }
 
 /// Automatic thinning of a cloud denser than its finest grid (AutomaticParameters.h).
 template <int D>
-Status thinIfDenserThanGrid(ReconstructionPlan<D>& plan, const GridPlanOptions& po, const Context& ctx)
+Status thinIfDenserThanGrid(
+  CloudPoints<D>& points, ReconstructionPlan<D>& plan, const GridPlanOptions& po, const Context& ctx)
 {
   CloudSpacingOptions so;
   so.DensityNeighbours = plan.Options.Cleaning.DensityNeighbours;
   double density = 0.0;
-  if (plan.Cloud.size() <= so.DensityNeighbours || !cloudSpacing(*plan.Locator, ctx, density, so).isOk())
+  if (points.size() <= so.DensityNeighbours || !points.spacing(ctx, so, density).isOk())
   {
     return Status::ok();
   }
@@ -319,20 +313,19 @@ Status thinIfDenserThanGrid(ReconstructionPlan<D>& plan, const GridPlanOptions& 
   {
     return Status::ok();
   }
-  PointCloud<D> cloud = std::move(plan.Cloud);
-  plan.Locator.reset();
-  PointCloud<D> thinned;
-  SLTK_RETURN_IF_ERROR(thinCloud(cloud, AutomaticThinningFactor * density, thinned));
-  plan.Box.toUser(thinned);
+  const std::int64_t before = points.size();
+  SLTK_RETURN_IF_ERROR(points.thin(AutomaticThinningFactor * density));
+  const UnitBox<D> box = plan.Box;
+  SLTK_RETURN_IF_ERROR(points.transform([&box](const std::array<double, D>& p) { return box.toUser(p); }));
   plan.Cleaning.AutomaticThinning = true;
   plan.Cleaning.ThinningCell = AutomaticThinningFactor * density * plan.Box.Scale;
-  plan.Cleaning.OutputPoints = thinned.size();
+  plan.Cleaning.OutputPoints = points.size();
   plan.Choices.push_back("thinning: the density spacing " + number(density * plan.Box.Scale) +
     " is below the finest cell " + number(finestDx * plan.Box.Scale) + ", so the cloud is averaged over cells of " +
-    number(AutomaticThinningFactor) + " density spacings: " + std::to_string(cloud.size()) + " -> " +
-    std::to_string(thinned.size()) + " points (--no-cleaning keeps every point)");
-  SLTK_RETURN_IF_ERROR(locate(std::move(thinned), plan, ctx));
-  return chooseCellSize(plan, po);
+    number(AutomaticThinningFactor) + " density spacings: " + std::to_string(before) + " -> " +
+    std::to_string(points.size()) + " points (--no-cleaning keeps every point)");
+  SLTK_RETURN_IF_ERROR(placeInUnitBox(points, ctx, plan.Box, plan.CloudSpacing));
+  return chooseCellSize(points, plan, po);
 }
 
 /// What the windows of the ranks on this machine may take: the budget given,
@@ -476,9 +469,10 @@ Status withSeparateRuns(const ReconstructionPlan<D>& plan, const Status& refusal
 }
 } // namespace
 
+namespace
+{
 template <int D>
-Status planReconstruction(
-  PointCloud<D> cloud, const ReconstructionOptions& options, const Context& ctx, ReconstructionPlan<D>& plan)
+void resetPlan(const ReconstructionOptions& options, ReconstructionPlan<D>& plan)
 {
   plan.Locator.reset();
   plan.Cloud = PointCloud<D>();
@@ -489,35 +483,57 @@ Status planReconstruction(
   plan.Options = options;
   plan.Choices.clear();
   plan.Enclosure.reset();
-  SLTK_RETURN_IF_ERROR(validateReconstructionOptions<D>(options));
-  SLTK_RETURN_IF_ERROR(checkAndCleanCloud(cloud, options.Cleaning, ctx, plan.Cleaning));
+  plan.PointsHeldMax = 0;
+}
+
+/// Steps 1-5 on `points` up to the automatic C_dx and thinning: what reads the
+/// cloud before the whole of it is needed (the validation, the cleaning, the
+/// unit box, h_P, the noise, the density spacing), on the whole cloud or on
+/// its owners alike; then the cloud and its locator in the plan. `options`: as
+/// given (plan.Options takes the automatic choices).
+template <int D>
+Status prepareCloud(CloudPoints<D>& points, const ReconstructionOptions& options, const Context& ctx,
+  GridPlanOptions& po, ReconstructionPlan<D>& plan)
+{
+  SLTK_RETURN_IF_ERROR(checkAndCleanCloud(points, options.Cleaning, ctx, plan.Cleaning));
   if (plan.Cleaning.AutomaticOutliers)
   {
     plan.Choices.push_back("outliers: gross ones found, " + std::to_string(plan.Cleaning.OutliersRemoved) +
       " points removed (3 sigma; --no-cleaning keeps them)");
   }
-  SLTK_RETURN_IF_ERROR(locate(std::move(cloud), plan, ctx));
-  SLTK_RETURN_IF_ERROR(chooseInterpolator(plan, ctx));
+  SLTK_RETURN_IF_ERROR(placeInUnitBox(points, ctx, plan.Box, plan.CloudSpacing));
+  SLTK_RETURN_IF_ERROR(chooseInterpolator(points, plan, ctx));
 
   const bool automaticCellSize = !(options.CellSizeFactor > 0.0) && options.MaximumLevel == 0;
   plan.AutomaticCellSize = automaticCellSize;
   plan.BudgetIsAutomatic = automaticCellSize && !options.MemoryBudget;
   if (options.MaximumLevel > 0)
   {
-    SLTK_RETURN_IF_ERROR(cellSizeFromLevel(plan));
+    SLTK_RETURN_IF_ERROR(cellSizeFromLevel(points, plan));
   }
-  GridPlanOptions po;
   po.Runs = options.Runs;
   po.Padding = options.Padding;
   po.BytesPerNode = ReconstructionBytesPerNode;
   po.MemoryBudget = options.MemoryBudget ? options.MemoryBudget : automaticCellSize ? AutomaticMemoryBudget : 0;
   if (automaticCellSize)
   {
-    SLTK_RETURN_IF_ERROR(chooseCellSize(plan, po));
+    SLTK_RETURN_IF_ERROR(chooseCellSize(points, plan, po));
     if (automaticCleaning(options.Cleaning))
     {
-      SLTK_RETURN_IF_ERROR(thinIfDenserThanGrid(plan, po, ctx));
+      SLTK_RETURN_IF_ERROR(thinIfDenserThanGrid(points, plan, po, ctx));
     }
+  }
+  return points.release(plan.Cloud, ReconstructionPointsPerBucket, plan.Locator);
+}
+
+/// Steps 5-7 on the plan's whole cloud: the C_dx of the ranks' windows, K_P,
+/// run 1's surface, the grids and the memory check.
+template <int D>
+Status planOnWholeCloud(
+  const ReconstructionOptions& options, const Context& ctx, const GridPlanOptions& po, ReconstructionPlan<D>& plan)
+{
+  if (plan.AutomaticCellSize)
+  {
     const double oneRank = plan.Options.CellSizeFactor;
     SLTK_RETURN_IF_ERROR(fitWindowsOnThisMachine(plan, po));
     plan.Choices.push_back(cellSizeChoice(plan, po.MemoryBudget, oneRank));
@@ -585,6 +601,37 @@ Status planReconstruction(
   }
   SLTK_RETURN_IF_ERROR(withSeparateRuns(plan, planned));
   return refuseFlatCloud(plan, ctx);
+}
+} // namespace
+
+template <int D>
+Status planReconstruction(
+  PointCloud<D> cloud, const ReconstructionOptions& options, const Context& ctx, ReconstructionPlan<D>& plan)
+{
+  resetPlan(options, plan);
+  plan.Cloud = std::move(cloud);
+  plan.PointsHeldMax = plan.Cloud.size();
+  SLTK_RETURN_IF_ERROR(validateReconstructionOptions<D>(options));
+  WholeCloud<D> points(plan.Cloud, ReconstructionPointsPerBucket);
+  GridPlanOptions po;
+  SLTK_RETURN_IF_ERROR(prepareCloud<D>(points, options, ctx, po, plan));
+  return planOnWholeCloud(options, ctx, po, plan);
+}
+
+template <int D>
+Status planReconstructionOnRanks(const PointCloud<D>& share, std::int64_t firstId, const ReconstructionOptions& options,
+  const Context& ctx, const Communicator& comm, ReconstructionPlan<D>& plan)
+{
+  resetPlan(options, plan);
+  SLTK_RETURN_IF_ERROR(validateReconstructionOptions<D>(options));
+  SLTK_RETURN_IF_ERROR(validateCloudShares(share, firstId, comm)); // before a NaN could meet the cuts
+  OwnedCloud<D> points(comm);
+  SLTK_RETURN_IF_ERROR(points.own(share, firstId));
+  GridPlanOptions po;
+  const Status prepared = prepareCloud<D>(points, options, ctx, po, plan);
+  plan.PointsHeldMax = points.heldMax(); // collective: every rank gets here (the steps fail on every rank alike)
+  SLTK_RETURN_IF_ERROR(prepared);
+  return planOnWholeCloud(options, ctx, po, plan);
 }
 
 namespace
@@ -788,6 +835,10 @@ template Status planRunGrids(const ReconstructionPlan<2>&, int, double, GridPlan
 template Status planRunGrids(const ReconstructionPlan<3>&, int, double, GridPlan<3>&);
 template Status planReconstruction(PointCloud<2>, const ReconstructionOptions&, const Context&, ReconstructionPlan<2>&);
 template Status planReconstruction(PointCloud<3>, const ReconstructionOptions&, const Context&, ReconstructionPlan<3>&);
+template Status planReconstructionOnRanks(const PointCloud<2>&, std::int64_t, const ReconstructionOptions&,
+  const Context&, const Communicator&, ReconstructionPlan<2>&);
+template Status planReconstructionOnRanks(const PointCloud<3>&, std::int64_t, const ReconstructionOptions&,
+  const Context&, const Communicator&, ReconstructionPlan<3>&);
 template GridPlanOptions runGridOptions(const ReconstructionPlan<2>&, int, double);
 template GridPlanOptions runGridOptions(const ReconstructionPlan<3>&, int, double);
 

@@ -59,6 +59,17 @@ template <int D>
 Status cleanCloud(
   PointCloud<D>& cloud, const CloudCleaningOptions& options, const Context& ctx, CloudCleaningReport& report);
 
+template <int D>
+class CloudPoints;
+
+/// The same on a cloud held whole or spread over the ranks (CloudPoints.h):
+/// the same points removed and thinned, the same report and log lines.
+template <int D>
+Status cleanCloud(
+  CloudPoints<D>& cloud, const CloudCleaningOptions& options, const Context& ctx, CloudCleaningReport& report);
+
+extern template Status cleanCloud(CloudPoints<2>&, const CloudCleaningOptions&, const Context&, CloudCleaningReport&);
+extern template Status cleanCloud(CloudPoints<3>&, const CloudCleaningOptions&, const Context&, CloudCleaningReport&);
 extern template Status cleanCloud(PointCloud<2>&, const CloudCleaningOptions&, const Context&, CloudCleaningReport&);
 extern template Status cleanCloud(PointCloud<3>&, const CloudCleaningOptions&, const Context&, CloudCleaningReport&);
 

@@ -26,6 +26,14 @@ namespace sltk
 template <int D>
 bool joinCloudPieces(PointCloud<D>& cloud, const Communicator& comm);
 
+/// Collective. Whether every rank holds the same points (joinCloudPieces' count
+/// and order-free hash, at least one point, finite coordinates): the whole cloud
+/// on every rank, not shares of it. False on one rank.
+template <int D>
+bool sameCloudOnEveryRank(const PointCloud<D>& cloud, const Communicator& comm);
+
+extern template bool sameCloudOnEveryRank(const PointCloud<2>&, const Communicator&);
+extern template bool sameCloudOnEveryRank(const PointCloud<3>&, const Communicator&);
 extern template bool joinCloudPieces(PointCloud<2>&, const Communicator&);
 extern template bool joinCloudPieces(PointCloud<3>&, const Communicator&);
 

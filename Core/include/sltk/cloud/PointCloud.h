@@ -64,10 +64,24 @@ class Communicator;
 template <int D>
 Status validateCloudShares(const PointCloud<D>& share, std::int64_t firstId, const Communicator& comm);
 
+/// validateCloud() of the cloud whose points the ranks own: `held` the points
+/// this rank holds, `ids` their global indices (in any order), `mine` whether
+/// it owns each (OwnedPoints, PointOwners.h: a point is owned by one rank,
+/// the others may hold it as a halo). The same checks, decisions and messages
+/// as on one rank holding the owned points in global index order. Collective.
+template <int D>
+Status validateOwnedPoints(const PointCloud<D>& held, const std::vector<std::int64_t>& ids,
+  const std::vector<std::uint8_t>& mine, const Communicator& comm);
+
 /// A 3D cloud with no z extent as a 2D cloud in its plane z = `z` (2D
 /// reconstruction); false, and `flat` untouched, when the cloud has a z extent
 /// or is empty.
 bool flattenIfPlanar(const PointCloud<3>& cloud, PointCloud<2>& flat, double& z);
+
+/// The same for a share of a cloud whose bounding box is `whole` (over every
+/// rank's share, boundingBoxOverRanks; inverted when the cloud is empty): every
+/// share is flattened when the whole cloud has no z extent.
+bool flattenIfPlanar(const PointCloud<3>& cloud, const Box<3>& whole, PointCloud<2>& flat, double& z);
 
 extern template Box<2> boundingBox(const PointCloud<2>&);
 extern template Box<3> boundingBox(const PointCloud<3>&);
@@ -75,5 +89,9 @@ extern template Status validateCloud(const PointCloud<2>&);
 extern template Status validateCloud(const PointCloud<3>&);
 extern template Status validateCloudShares(const PointCloud<2>&, std::int64_t, const Communicator&);
 extern template Status validateCloudShares(const PointCloud<3>&, std::int64_t, const Communicator&);
+extern template Status validateOwnedPoints(
+  const PointCloud<2>&, const std::vector<std::int64_t>&, const std::vector<std::uint8_t>&, const Communicator&);
+extern template Status validateOwnedPoints(
+  const PointCloud<3>&, const std::vector<std::int64_t>&, const std::vector<std::uint8_t>&, const Communicator&);
 
 } // namespace sltk

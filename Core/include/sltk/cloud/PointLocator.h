@@ -13,6 +13,9 @@
 namespace sltk
 {
 
+/// The locator's points per bucket unless a caller chooses (recon/CloudPreparation.h chooses 16).
+constexpr double PointLocatorDefaultBucket = 2.0;
+
 template <int D>
 class PointLocator
 {
@@ -26,7 +29,7 @@ public:
 
   /// Buckets the cloud (which must stay alive and unchanged) so that there
   /// are about `pointsPerBucket` points per non-empty bucket on a surface-like cloud.
-  explicit PointLocator(const PointCloud<D>& cloud, double pointsPerBucket = 2.0);
+  explicit PointLocator(const PointCloud<D>& cloud, double pointsPerBucket = PointLocatorDefaultBucket);
 
   /// Nearest cloud point to x, skipping the point with index `exclude` (-1: none).
   Hit nearest(const std::array<double, D>& x, std::int64_t exclude = -1) const;

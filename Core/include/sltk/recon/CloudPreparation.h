@@ -7,6 +7,7 @@
 /// implementation for both, so that the two versions see the same cloud.
 
 #include "sltk/cloud/CloudCleaning.h"
+#include "sltk/cloud/CloudPoints.h"
 #include "sltk/cloud/PointLocator.h"
 #include "sltk/exec/Context.h"
 #include "sltk/recon/UnitBox.h"
@@ -29,6 +30,16 @@ template <int D>
 Status checkAndCleanCloud(
   PointCloud<D>& cloud, const CloudCleaningOptions& options, const Context& ctx, CloudCleaningReport& report);
 
+/// The same on a cloud held whole or spread over the ranks (CloudPoints.h).
+template <int D>
+Status checkAndCleanCloud(
+  CloudPoints<D>& cloud, const CloudCleaningOptions& options, const Context& ctx, CloudCleaningReport& report);
+
+/// `cloud` (held whole or spread over the ranks) moved into the unit box of its
+/// bounding box (`box`, 4.5), and h_P (4.36) of it in unit-box units.
+template <int D>
+Status placeInUnitBox(CloudPoints<D>& cloud, const Context& ctx, UnitBox<D>& box, double& spacing);
+
 /// `cloud` moved into the unit box of its bounding box (`box`, 4.5), stored
 /// in `unitCloud`, a locator on `unitCloud` (which must then stay where it is)
 /// and h_P (4.36) of it in unit-box units.
@@ -36,6 +47,12 @@ template <int D>
 Status placeInUnitBox(PointCloud<D> cloud, const Context& ctx, PointCloud<D>& unitCloud, UnitBox<D>& box,
   std::unique_ptr<const PointLocator<D>>& locator, double& spacing);
 
+extern template Status checkAndCleanCloud(
+  CloudPoints<2>&, const CloudCleaningOptions&, const Context&, CloudCleaningReport&);
+extern template Status checkAndCleanCloud(
+  CloudPoints<3>&, const CloudCleaningOptions&, const Context&, CloudCleaningReport&);
+extern template Status placeInUnitBox(CloudPoints<2>&, const Context&, UnitBox<2>&, double&);
+extern template Status placeInUnitBox(CloudPoints<3>&, const Context&, UnitBox<3>&, double&);
 extern template Status checkAndCleanCloud(
   PointCloud<2>&, const CloudCleaningOptions&, const Context&, CloudCleaningReport&);
 extern template Status checkAndCleanCloud(

@@ -21,6 +21,7 @@
 
 #include "sltk/cloud/CloudCleaning.h"
 #include "sltk/cloud/PointLocator.h"
+#include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 #include "sltk/levelset/Ellipsoid.h"
 #include "sltk/recon/AutomaticParameters.h"
@@ -58,6 +59,7 @@ struct ReconstructionPlan
   bool AutomaticCellSize = false;               ///< C_dx was chosen (the reconstruction may refine it)
   bool BudgetIsAutomatic = false;               ///< Options.MemoryBudget sized the automatic C_dx; not a limit
   double FirstRunReach = 0.0;                   ///< how far outside the cloud's box run 1's surface may lie
+  std::int64_t PointsHeldMax = 0; ///< the most points of the cloud a rank held while planning (halos included)
 
   ReconstructionPlan() = default;
   ReconstructionPlan(const ReconstructionPlan&) = delete; // the locator points at Cloud
@@ -73,6 +75,19 @@ struct ReconstructionPlan
     return static_cast<double>(this->Grids.Runs[static_cast<size_t>(run - 1)].nodeCount()) * ReconstructionBytesPerNode;
   }
 };
+
+/// planReconstruction() of the cloud whose shares the ranks hold (`share`:
+/// this rank's points, global indices firstId, firstId + 1, ...: a parallel
+/// read's, consecutive in rank order), the same plan on every rank as one rank
+/// makes from the whole cloud, bit for bit: the validation, the cleaning, the
+/// unit box, h_P, the noise, the automatic C_dx and thinning run on the points'
+/// owners (CloudPoints.h, OwnedCloud); the cleaned and thinned cloud is then
+/// gathered whole on every rank for the remaining steps (K_P, the windows, the
+/// grids) and the runs (Documentation/Distributed.md, "Still whole on every
+/// rank"). Collective; fails on every rank alike.
+template <int D>
+Status planReconstructionOnRanks(const PointCloud<D>& share, std::int64_t firstId, const ReconstructionOptions& options,
+  const Context& ctx, const Communicator& comm, ReconstructionPlan<D>& plan);
 
 /// Checks a per-run (p, eta) schedule: the model (4.9) needs 1 <= p <= 10 and
 /// 0 <= eta <= 100; the message names the first pair out of range. Front ends
@@ -146,5 +161,9 @@ extern template Status planReconstruction(
   PointCloud<2>, const ReconstructionOptions&, const Context&, ReconstructionPlan<2>&);
 extern template Status planReconstruction(
   PointCloud<3>, const ReconstructionOptions&, const Context&, ReconstructionPlan<3>&);
+extern template Status planReconstructionOnRanks(const PointCloud<2>&, std::int64_t, const ReconstructionOptions&,
+  const Context&, const Communicator&, ReconstructionPlan<2>&);
+extern template Status planReconstructionOnRanks(const PointCloud<3>&, std::int64_t, const ReconstructionOptions&,
+  const Context&, const Communicator&, ReconstructionPlan<3>&);
 
 } // namespace sltk

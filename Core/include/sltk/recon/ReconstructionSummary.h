@@ -38,6 +38,9 @@ struct ReconstructionSummary : ReconstructionReport
   /// ranks it reached, and collective calls (CountingCommunicator.h); each run's in Runs.
   int Ranks = 1;
   CommTraffic Traffic;
+  /// The most points of the cloud a rank held while planning (ReconstructionPlan::PointsHeldMax):
+  /// the whole cloud, or with shares the owners' points and the cleaned cloud gathered.
+  std::int64_t PlanPointsHeldMax = 0;
   /// Where the last run's surface misses points (MissedPlaces.h), the largest places first,
   /// in the user's coordinates (the front end's local frame added back); z = 0 in 2D.
   std::vector<MissedPlace<3>> MissedPlaces;

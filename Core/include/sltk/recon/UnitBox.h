@@ -32,15 +32,22 @@ struct UnitBox
     this->Scale = half;
   }
 
+  /// A position in the unit box.
+  std::array<double, D> toUnit(std::array<double, D> p) const
+  {
+    for (int a = 0; a < D; ++a)
+    {
+      p[a] = (p[a] - this->Centre[a]) / this->Scale;
+    }
+    return p;
+  }
+
   /// Moves the points of `cloud` into the unit box, in place.
   void toUnit(PointCloud<D>& cloud) const
   {
     for (auto& p : cloud.Points)
     {
-      for (int a = 0; a < D; ++a)
-      {
-        p[a] = (p[a] - this->Centre[a]) / this->Scale;
-      }
+      p = this->toUnit(p);
     }
   }
 
