@@ -441,8 +441,9 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionOp
   sltk::ReconstructionSummary& summary)
 {
   sltk::ReconstructionPlan<D> plan;
-  sltk::Status status = comm.agree(firstId ? sltk::planReconstructionOnRanks(cloud, *firstId, options, ctx, comm, plan)
-                                           : sltk::planReconstruction(std::move(cloud), options, ctx, plan));
+  sltk::Status status =
+    comm.agree(firstId ? sltk::planReconstructionOnRanks(std::move(cloud), *firstId, options, ctx, comm, plan)
+                       : sltk::planReconstruction(std::move(cloud), options, ctx, plan));
   cloud = sltk::PointCloud<D>(); // a share: the plan holds what the runs read
   if (!status.isOk())
   {

@@ -315,16 +315,24 @@ Status thinIfDenserThanGrid(
   }
   const std::int64_t before = points.size();
   SLTK_RETURN_IF_ERROR(points.thin(AutomaticThinningFactor * density));
-  const UnitBox<D> box = plan.Box;
-  SLTK_RETURN_IF_ERROR(points.transform([&box](const std::array<double, D>& p) { return box.toUser(p); }));
+  // The thinned cloud in the unit box of its own box (4.5), as placeInUnitBox puts it after
+  // moving it back to the user's units, with one change of units (one move to the owners): toUser
+  // is increasing along every axis, so it maps the box in unit-box units onto the box in the
+  // user's, and each point takes toUser's value, rounded, before toUnit's, as two steps give it.
+  const UnitBox<D> from = plan.Box;
+  const Box<D> unitBox = points.box();
+  const UnitBox<D> to(Box<D>{ from.toUser(unitBox.Min), from.toUser(unitBox.Max) });
+  SLTK_RETURN_IF_ERROR(
+    points.transform([&from, &to](const std::array<double, D>& p) { return to.toUnit(from.toUser(p)); }));
   plan.Cleaning.AutomaticThinning = true;
-  plan.Cleaning.ThinningCell = AutomaticThinningFactor * density * plan.Box.Scale;
+  plan.Cleaning.ThinningCell = AutomaticThinningFactor * density * from.Scale;
   plan.Cleaning.OutputPoints = points.size();
   plan.Choices.push_back("thinning: the density spacing " + number(density * plan.Box.Scale) +
     " is below the finest cell " + number(finestDx * plan.Box.Scale) + ", so the cloud is averaged over cells of " +
     number(AutomaticThinningFactor) + " density spacings: " + std::to_string(before) + " -> " +
     std::to_string(points.size()) + " points (--no-cleaning keeps every point)");
-  SLTK_RETURN_IF_ERROR(placeInUnitBox(points, ctx, plan.Box, plan.CloudSpacing));
+  plan.Box = to;
+  SLTK_RETURN_IF_ERROR(points.spacing(ctx, CloudSpacingOptions{}, plan.CloudSpacing)); // h_P (4.36)
   return chooseCellSize(points, plan, po);
 }
 
@@ -619,7 +627,7 @@ Status planReconstruction(
 }
 
 template <int D>
-Status planReconstructionOnRanks(const PointCloud<D>& share, std::int64_t firstId, const ReconstructionOptions& options,
+Status planReconstructionOnRanks(PointCloud<D> share, std::int64_t firstId, const ReconstructionOptions& options,
   const Context& ctx, const Communicator& comm, ReconstructionPlan<D>& plan)
 {
   resetPlan(options, plan);
@@ -627,6 +635,7 @@ Status planReconstructionOnRanks(const PointCloud<D>& share, std::int64_t firstI
   SLTK_RETURN_IF_ERROR(validateCloudShares(share, firstId, comm)); // before a NaN could meet the cuts
   OwnedCloud<D> points(comm);
   SLTK_RETURN_IF_ERROR(points.own(share, firstId));
+  share = PointCloud<D>(); // at its owners now
   GridPlanOptions po;
   const Status prepared = prepareCloud<D>(points, options, ctx, po, plan);
   plan.PointsHeldMax = points.heldMax(); // collective: every rank gets here (the steps fail on every rank alike)
@@ -835,10 +844,10 @@ template Status planRunGrids(const ReconstructionPlan<2>&, int, double, GridPlan
 template Status planRunGrids(const ReconstructionPlan<3>&, int, double, GridPlan<3>&);
 template Status planReconstruction(PointCloud<2>, const ReconstructionOptions&, const Context&, ReconstructionPlan<2>&);
 template Status planReconstruction(PointCloud<3>, const ReconstructionOptions&, const Context&, ReconstructionPlan<3>&);
-template Status planReconstructionOnRanks(const PointCloud<2>&, std::int64_t, const ReconstructionOptions&,
-  const Context&, const Communicator&, ReconstructionPlan<2>&);
-template Status planReconstructionOnRanks(const PointCloud<3>&, std::int64_t, const ReconstructionOptions&,
-  const Context&, const Communicator&, ReconstructionPlan<3>&);
+template Status planReconstructionOnRanks(PointCloud<2>, std::int64_t, const ReconstructionOptions&, const Context&,
+  const Communicator&, ReconstructionPlan<2>&);
+template Status planReconstructionOnRanks(PointCloud<3>, std::int64_t, const ReconstructionOptions&, const Context&,
+  const Communicator&, ReconstructionPlan<3>&);
 template GridPlanOptions runGridOptions(const ReconstructionPlan<2>&, int, double);
 template GridPlanOptions runGridOptions(const ReconstructionPlan<3>&, int, double);
 

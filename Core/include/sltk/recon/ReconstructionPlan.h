@@ -76,17 +76,15 @@ struct ReconstructionPlan
   }
 };
 
-/// planReconstruction() of the cloud whose shares the ranks hold (`share`:
-/// this rank's points, global indices firstId, firstId + 1, ...: a parallel
-/// read's, consecutive in rank order), the same plan on every rank as one rank
-/// makes from the whole cloud, bit for bit: the validation, the cleaning, the
-/// unit box, h_P, the noise, the automatic C_dx and thinning run on the points'
-/// owners (CloudPoints.h, OwnedCloud); the cleaned and thinned cloud is then
-/// gathered whole on every rank for the remaining steps (K_P, the windows, the
-/// grids) and the runs (Documentation/Distributed.md, "Still whole on every
+/// planReconstruction() of the cloud whose shares the ranks hold (`share`, moved
+/// in and freed once its points are at their owners: this rank's points, global indices firstId, firstId + 1, ...: a
+/// parallel read's, consecutive in rank order), the same plan on every rank as one rank makes from the whole cloud, bit
+/// for bit: the validation, the cleaning, the unit box, h_P, the noise, the automatic C_dx and thinning run on the
+/// points' owners (CloudPoints.h, OwnedCloud); the cleaned and thinned cloud is then gathered whole on every rank for
+/// the remaining steps (K_P, the windows, the grids) and the runs (Documentation/Distributed.md, "Still whole on every
 /// rank"). Collective; fails on every rank alike.
 template <int D>
-Status planReconstructionOnRanks(const PointCloud<D>& share, std::int64_t firstId, const ReconstructionOptions& options,
+Status planReconstructionOnRanks(PointCloud<D> share, std::int64_t firstId, const ReconstructionOptions& options,
   const Context& ctx, const Communicator& comm, ReconstructionPlan<D>& plan);
 
 /// Checks a per-run (p, eta) schedule: the model (4.9) needs 1 <= p <= 10 and
@@ -161,9 +159,9 @@ extern template Status planReconstruction(
   PointCloud<2>, const ReconstructionOptions&, const Context&, ReconstructionPlan<2>&);
 extern template Status planReconstruction(
   PointCloud<3>, const ReconstructionOptions&, const Context&, ReconstructionPlan<3>&);
-extern template Status planReconstructionOnRanks(const PointCloud<2>&, std::int64_t, const ReconstructionOptions&,
+extern template Status planReconstructionOnRanks(PointCloud<2>, std::int64_t, const ReconstructionOptions&,
   const Context&, const Communicator&, ReconstructionPlan<2>&);
-extern template Status planReconstructionOnRanks(const PointCloud<3>&, std::int64_t, const ReconstructionOptions&,
+extern template Status planReconstructionOnRanks(PointCloud<3>, std::int64_t, const ReconstructionOptions&,
   const Context&, const Communicator&, ReconstructionPlan<3>&);
 
 } // namespace sltk
