@@ -130,8 +130,9 @@ Status OwnedCloud<D>::reown()
       ids.push_back(this->Owned.Ids[j]);
     }
   }
-  const SlabCuts cuts = balancedCuts(mine, this->Comm);
   const double halo = this->Owned.Halo;
+  this->Owned = OwnedPoints<D>(); // in `mine` now
+  const SlabCuts cuts = balancedCuts(mine, this->Comm);
   SLTK_RETURN_IF_ERROR(sendToOwners<D>(mine.Points, ids, cuts, halo, this->Comm, this->Owned));
   this->HeldMax = std::max(this->HeldMax, this->Owned.held());
   return Status::ok();

@@ -159,21 +159,37 @@ Status exchange(const std::vector<std::array<double, D>>& points, const std::vec
   {
     holdersOf(p[axis], cuts, halo, [&](int r) { ++counts[static_cast<size_t>(r)]; });
   }
+  // The points this rank keeps stay out of the exchange: a share read near its owner's slab
+  // (a file written along the slabs' axis) moves little and is not copied twice more.
+  const int me = comm.rank();
+  std::vector<PointRecord<D>> kept;
+  kept.reserve(static_cast<size_t>(counts[static_cast<size_t>(me)]));
+  counts[static_cast<size_t>(me)] = 0;
   std::vector<size_t> next = startsOf(counts);
   std::vector<PointRecord<D>> send(next[ranks]);
   for (size_t j = 0; j < points.size(); ++j)
   {
     holdersOf(points[j][axis], cuts, halo,
-      [&](int r) {
-        send[next[static_cast<size_t>(r)]++] = { ids[j], points[j] };
+      [&](int r)
+      {
+        if (r == me)
+        {
+          kept.push_back({ ids[j], points[j] });
+        }
+        else
+        {
+          send[next[static_cast<size_t>(r)]++] = { ids[j], points[j] };
+        }
       });
   }
   std::vector<size_t> parts;
   std::vector<PointRecord<D>> records = exchangeRecords(send, counts, comm, parts);
-  // In increasing global index, whatever the shares were.
+  send = {};
+  records.insert(records.end(), kept.begin(), kept.end());
+  kept = {};
+  // In increasing global index, whatever the shares were (a rank receives a point once).
   std::sort(
     records.begin(), records.end(), [](const PointRecord<D>& a, const PointRecord<D>& b) { return a.Id < b.Id; });
-  const int me = comm.rank();
   out.Cloud.Points.resize(records.size());
   out.Ids.resize(records.size());
   out.Mine.resize(records.size());
