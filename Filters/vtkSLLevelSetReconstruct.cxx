@@ -667,14 +667,14 @@ int vtkSLLevelSetReconstruct::RequestData(
   sltk::PointCloud<2> flat;
   double z = 0.0;
   sltk::ReconstructionSummary summary;
-  sltk::Box<3> moved = bounds;
+  sltk::Box<3> moved = bounds; // the moved cloud's box: a subtraction keeps the order of the values
   for (int a = 0; a < 3; ++a)
   {
     moved.Min[a] -= shift[a];
     moved.Max[a] -= shift[a];
   }
   const std::int64_t* first = shares ? &firstId : nullptr;
-  const bool planar = shares ? sltk::flattenIfPlanar(cloud, moved, flat, z) : sltk::flattenIfPlanar(cloud, flat, z);
+  const bool planar = sltk::flattenIfPlanar(cloud, moved, flat, z);
   const int done = planar ? reconstructInto<2>(this, options, std::move(flat), first, z, ctx, *comm, ghostLevels,
                               output, surface, history, summary)
                           : reconstructInto<3>(this, options, std::move(cloud), first, 0.0, ctx, *comm, ghostLevels,
