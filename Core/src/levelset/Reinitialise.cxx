@@ -301,11 +301,24 @@ private:
         continue;
       }
       Vec u[ReinitStencil<D>::AxisSize];
-      u[0] = gatherLanes<L>(values, offset + p, 0);
-      for (int a = 0; a < D; ++a)
+      if (offset[p + L - 1] - offset[p] == L - 1) // consecutive nodes of an x line: plain loads
       {
-        u[1 + 2 * a] = gatherLanes<L>(values, offset + p, -strides[a]);
-        u[2 + 2 * a] = gatherLanes<L>(values, offset + p, strides[a]);
+        const double* at = values + offset[p];
+        lanes::loadOf<L>(at, u[0]);
+        for (int a = 0; a < D; ++a)
+        {
+          lanes::loadOf<L>(at - strides[a], u[1 + 2 * a]);
+          lanes::loadOf<L>(at + strides[a], u[2 + 2 * a]);
+        }
+      }
+      else
+      {
+        u[0] = gatherLanes<L>(values, offset + p, 0);
+        for (int a = 0; a < D; ++a)
+        {
+          u[1 + 2 * a] = gatherLanes<L>(values, offset + p, -strides[a]);
+          u[2 + 2 * a] = gatherLanes<L>(values, offset + p, strides[a]);
+        }
       }
       Vec c;
       std::memcpy(&c, this->Coefficient.data() + p, sizeof(Vec));

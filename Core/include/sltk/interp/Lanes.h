@@ -101,6 +101,25 @@ SLTK_LANES_INLINE void sqrtOf(const double& x, double& out)
 {
   out = std::sqrt(x);
 }
+#if defined(SLTK_LANES_AVX2)
+// One vector square root: IEEE 754 rounds a square root correctly, so each lane
+// is std::sqrt's value bit for bit (a negative or NaN lane gives NaN, as std::sqrt
+// does, without errno); the four scalar roots of a lane-by-lane loop waited on
+// each other's latency (Documentation/Profile.md, "The pseudo-time steps' loads and square roots").
+SLTK_LANES_INLINE void sqrtOf(const Lanes<2>& x, Lanes<2>& out)
+{
+  out = __builtin_ia32_sqrtpd(x);
+}
+/// Two halves: the same instruction serves the AVX2 functions and the tests'
+/// lanes of four outside them (an always-inlined AVX2 intrinsic may not sit in
+/// the templates between it and those functions).
+SLTK_LANES_INLINE void sqrtOf(const Lanes<4>& x, Lanes<4>& out)
+{
+  const Lanes<2> low = __builtin_ia32_sqrtpd(Lanes<2>{ x[0], x[1] });
+  const Lanes<2> high = __builtin_ia32_sqrtpd(Lanes<2>{ x[2], x[3] });
+  out = Lanes<4>{ low[0], low[1], high[0], high[1] };
+}
+#else
 SLTK_LANES_INLINE void sqrtOf(const Lanes<2>& x, Lanes<2>& out)
 {
   out = Lanes<2>{ std::sqrt(x[0]), std::sqrt(x[1]) };
@@ -108,6 +127,15 @@ SLTK_LANES_INLINE void sqrtOf(const Lanes<2>& x, Lanes<2>& out)
 SLTK_LANES_INLINE void sqrtOf(const Lanes<4>& x, Lanes<4>& out)
 {
   out = Lanes<4>{ std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2]), std::sqrt(x[3]) };
+}
+#endif
+
+/// out[l] = p[l]: L consecutive values, one vector load (p need not be aligned).
+template <int L>
+SLTK_LANES_INLINE void loadOf(const double* p, Lanes<L>& out)
+{
+  typedef double Unaligned __attribute__((vector_size(8 * L), aligned(8), __may_alias__));
+  out = *reinterpret_cast<const Unaligned*>(p);
 }
 
 /// out[l] = value(l) in every lane l: the scattered values of L nodes (the
