@@ -419,6 +419,7 @@ int reconstructTiledInto(vtkSLLevelSetReconstruct* self, const sltk::Reconstruct
   summary = sltk::summarize(result, plan.Options.FrameShift); // places in the user's coordinates
   summary.Ranks = comm.size();
   summary.PlanPointsHeldMax = plan.PointsHeldMax;
+  summary.PlanTraffic = plan.Traffic;
   summary.Traffic = traffic;
   sltk::vtkbridge::communicationSummary(summary, grid);
   if (comm.rank() > 0)
@@ -471,6 +472,7 @@ int reconstructInto(vtkSLLevelSetReconstruct* self, const sltk::ReconstructionOp
   summary = sltk::summarize(result, plan.Options.FrameShift); // places in the user's coordinates
   summary.Ranks = comm.size();
   summary.PlanPointsHeldMax = plan.PointsHeldMax;
+  summary.PlanTraffic = plan.Traffic;
   summary.Traffic = counted.traffic();
   sltk::vtkbridge::runSummary(summary, image);
   sltk::vtkbridge::communicationSummary(summary, image);

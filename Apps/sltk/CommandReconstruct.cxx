@@ -228,7 +228,7 @@ nlohmann::ordered_json missedPlacesJson(const std::vector<sltk::MissedPlace<3>>&
 }
 
 /// The busiest rank's traffic (each count its largest over the ranks): the whole
-/// reconstruction's first, then each run's (RunFigures::Traffic). One collective call.
+/// reconstruction's first, then each run's (RunFigures::Traffic), then the plan's. One collective call.
 std::vector<sltk::CommTraffic> busiestRankTraffic(const sltk::ReconstructionSummary& summary)
 {
   std::vector<sltk::CommTraffic> phases = { summary.Traffic };
@@ -236,6 +236,7 @@ std::vector<sltk::CommTraffic> busiestRankTraffic(const sltk::ReconstructionSumm
   {
     phases.push_back(run.Traffic);
   }
+  phases.push_back(summary.PlanTraffic);    // last: the plan's
   std::unique_ptr<sltk::Communicator> comm; // the read made the same one: it cannot fail here
   return sltk::vtkbridge::makeCommunicator(nullptr, comm).isOk() ? sltk::busiestRanks(std::move(phases), *comm)
                                                                  : phases;
@@ -597,6 +598,7 @@ int Reconstruct::run() const
       { "bytes_sent_max", static_cast<double>(traffic[0].PointToPointBytes) },
       { "collective_bytes_max", static_cast<double>(traffic[0].CollectiveBytes) },
       { "collectives", static_cast<double>(traffic[0].Collectives) }, { "read_traffic", trafficJson(counts.Traffic) },
+      { "plan_traffic", trafficJson(traffic.back()) },
       { "surface_points", static_cast<long long>(surface->GetNumberOfPoints()) }, { "surface_pieces", topology.Pieces },
       { "euler_characteristic", planar ? nlohmann::ordered_json() : nlohmann::ordered_json(topology.Euler) },
       { "runs", runRecords }, { "missed_places", missedPlacesJson(result.MissedPlaces) } };

@@ -415,13 +415,14 @@ void communicationSummary(const ReconstructionSummary& summary, vtkDataObject* i
   ranks->SetName("Ranks");
   ranks->InsertNextValue(static_cast<double>(summary.Ranks));
   image->GetFieldData()->AddArray(ranks);
-  // The whole reconstruction's counts (Rank*), and each run's share (Run*, one value a run).
+  // The whole reconstruction's counts (Rank*), each run's share (Run*, one value a run)
+  // and the plan's on the shares (Plan*, apart from the reconstruction's).
   using Field = std::int64_t CommTraffic::*;
   const std::pair<const char*, Field> counts[3] = { { "RankBytesSent", &CommTraffic::PointToPointBytes },
     { "RankCollectiveBytes", &CommTraffic::CollectiveBytes }, { "RankCollectives", &CommTraffic::Collectives } };
   for (const auto& count : counts)
   {
-    vtkNew<vtkDoubleArray> whole, perRun;
+    vtkNew<vtkDoubleArray> whole, perRun, plan;
     whole->SetName(count.first);
     whole->InsertNextValue(static_cast<double>(summary.Traffic.*count.second));
     perRun->SetName((std::string("Run") + count.first).c_str());
@@ -429,8 +430,11 @@ void communicationSummary(const ReconstructionSummary& summary, vtkDataObject* i
     {
       perRun->InsertNextValue(static_cast<double>(run.Traffic.*count.second));
     }
+    plan->SetName((std::string("Plan") + count.first).c_str());
+    plan->InsertNextValue(static_cast<double>(summary.PlanTraffic.*count.second));
     image->GetFieldData()->AddArray(whole);
     image->GetFieldData()->AddArray(perRun);
+    image->GetFieldData()->AddArray(plan);
   }
 }
 

@@ -60,7 +60,8 @@ void runSummary(const ReconstructionSummary& summary, vtkDataObject* image);
 /// RankCollectiveBytes (its payload of the collectives times the ranks it
 /// reached) and RankCollectives (reductions, agreements, gathers), with each
 /// run's share in RunRankBytesSent, RunRankCollectiveBytes and
-/// RunRankCollectives, one value a run (CommTraffic.h).
+/// RunRankCollectives, one value a run, and the plan's on the shares in
+/// PlanRankBytesSent, PlanRankCollectiveBytes and PlanRankCollectives (CommTraffic.h).
 void communicationSummary(const ReconstructionSummary& summary, vtkDataObject* image);
 
 /// Zero level set of the image's SignedDistance: triangles (3D, flying edges)

@@ -7,8 +7,8 @@ is gathered. The surface is then the one of the same points read whole (a .vtp, 
 every rank reads through VTK), for a text file with CRLF ends, a header, comments,
 blank lines and no final newline, and for a binary PLY (a file repeating itself, whose shares are
 the same points, is gathered instead); --json says points_total,
-points_read_max (about half on two ranks), read_traffic (no point moved by the read) and
-each run's traffic, points_held_max (every point: the cleaned cloud, here the whole one,
+points_read_max (about half on two ranks), read_traffic (no point moved by the read),
+plan_traffic (the plan's on the shares, the cleaned cloud's gather included) and each run's traffic, points_held_max (every point: the cleaned cloud, here the whole one,
 is gathered for the runs) and run_points_held_max (the most a rank's
 runs read: the points reconstructed on one rank, at most that on two). A bad line in rank 1's share ends both
 ranks with the one-rank message.
@@ -121,6 +121,14 @@ for cloud, whole in ((text, write_vtp("cloud.vtp", points)), (ply, write_vtp("mi
     read = summary.get("read_traffic", {})
     check(0 < read.get("collective_bytes_max", 0) < 24 * N // 8 and read.get("bytes_sent_max") == 0,
           "%s: the read moves no points, each rank keeps its share (%s)" % (kind, read))
+    # The plan's traffic apart: it gathers the cleaned cloud (each rank's owned points, about half, reach
+    # the other rank: 24 bytes a point), after the points' moves to their owners; none on one rank.
+    plan = summary.get("plan_traffic", {})
+    check(plan.get("collective_bytes_max", 0) >= 24 * (summary.get("points_reconstructed", 0) // 2) and
+          plan.get("collectives_max", 0) > 0,
+          "%s: the plan's traffic on 2 ranks carries the gather of the cleaned cloud (%s)" % (kind, plan))
+    check(one_summary.get("plan_traffic") == {"bytes_sent_max": 0, "collective_bytes_max": 0, "collectives_max": 0},
+          "%s on 1 rank: no plan traffic (%s)" % (kind, one_summary.get("plan_traffic")))
     runs = summary.get("runs", [])
     check(len(runs) > 0 and all(r.get("bytes_sent_max", 0) > 0 and r.get("collectives_max", 0) > 0 for r in runs),
           "%s: every run's traffic on 2 ranks (%s)" % (kind, [(r.get("bytes_sent_max"), r.get("collectives_max"))

@@ -11,6 +11,7 @@
 #include "sltk/cloud/CloudThickness.h"
 #include "sltk/cloud/CloudThinning.h"
 #include "sltk/cloud/LocalSpacing.h"
+#include "sltk/exec/CountingCommunicator.h"
 #include "sltk/recon/AutomaticParameters.h"
 #include "sltk/recon/CloudInitialData.h"
 #include "sltk/recon/CloudPreparation.h"
@@ -502,15 +503,18 @@ Status planReconstructionOnRanks(PointCloud<D> share, std::int64_t firstId, cons
 {
   resetPlan(options, plan);
   SLTK_RETURN_IF_ERROR(validateReconstructionOptions<D>(options));
-  SLTK_RETURN_IF_ERROR(validateCloudShares(share, firstId, comm)); // before a NaN could meet the cuts
-  OwnedCloud<D> points(comm);
+  const CountingCommunicator counted(comm);                           // the plan's traffic
+  SLTK_RETURN_IF_ERROR(validateCloudShares(share, firstId, counted)); // before a NaN could meet the cuts
+  OwnedCloud<D> points(counted);
   SLTK_RETURN_IF_ERROR(points.own(share, firstId));
   share = PointCloud<D>(); // at its owners now
   GridPlanOptions po;
   const Status prepared = prepareCloud<D>(points, options, ctx, po, plan);
   plan.PointsHeldMax = points.heldMax(); // collective: every rank gets here (the steps fail on every rank alike)
   SLTK_RETURN_IF_ERROR(prepared);
-  return planOnWholeCloud(options, ctx, po, plan);
+  const Status planned = planOnWholeCloud(options, ctx, po, plan);
+  plan.Traffic = counted.traffic();
+  return planned;
 }
 
 template Status validateReconstructionOptions<2>(const ReconstructionOptions&);

@@ -60,6 +60,10 @@ struct ReconstructionPlan
   bool BudgetIsAutomatic = false;               ///< Options.MemoryBudget sized the automatic C_dx; not a limit
   double FirstRunReach = 0.0;                   ///< how far outside the cloud's box run 1's surface may lie
   std::int64_t PointsHeldMax = 0; ///< the most points of the cloud a rank held while planning (halos included)
+  /// This rank's traffic while planning on the ranks' shares (planReconstructionOnRanks: the
+  /// points' moves to their owners, the cleaning's and the automatic choices' exchanges, the
+  /// gather of the cleaned cloud); none on one rank.
+  CommTraffic Traffic;
 
   ReconstructionPlan() = default;
   ReconstructionPlan(const ReconstructionPlan&) = delete; // the locator points at Cloud

@@ -41,6 +41,8 @@ struct ReconstructionSummary : ReconstructionReport
   /// The most points of the cloud a rank held while planning (ReconstructionPlan::PointsHeldMax):
   /// the whole cloud, or with shares the owners' points and the cleaned cloud gathered.
   std::int64_t PlanPointsHeldMax = 0;
+  /// This rank's traffic while planning on the shares (ReconstructionPlan::Traffic), apart from Traffic.
+  CommTraffic PlanTraffic;
   /// Where the last run's surface misses points (MissedPlaces.h), the largest places first,
   /// in the user's coordinates (the front end's local frame added back); z = 0 in 2D.
   std::vector<MissedPlace<3>> MissedPlaces;
