@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "GatherSurface.h"
 
+#include "SLTKMergePoints.h"
+
 #include <vtkAppendPolyData.h>
-#include <vtkCleanPolyData.h>
 #include <vtkDataObject.h>
 #include <vtkMultiProcessController.h>
 #include <vtkNew.h>
@@ -34,14 +35,10 @@ vtkSmartPointer<vtkPolyData> gatherSurface(vtkPolyData* piece, vtkMultiProcessCo
       append->AddInputData(p);
     }
   }
-  vtkNew<vtkCleanPolyData> merge; // the blocks' shared boundary points coincide exactly
-  merge->SetInputConnection(append->GetOutputPort());
-  merge->SetTolerance(0.0);
-  merge->ConvertLinesToPointsOff();
-  merge->ConvertPolysToLinesOff();
-  merge->ConvertStripsToPolysOff();
-  merge->Update();
-  vtkSmartPointer<vtkPolyData> joined = merge->GetOutput();
+  append->Update();
+  auto joined = vtkSmartPointer<vtkPolyData>::New();
+  sltk::vtkbridge::mergeCoincidentPoints(
+    append->GetOutput(), joined); // the blocks' shared boundary points coincide exactly
   return joined;
 }
 

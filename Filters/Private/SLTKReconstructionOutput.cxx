@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SLTKReconstructionOutput.h"
 
+#include "SLTKMergePoints.h"
+
 #include "vtkAbstractArray.h"
-#include "vtkCleanPolyData.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -283,19 +284,15 @@ void zeroLevelSet(vtkImageData* image, vtkPolyData* surface)
   // vertices on any rank count. Ghost rows are not contoured (their cells are
   // the next rank's).
   const vtkSmartPointer<vtkImageData> block = withoutGhostRows(image);
-  vtkNew<vtkCleanPolyData> merge;
-  merge->SetTolerance(0.0);
-  merge->ConvertLinesToPointsOff();
-  merge->ConvertPolysToLinesOff();
-  merge->ConvertStripsToPolysOff();
-  const bool flat = block->GetDimensions()[2] == 1;
-  if (flat)
+  vtkSmartPointer<vtkPolyData> contoured;
+  if (block->GetDimensions()[2] == 1)
   {
     vtkNew<vtkFlyingEdges2D> contour;
     contour->SetInputData(block);
     contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "SignedDistance");
     contour->SetValue(0, 0.0);
-    merge->SetInputConnection(contour->GetOutputPort());
+    contour->Update();
+    contoured = contour->GetOutput();
   }
   else
   {
@@ -304,10 +301,10 @@ void zeroLevelSet(vtkImageData* image, vtkPolyData* surface)
     contour->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "SignedDistance");
     contour->SetValue(0, 0.0);
     contour->ComputeNormalsOn();
-    merge->SetInputConnection(contour->GetOutputPort());
+    contour->Update();
+    contoured = contour->GetOutput();
   }
-  merge->Update();
-  surface->ShallowCopy(merge->GetOutput());
+  mergeCoincidentPoints(contoured, surface);
 }
 
 void transferCloudAttributes(vtkPointSet* cloud, vtkPolyData* surface)

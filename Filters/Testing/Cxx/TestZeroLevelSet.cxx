@@ -4,12 +4,19 @@
 // puts a vertex at the node for every edge that meets it, with zero-area
 // triangles between them; the output merges them and drops the degenerate
 // triangles, so a surface has the same vertices on any rank count (rank 0
-// merges the ranks' pieces the same way).
+// merges the ranks' pieces the same way). The merge (SLTKMergePoints.h) gives
+// vtkCleanPolyData's output bit for bit: on triangles and on lines with
+// vertices repeated at such nodes, and on two pieces that share their border.
 #include "FilterTestCheck.h"
+#include "SLTKMergePoints.h"
 #include "SLTKReconstructionOutput.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
+#include "vtkCleanPolyData.h"
+#include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkFlyingEdges2D.h"
 #include "vtkFlyingEdges3D.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -59,14 +66,73 @@ vtkIdType degenerateTriangles(vtkPolyData* surface)
   }
   return degenerate;
 }
-} // namespace
-
-int main()
+/// The same values, bit for bit, in two arrays (null: absent).
+bool sameArray(vtkDataArray* a, vtkDataArray* b)
 {
-  // phi = x + y + z on integer nodes: 0 exactly at the nodes of the plane x + y + z = 0.
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(9, 9, 9);
-  image->SetOrigin(-4.0, -4.0, -4.0);
+  if (!a || !b)
+  {
+    return !a && !b;
+  }
+  if (a->GetNumberOfTuples() != b->GetNumberOfTuples() || a->GetNumberOfComponents() != b->GetNumberOfComponents() ||
+    a->GetDataType() != b->GetDataType())
+  {
+    return false;
+  }
+  for (vtkIdType t = 0; t < a->GetNumberOfTuples(); ++t)
+  {
+    for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+    {
+      if (a->GetComponent(t, c) != b->GetComponent(t, c))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+/// mergeCoincidentPoints(input) against vtkCleanPolyData (tolerance 0, no conversions):
+/// the points, the lines and polygons (offsets and connectivity) and every point array.
+void checkSameAsCleanPolyData(vtkPolyData* input, const std::string& what)
+{
+  vtkNew<vtkCleanPolyData> clean;
+  clean->SetInputData(input);
+  clean->SetTolerance(0.0);
+  clean->ConvertLinesToPointsOff();
+  clean->ConvertPolysToLinesOff();
+  clean->ConvertStripsToPolysOff();
+  clean->Update();
+  vtkPolyData* expected = clean->GetOutput();
+  vtkNew<vtkPolyData> merged;
+  sltk::vtkbridge::mergeCoincidentPoints(input, merged);
+  bool same = sameArray(merged->GetPoints()->GetData(), expected->GetPoints()->GetData());
+  for (auto cells : { &vtkPolyData::GetLines, &vtkPolyData::GetPolys })
+  {
+    same = same && sameArray((merged->*cells)()->GetOffsetsArray(), (expected->*cells)()->GetOffsetsArray()) &&
+      sameArray((merged->*cells)()->GetConnectivityArray(), (expected->*cells)()->GetConnectivityArray());
+  }
+  vtkPointData* pd = expected->GetPointData();
+  same = same && merged->GetPointData()->GetNumberOfArrays() == pd->GetNumberOfArrays();
+  for (int a = 0; same && a < pd->GetNumberOfArrays(); ++a)
+  {
+    same = sameArray(merged->GetPointData()->GetArray(pd->GetArrayName(a)), pd->GetArray(a));
+  }
+  check(same && expected->GetNumberOfPoints() < input->GetNumberOfPoints(),
+    what + ": the merge is vtkCleanPolyData's output (" + std::to_string(input->GetNumberOfPoints()) + " -> " +
+      std::to_string(merged->GetNumberOfPoints()) + " points, " + std::to_string(expected->GetNumberOfPoints()) +
+      " by vtkCleanPolyData)");
+}
+
+/// phi = x + y (+ z), or with `sphere` x^2 + y^2 (+ z^2) - 9, on integer nodes
+/// from -4 to 4 (z from `zFirst`, `zNodes` of them): 0 exactly at nodes of a
+/// plane (a line) or a sphere (a circle), where flying edges repeats vertices.
+/// On the sphere the normals of a repeated vertex differ in their last bits
+/// from edge to edge (the gradients interpolated from either end).
+vtkSmartPointer<vtkImageData> zerosAtNodes(int dimensions, bool sphere, double zFirst = -4.0, int zNodes = 9)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(9, 9, dimensions == 3 ? zNodes : 1);
+  image->SetOrigin(-4.0, -4.0, dimensions == 3 ? zFirst : 0.0);
   image->SetSpacing(1.0, 1.0, 1.0);
   vtkNew<vtkDoubleArray> phi;
   phi->SetName("SignedDistance");
@@ -75,10 +141,48 @@ int main()
   {
     double x[3];
     image->GetPoint(i, x);
-    phi->SetValue(i, x[0] + x[1] + x[2]);
+    phi->SetValue(i, sphere ? x[0] * x[0] + x[1] * x[1] + x[2] * x[2] - 9.0 : x[0] + x[1] + x[2]);
   }
   image->GetPointData()->SetScalars(phi);
+  return image;
+}
 
+/// The merge on flying edges' output (with normals in 3D) and on two halves of
+/// the image contoured apart and appended (the ranks' pieces rank 0 joins).
+void checkMergeAgainstVtk()
+{
+  vtkNew<vtkFlyingEdges3D> triangles;
+  triangles->SetInputData(zerosAtNodes(3, true));
+  triangles->SetValue(0, 0.0);
+  triangles->ComputeNormalsOn();
+  triangles->Update();
+  checkSameAsCleanPolyData(triangles->GetOutput(), "triangles with vertices repeated at zero nodes");
+  vtkNew<vtkFlyingEdges2D> lines;
+  lines->SetInputData(zerosAtNodes(2, false));
+  lines->SetValue(0, 0.0);
+  lines->Update();
+  checkSameAsCleanPolyData(lines->GetOutput(), "lines with vertices repeated at zero nodes");
+  vtkNew<vtkAppendPolyData> pieces;
+  for (const double zFirst : { -4.0, 0.0 }) // the two halves share the plane z = 0
+  {
+    vtkNew<vtkFlyingEdges3D> contour;
+    contour->SetInputData(zerosAtNodes(3, true, zFirst, 5));
+    contour->SetValue(0, 0.5); // off the nodes: only the halves' shared border repeats vertices
+    contour->ComputeNormalsOn();
+    contour->Update();
+    vtkNew<vtkPolyData> piece;
+    piece->DeepCopy(contour->GetOutput());
+    pieces->AddInputData(piece);
+  }
+  pieces->Update();
+  checkSameAsCleanPolyData(pieces->GetOutput(), "two pieces sharing their border");
+}
+} // namespace
+
+int main()
+{
+  // phi = x + y + z on integer nodes: 0 exactly at the nodes of the plane x + y + z = 0.
+  const vtkSmartPointer<vtkImageData> image = zerosAtNodes(3, false);
   vtkNew<vtkFlyingEdges3D> raw;
   raw->SetInputData(image);
   raw->SetValue(0, 0.0);
@@ -95,5 +199,6 @@ int main()
   check(degenerateTriangles(surface) == 0,
     "no degenerate triangles (" + std::to_string(degenerateTriangles(surface)) + ")");
   check(surface->GetPointData()->GetNormals() != nullptr, "the normals are kept");
+  checkMergeAgainstVtk();
   return sltktest::failures() == 0 ? 0 : 1;
 }
