@@ -52,6 +52,19 @@ SLTK_LANES_INLINE lanes::Lanes<L> gatherLanes(const double* values, const Index*
   return out;
 }
 
+/// Whether the L band nodes at `offset` are consecutive in storage, in order
+/// (any band order is allowed: a group is tested node by node).
+template <int L>
+SLTK_LANES_INLINE bool consecutive(const Index* offset)
+{
+  bool all = true;
+  for (int l = 1; l < L; ++l)
+  {
+    all = all && offset[l] == offset[0] + l;
+  }
+  return all;
+}
+
 /// True (all ones) in the lanes whose node has role `kind`.
 template <int L>
 SLTK_LANES_INLINE lanes::Mask<L> kindLanes(const std::uint8_t* role, std::uint8_t kind)
@@ -301,7 +314,7 @@ private:
         continue;
       }
       Vec u[ReinitStencil<D>::AxisSize];
-      if (offset[p + L - 1] - offset[p] == L - 1) // consecutive nodes of an x line: plain loads
+      if (consecutive<L>(offset + p)) // L nodes of an x line in a row: plain loads
       {
         const double* at = values + offset[p];
         lanes::loadOf<L>(at, u[0]);
