@@ -86,7 +86,7 @@ TEST(SlabPolicy, AutomaticCellSizePlansTheSameGridsForAnyRanksOnThisMachine)
 
 TEST(SlabPolicy, AutomaticCellSizeGrowsOnlyWhenTheWindowsOnThisMachineDoNotFit)
 {
-  // The rule (ReconstructionPlan.cxx, fitWindowsOnThisMachine): the one-rank
+  // The rule (RunGridMemory.cxx, fitWindowsOnThisMachine): the one-rank
   // C_dx while the windows of this machine's ranks fit the limit (the budget
   // given, else the memory available); else the smallest C_dx of the 2% ladder
   // whose windows fit, instead of refusing what one rank runs.

@@ -4,6 +4,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCleanPolyData.h"
+#include "vtkDataArray.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -11,6 +12,8 @@
 #include "vtkPolyData.h"
 
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <functional>
 #include <unordered_map>
@@ -46,20 +49,40 @@ struct HashCoordinates
   }
 };
 
-/// For each point, the first point (in id order) with its coordinates.
-std::vector<vtkIdType> coincidenceGroups(vtkPoints* points)
+/// For each point, the first point (in id order) with its coordinates; false
+/// (for vtkCleanPolyData) at a coordinate that is not finite (NaN is equal to nothing).
+bool coincidenceGroups(vtkPoints* points, std::vector<vtkIdType>& group)
 {
   const vtkIdType n = points->GetNumberOfPoints();
-  std::vector<vtkIdType> group(static_cast<size_t>(n));
+  group.resize(static_cast<size_t>(n));
   std::unordered_map<Coordinates, vtkIdType, HashCoordinates> first;
   first.reserve(static_cast<size_t>(n));
   for (vtkIdType i = 0; i < n; ++i)
   {
     Coordinates c;
     points->GetPoint(i, c.X.data());
+    if (!std::isfinite(c.X[0]) || !std::isfinite(c.X[1]) || !std::isfinite(c.X[2]))
+    {
+      return false;
+    }
     group[static_cast<size_t>(i)] = first.emplace(c, i).first->second;
   }
-  return group;
+  return true;
+}
+
+/// Whether every cell has at least `fewest` points: vtkCleanPolyData keeps a
+/// shorter one as a vertex or a line, which this merge does not make.
+bool noShortCells(vtkCellArray* cells, vtkIdType fewest)
+{
+  vtkDataArray* offsets = cells->GetOffsetsArray();
+  for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
+  {
+    if (offsets->GetComponent(c + 1, 0) - offsets->GetComponent(c, 0) < static_cast<double>(fewest))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 /// The cells of `cells` with their points renumbered by first use (`number`
@@ -125,17 +148,18 @@ void cleanByVtk(vtkPolyData* input, vtkPolyData* output)
 }
 } // namespace
 
-void mergeCoincidentPoints(vtkPolyData* input, vtkPolyData* output)
+bool mergeCoincidentPoints(vtkPolyData* input, vtkPolyData* output)
 {
   vtkPoints* points = input->GetPoints();
+  std::vector<vtkIdType> group;
   if (!points || input->GetNumberOfPoints() == 0 || input->GetNumberOfVerts() > 0 || input->GetNumberOfStrips() > 0 ||
     input->GetCellData()->GetNumberOfArrays() > 0 || input->HasAnyGhostPoints() ||
-    input->GetPointData()->GetGlobalIds())
+    input->GetPointData()->GetGlobalIds() || !noShortCells(input->GetLines(), 2) ||
+    !noShortCells(input->GetPolys(), 3) || !coincidenceGroups(points, group))
   {
     cleanByVtk(input, output);
-    return;
+    return false;
   }
-  const std::vector<vtkIdType> group = coincidenceGroups(points);
   std::vector<vtkIdType> number(group.size(), -1), source;
   source.reserve(group.size());
   vtkSmartPointer<vtkCellArray> lines, polys;
@@ -172,6 +196,7 @@ void mergeCoincidentPoints(vtkPolyData* input, vtkPolyData* output)
     result->SetPolys(polys);
   }
   output->ShallowCopy(result);
+  return true;
 }
 
 } // namespace vtkbridge

@@ -21,11 +21,14 @@ namespace vtkbridge
 /// ConvertPolysToLinesOff, ConvertStripsToPolysOff) for `input` into
 /// `output`: points with equal coordinates become one, numbered in the order
 /// the lines, then the polygons, first use them, each taking the point data
-/// of its first use (as this VTK's vtkCleanPolyData does); repeated consecutive points of a cell are dropped, and
-/// the lines left with fewer than 2 points and the polygons with fewer than
-/// 3. An input with vertices, strips, cell data, ghost points or global ids
-/// goes to vtkCleanPolyData itself.
-void mergeCoincidentPoints(vtkPolyData* input, vtkPolyData* output);
+/// of its first use (as VTK 9.2's vtkCleanPolyData, ParaView 5.11's, does:
+/// Filters.ZeroLevelSet compares the two); repeated consecutive points of a
+/// cell are dropped, and the lines left with fewer than 2 points and the
+/// polygons with fewer than 3. Returns false when it left the input to
+/// vtkCleanPolyData itself: vertices, strips, cell data, ghost points, global
+/// ids, a line of one point or a polygon of fewer than three (which
+/// vtkCleanPolyData keeps as a vertex or a line), or a coordinate that is not finite.
+bool mergeCoincidentPoints(vtkPolyData* input, vtkPolyData* output);
 
 } // namespace vtkbridge
 } // namespace sltk

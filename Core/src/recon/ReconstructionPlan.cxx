@@ -363,6 +363,7 @@ void resetPlan(const ReconstructionOptions& options, ReconstructionPlan<D>& plan
   plan.Choices.clear();
   plan.Enclosure.reset();
   plan.PointsHeldMax = 0;
+  plan.Traffic = CommTraffic{};
 }
 
 /// Steps 1-5 on `points` up to the automatic C_dx and thinning: what reads the

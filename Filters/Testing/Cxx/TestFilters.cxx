@@ -143,7 +143,8 @@ void checkSummary(vtkSLLevelSetReconstruct* recon, const std::string& what)
     s->CellSizeFactor == fieldValue(grid, "CellSizeFactor") &&
     static_cast<double>(s->Cleaning.OutputPoints) == fieldValue(grid, "ReconstructedPoints") &&
     static_cast<double>(s->Traffic.PointToPointBytes) == fieldValue(grid, "RankBytesSent") &&
-    static_cast<double>(s->Traffic.CollectiveBytes) == fieldValue(grid, "RankCollectiveBytes");
+    static_cast<double>(s->Traffic.CollectiveBytes) == fieldValue(grid, "RankCollectiveBytes") &&
+    static_cast<double>(s->PlanTraffic.Collectives) == fieldValue(grid, "PlanRankCollectives");
   for (size_t r = 0; same && r < s->Runs.size(); ++r)
   {
     const auto k = static_cast<vtkIdType>(r);

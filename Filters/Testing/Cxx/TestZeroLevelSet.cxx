@@ -104,7 +104,8 @@ void checkSameAsCleanPolyData(vtkPolyData* input, const std::string& what)
   clean->Update();
   vtkPolyData* expected = clean->GetOutput();
   vtkNew<vtkPolyData> merged;
-  sltk::vtkbridge::mergeCoincidentPoints(input, merged);
+  const bool byHash = sltk::vtkbridge::mergeCoincidentPoints(input, merged);
+  check(byHash, what + ": merged by the hash, not left to vtkCleanPolyData");
   bool same = sameArray(merged->GetPoints()->GetData(), expected->GetPoints()->GetData());
   for (auto cells : { &vtkPolyData::GetLines, &vtkPolyData::GetPolys })
   {

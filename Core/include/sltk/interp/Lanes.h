@@ -11,6 +11,9 @@
 /// pairs otherwise; elsewhere as the compiler vectorises them.
 
 #include <cmath>
+#if defined(__GNUC__) && defined(__x86_64__)
+#include <emmintrin.h> // SSE2, part of every x86-64 processor
+#endif
 
 namespace sltk
 {
@@ -108,15 +111,15 @@ SLTK_LANES_INLINE void sqrtOf(const double& x, double& out)
 // each other's latency (Documentation/Profile.md, "The pseudo-time steps' loads and square roots").
 SLTK_LANES_INLINE void sqrtOf(const Lanes<2>& x, Lanes<2>& out)
 {
-  out = __builtin_ia32_sqrtpd(x);
+  out = _mm_sqrt_pd(x);
 }
 /// Two halves: the same instruction serves the AVX2 functions and the tests'
 /// lanes of four outside them (an always-inlined AVX2 intrinsic may not sit in
 /// the templates between it and those functions).
 SLTK_LANES_INLINE void sqrtOf(const Lanes<4>& x, Lanes<4>& out)
 {
-  const Lanes<2> low = __builtin_ia32_sqrtpd(Lanes<2>{ x[0], x[1] });
-  const Lanes<2> high = __builtin_ia32_sqrtpd(Lanes<2>{ x[2], x[3] });
+  const Lanes<2> low = _mm_sqrt_pd(Lanes<2>{ x[0], x[1] });
+  const Lanes<2> high = _mm_sqrt_pd(Lanes<2>{ x[2], x[3] });
   out = Lanes<4>{ low[0], low[1], high[0], high[1] };
 }
 #else
@@ -135,6 +138,7 @@ template <int L>
 SLTK_LANES_INLINE void loadOf(const double* p, Lanes<L>& out)
 {
   typedef double Unaligned __attribute__((vector_size(8 * L), aligned(8), __may_alias__));
+  static_assert(alignof(Unaligned) == alignof(double), "an unaligned vector type: a plain load, not an aligned one");
   out = *reinterpret_cast<const Unaligned*>(p);
 }
 
