@@ -91,6 +91,7 @@ void distanceToShares(vtkPointSet* share, std::int64_t firstId, vtkPolyData* sur
   {
     return; // no point or no vertex anywhere (sendToOwners fails on every rank alike)
   }
+  const NearestOverRanks<3> nearest(owned); // one locator for every round
   vtkNew<vtkDoubleArray> distance;
   distance->SetName("DistanceToCloud");
   distance->SetNumberOfTuples(vertices);
@@ -106,7 +107,7 @@ void distanceToShares(vtkPointSet* share, std::int64_t firstId, vtkPolyData* sur
     }
     std::vector<std::int64_t> before;
     const std::vector<std::array<double, 3>> queries = comm.allGatherV(mine, &before);
-    nearestOverRanks<3>(owned, queries, radius, comm, ctx, found, ids);
+    nearest.find(queries, radius, comm, ctx, found, ids);
     std::int64_t at = 0; // this rank's first query in `queries`
     for (int q = 0; q < comm.rank(); ++q)
     {

@@ -12,6 +12,7 @@
 #include "sltk/cloud/CloudThinning.h"
 #include "sltk/cloud/LinkedComponents.h"
 #include "sltk/cloud/LocalSpacing.h"
+#include "sltk/cloud/PointLocator.h"
 #include "sltk/cloud/PointOwners.h"
 #include "sltk/cloud/SyntheticClouds.h"
 #include "sltk/core/ExactSum.h"
@@ -116,9 +117,8 @@ sltk::OwnedPoints<3> owners(const Points& cloud, const sltk::Communicator& comm,
 void expectOneRankSpacing(const Points& cloud, int k, double halo, bool allOnRankZero = false)
 {
   auto comm = world();
-  sltk::ThreadPool pool(2);
-  sltk::Context ctx;
-  ctx.Executor = &pool;
+  const TwoThreads threads;
+  const sltk::Context& ctx = threads.Ctx;
   sltk::CloudSpacingOptions options;
   options.DensityNeighbours = k;
   double one = 0.0;
@@ -137,9 +137,8 @@ void expectOneRankSpacing(const Points& cloud, int k, double halo, bool allOnRan
 void expectOneRankNoise(const Points& cloud, bool allOnRankZero = false)
 {
   auto comm = world();
-  sltk::ThreadPool pool(2);
-  sltk::Context ctx;
-  ctx.Executor = &pool;
+  const TwoThreads threads;
+  const sltk::Context& ctx = threads.Ctx;
   const sltk::PointCloud<3> whole{ cloud };
   const sltk::PointLocator<3> locator(whole);
   double spacing = 0.0, one = 0.0;
@@ -296,9 +295,8 @@ namespace
 void expectOneRankOutliers(const Points& cloud, const sltk::OutlierOptions& options, std::int64_t removed)
 {
   auto comm = world();
-  sltk::ThreadPool pool(2);
-  sltk::Context ctx;
-  ctx.Executor = &pool;
+  const TwoThreads threads;
+  const sltk::Context& ctx = threads.Ctx;
   sltk::PointCloud<3> kept;
   sltk::OutlierReport one, ranks;
   ASSERT_TRUE(sltk::removeOutliers(sltk::PointCloud<3>{ cloud }, options, ctx, kept, one).isOk());
@@ -1203,4 +1201,53 @@ TEST(LinkedComponentsOnRanks, AreTheOneRankComponentsIn2D)
   const sltk::Status refused = sltk::validateCloudShares(lineShare, g.Begin, *comm);
   EXPECT_FALSE(refused.isOk());
   EXPECT_EQ(refused.message(), sltk::validateCloud(sltk::PointCloud<2>{ line }).message());
+}
+
+namespace
+{
+/// NearestOverRanks' batches against one rank's locator over the whole cloud
+/// and against nearestOverRanks: the same distances bit for bit and the same
+/// nearest points (their global indices).
+void expectWholeCloudNearest(const Points& cloud, double halo, double radius)
+{
+  auto comm = world();
+  const TwoThreads threads;
+  const sltk::Context& ctx = threads.Ctx;
+  const sltk::PointCloud<3> whole{ cloud };
+  const sltk::PointLocator<3> one(whole);
+  const sltk::OwnedPoints<3> owned = owners(cloud, *comm, halo, false);
+  const sltk::NearestOverRanks<3> nearest(owned);
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> coordinate(-0.5, 4.5);
+  std::int64_t differ = 0, asked = 0;
+  for (int batch = 0; batch < 3; ++batch) // the same queries on every rank
+  {
+    Points queries(200);
+    for (auto& q : queries)
+    {
+      q = { coordinate(random), coordinate(random), coordinate(random) };
+    }
+    std::vector<double> distance, once;
+    std::vector<std::int64_t> ids, onceIds;
+    nearest.find(queries, radius, *comm, ctx, distance, ids);
+    sltk::nearestOverRanks<3>(owned, queries, radius, *comm, ctx, once, onceIds);
+    for (size_t q = 0; q < queries.size(); ++q)
+    {
+      const auto hit = one.nearest(queries[q]); // no ties in a random cloud: one nearest index
+      differ +=
+        distance[q] == hit.Distance && ids[q] == hit.Index && once[q] == distance[q] && onceIds[q] == ids[q] ? 0 : 1;
+      ++asked;
+    }
+  }
+  EXPECT_EQ(differ, 0) << "of " << asked << " queries, halo " << halo << ", radius " << radius << " on " << comm->size()
+                       << " ranks";
+}
+} // namespace
+
+TEST(NearestOverRanks, BatchesFindTheWholeCloudsNearestPoint)
+{
+  const Points box = boxCloud(4000, 41);
+  expectWholeCloudNearest(box, 0.0, 0.2);  // every held point owned
+  expectWholeCloudNearest(box, 0.3, 0.2);  // a halo: its points found on two ranks
+  expectWholeCloudNearest(box, 0.0, 1e-9); // most queries asked again without a bound
 }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <utility>
 
 namespace sltk
@@ -233,36 +234,58 @@ Status thinOnRanks(OwnedPoints<D>& points, double cell, const Communicator& comm
   const int axis = points.Cuts.Axis;
   const auto averager = [&](std::int64_t along)
   { return points.Cuts.ownerOf(box.Min[axis] + static_cast<double>(along) * cell); };
-  const size_t ranks = static_cast<size_t>(comm.size());
-  std::vector<std::vector<CellPoint<D>>> outgoing(ranks);
+  // The points of the cells this rank averages stay out of the exchange, and
+  // the others are placed once in rank order (counted first): on a share read
+  // along the slabs' axis, the records are one copy of the points, not three.
+  const size_t ranks = static_cast<size_t>(comm.size()), me = static_cast<size_t>(comm.rank());
+  std::vector<std::int64_t> counts(ranks, 0);
+  const auto rankOf = [&](const std::array<double, D>& x)
+  { return static_cast<size_t>(averager(cells.along(axis, x[axis]))); };
+  for (size_t j = 0; j < points.Ids.size(); ++j)
+  {
+    if (points.Mine[j])
+    {
+      ++counts[rankOf(points.Cloud.Points[j])];
+    }
+  }
+  std::vector<CellPoint<D>> mine;
+  mine.reserve(static_cast<size_t>(counts[me]));
+  counts[me] = 0;
+  std::vector<size_t> next(ranks + 1, 0);
+  std::partial_sum(counts.begin(), counts.end(), next.begin() + 1);
+  std::vector<CellPoint<D>> send(next[ranks]);
   for (size_t j = 0; j < points.Ids.size(); ++j)
   {
     if (points.Mine[j])
     {
       const auto& x = points.Cloud.Points[j];
-      outgoing[static_cast<size_t>(averager(cells.along(axis, x[axis])))].push_back(
-        { cells.number(x), points.Ids[j], x });
+      const size_t r = rankOf(x);
+      const CellPoint<D> record{ cells.number(x), points.Ids[j], x };
+      if (r == me)
+      {
+        mine.push_back(record);
+      }
+      else
+      {
+        send[next[r]++] = record;
+      }
     }
   }
-  std::vector<CellPoint<D>> send;
-  std::vector<std::int64_t> counts(ranks);
-  for (size_t r = 0; r < ranks; ++r)
-  {
-    send.insert(send.end(), outgoing[r].begin(), outgoing[r].end());
-    counts[r] = static_cast<std::int64_t>(outgoing[r].size());
-  }
-  outgoing.clear();
-  std::vector<CellPoint<D>> mine = comm.allToAllRecords(send, counts);
-  send.clear();
+  const SlabCuts cuts = points.Cuts;
+  const double halo = points.Halo;
+  points = OwnedPoints<D>(); // the records hold them; the means replace them
+  std::vector<CellPoint<D>> received = comm.allToAllRecords(send, counts);
+  send = {};
+  mine.insert(mine.end(), received.begin(), received.end());
+  received = {};
   sortByCell(mine);
   std::vector<std::array<double, D>> means;
   std::vector<std::int64_t> numbers;
   cellMeans<D>(mine, means, numbers);
-  mine.clear();
+  mine = {};
   const std::vector<std::int64_t> ids = globalCellIndices(numbers, cells.stride(axis) * cells.Count[axis], comm);
   total = comm.allReduce(static_cast<std::int64_t>(means.size()), ReduceOp::Sum);
-  const SlabCuts cuts = points.Cuts;
-  return sendToOwners<D>(means, ids, cuts, points.Halo, comm, points);
+  return sendToOwners<D>(means, ids, cuts, halo, comm, points);
 }
 
 template Status thinCloud(const PointCloud<2>&, double, PointCloud<2>&);

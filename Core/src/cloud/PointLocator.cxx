@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace sltk
@@ -47,6 +49,11 @@ PointLocator<D>::PointLocator(const PointCloud<D>& cloud, double pointsPerBucket
   : Cloud(&cloud)
   , Bounds(boundingBox(cloud))
 {
+  if (cloud.size() > MaximumPoints)
+  {
+    throw std::length_error("a point locator holds at most " + std::to_string(MaximumPoints) + " points, not " +
+      std::to_string(cloud.size()) + ": spread the cloud over more ranks");
+  }
   const double n = std::max<double>(1.0, static_cast<double>(cloud.size()));
   double diameter = this->Bounds.largestExtent();
   if (diameter == 0.0)
@@ -73,28 +80,34 @@ PointLocator<D>::PointLocator(const PointCloud<D>& cloud, double pointsPerBucket
       total *= this->Count[a];
     }
   }
-  std::vector<std::int64_t> bucket(cloud.Points.size());
-  this->Start.assign(static_cast<size_t>(total) + 1, 0);
-  for (size_t k = 0; k < cloud.Points.size(); ++k)
+  // A counting sort by bucket, points in increasing index within a bucket. Its
+  // only storage is the table itself: Start[b] counts bucket b's points, then
+  // (summed) ends it, then (each point put in place from the last one down)
+  // begins it; the bucket of a point is computed again rather than kept (the
+  // table has up to 8 entries a point: Documentation/Distributed.md, "Memory
+  // per rank, step by step").
+  const auto bucketOfPoint = [this](const std::array<double, D>& x)
   {
     std::array<std::int64_t, D> b;
     for (int a = 0; a < D; ++a)
     {
-      b[a] = std::min(
-        this->Count[a] - 1, static_cast<std::int64_t>((cloud.Points[k][a] - this->Bounds.Min[a]) / this->Size));
+      b[a] = std::min(this->Count[a] - 1, static_cast<std::int64_t>((x[a] - this->Bounds.Min[a]) / this->Size));
     }
-    bucket[k] = this->bucketOf(b);
-    ++this->Start[static_cast<size_t>(bucket[k]) + 1];
+    return static_cast<size_t>(this->bucketOf(b));
+  };
+  this->Start.assign(static_cast<size_t>(total) + 1, 0);
+  for (const auto& x : cloud.Points)
+  {
+    ++this->Start[bucketOfPoint(x)];
   }
   for (size_t b = 1; b < this->Start.size(); ++b)
   {
     this->Start[b] += this->Start[b - 1];
   }
   this->Points.resize(cloud.Points.size());
-  std::vector<std::int64_t> fill(this->Start.begin(), this->Start.end() - 1);
-  for (size_t k = 0; k < cloud.Points.size(); ++k)
+  for (size_t k = cloud.Points.size(); k-- > 0;)
   {
-    this->Points[static_cast<size_t>(fill[static_cast<size_t>(bucket[k])]++)] = static_cast<std::int64_t>(k);
+    this->Points[static_cast<size_t>(--this->Start[bucketOfPoint(cloud.Points[k])])] = static_cast<std::uint32_t>(k);
   }
   this->Coordinates.resize(cloud.Points.size());
   for (size_t p = 0; p < this->Points.size(); ++p)
@@ -149,9 +162,9 @@ void PointLocator<D>::search(const std::array<double, D>& x, std::int64_t exclud
     const auto visitBucket = [&](const std::array<std::int64_t, D>& b)
     {
       const std::int64_t id = this->bucketOf(b);
-      for (std::int64_t p = this->Start[static_cast<size_t>(id)]; p < this->Start[static_cast<size_t>(id) + 1]; ++p)
+      for (size_t p = this->Start[static_cast<size_t>(id)]; p < this->Start[static_cast<size_t>(id) + 1]; ++p)
       {
-        const std::int64_t k = this->Points[static_cast<size_t>(p)];
+        const std::int64_t k = this->Points[p];
         if (k == exclude)
         {
           continue;

@@ -477,21 +477,23 @@ Status valuesFromOwners(const OwnedPoints<D>& points, const std::vector<double>&
 }
 
 template <int D>
-void nearestOverRanks(const OwnedPoints<D>& points, const std::vector<std::array<double, D>>& queries, double radius,
-  const Communicator& comm, const Context& ctx, std::vector<double>& distance, std::vector<std::int64_t>& ids)
+NearestOverRanks<D>::NearestOverRanks(const OwnedPoints<D>& points)
+  : Points(points)
+{
+  if (points.held() > 0)
+  {
+    this->Locator = std::make_unique<PointLocator<D>>(points.Cloud);
+  }
+}
+
+template <int D>
+NearestOverRanks<D>::~NearestOverRanks() = default;
+
+template <int D>
+void NearestOverRanks<D>::find(const std::vector<std::array<double, D>>& queries, double radius,
+  const Communicator& comm, const Context& ctx, std::vector<double>& distance, std::vector<std::int64_t>& ids) const
 {
   constexpr std::int64_t None = std::numeric_limits<std::int64_t>::max();
-  PointCloud<D> own; // this rank's points, without the halo (another rank owns those)
-  std::vector<std::int64_t> ownIds;
-  for (size_t j = 0; j < points.Mine.size(); ++j)
-  {
-    if (points.Mine[j])
-    {
-      own.Points.push_back(points.Cloud.Points[j]);
-      ownIds.push_back(points.Ids[j]);
-    }
-  }
-  const std::unique_ptr<PointLocator<D>> locator = own.size() > 0 ? std::make_unique<PointLocator<D>>(own) : nullptr;
   distance.assign(queries.size(), Infinity);
   ids.assign(queries.size(), None);
   // The nearest of every rank for the queries `asked`, `bounded` within the radius.
@@ -499,7 +501,7 @@ void nearestOverRanks(const OwnedPoints<D>& points, const std::vector<std::array
   {
     std::vector<double> d(asked.size(), Infinity);
     std::vector<std::int64_t> id(asked.size(), None);
-    if (locator)
+    if (this->Locator)
     {
       ctx.parallelFor(0, static_cast<Index>(asked.size()),
         [&](Index b, Index e)
@@ -507,9 +509,9 @@ void nearestOverRanks(const OwnedPoints<D>& points, const std::vector<std::array
           for (Index q = b; q < e; ++q)
           {
             const auto& x = queries[asked[static_cast<size_t>(q)]];
-            const auto hit = bounded ? locator->nearestWithin(x, radius) : locator->nearest(x);
+            const auto hit = bounded ? this->Locator->nearestWithin(x, radius) : this->Locator->nearest(x);
             d[static_cast<size_t>(q)] = hit.Distance;
-            id[static_cast<size_t>(q)] = hit.Index >= 0 ? ownIds[static_cast<size_t>(hit.Index)] : None;
+            id[static_cast<size_t>(q)] = hit.Index >= 0 ? this->Points.Ids[static_cast<size_t>(hit.Index)] : None;
           }
         });
     }
@@ -537,7 +539,7 @@ void nearestOverRanks(const OwnedPoints<D>& points, const std::vector<std::array
       asked.push_back(q); // the same on every rank: after the reductions
     }
   }
-  if (!asked.empty() && comm.allReduce(points.Owned, ReduceOp::Sum) > 0)
+  if (!asked.empty() && comm.allReduce(this->Points.Owned, ReduceOp::Sum) > 0)
   {
     answer(asked, false);
   }
@@ -545,6 +547,13 @@ void nearestOverRanks(const OwnedPoints<D>& points, const std::vector<std::array
   {
     id = id == None ? -1 : id;
   }
+}
+
+template <int D>
+void nearestOverRanks(const OwnedPoints<D>& points, const std::vector<std::array<double, D>>& queries, double radius,
+  const Communicator& comm, const Context& ctx, std::vector<double>& distance, std::vector<std::int64_t>& ids)
+{
+  NearestOverRanks<D>(points).find(queries, radius, comm, ctx, distance, ids);
 }
 
 namespace
@@ -676,6 +685,8 @@ template Status pointsInIntervals(
   const OwnedPoints<2>&, const std::vector<double>&, int, double, double, const Communicator&, PointsInInterval<2>&);
 template Status pointsInIntervals(
   const OwnedPoints<3>&, const std::vector<double>&, int, double, double, const Communicator&, PointsInInterval<3>&);
+template class NearestOverRanks<2>;
+template class NearestOverRanks<3>;
 template struct OwnedPoints<2>;
 template struct OwnedPoints<3>;
 template Status sendToOwners<2>(const std::vector<std::array<double, 2>>&, const std::vector<std::int64_t>&,

@@ -7,6 +7,7 @@
 
 #include "sltk/cloud/PointCloud.h"
 
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -27,8 +28,14 @@ public:
     double Distance = std::numeric_limits<double>::infinity();
   };
 
+  /// The most points a locator holds: its bucket table and point order are
+  /// 32-bit (12 bytes a point less than 64-bit ones, up to 36 with the table's
+  /// empty buckets); a rank with more points is beyond its memory long before.
+  static constexpr std::int64_t MaximumPoints = std::numeric_limits<std::uint32_t>::max();
+
   /// Buckets the cloud (which must stay alive and unchanged) so that there
-  /// are about `pointsPerBucket` points per non-empty bucket on a surface-like cloud.
+  /// are about `pointsPerBucket` points per non-empty bucket on a surface-like
+  /// cloud. Throws std::length_error for a cloud of more than MaximumPoints.
   explicit PointLocator(const PointCloud<D>& cloud, double pointsPerBucket = PointLocatorDefaultBucket);
 
   /// Nearest cloud point to x, skipping the point with index `exclude` (-1: none).
@@ -74,8 +81,8 @@ private:
   Box<D> Bounds;
   double Size = 1.0;
   std::array<std::int64_t, D> Count{};
-  std::vector<std::int64_t> Start;  ///< CSR offsets, one per bucket + 1
-  std::vector<std::int64_t> Points; ///< point indices grouped by bucket
+  std::vector<std::uint32_t> Start;  ///< CSR offsets, one per bucket + 1
+  std::vector<std::uint32_t> Points; ///< point indices grouped by bucket
   /// Their coordinates in the same order: a bucket's candidates are read from
   /// consecutive memory, not gathered from the cloud by index.
   std::vector<std::array<double, D>> Coordinates;

@@ -20,11 +20,16 @@
 #include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 
+#include <memory>
+
 #include <cstdint>
 #include <vector>
 
 namespace sltk
 {
+
+template <int D>
+class PointLocator;
 
 /// The slabs of the ranks: rank r owns the points with Lower[r] <= x_Axis <
 /// Lower[r + 1] (Lower[0] = -inf, Lower[size] = +inf).
@@ -163,6 +168,28 @@ template <int D>
 void nearestOverRanks(const OwnedPoints<D>& points, const std::vector<std::array<double, D>>& queries, double radius,
   const Communicator& comm, const Context& ctx, std::vector<double>& distance, std::vector<std::int64_t>& ids);
 
+/// nearestOverRanks() for queries that come in batches: the locator of this
+/// rank's points is made once. It reads every point the rank holds, its halo
+/// too: a halo point is also held by its owner, so the least distance over the
+/// ranks and the lowest index at it are the same. `points` must outlive it.
+template <int D>
+class NearestOverRanks
+{
+public:
+  explicit NearestOverRanks(const OwnedPoints<D>& points);
+  ~NearestOverRanks();
+  NearestOverRanks(const NearestOverRanks&) = delete;
+  NearestOverRanks& operator=(const NearestOverRanks&) = delete;
+
+  /// nearestOverRanks() of `queries` (the same on every rank). Collective.
+  void find(const std::vector<std::array<double, D>>& queries, double radius, const Communicator& comm,
+    const Context& ctx, std::vector<double>& distance, std::vector<std::int64_t>& ids) const;
+
+private:
+  const OwnedPoints<D>& Points;
+  std::unique_ptr<PointLocator<D>> Locator;
+};
+
 /// The box around every rank's `local` points (inverted, +inf to -inf, when
 /// no rank has any): boundingBox() over the ranks. Collective.
 template <int D>
@@ -202,6 +229,8 @@ extern template Status pointsInIntervals(
   const OwnedPoints<3>&, const std::vector<double>&, int, double, double, const Communicator&, PointsInInterval<3>&);
 extern template Box<2> boundingBoxOverRanks(const PointCloud<2>&, const Communicator&);
 extern template Box<3> boundingBoxOverRanks(const PointCloud<3>&, const Communicator&);
+extern template class NearestOverRanks<2>;
+extern template class NearestOverRanks<3>;
 extern template struct OwnedPoints<2>;
 extern template struct OwnedPoints<3>;
 
