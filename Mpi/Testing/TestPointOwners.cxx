@@ -1205,10 +1205,11 @@ TEST(LinkedComponentsOnRanks, AreTheOneRankComponentsIn2D)
 
 namespace
 {
-/// NearestOverRanks' batches against one rank's locator over the whole cloud
-/// and against nearestOverRanks: the same distances bit for bit and the same
-/// nearest points (their global indices).
-void expectWholeCloudNearest(const Points& cloud, double halo, double radius)
+/// NearestOverRanks' batches against one rank's locator over the whole cloud:
+/// the same distances bit for bit and the same nearest points (their global
+/// indices, the lowest at a tie). `queries` makes a batch (the same on every rank).
+template <class Queries>
+void expectWholeCloudNearest(const Points& cloud, double halo, double radius, Queries&& queries)
 {
   auto comm = world();
   const TwoThreads threads;
@@ -1217,25 +1218,17 @@ void expectWholeCloudNearest(const Points& cloud, double halo, double radius)
   const sltk::PointLocator<3> one(whole);
   const sltk::OwnedPoints<3> owned = owners(cloud, *comm, halo, false);
   const sltk::NearestOverRanks<3> nearest(owned);
-  std::mt19937_64 random(7);
-  std::uniform_real_distribution<double> coordinate(-0.5, 4.5);
   std::int64_t differ = 0, asked = 0;
-  for (int batch = 0; batch < 3; ++batch) // the same queries on every rank
+  for (int batch = 0; batch < 3; ++batch)
   {
-    Points queries(200);
-    for (auto& q : queries)
+    const Points x = queries(batch);
+    std::vector<double> distance;
+    std::vector<std::int64_t> ids;
+    nearest.find(x, radius, *comm, ctx, distance, ids);
+    for (size_t q = 0; q < x.size(); ++q)
     {
-      q = { coordinate(random), coordinate(random), coordinate(random) };
-    }
-    std::vector<double> distance, once;
-    std::vector<std::int64_t> ids, onceIds;
-    nearest.find(queries, radius, *comm, ctx, distance, ids);
-    sltk::nearestOverRanks<3>(owned, queries, radius, *comm, ctx, once, onceIds);
-    for (size_t q = 0; q < queries.size(); ++q)
-    {
-      const auto hit = one.nearest(queries[q]); // no ties in a random cloud: one nearest index
-      differ +=
-        distance[q] == hit.Distance && ids[q] == hit.Index && once[q] == distance[q] && onceIds[q] == ids[q] ? 0 : 1;
+      const auto hit = one.nearest(x[q]);
+      differ += distance[q] == hit.Distance && ids[q] == hit.Index ? 0 : 1;
       ++asked;
     }
   }
@@ -1247,7 +1240,45 @@ void expectWholeCloudNearest(const Points& cloud, double halo, double radius)
 TEST(NearestOverRanks, BatchesFindTheWholeCloudsNearestPoint)
 {
   const Points box = boxCloud(4000, 41);
-  expectWholeCloudNearest(box, 0.0, 0.2);  // every held point owned
-  expectWholeCloudNearest(box, 0.3, 0.2);  // a halo: its points found on two ranks
-  expectWholeCloudNearest(box, 0.0, 1e-9); // most queries asked again without a bound
+  const auto random = [](int batch)
+  {
+    std::mt19937_64 rng(7 + static_cast<unsigned>(batch));
+    std::uniform_real_distribution<double> coordinate(-0.5, 4.5);
+    Points x(200);
+    for (auto& q : x)
+    {
+      q = { coordinate(rng), coordinate(rng), coordinate(rng) };
+    }
+    return x;
+  };
+  expectWholeCloudNearest(box, 0.0, 0.2, random);  // every held point owned
+  expectWholeCloudNearest(box, 0.3, 0.2, random);  // a halo: its points found on two ranks
+  expectWholeCloudNearest(box, 0.0, 1e-9, random); // most queries asked again without a bound
+  // Ties: a lattice in shuffled order queried at half-integer places, equally far from
+  // several points that may lie on different ranks (the lowest global index wins).
+  Points lattice;
+  for (int i = 0; i < 16; ++i)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        lattice.push_back({ 0.25 * i, 0.25 * j, 0.25 * k });
+      }
+    }
+  }
+  std::shuffle(lattice.begin(), lattice.end(), std::mt19937_64(3));
+  const auto halves = [](int batch)
+  {
+    Points x;
+    for (int i = 0; i < 32; ++i)
+    {
+      x.push_back({ 0.125 * i, 0.125 * (1 + batch), 0.125 * (3 - batch) });
+    }
+    return x;
+  };
+  for (const double halo : { 0.0, 0.15, 0.6 })
+  {
+    expectWholeCloudNearest(lattice, halo, 0.3, halves);
+  }
 }

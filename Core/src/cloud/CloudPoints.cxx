@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/cloud/CloudPoints.h"
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -205,6 +206,12 @@ Status OwnedCloud<D>::release(
     {
       mine.push_back({ this->Owned.Ids[j], this->Owned.Cloud.Points[j] });
     }
+  }
+  if (this->Total > MaximumIndexedPoints) // the same on every rank
+  {
+    return Status::outOfMemory("the cleaned cloud has " + std::to_string(this->Total) + " points, more than the " +
+      std::to_string(MaximumIndexedPoints) +
+      " every rank holds and indexes for the runs: thin it (--thin F) or reconstruct it in parts");
   }
   this->Owned = OwnedPoints<D>(); // the whole cloud replaces the shares
   const std::vector<Placed> all = this->Comm.allGatherV(mine);

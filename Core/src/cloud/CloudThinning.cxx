@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/cloud/CloudThinning.h"
 
+#include "RankParts.h"
+
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <utility>
 
 namespace sltk
@@ -235,8 +236,9 @@ Status thinOnRanks(OwnedPoints<D>& points, double cell, const Communicator& comm
   const auto averager = [&](std::int64_t along)
   { return points.Cuts.ownerOf(box.Min[axis] + static_cast<double>(along) * cell); };
   // The points of the cells this rank averages stay out of the exchange, and
-  // the others are placed once in rank order (counted first): on a share read
-  // along the slabs' axis, the records are one copy of the points, not three.
+  // the others are placed once in rank order (counted first): the records are
+  // one copy of the points (two for a moment as the received ones join them),
+  // where per-rank lists, the send buffer and the received copy were three.
   const size_t ranks = static_cast<size_t>(comm.size()), me = static_cast<size_t>(comm.rank());
   std::vector<std::int64_t> counts(ranks, 0);
   const auto rankOf = [&](const std::array<double, D>& x)
@@ -251,8 +253,7 @@ Status thinOnRanks(OwnedPoints<D>& points, double cell, const Communicator& comm
   std::vector<CellPoint<D>> mine;
   mine.reserve(static_cast<size_t>(counts[me]));
   counts[me] = 0;
-  std::vector<size_t> next(ranks + 1, 0);
-  std::partial_sum(counts.begin(), counts.end(), next.begin() + 1);
+  std::vector<size_t> next = startsOf(counts);
   std::vector<CellPoint<D>> send(next[ranks]);
   for (size_t j = 0; j < points.Ids.size(); ++j)
   {

@@ -309,9 +309,24 @@ Status validatePoints(const ValidationView<D>& view)
 }
 } // namespace
 
+namespace
+{
+/// The refusal of `count` points on one process (more than MaximumIndexedPoints).
+Status tooManyPoints(std::int64_t count, const char* what)
+{
+  return Status::outOfMemory(std::string(what) + " has " + std::to_string(count) + " points, more than the " +
+    std::to_string(MaximumIndexedPoints) +
+    " one process indexes: read it on more MPI ranks (mpirun -np N), or thin it first");
+}
+} // namespace
+
 template <int D>
 Status validateCloud(const PointCloud<D>& cloud)
 {
+  if (cloud.size() > MaximumIndexedPoints)
+  {
+    return tooManyPoints(cloud.size(), "the cloud");
+  }
   return validatePoints(ValidationView<D>(cloud, 0, nullptr));
 }
 
@@ -329,6 +344,10 @@ Status validateCloudShares(const PointCloud<D>& share, std::int64_t firstId, con
     if (s.First != next)
     {
       return Status::invalidArgument("validateCloudShares: the ranks' shares are not consecutive in rank order");
+    }
+    if (s.Count > MaximumIndexedPoints)
+    {
+      return tooManyPoints(s.Count, "a rank's share of the cloud");
     }
     next += s.Count;
   }

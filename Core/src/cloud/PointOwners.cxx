@@ -3,6 +3,8 @@
 
 #include "sltk/cloud/PointLocator.h"
 
+#include "RankParts.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -68,17 +70,6 @@ int longestAxis(const PointCloud<D>& local, const Communicator& comm)
     axis = box.extent(a) > box.extent(axis) ? a : axis;
   }
   return axis;
-}
-
-/// Where each rank's part starts in a buffer grouped by rank (`counts` elements each), and its end.
-std::vector<size_t> startsOf(const std::vector<std::int64_t>& counts)
-{
-  std::vector<size_t> first(counts.size() + 1, 0);
-  for (size_t r = 0; r < counts.size(); ++r)
-  {
-    first[r + 1] = first[r] + static_cast<size_t>(counts[r]);
-  }
-  return first;
 }
 
 /// One personalised all-to-all of records, `send` grouped by destination rank

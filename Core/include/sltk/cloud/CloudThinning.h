@@ -29,7 +29,9 @@ Status thinCloud(const PointCloud<D>& cloud, double cell, PointCloud<D>& thinned
 /// means replace the points, each under its index in the one-rank thinned
 /// cloud (the rows of cells per rank, gathered, place them: 24 bytes a row),
 /// sent to their owners with the same cuts and halo. `total`: the thinned
-/// cloud's points over every rank. Collective.
+/// cloud's points over every rank. The points are freed before the exchange
+/// (its records hold them): when the move to the owners fails, `points` is
+/// left empty. Collective.
 template <int D>
 Status thinOnRanks(OwnedPoints<D>& points, double cell, const Communicator& comm, std::int64_t& total);
 

@@ -14,6 +14,11 @@
 namespace sltk
 {
 
+/// The most points one process indexes (PointLocator's 32-bit tables): a
+/// larger cloud is refused by validateCloud(), a larger share by
+/// validateCloudShares(), a larger gathered cloud by the plan.
+constexpr std::int64_t MaximumIndexedPoints = 4294967295;
+
 template <int D>
 struct PointCloud
 {
@@ -49,7 +54,8 @@ Box<D> boundingBox(const PointCloud<D>& cloud);
 /// Checks a cloud for reconstruction: at least D + 1 points, finite
 /// coordinates, at least D + 1 distinct points, not all on one line (2D) or
 /// one plane (3D), coordinates whose offset from the origin leaves enough
-/// precision for the grid. The message names the first problem and the fix.
+/// precision for the grid, at most MaximumIndexedPoints points. The message
+/// names the first problem and the fix.
 template <int D>
 Status validateCloud(const PointCloud<D>& cloud);
 
@@ -60,7 +66,8 @@ class Communicator;
 /// shares, CloudFileShares.h), with the same checks, decisions and messages as
 /// on one rank holding it whole (point indices are global), the same on every
 /// rank. Fails on every rank when the shares are not consecutive in rank order
-/// (each firstId the points of the ranks before). Collective.
+/// (each firstId the points of the ranks before) or a share has more than
+/// MaximumIndexedPoints points. Collective.
 template <int D>
 Status validateCloudShares(const PointCloud<D>& share, std::int64_t firstId, const Communicator& comm);
 

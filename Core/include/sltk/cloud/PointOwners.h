@@ -20,9 +20,8 @@
 #include "sltk/exec/Communicator.h"
 #include "sltk/exec/Context.h"
 
-#include <memory>
-
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace sltk
@@ -170,13 +169,17 @@ void nearestOverRanks(const OwnedPoints<D>& points, const std::vector<std::array
 
 /// nearestOverRanks() for queries that come in batches: the locator of this
 /// rank's points is made once. It reads every point the rank holds, its halo
-/// too: a halo point is also held by its owner, so the least distance over the
-/// ranks and the lowest index at it are the same. `points` must outlive it.
+/// too: a halo point is also held by its owner with the same coordinates, so
+/// the least distance over the ranks is the same; and since a rank's points
+/// are in increasing global index (OwnedPoints), its locator's tie rule (the
+/// lowest position) gives its lowest global index at that distance, so the
+/// lowest over the ranks is too. `points` must outlive it.
 template <int D>
 class NearestOverRanks
 {
 public:
   explicit NearestOverRanks(const OwnedPoints<D>& points);
+  explicit NearestOverRanks(const OwnedPoints<D>&&) = delete; // it would outlive them
   ~NearestOverRanks();
   NearestOverRanks(const NearestOverRanks&) = delete;
   NearestOverRanks& operator=(const NearestOverRanks&) = delete;
