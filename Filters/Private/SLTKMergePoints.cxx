@@ -4,7 +4,6 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCleanPolyData.h"
-#include "vtkDataArray.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -70,14 +69,20 @@ bool coincidenceGroups(vtkPoints* points, std::vector<vtkIdType>& group)
   return true;
 }
 
-/// Whether every cell has at least `fewest` points: vtkCleanPolyData keeps a
-/// shorter one as a vertex or a line, which this merge does not make.
-bool noShortCells(vtkCellArray* cells, vtkIdType fewest)
+/// The fewest points a line (2) or a polygon (3) keeps after the merge.
+vtkIdType fewestPoints(bool polygons)
 {
-  vtkDataArray* offsets = cells->GetOffsetsArray();
+  return polygons ? 3 : 2;
+}
+
+/// Whether every cell has at least fewestPoints(polygons) points:
+/// vtkCleanPolyData keeps a shorter one as a vertex or a line, which this
+/// merge does not make.
+bool noShortCells(vtkCellArray* cells, bool polygons)
+{
   for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
   {
-    if (offsets->GetComponent(c + 1, 0) - offsets->GetComponent(c, 0) < static_cast<double>(fewest))
+    if (cells->GetCellSize(c) < fewestPoints(polygons))
     {
       return false;
     }
@@ -88,8 +93,7 @@ bool noShortCells(vtkCellArray* cells, vtkIdType fewest)
 /// The cells of `cells` with their points renumbered by first use (`number`
 /// of each group, `source`: the input point whose data an output point
 /// takes, its first use), consecutive repeats dropped (and a polygon's last
-/// point when it repeats its first); the lines left with 2 points or more,
-/// the polygons with 3 or more.
+/// point when it repeats its first); the cells left with fewestPoints() or more.
 vtkSmartPointer<vtkCellArray> renumberCells(vtkCellArray* cells, bool polygons, const std::vector<vtkIdType>& group,
   std::vector<vtkIdType>& number, std::vector<vtkIdType>& source)
 {
@@ -102,7 +106,7 @@ vtkSmartPointer<vtkCellArray> renumberCells(vtkCellArray* cells, bool polygons, 
   {
     kept->AllocateEstimate(cells->GetNumberOfCells(), 2);
   }
-  const vtkIdType fewest = polygons ? 3 : 2;
+  const vtkIdType fewest = fewestPoints(polygons);
   std::vector<vtkIdType> ids;
   vtkIdType count = 0;
   const vtkIdType* pts = nullptr;
@@ -154,8 +158,8 @@ bool mergeCoincidentPoints(vtkPolyData* input, vtkPolyData* output)
   std::vector<vtkIdType> group;
   if (!points || input->GetNumberOfPoints() == 0 || input->GetNumberOfVerts() > 0 || input->GetNumberOfStrips() > 0 ||
     input->GetCellData()->GetNumberOfArrays() > 0 || input->HasAnyGhostPoints() ||
-    input->GetPointData()->GetGlobalIds() || !noShortCells(input->GetLines(), 2) ||
-    !noShortCells(input->GetPolys(), 3) || !coincidenceGroups(points, group))
+    input->GetPointData()->GetGlobalIds() || !noShortCells(input->GetLines(), false) ||
+    !noShortCells(input->GetPolys(), true) || !coincidenceGroups(points, group))
   {
     cleanByVtk(input, output);
     return false;
