@@ -193,6 +193,12 @@ template <int D>
 Status OwnedCloud<D>::release(
   PointCloud<D>& cloud, double pointsPerBucket, std::unique_ptr<const PointLocator<D>>& locator)
 {
+  if (this->Total > MaximumIndexedPoints) // the same on every rank
+  {
+    return Status::outOfMemory("the cleaned cloud has " + std::to_string(this->Total) + " points, more than the " +
+      std::to_string(MaximumIndexedPoints) +
+      " every rank holds and indexes for the runs: thin it (--thin F) or reconstruct it in parts");
+  }
   struct Placed
   {
     std::int64_t Id;
@@ -206,12 +212,6 @@ Status OwnedCloud<D>::release(
     {
       mine.push_back({ this->Owned.Ids[j], this->Owned.Cloud.Points[j] });
     }
-  }
-  if (this->Total > MaximumIndexedPoints) // the same on every rank
-  {
-    return Status::outOfMemory("the cleaned cloud has " + std::to_string(this->Total) + " points, more than the " +
-      std::to_string(MaximumIndexedPoints) +
-      " every rank holds and indexes for the runs: thin it (--thin F) or reconstruct it in parts");
   }
   this->Owned = OwnedPoints<D>(); // the whole cloud replaces the shares
   const std::vector<Placed> all = this->Comm.allGatherV(mine);

@@ -307,10 +307,7 @@ Status validatePoints(const ValidationView<D>& view)
   }
   return Status::ok();
 }
-} // namespace
 
-namespace
-{
 /// The refusal of `count` points on one process (more than MaximumIndexedPoints).
 Status tooManyPoints(std::int64_t count, const char* what)
 {

@@ -49,9 +49,9 @@ PointLocator<D>::PointLocator(const PointCloud<D>& cloud, double pointsPerBucket
   : Cloud(&cloud)
   , Bounds(boundingBox(cloud))
 {
-  if (cloud.size() > MaximumPoints)
+  if (cloud.size() > MaximumIndexedPoints)
   {
-    throw std::length_error("a point locator holds at most " + std::to_string(MaximumPoints) + " points, not " +
+    throw std::length_error("a point locator holds at most " + std::to_string(MaximumIndexedPoints) + " points, not " +
       std::to_string(cloud.size()) + ": spread the cloud over more ranks");
   }
   const double n = std::max<double>(1.0, static_cast<double>(cloud.size()));

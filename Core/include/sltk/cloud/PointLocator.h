@@ -28,16 +28,12 @@ public:
     double Distance = std::numeric_limits<double>::infinity();
   };
 
-  /// The most points a locator holds: its bucket table and point order are
-  /// 32-bit (4 bytes a point and 4 a bucket less than 64-bit ones, up to 36 a
-  /// point with the table's empty buckets). The entry points refuse larger
-  /// clouds first (MaximumIndexedPoints, PointCloud.h).
-  static constexpr std::int64_t MaximumPoints = MaximumIndexedPoints;
-
   /// Buckets the cloud (which must stay alive and unchanged) so that there
   /// are about `pointsPerBucket` points per non-empty bucket on a surface-like
-  /// cloud. Throws std::length_error for a cloud of more than MaximumPoints
-  /// (a caller that skipped the checks).
+  /// cloud. Its bucket table and point order are 32-bit (4 bytes a point and
+  /// 4 a bucket less than 64-bit ones): a cloud of more than
+  /// MaximumIndexedPoints (PointCloud.h), which the entry points refuse first,
+  /// throws std::length_error (a caller that skipped the checks).
   explicit PointLocator(const PointCloud<D>& cloud, double pointsPerBucket = PointLocatorDefaultBucket);
 
   /// Nearest cloud point to x, skipping the point with index `exclude` (-1: none).
