@@ -231,6 +231,43 @@ TEST(NarrowBand, Dilation3DAtTheGridBoundary)
   EXPECT_EQ(dilated.size(), 11u);
 }
 
+TEST(NarrowBand, ListsWrittenOverAnOldListOrTheirOwnInput)
+{
+  // The run's lists are written in place, their capacity reused (NarrowBand.cxx):
+  // the result may not depend on what the output held, nor break when the output
+  // is also the input.
+  const auto g = sltk::uniformBox<3>(41, -1.0, 1.0);
+  const double dx = g.Spacing[0];
+  const auto phi = sphereSdf<3>(g, 0.6);
+  sltk::ThreadPool pool(2);
+  sltk::Context ctx;
+  ctx.Executor = &pool;
+  sltk::NodeList band, clean;
+  sltk::collectBand(phi, 3.0 * dx, ctx, clean);
+  band.assign(3 * clean.size(), 7); // longer, with garbage
+  sltk::collectBand(phi, 3.0 * dx, ctx, band);
+  EXPECT_EQ(band, clean);
+  sltk::NodeList dilated, stale(5, -1);
+  sltk::dilateBand(g, clean, 1, ctx, dilated);
+  sltk::dilateBand(g, clean, 1, ctx, stale);
+  EXPECT_EQ(stale, dilated);
+  sltk::NodeList alias = clean;
+  sltk::dilateBand(g, alias, 1, ctx, alias); // output = input
+  EXPECT_EQ(alias, dilated);
+  sltk::NodeList more = clean, both;
+  sltk::dilateBand(g, clean, 1, ctx, both, &more);
+  sltk::dilateBand(g, clean, 1, ctx, more, &more); // output = the second input
+  EXPECT_EQ(more, both);
+  sltk::NodeList filtered, filteredOver(2 * dilated.size(), 3);
+  sltk::filterBand(phi, dilated, 2.0 * dx, ctx, filtered);
+  sltk::filterBand(phi, dilated, 2.0 * dx, ctx, filteredOver);
+  EXPECT_EQ(filteredOver, filtered);
+  sltk::NodeList self = dilated;
+  sltk::filterBand(phi, self, 2.0 * dx, ctx, self); // output = input
+  EXPECT_EQ(self, filtered);
+  EXPECT_LT(filtered.size(), dilated.size());
+}
+
 TEST(NarrowBand, NextBandFilteredFromTheReinitBandAndCut)
 {
   // The front moves by less than a cell: B^{n+1} is inside B^n dilated by one cell (1.52).

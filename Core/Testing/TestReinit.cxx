@@ -706,6 +706,61 @@ TEST(Reinit, SerialAndThreadedAreBitIdentical)
   }
 }
 
+TEST(Reinit, AReusedWorkspaceGivesTheValuesOfAFreshOneBitForBit)
+{
+  // A run keeps one workspace for all its iterations (SlabBand.h); what a call
+  // left in it (a larger band, another grid, a failed call) must not show in the
+  // next one. Changing a stale value that a call reads (say, a role the
+  // classification did not rewrite) makes the values differ.
+  const auto large = sltk::uniformBox<3>(49, -1.0, 1.0);
+  const auto small = sltk::uniformBox<3>(33, -1.0, 1.0);
+  const GridField<3> initialLarge = distortedSphere<3>(large);
+  const GridField<3> initialSmall = distortedSphere<3>(small);
+  const auto bandLarge = sphereBand<3>(initialLarge, BandCells);
+  const auto bandSmall = sphereBand<3>(initialSmall, 3.0);
+  ASSERT_GT(bandLarge.size(), 2 * bandSmall.size());
+  sltk::ThreadPool pool(2);
+  sltk::Context ctx;
+  ctx.Executor = &pool;
+  for (ReinitMethod method : { ReinitMethod::Plain, ReinitMethod::RussoSmereka, ReinitMethod::Constrained })
+  {
+    const ReinitOptions o = options(method);
+    sltk::ReinitWorkspace workspace;
+    GridField<3> first = initialLarge;
+    ASSERT_TRUE(sltk::reinitialise<3>(
+      first, bandLarge.data(), static_cast<Index>(bandLarge.size()), o, ctx, nullptr, {}, &workspace)
+                  .isOk());
+    const size_t held = workspace.Next.capacity();
+    for (const bool reuse : { true, false })
+    {
+      GridField<3> fresh = initialSmall, reused = initialSmall;
+      sltk::ReinitReport a, b;
+      ASSERT_TRUE(sltk::reinitialise<3>(fresh, bandSmall, o, ctx, &a).isOk());
+      ASSERT_TRUE(sltk::reinitialise<3>(
+        reused, bandSmall.data(), static_cast<Index>(bandSmall.size()), o, ctx, &b, {}, reuse ? &workspace : nullptr)
+                    .isOk());
+      EXPECT_EQ(a.Iterations, b.Iterations);
+      EXPECT_EQ(a.InterfaceNodes, b.InterfaceNodes);
+      EXPECT_EQ(
+        std::memcmp(fresh.storage().data(), reused.storage().data(), fresh.storage().size() * sizeof(double)), 0)
+        << name(method) << (reuse ? ", reused" : ", own");
+    }
+    EXPECT_EQ(workspace.Next.capacity(), held) << "the smaller band fits in the pages already held";
+  }
+  // A refused call leaves the workspace usable.
+  sltk::ReinitWorkspace workspace;
+  GridField<3> phi = initialSmall;
+  const Index bad[1] = { small.nodeCount() };
+  EXPECT_FALSE(
+    sltk::reinitialise<3>(phi, bad, 1, options(ReinitMethod::Constrained), ctx, nullptr, {}, &workspace).isOk());
+  GridField<3> again = initialSmall, fresh = initialSmall;
+  ASSERT_TRUE(sltk::reinitialise<3>(again, bandSmall.data(), static_cast<Index>(bandSmall.size()),
+    options(ReinitMethod::Constrained), ctx, nullptr, {}, &workspace)
+                .isOk());
+  ASSERT_TRUE(sltk::reinitialise<3>(fresh, bandSmall, options(ReinitMethod::Constrained), ctx).isOk());
+  EXPECT_EQ(std::memcmp(fresh.storage().data(), again.storage().data(), fresh.storage().size() * sizeof(double)), 0);
+}
+
 TEST(Reinit, BandNodesInLanesAreTheNodeByNodeValuesBitForBit)
 {
   // The band's nodes are stepped four (or two) at a time, and a group with a node next to the

@@ -86,7 +86,6 @@ void collectBand(const GridField<D, double>& phi, double gamma, const Context& c
   const Index lines = phi.spec().nodeCount() / nx;
   const auto line = [&](Index l) { return p + storageOffset(phi, l * nx); };
   const auto inBand = [gamma](double v) { return std::fabs(v) < gamma; }; // (1.48)
-  NodeList out;
   compactBy(
     ctx, lines, std::max<Index>(16, (lines + 63) / 64),
     [&](Index l)
@@ -111,8 +110,7 @@ void collectBand(const GridField<D, double>& phi, double gamma, const Context& c
       }
       return to;
     },
-    out);
-  band.swap(out);
+    band); // written in place: its capacity from the previous call is reused (no new pages)
 }
 
 template <int D>
@@ -120,12 +118,12 @@ void filterBand(
   const GridField<D, double>& phi, const NodeList& candidates, double gamma, const Context& ctx, NodeList& band)
 {
   const double* p = phi.storage().data();
-  NodeList out;
+  NodeList copy;
+  const NodeList& from = &band == &candidates ? (copy = candidates) : candidates; // the output overwrites its input
   compact(
-    ctx, static_cast<Index>(candidates.size()),
-    [&](Index j) { return std::fabs(p[storageOffset(phi, candidates[static_cast<size_t>(j)])]) < gamma; },
-    [&](Index j) { return candidates[static_cast<size_t>(j)]; }, out);
-  band.swap(out);
+    ctx, static_cast<Index>(from.size()),
+    [&](Index j) { return std::fabs(p[storageOffset(phi, from[static_cast<size_t>(j)])]) < gamma; },
+    [&](Index j) { return from[static_cast<size_t>(j)]; }, band);
 }
 
 namespace
@@ -280,49 +278,53 @@ void dilateBand(
       }
     }
   };
-  // The lines in chunks of fixed size, each chunk's nodes in its own list, then joined in order.
+  // The lines in chunks of fixed size, in two passes (the same list on any
+  // thread count): each chunk counts its lines' nodes, then writes them at its
+  // offset straight into the output. Lists per chunk would hold the dilation a
+  // second time beside the run's other per-node arrays (Profile.md, "Page
+  // faults of the per-iteration arrays").
   const Index grain = std::max<Index>(16, (lines + 63) / 64);
   const Index chunks = (lines + grain - 1) / grain;
-  std::vector<NodeList> parts(static_cast<size_t>(chunks));
-  ctx.parallelFor(
-    0, lines,
-    [&](Index b, Index e)
+  const auto sweepLines = [&](Index b, Index e, Index* to)
+  {
+    std::vector<std::uint8_t> marks(static_cast<size_t>(nx), 0);
+    Index count = 0;
+    for (Index r = b; r < e; ++r)
     {
-      std::vector<std::uint8_t> marks(static_cast<size_t>(nx), 0);
-      NodeList& part = parts[static_cast<size_t>(b / grain)];
-      for (Index r = b; r < e; ++r)
+      Index lo = 0, hi = -1;
+      markLine(r, marks.data(), lo, hi);
+      for (Index x = lo; x <= hi; ++x)
       {
-        Index lo = 0, hi = -1;
-        markLine(r, marks.data(), lo, hi);
-        for (Index x = lo; x <= hi; ++x)
+        if (marks[static_cast<size_t>(x)])
         {
-          if (marks[static_cast<size_t>(x)])
+          marks[static_cast<size_t>(x)] = 0;
+          if (to)
           {
-            marks[static_cast<size_t>(x)] = 0;
-            part.push_back(r * nx + x);
+            *to++ = r * nx + x;
           }
+          ++count;
         }
       }
-    },
-    grain);
-  std::vector<size_t> start(parts.size() + 1, 0);
-  for (size_t c = 0; c < parts.size(); ++c)
-  {
-    start[c + 1] = start[c] + parts[c].size();
-  }
-  NodeList out(start.back());
+    }
+    return count;
+  };
+  std::vector<Index> start(static_cast<size_t>(chunks) + 1, 0);
   ctx.parallelFor(
-    0, chunks,
-    [&](Index b, Index e)
-    {
-      for (Index c = b; c < e; ++c)
-      {
-        std::copy(parts[static_cast<size_t>(c)].begin(), parts[static_cast<size_t>(c)].end(),
-          out.begin() + static_cast<std::ptrdiff_t>(start[static_cast<size_t>(c)]));
-      }
-    },
-    1);
-  dilated.swap(out);
+    0, lines, [&](Index b, Index e) { start[static_cast<size_t>(b / grain) + 1] = sweepLines(b, e, nullptr); }, grain);
+  for (size_t c = 1; c < start.size(); ++c)
+  {
+    start[c] += start[c - 1];
+  }
+  // Written in place (its capacity reused) unless it is also an input.
+  NodeList fresh;
+  NodeList& out = &dilated == &band || &dilated == more ? fresh : dilated;
+  out.resize(static_cast<size_t>(start.back()));
+  ctx.parallelFor(
+    0, lines, [&](Index b, Index e) { sweepLines(b, e, out.data() + start[static_cast<size_t>(b / grain)]); }, grain);
+  if (&out == &fresh)
+  {
+    dilated.swap(fresh);
+  }
 }
 
 template <int D>

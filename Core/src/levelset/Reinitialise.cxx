@@ -79,13 +79,19 @@ template <int D>
 class BandSolver
 {
 public:
-  BandSolver(GridField<D>& phi, const Index* band, Index size, const ReinitOptions& options, const Context& ctx)
+  BandSolver(GridField<D>& phi, const Index* band, Index size, const ReinitOptions& options, const Context& ctx,
+    ReinitWorkspace& arrays)
     : Phi(phi)
     , Stencil(phi)
     , Band(band)
     , Size(size)
     , Options(options)
     , Ctx(ctx)
+    , Offset(arrays.Offset)
+    , Coefficient(arrays.Coefficient)
+    , Next(arrays.Next)
+    , Role(arrays.Role)
+    , ChunkChange(arrays.ChunkChange)
   {
     const GridSpec<D>& g = phi.spec();
     this->H = g.Spacing[0];
@@ -373,11 +379,12 @@ private:
   double H = 0.0;    // smallest spacing: the dx of (1.31), (1.34)
   double Dtau = 0.0; // pseudo-time step
 
-  std::vector<Index> Offset;       // storage offset of each band node
-  std::vector<double> Coefficient; // s of (1.31) for RolePde, the target distance otherwise
-  std::vector<double> Next;        // Jacobi buffer
-  std::vector<std::uint8_t> Role;  // Role* flags
-  std::vector<double> ChunkChange; // per-chunk max |change|
+  // The workspace's arrays (sized by allocate(); every entry is written before it is read).
+  std::vector<Index>& Offset;       // storage offset of each band node
+  std::vector<double>& Coefficient; // s of (1.31) for RolePde, the target distance otherwise
+  std::vector<double>& Next;        // Jacobi buffer
+  std::vector<std::uint8_t>& Role;  // Role* flags
+  std::vector<double>& ChunkChange; // per-chunk max |change|
 };
 
 Status validateBand(const Index* band, Index size, Index nodes, const Context& ctx)
@@ -409,7 +416,7 @@ Status validateBand(const Index* band, Index size, Index nodes, const Context& c
 
 template <int D>
 Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const ReinitOptions& options,
-  const Context& ctx, ReinitReport* report, const ReinitStepExchange& exchange)
+  const Context& ctx, ReinitReport* report, const ReinitStepExchange& exchange, ReinitWorkspace* workspace)
 {
   ReinitReport result;
   auto finish = [&](Status status)
@@ -433,7 +440,8 @@ Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const 
     result.Converged = true;
     return finish(Status::ok());
   }
-  BandSolver<D> solver(phi, band, bandSize, options, ctx);
+  ReinitWorkspace own;
+  BandSolver<D> solver(phi, band, bandSize, options, ctx, workspace ? *workspace : own);
   SLTK_RETURN_IF_ERROR(finish(exchange.Agree ? exchange.Agree(solver.allocate()) : solver.allocate()));
   result.InterfaceNodes = solver.classify();
   if (options.Method == ReinitMethod::Constrained)
@@ -477,9 +485,9 @@ Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const 
   return finish(Status::ok());
 }
 
-template Status reinitialise(
-  GridField<2>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*, const ReinitStepExchange&);
-template Status reinitialise(
-  GridField<3>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*, const ReinitStepExchange&);
+template Status reinitialise(GridField<2>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*,
+  const ReinitStepExchange&, ReinitWorkspace*);
+template Status reinitialise(GridField<3>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*,
+  const ReinitStepExchange&, ReinitWorkspace*);
 
 } // namespace sltk

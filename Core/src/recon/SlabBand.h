@@ -30,10 +30,10 @@ namespace sltk
 
 /// The reinitialisation (1.38)-(1.45) of the owned nodes `nodes` on this rank's slab.
 template <int D>
-Status reinitialiseOn(
-  GridField<D>& phi, const NodeList& nodes, const RunSlab<D>& slab, const ReinitOptions& options, const Context& ctx)
+Status reinitialiseOn(GridField<D>& phi, const NodeList& nodes, const RunSlab<D>& slab, const ReinitOptions& options,
+  const Context& ctx, ReinitWorkspace* workspace = nullptr)
 {
-  return reinitialiseSlabs<D>(phi, nodes, slab.slab(), slab.comm(), options, ctx);
+  return reinitialiseSlabs<D>(phi, nodes, slab.slab(), slab.comm(), options, ctx, nullptr, workspace);
 }
 
 template <int D, class Interp>
@@ -135,7 +135,8 @@ public:
 
   Status reinitialise()
   {
-    SLTK_RETURN_IF_ERROR(reinitialiseOn(this->Phi, this->ReinitBand, this->Slab, this->Options.Reinit, this->Ctx));
+    SLTK_RETURN_IF_ERROR(
+      reinitialiseOn(this->Phi, this->ReinitBand, this->Slab, this->Options.Reinit, this->Ctx, &this->ReinitArrays));
     cutLevelSet(this->Phi, this->ReinitBand, this->Gamma, this->Ctx); // (1.49)
     this->Slab.exchange(this->Phi);
     this->Phi.fillGhosts(this->Ctx);
@@ -224,6 +225,7 @@ private:
   const double Gamma;
   NodeList Band, ReinitBand, GhostBand;      // Band: the owned rows' B^n; GhostBand: the adjacent ghost rows'
   std::vector<double> StepScratch, Previous; // Previous: phi^n at ReinitBand, for eps_1 (4.34)
+  ReinitWorkspace ReinitArrays;              // the reinitialisation's arrays, for every iteration of the run
   FarFeet<D> Far;
   Index FarFeetCount = 0;
 };

@@ -23,6 +23,7 @@
 #include "sltk/grid/GridField.h"
 #include "sltk/levelset/ReinitOptions.h"
 
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -42,9 +43,24 @@ struct ReinitStepExchange
   std::function<double(double localChange, bool& interrupted)> AfterStep;
 };
 
+/// The per-band-node arrays of reinitialise() (25 bytes a node). A caller that
+/// reinitialises again and again (the iterations of a run) keeps one, so that the
+/// arrays' pages are allocated and faulted in once, not at every call
+/// (Documentation/Profile.md, "Page faults of the per-iteration arrays").
+struct ReinitWorkspace
+{
+  std::vector<Index> Offset;       ///< storage offset of each band node
+  std::vector<double> Coefficient; ///< s of (1.31), or the target distance of X
+  std::vector<double> Next;        ///< Jacobi buffer
+  std::vector<std::uint8_t> Role;  ///< each node's role
+  std::vector<double> ChunkChange; ///< per-chunk largest |change|
+};
+
+/// `workspace`: the arrays to reuse (null: the call's own).
 template <int D>
 Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const ReinitOptions& options,
-  const Context& ctx, ReinitReport* report = nullptr, const ReinitStepExchange& exchange = {});
+  const Context& ctx, ReinitReport* report = nullptr, const ReinitStepExchange& exchange = {},
+  ReinitWorkspace* workspace = nullptr);
 
 template <int D>
 Status reinitialise(GridField<D>& phi, const std::vector<Index>& band, const ReinitOptions& options, const Context& ctx,
@@ -53,9 +69,9 @@ Status reinitialise(GridField<D>& phi, const std::vector<Index>& band, const Rei
   return reinitialise<D>(phi, band.data(), static_cast<Index>(band.size()), options, ctx, report);
 }
 
-extern template Status reinitialise(
-  GridField<2>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*, const ReinitStepExchange&);
-extern template Status reinitialise(
-  GridField<3>&, const Index*, Index, const ReinitOptions&, const Context&, ReinitReport*, const ReinitStepExchange&);
+extern template Status reinitialise(GridField<2>&, const Index*, Index, const ReinitOptions&, const Context&,
+  ReinitReport*, const ReinitStepExchange&, ReinitWorkspace*);
+extern template Status reinitialise(GridField<3>&, const Index*, Index, const ReinitOptions&, const Context&,
+  ReinitReport*, const ReinitStepExchange&, ReinitWorkspace*);
 
 } // namespace sltk

@@ -35,7 +35,8 @@ constexpr Index ReinitEntryRows = 2;
 /// A collective call.
 template <int D>
 Status reinitialiseSlabs(GridField<D>& window, const NodeList& ownedBand, const SlabPlan& slab,
-  const Communicator& comm, const ReinitOptions& options, const Context& ctx, ReinitReport* report = nullptr)
+  const Communicator& comm, const ReinitOptions& options, const Context& ctx, ReinitReport* report = nullptr,
+  ReinitWorkspace* workspace = nullptr)
 {
   ReinitStepExchange exchange;
   exchange.Agree = [&](const Status& status) { return comm.agree(status); };
@@ -49,7 +50,7 @@ Status reinitialiseSlabs(GridField<D>& window, const NodeList& ownedBand, const 
     return reduced[0];
   };
   return reinitialise<D>(
-    window, ownedBand.data(), static_cast<Index>(ownedBand.size()), options, ctx, report, exchange);
+    window, ownedBand.data(), static_cast<Index>(ownedBand.size()), options, ctx, report, exchange, workspace);
 }
 
 } // namespace sltk
