@@ -709,56 +709,69 @@ TEST(Reinit, SerialAndThreadedAreBitIdentical)
 TEST(Reinit, AReusedWorkspaceGivesTheValuesOfAFreshOneBitForBit)
 {
   // A run keeps one workspace for all its iterations (SlabBand.h); what a call
-  // left in it (a larger band, another grid, a failed call) must not show in the
-  // next one. Changing a stale value that a call reads (say, a role the
-  // classification did not rewrite) makes the values differ.
-  const auto large = sltk::uniformBox<3>(49, -1.0, 1.0);
-  const auto small = sltk::uniformBox<3>(33, -1.0, 1.0);
-  const GridField<3> initialLarge = distortedSphere<3>(large);
-  const GridField<3> initialSmall = distortedSphere<3>(small);
-  const auto bandLarge = sphereBand<3>(initialLarge, BandCells);
-  const auto bandSmall = sphereBand<3>(initialSmall, 3.0);
-  ASSERT_GT(bandLarge.size(), 2 * bandSmall.size());
+  // left in it (a larger or a smaller band, another grid, an interrupted call)
+  // must not show in the next one: the values, the report's last change and
+  // its convergence as a call with its own arrays gives them. The tight box
+  // puts band nodes on the grid's faces (the node-by-node path). Keeping a
+  // stale role where the classification should write one makes it fail.
+  const auto wide = sltk::uniformBox<3>(49, -1.0, 1.0);
+  const auto tight = sltk::uniformBox<3>(33, -0.55, 0.55);
+  struct Case
+  {
+    GridField<3> Initial;
+    std::vector<Index> Band;
+  };
+  const Case large{ distortedSphere<3>(wide), sphereBand<3>(distortedSphere<3>(wide), BandCells) };
+  const Case small{ distortedSphere<3>(tight), sphereBand<3>(distortedSphere<3>(tight), 3.0) };
+  ASSERT_NE(large.Band.size(), small.Band.size());
   sltk::ThreadPool pool(2);
   sltk::Context ctx;
   ctx.Executor = &pool;
+  const auto run = [&](const Case& c, const ReinitOptions& o, const sltk::Context& context,
+                     sltk::ReinitWorkspace* workspace, GridField<3>& phi, sltk::ReinitReport& report)
+  {
+    phi = c.Initial;
+    return sltk::reinitialise<3>(
+      phi, c.Band.data(), static_cast<Index>(c.Band.size()), o, context, &report, {}, workspace);
+  };
   for (ReinitMethod method : { ReinitMethod::Plain, ReinitMethod::RussoSmereka, ReinitMethod::Constrained })
   {
     const ReinitOptions o = options(method);
-    sltk::ReinitWorkspace workspace;
-    GridField<3> first = initialLarge;
-    ASSERT_TRUE(sltk::reinitialise<3>(
-      first, bandLarge.data(), static_cast<Index>(bandLarge.size()), o, ctx, nullptr, {}, &workspace)
-                  .isOk());
-    const size_t held = workspace.Next.capacity();
-    for (const bool reuse : { true, false })
+    for (const Case* order : { &large, &small })
     {
-      GridField<3> fresh = initialSmall, reused = initialSmall;
+      sltk::ReinitWorkspace workspace;
+      GridField<3> phi;
+      sltk::ReinitReport first;
+      ASSERT_TRUE(run(order == &small ? large : small, o, ctx, &workspace, phi, first).isOk());
+      GridField<3> fresh, reused;
       sltk::ReinitReport a, b;
-      ASSERT_TRUE(sltk::reinitialise<3>(fresh, bandSmall, o, ctx, &a).isOk());
-      ASSERT_TRUE(sltk::reinitialise<3>(
-        reused, bandSmall.data(), static_cast<Index>(bandSmall.size()), o, ctx, &b, {}, reuse ? &workspace : nullptr)
-                    .isOk());
+      ASSERT_TRUE(run(*order, o, ctx, nullptr, fresh, a).isOk());
+      ASSERT_TRUE(run(*order, o, ctx, &workspace, reused, b).isOk());
       EXPECT_EQ(a.Iterations, b.Iterations);
       EXPECT_EQ(a.InterfaceNodes, b.InterfaceNodes);
+      EXPECT_EQ(std::memcmp(&a.MaxChange, &b.MaxChange, sizeof(double)), 0);
+      EXPECT_EQ(a.Converged, b.Converged);
       EXPECT_EQ(
         std::memcmp(fresh.storage().data(), reused.storage().data(), fresh.storage().size() * sizeof(double)), 0)
-        << name(method) << (reuse ? ", reused" : ", own");
+        << name(method) << (order == &small ? ", after the larger band" : ", after the smaller band");
     }
-    EXPECT_EQ(workspace.Next.capacity(), held) << "the smaller band fits in the pages already held";
   }
-  // A refused call leaves the workspace usable.
+  // A call interrupted after two steps leaves the workspace usable.
+  struct StopAtSecond : sltk::Interrupter
+  {
+    int Calls = 0;
+    bool wasInterrupted(double) override { return ++this->Calls >= 2; }
+  } stop;
+  sltk::Context stopping = ctx;
+  stopping.Progress = &stop;
   sltk::ReinitWorkspace workspace;
-  GridField<3> phi = initialSmall;
-  const Index bad[1] = { small.nodeCount() };
-  EXPECT_FALSE(
-    sltk::reinitialise<3>(phi, bad, 1, options(ReinitMethod::Constrained), ctx, nullptr, {}, &workspace).isOk());
-  GridField<3> again = initialSmall, fresh = initialSmall;
-  ASSERT_TRUE(sltk::reinitialise<3>(again, bandSmall.data(), static_cast<Index>(bandSmall.size()),
-    options(ReinitMethod::Constrained), ctx, nullptr, {}, &workspace)
-                .isOk());
-  ASSERT_TRUE(sltk::reinitialise<3>(fresh, bandSmall, options(ReinitMethod::Constrained), ctx).isOk());
-  EXPECT_EQ(std::memcmp(fresh.storage().data(), again.storage().data(), fresh.storage().size() * sizeof(double)), 0);
+  GridField<3> phi, fresh;
+  sltk::ReinitReport a, b;
+  const ReinitOptions o = options(ReinitMethod::Constrained);
+  ASSERT_EQ(run(large, o, stopping, &workspace, phi, a).code(), sltk::StatusCode::Aborted);
+  ASSERT_TRUE(run(small, o, ctx, &workspace, phi, a).isOk());
+  ASSERT_TRUE(run(small, o, ctx, nullptr, fresh, b).isOk());
+  EXPECT_EQ(std::memcmp(fresh.storage().data(), phi.storage().data(), fresh.storage().size() * sizeof(double)), 0);
 }
 
 TEST(Reinit, BandNodesInLanesAreTheNodeByNodeValuesBitForBit)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/levelset/NarrowBand.h"
 
+#include "sltk/core/ResizeForOverwrite.h"
+
 #include "sltk/grid/NodeIndexer.h"
 #include "sltk/levelset/CutOff.h"
 
@@ -20,16 +22,34 @@ Index storageOffset(const GridField<D, double>& f, Index k)
 }
 
 /// Deterministic parallel compaction over the items [0, n) in fixed chunks of
-/// `grain`: count(j) is how many entries item j gives, emit(j, to) writes them at
-/// `to` and returns the end; out holds them in item order, on any thread count
-/// (two passes: count, then write at the prefix offsets).
-template <class Count, class Emit>
-void compactBy(const Context& ctx, Index n, Index grain, Count count, Emit emit, NodeList& out)
+/// `grain`: countChunk(b, e) is how many entries the items [b, e) give,
+/// emitChunk(b, e, to) writes them at `to`; out holds them in item order, on
+/// any thread count (two passes: count, then write at the prefix offsets;
+/// ThreadPool.h: chunk c is [c grain, (c + 1) grain)). `out` is written in
+/// place (its capacity reused), so it must not be an input of the callbacks.
+template <class CountChunk, class EmitChunk>
+void compactChunks(const Context& ctx, Index n, Index grain, CountChunk countChunk, EmitChunk emitChunk, NodeList& out)
 {
   const Index chunks = n > 0 ? (n + grain - 1) / grain : 0;
   std::vector<Index> start(static_cast<size_t>(chunks) + 1, 0);
   ctx.parallelFor(
-    0, n,
+    0, n, [&](Index b, Index e) { start[static_cast<size_t>(b / grain) + 1] = countChunk(b, e); }, grain);
+  for (size_t c = 1; c < start.size(); ++c)
+  {
+    start[c] += start[c - 1];
+  }
+  resizeForOverwrite(out, static_cast<size_t>(start.back()));
+  ctx.parallelFor(
+    0, n, [&](Index b, Index e) { emitChunk(b, e, out.data() + start[static_cast<size_t>(b / grain)]); }, grain);
+}
+
+/// compactChunks() item by item: count(j) is how many entries item j gives,
+/// emit(j, to) writes them at `to` and returns the end.
+template <class Count, class Emit>
+void compactBy(const Context& ctx, Index n, Index grain, Count count, Emit emit, NodeList& out)
+{
+  compactChunks(
+    ctx, n, grain,
     [&](Index b, Index e)
     {
       Index c = 0;
@@ -37,25 +57,16 @@ void compactBy(const Context& ctx, Index n, Index grain, Count count, Emit emit,
       {
         c += count(j);
       }
-      start[static_cast<size_t>(b / grain) + 1] = c;
+      return c;
     },
-    grain);
-  for (size_t c = 1; c < start.size(); ++c)
-  {
-    start[c] += start[c - 1];
-  }
-  out.resize(static_cast<size_t>(start.back()));
-  ctx.parallelFor(
-    0, n,
-    [&](Index b, Index e)
+    [&](Index b, Index e, Index* to)
     {
-      Index* to = out.data() + start[static_cast<size_t>(b / grain)];
       for (Index j = b; j < e; ++j)
       {
         to = emit(j, to);
       }
     },
-    grain);
+    out);
 }
 
 /// out = [item(j) for j in [0, n) if keep(j)], in order (compactBy).
@@ -118,12 +129,16 @@ void filterBand(
   const GridField<D, double>& phi, const NodeList& candidates, double gamma, const Context& ctx, NodeList& band)
 {
   const double* p = phi.storage().data();
-  NodeList copy;
-  const NodeList& from = &band == &candidates ? (copy = candidates) : candidates; // the output overwrites its input
+  NodeList fresh; // when the output is the input, a new list swapped in
+  NodeList& out = &band == &candidates ? fresh : band;
   compact(
-    ctx, static_cast<Index>(from.size()),
-    [&](Index j) { return std::fabs(p[storageOffset(phi, from[static_cast<size_t>(j)])]) < gamma; },
-    [&](Index j) { return from[static_cast<size_t>(j)]; }, band);
+    ctx, static_cast<Index>(candidates.size()),
+    [&](Index j) { return std::fabs(p[storageOffset(phi, candidates[static_cast<size_t>(j)])]) < gamma; },
+    [&](Index j) { return candidates[static_cast<size_t>(j)]; }, out);
+  if (&out == &fresh)
+  {
+    band.swap(fresh);
+  }
 }
 
 namespace
@@ -278,14 +293,13 @@ void dilateBand(
       }
     }
   };
-  // The lines in chunks of fixed size, in two passes (the same list on any
-  // thread count): each chunk counts its lines' nodes, then writes them at its
-  // offset straight into the output. Lists per chunk would hold the dilation a
-  // second time beside the run's other per-node arrays (Profile.md, "Page
-  // faults of the per-iteration arrays").
+  // The lines in chunks of fixed size (compactChunks: the same list on any
+  // thread count): each chunk marks its lines to count their nodes, then again
+  // to write them straight into the output. Lists per chunk would hold the
+  // dilation a second time beside the run's other per-node arrays
+  // (Documentation/Profile.md, "Page faults of the per-iteration arrays").
   const Index grain = std::max<Index>(16, (lines + 63) / 64);
-  const Index chunks = (lines + grain - 1) / grain;
-  const auto sweepLines = [&](Index b, Index e, Index* to)
+  const auto sweepLines = [&](Index b, Index e, bool write, Index* to)
   {
     std::vector<std::uint8_t> marks(static_cast<size_t>(nx), 0);
     Index count = 0;
@@ -298,9 +312,9 @@ void dilateBand(
         if (marks[static_cast<size_t>(x)])
         {
           marks[static_cast<size_t>(x)] = 0;
-          if (to)
+          if (write)
           {
-            *to++ = r * nx + x;
+            to[count] = r * nx + x;
           }
           ++count;
         }
@@ -308,19 +322,11 @@ void dilateBand(
     }
     return count;
   };
-  std::vector<Index> start(static_cast<size_t>(chunks) + 1, 0);
-  ctx.parallelFor(
-    0, lines, [&](Index b, Index e) { start[static_cast<size_t>(b / grain) + 1] = sweepLines(b, e, nullptr); }, grain);
-  for (size_t c = 1; c < start.size(); ++c)
-  {
-    start[c] += start[c - 1];
-  }
-  // Written in place (its capacity reused) unless it is also an input.
-  NodeList fresh;
+  NodeList fresh; // when the output is an input, a new list swapped in
   NodeList& out = &dilated == &band || &dilated == more ? fresh : dilated;
-  out.resize(static_cast<size_t>(start.back()));
-  ctx.parallelFor(
-    0, lines, [&](Index b, Index e) { sweepLines(b, e, out.data() + start[static_cast<size_t>(b / grain)]); }, grain);
+  compactChunks(
+    ctx, lines, grain, [&](Index b, Index e) { return sweepLines(b, e, false, nullptr); },
+    [&](Index b, Index e, Index* to) { sweepLines(b, e, true, to); }, out);
   if (&out == &fresh)
   {
     dilated.swap(fresh);

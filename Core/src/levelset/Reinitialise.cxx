@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/levelset/Reinitialise.h"
 
+#include "sltk/core/ResizeForOverwrite.h"
 #include "sltk/exec/ThreadPool.h"
 #include "sltk/levelset/ReinitInterface.h"
 #include "sltk/levelset/ReinitScheme.h"
@@ -74,7 +75,8 @@ SLTK_LANES_INLINE lanes::Mask<L> kindLanes(const std::uint8_t* role, std::uint8_
   return out;
 }
 
-/// Per-band-node state of one reinitialise() call: 25 bytes per node.
+/// One reinitialise() call on its band, with the per-node arrays of a
+/// ReinitWorkspace (25 bytes a node).
 template <int D>
 class BandSolver
 {
@@ -110,12 +112,14 @@ public:
   {
     try
     {
+      // Every entry is written before it is read (classify(), step()): a
+      // workspace kept from the last call needs no values, only its pages.
       const size_t n = static_cast<size_t>(this->Size);
-      this->Offset.resize(n);
-      this->Coefficient.resize(n);
-      this->Next.resize(n);
-      this->Role.resize(n);
-      this->ChunkChange.resize(static_cast<size_t>(ThreadPool::chunkCount(0, this->Size, Grain)));
+      resizeForOverwrite(this->Offset, n);
+      resizeForOverwrite(this->Coefficient, n);
+      resizeForOverwrite(this->Next, n);
+      resizeForOverwrite(this->Role, n);
+      resizeForOverwrite(this->ChunkChange, static_cast<size_t>(ThreadPool::chunkCount(0, this->Size, Grain)));
     }
     catch (const std::bad_alloc&)
     {
@@ -379,12 +383,12 @@ private:
   double H = 0.0;    // smallest spacing: the dx of (1.31), (1.34)
   double Dtau = 0.0; // pseudo-time step
 
-  // The workspace's arrays (sized by allocate(); every entry is written before it is read).
-  std::vector<Index>& Offset;       // storage offset of each band node
+  // The workspace's arrays (ReinitWorkspace), sized by allocate().
+  std::vector<Index>& Offset;
   std::vector<double>& Coefficient; // s of (1.31) for RolePde, the target distance otherwise
-  std::vector<double>& Next;        // Jacobi buffer
-  std::vector<std::uint8_t>& Role;  // Role* flags
-  std::vector<double>& ChunkChange; // per-chunk max |change|
+  std::vector<double>& Next;
+  std::vector<std::uint8_t>& Role; // Role* flags
+  std::vector<double>& ChunkChange;
 };
 
 Status validateBand(const Index* band, Index size, Index nodes, const Context& ctx)

@@ -5,9 +5,10 @@
 /// vtkSMPTools to Sequential, so Core owns its pool).
 ///
 /// parallelFor splits [begin, end) into chunks whose boundaries depend only on
-/// the range and the grain, never on the number of threads; parallelSum adds
-/// the chunk partials in chunk order. Hence results are bit-identical between
-/// 1 and N threads.
+/// the range and the grain, never on the number of threads (with a grain given,
+/// chunk c is [begin + c grain, min(begin + (c + 1) grain, end)), which callers
+/// index by (b - begin) / grain); parallelSum adds the chunk partials in chunk
+/// order. Hence results are bit-identical between 1 and N threads.
 
 #include "sltk/core/Index.h"
 
@@ -58,7 +59,8 @@ public:
     }
     grain = effectiveGrain(begin, end, grain);
     const Index chunks = (end - begin + grain - 1) / grain;
-    auto chunkBody = [&](Index c) {
+    auto chunkBody = [&](Index c)
+    {
       const Index b = begin + c * grain;
       body(b, b + grain < end ? b + grain : end);
     };
@@ -76,7 +78,8 @@ public:
     grain = effectiveGrain(begin, end, grain);
     const Index chunks = (end - begin + grain - 1) / grain;
     std::vector<double> partial(static_cast<size_t>(chunks), 0.0);
-    auto chunkBody = [&](Index c) {
+    auto chunkBody = [&](Index c)
+    {
       const Index b = begin + c * grain;
       partial[static_cast<size_t>(c)] = body(b, b + grain < end ? b + grain : end);
     };

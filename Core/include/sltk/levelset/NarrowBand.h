@@ -10,8 +10,9 @@
 /// the whole grid (collectBand, O(nodes) work, parallel); afterwards
 /// B^{n+1} = {x in Bbar^{n+1} : |phi^{n+1}| < gamma} is filtered from the
 /// reinitialisation band (filterBand, O(band) work), which holds it when phi
-/// is cut (1.49) outside the band. Memory: 8 bytes per band node, plus one
-/// byte per grid node of scratch for the dilation (kept by the caller).
+/// is cut (1.49) outside the band. Memory: 8 bytes per band node. An output
+/// list is written in place, its capacity reused (a run keeps its lists from
+/// iteration to iteration); it may also be an input of the same call.
 
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
