@@ -721,8 +721,14 @@ TEST(Reinit, AReusedWorkspaceGivesTheValuesOfAFreshOneBitForBit)
     GridField<3> Initial;
     std::vector<Index> Band;
   };
-  const Case large{ distortedSphere<3>(wide), sphereBand<3>(distortedSphere<3>(wide), BandCells) };
-  const Case small{ distortedSphere<3>(tight), sphereBand<3>(distortedSphere<3>(tight), 3.0) };
+  const auto makeCase = [](const GridSpec<3>& g, double cells)
+  {
+    Case c{ distortedSphere<3>(g), {} };
+    c.Band = sphereBand<3>(c.Initial, cells);
+    return c;
+  };
+  const Case large = makeCase(wide, BandCells);
+  const Case small = makeCase(tight, 3.0);
   ASSERT_NE(large.Band.size(), small.Band.size());
   sltk::ThreadPool pool(2);
   sltk::Context ctx;

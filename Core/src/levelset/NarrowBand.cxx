@@ -2,7 +2,6 @@
 #include "sltk/levelset/NarrowBand.h"
 
 #include "sltk/core/ResizeForOverwrite.h"
-
 #include "sltk/grid/NodeIndexer.h"
 #include "sltk/levelset/CutOff.h"
 
@@ -85,6 +84,19 @@ void compact(const Context& ctx, Index n, Keep keep, Item item, NodeList& out)
     },
     out);
 }
+
+/// write(list) fills `output` in place, or a new list swapped in when `output`
+/// is also an input of the call (`isInput`), which write() reads while it writes.
+template <class Write>
+void writeList(NodeList& output, bool isInput, Write write)
+{
+  NodeList fresh;
+  write(isInput ? fresh : output);
+  if (isInput)
+  {
+    output.swap(fresh);
+  }
+}
 } // namespace
 
 template <int D>
@@ -129,16 +141,14 @@ void filterBand(
   const GridField<D, double>& phi, const NodeList& candidates, double gamma, const Context& ctx, NodeList& band)
 {
   const double* p = phi.storage().data();
-  NodeList fresh; // when the output is the input, a new list swapped in
-  NodeList& out = &band == &candidates ? fresh : band;
-  compact(
-    ctx, static_cast<Index>(candidates.size()),
-    [&](Index j) { return std::fabs(p[storageOffset(phi, candidates[static_cast<size_t>(j)])]) < gamma; },
-    [&](Index j) { return candidates[static_cast<size_t>(j)]; }, out);
-  if (&out == &fresh)
-  {
-    band.swap(fresh);
-  }
+  writeList(band, &band == &candidates,
+    [&](NodeList& out)
+    {
+      compact(
+        ctx, static_cast<Index>(candidates.size()),
+        [&](Index j) { return std::fabs(p[storageOffset(phi, candidates[static_cast<size_t>(j)])]) < gamma; },
+        [&](Index j) { return candidates[static_cast<size_t>(j)]; }, out);
+    });
 }
 
 namespace
@@ -299,7 +309,8 @@ void dilateBand(
   // dilation a second time beside the run's other per-node arrays
   // (Documentation/Profile.md, "Page faults of the per-iteration arrays").
   const Index grain = std::max<Index>(16, (lines + 63) / 64);
-  const auto sweepLines = [&](Index b, Index e, bool write, Index* to)
+  // The lines [b, e): their nodes written at `to`, or only counted when it is null.
+  const auto sweepLines = [&](Index b, Index e, Index* to)
   {
     std::vector<std::uint8_t> marks(static_cast<size_t>(nx), 0);
     Index count = 0;
@@ -312,7 +323,7 @@ void dilateBand(
         if (marks[static_cast<size_t>(x)])
         {
           marks[static_cast<size_t>(x)] = 0;
-          if (write)
+          if (to)
           {
             to[count] = r * nx + x;
           }
@@ -322,15 +333,13 @@ void dilateBand(
     }
     return count;
   };
-  NodeList fresh; // when the output is an input, a new list swapped in
-  NodeList& out = &dilated == &band || &dilated == more ? fresh : dilated;
-  compactChunks(
-    ctx, lines, grain, [&](Index b, Index e) { return sweepLines(b, e, false, nullptr); },
-    [&](Index b, Index e, Index* to) { sweepLines(b, e, true, to); }, out);
-  if (&out == &fresh)
-  {
-    dilated.swap(fresh);
-  }
+  writeList(dilated, &dilated == &band || &dilated == more,
+    [&](NodeList& out)
+    {
+      compactChunks(
+        ctx, lines, grain, [&](Index b, Index e) { return sweepLines(b, e, nullptr); },
+        [&](Index b, Index e, Index* to) { sweepLines(b, e, to); }, out);
+    });
 }
 
 template <int D>
