@@ -9,6 +9,7 @@
 ///    the domain are projected (clipped) onto it before interpolation;
 ///  - Periodic: N distinct nodes, dx = L / N, node N is node 0.
 
+#include "sltk/core/AlwaysInline.h"
 #include "sltk/core/Index.h"
 #include "sltk/core/Status.h"
 
@@ -112,19 +113,22 @@ inline GridSpec<D> uniformBox(Index n, double lo, double hi, Boundary boundary =
   return g;
 }
 
-/// Cell containing a point plus local coordinates in [0, 1] per axis.
+/// Cell containing a point plus local coordinates in [0, 1] per axis. Left
+/// unset until locate() fills it: the interpolators keep small arrays of them
+/// in their inner loops, where zeroing them first costs more than the rest of
+/// the loop's bookkeeping (Documentation/Profile.md).
 template <int D>
 struct CellLocation
 {
-  std::array<Index, D> Cell{};
-  std::array<double, D> Local{};
+  std::array<Index, D> Cell;
+  std::array<double, D> Local;
 };
 
 /// Locates the coordinate x along one axis: the cell index and the local
 /// coordinate in [0, 1] of locate() below (the axes are independent, so a
 /// grid-to-grid resampling can tabulate them once per axis).
 template <int D>
-inline void locateAxis(const GridSpec<D>& g, int a, double x, Index& cell, double& local)
+SLTK_ALWAYS_INLINE void locateAxis(const GridSpec<D>& g, int a, double x, Index& cell, double& local)
 {
   const double n = static_cast<double>(g.Dims[a]);
   double s = g.indexCoordinate(a, x);
@@ -162,7 +166,7 @@ inline void locateAxis(const GridSpec<D>& g, int a, double x, Index& cell, doubl
 /// axes wrap x into [x_0, x_0 + N dx). Exact at nodes: a point within
 /// 1e-10 cells of a node gets that node's integer coordinate.
 template <int D>
-inline CellLocation<D> locate(const GridSpec<D>& g, const double* x)
+SLTK_ALWAYS_INLINE CellLocation<D> locate(const GridSpec<D>& g, const double* x)
 {
   CellLocation<D> loc;
   for (int a = 0; a < D; ++a)
