@@ -239,39 +239,25 @@ Status thinOnRanks(OwnedPoints<D>& points, double cell, const Communicator& comm
   // the others are placed once in rank order (counted first): the records are
   // one copy of the points (two for a moment as the received ones join them),
   // where per-rank lists, the send buffer and the received copy were three.
-  const size_t ranks = static_cast<size_t>(comm.size()), me = static_cast<size_t>(comm.rank());
-  std::vector<std::int64_t> counts(ranks, 0);
+  const size_t ranks = static_cast<size_t>(comm.size());
   const auto rankOf = [&](const std::array<double, D>& x)
   { return static_cast<size_t>(averager(cells.along(axis, x[axis]))); };
-  for (size_t j = 0; j < points.Ids.size(); ++j)
-  {
-    if (points.Mine[j])
-    {
-      ++counts[rankOf(points.Cloud.Points[j])];
-    }
-  }
+  std::vector<std::int64_t> counts;
   std::vector<CellPoint<D>> mine;
-  mine.reserve(static_cast<size_t>(counts[me]));
-  counts[me] = 0;
-  std::vector<size_t> next = startsOf(counts);
-  std::vector<CellPoint<D>> send(next[ranks]);
-  for (size_t j = 0; j < points.Ids.size(); ++j)
-  {
-    if (points.Mine[j])
+  std::vector<CellPoint<D>> send = groupByRank<CellPoint<D>>(
+    ranks, counts,
+    [&](const auto& emit)
     {
-      const auto& x = points.Cloud.Points[j];
-      const size_t r = rankOf(x);
-      const CellPoint<D> record{ cells.number(x), points.Ids[j], x };
-      if (r == me)
+      for (size_t j = 0; j < points.Ids.size(); ++j)
       {
-        mine.push_back(record);
+        if (points.Mine[j])
+        {
+          const auto& x = points.Cloud.Points[j];
+          emit(rankOf(x), [&](size_t) { return CellPoint<D>{ cells.number(x), points.Ids[j], x }; });
+        }
       }
-      else
-      {
-        send[next[r]++] = record;
-      }
-    }
-  }
+    },
+    comm.rank(), &mine);
   const SlabCuts cuts = points.Cuts;
   const double halo = points.Halo;
   points = OwnedPoints<D>(); // the records hold them; the means replace them

@@ -145,34 +145,24 @@ Status exchange(const std::vector<std::array<double, D>>& points, const std::vec
   }
   const size_t ranks = static_cast<size_t>(comm.size());
   const int axis = cuts.Axis;
-  std::vector<std::int64_t> counts(ranks, 0);
-  for (const auto& p : points)
-  {
-    holdersOf(p[axis], cuts, halo, [&](int r) { ++counts[static_cast<size_t>(r)]; });
-  }
   // The points this rank keeps stay out of the exchange: a share read near its owner's slab
   // (a file written along the slabs' axis) moves little and is not copied twice more.
   const int me = comm.rank();
+  std::vector<std::int64_t> counts;
   std::vector<PointRecord<D>> kept;
-  kept.reserve(static_cast<size_t>(counts[static_cast<size_t>(me)]));
-  counts[static_cast<size_t>(me)] = 0;
-  std::vector<size_t> next = startsOf(counts);
-  std::vector<PointRecord<D>> send(next[ranks]);
-  for (size_t j = 0; j < points.size(); ++j)
-  {
-    holdersOf(points[j][axis], cuts, halo,
-      [&](int r)
+  std::vector<PointRecord<D>> send = groupByRank<PointRecord<D>>(
+    ranks, counts,
+    [&](const auto& emit)
+    {
+      for (size_t j = 0; j < points.size(); ++j)
       {
-        if (r == me)
-        {
-          kept.push_back({ ids[j], points[j] });
-        }
-        else
-        {
-          send[next[static_cast<size_t>(r)]++] = { ids[j], points[j] };
-        }
-      });
-  }
+        holdersOf(points[j][axis], cuts, halo,
+          [&](int r) {
+            emit(static_cast<size_t>(r), [&](size_t) { return PointRecord<D>{ ids[j], points[j] }; });
+          });
+      }
+    },
+    me, &kept);
   std::vector<size_t> parts;
   std::vector<PointRecord<D>> records = exchangeRecords(send, counts, comm, parts);
   send = {};
@@ -324,28 +314,24 @@ Status nearestOwnedOnRanks(const OwnedPoints<D>& points, const std::vector<Neigh
     first = points.Cuts.ownerOf(q.X[axis] - q.Radius - margin);
     last = points.Cuts.ownerOf(q.X[axis] + q.Radius + margin);
   };
-  std::vector<std::int64_t> counts(ranks, 0);
-  for (const auto& q : requests)
-  {
-    int first = 0, last = 0;
-    reached(q, first, last);
-    for (int r = first; r <= last; ++r)
+  std::vector<std::int64_t> counts;
+  const std::vector<RequestRecord<D>> send = groupByRank<RequestRecord<D>>(ranks, counts,
+    [&](const auto& emit)
     {
-      ++counts[static_cast<size_t>(r)];
-    }
-  }
-  std::vector<size_t> next = startsOf(counts);
-  std::vector<RequestRecord<D>> send(next[ranks]);
-  for (size_t i = 0; i < requests.size(); ++i)
-  {
-    const auto& q = requests[i];
-    int first = 0, last = 0;
-    reached(q, first, last);
-    for (int r = first; r <= last; ++r)
-    {
-      send[next[static_cast<size_t>(r)]++] = { q.X, q.Radius, q.Id, static_cast<std::int64_t>(i), q.Neighbours };
-    }
-  }
+      for (size_t i = 0; i < requests.size(); ++i)
+      {
+        const auto& q = requests[i];
+        int first = 0, last = 0;
+        reached(q, first, last);
+        for (int r = first; r <= last; ++r)
+        {
+          emit(static_cast<size_t>(r),
+            [&](size_t) {
+              return RequestRecord<D>{ q.X, q.Radius, q.Id, static_cast<std::int64_t>(i), q.Neighbours };
+            });
+        }
+      }
+    });
   std::vector<size_t> parts;
   const std::vector<RequestRecord<D>> asked = exchangeRecords(send, counts, comm, parts);
   // Each request's nearest owned points, back to the rank that asked.
@@ -424,28 +410,35 @@ Status valuesFromOwners(const OwnedPoints<D>& points, const std::vector<double>&
     return j >= 0 && found ? held[static_cast<size_t>(j)] : missing;
   };
   out.assign(wanted.size(), missing);
-  std::vector<std::int64_t> counts(ranks, 0);
   std::vector<int> owner(wanted.size());
   for (size_t i = 0; i < wanted.size(); ++i)
   {
     owner[i] = points.Cuts.ownerOf(wanted[i].X[static_cast<size_t>(points.Cuts.Axis)]);
-    counts[static_cast<size_t>(owner[i])] += owner[i] == me ? 0 : 1;
-  }
-  // The indices to each owner in `wanted`'s order; the values come back in the order asked.
-  std::vector<size_t> next = startsOf(counts);
-  std::vector<std::int64_t> send(next[ranks]);
-  std::vector<size_t> asked(next[ranks]);
-  for (size_t i = 0; i < wanted.size(); ++i)
-  {
     if (owner[i] == me)
     {
       out[i] = lookUp(wanted[i].Id);
-      continue;
     }
-    const size_t at = next[static_cast<size_t>(owner[i])]++;
-    send[at] = wanted[i].Id;
-    asked[at] = i;
   }
+  // The others' indices to each owner in `wanted`'s order (asked[slot]: their place there);
+  // the values come back in the order asked.
+  std::vector<size_t> asked(wanted.size());
+  std::vector<std::int64_t> counts;
+  const std::vector<std::int64_t> send = groupByRank<std::int64_t>(ranks, counts,
+    [&](const auto& emit)
+    {
+      for (size_t i = 0; i < wanted.size(); ++i)
+      {
+        if (owner[i] != me)
+        {
+          emit(static_cast<size_t>(owner[i]),
+            [&](size_t slot)
+            {
+              asked[slot] = i;
+              return wanted[i].Id;
+            });
+        }
+      }
+    });
   std::vector<size_t> parts;
   const std::vector<std::int64_t> ids = exchangeRecords(send, counts, comm, parts);
   std::vector<double> answers(ids.size());
@@ -616,24 +609,24 @@ Status pointsInIntervals(const OwnedPoints<D>& points, const std::vector<double>
     ordered = ordered && intervals[r].Low >= intervals[r - 1].Low && intervals[r].High >= intervals[r - 1].High;
   }
   const size_t ranks = intervals.size();
-  std::vector<std::int64_t> counts(ranks, 0);
-  const auto forEachOwned = [&](auto&& f)
-  {
-    for (size_t j = 0; j < points.Mine.size(); ++j)
+  std::vector<std::int64_t> counts;
+  const std::vector<ValuedPointRecord<D>> send = groupByRank<ValuedPointRecord<D>>(ranks, counts,
+    [&](const auto& emit)
     {
-      if (points.Mine[j])
+      for (size_t j = 0; j < points.Mine.size(); ++j)
       {
-        intervalsHolding(points.Cloud.Points[j][static_cast<size_t>(axis)], intervals, ordered,
-          [&](int r) { f(j, static_cast<size_t>(r)); });
+        if (points.Mine[j])
+        {
+          intervalsHolding(points.Cloud.Points[j][static_cast<size_t>(axis)], intervals, ordered,
+            [&](int r)
+            {
+              emit(static_cast<size_t>(r),
+                [&](size_t) {
+                  return ValuedPointRecord<D>{ points.Ids[j], points.Cloud.Points[j], valued ? values[j] : 0.0 };
+                });
+            });
+        }
       }
-    }
-  };
-  forEachOwned([&](size_t, size_t r) { ++counts[r]; });
-  std::vector<size_t> next = startsOf(counts);
-  std::vector<ValuedPointRecord<D>> send(next.back());
-  forEachOwned(
-    [&](size_t j, size_t r) {
-      send[next[r]++] = { points.Ids[j], points.Cloud.Points[j], valued ? values[j] : 0.0 };
     });
   std::vector<size_t> parts;
   std::vector<ValuedPointRecord<D>> records = exchangeRecords(send, counts, comm, parts);
