@@ -269,6 +269,35 @@ struct StepLanes
   }
 };
 
+/// The feet of a node through a cache that builds the cells they miss together,
+/// in SIMD lanes (CWENO: CellCache::evaluate(), the values and builds of one
+/// foot at a time): every foot finite and, on a slab window, inside it; false
+/// otherwise, and for the caches of the other interpolators.
+template <class Interp, int D, class Cache, size_t P>
+bool tryEvalInCache(Cache& cache, const GridSpec<D>& spec, const FarFeet<D>* far,
+  const std::array<std::array<double, D>, P>& x, double* values)
+{
+  if constexpr (!Cache::StoresPolynomials)
+  {
+    return false;
+  }
+  else
+  {
+    static_assert(P <= Cache::PointLanes, "the feet of a node are evaluated together");
+    if (!feetInWindow<Interp, D>(spec, far, x))
+    {
+      return false;
+    }
+    const double* points[P];
+    for (size_t j = 0; j < P; ++j)
+    {
+      points[j] = x[j].data();
+    }
+    cache.evaluate(static_cast<int>(P), points, values);
+    return true;
+  }
+}
+
 /// The feet of a node in the lanes of `LanesOfFeet` (Weno3Lanes, LsqQ1Lanes).
 template <class Interp, int D, class LanesOfFeet>
 struct StepInLanes
@@ -352,7 +381,7 @@ Status levelSetStepValues(const Context& ctx, GridField<D>& phi, const GridField
       // CWENO: the polynomial of a cell serves all the feet that fall in it (CellCache.h);
       // Q1/WENO3 prepare cheaply, one cell is enough. Results do not depend on the size.
       CellCache<Interp, detail::IsCwenoInterpolator<Interp>::value ? 1024 : 1> interpolateAt(prototype, phi);
-      detail::StepLanes<Interp, D> lanes(phi); // WENO3: all the feet of a node at once
+      detail::StepLanes<Interp, D> lanes(phi); // WENO3, least-squares Q1: all the feet of a node at once
       ChunkFeet chunkFar;
       double failures = 0.0;
       for (Index k = b; k < e; ++k)
@@ -403,7 +432,8 @@ Status levelSetStepValues(const Context& ctx, GridField<D>& phi, const GridField
           detail::tangentFeet<D>(x0, spread, sigma, x);
           std::array<double, Points> feet;
           bool farNode = false;
-          if (!lanes.tryEval(spec, far, x, feet.data()))
+          if (!lanes.tryEval(spec, far, x, feet.data()) &&
+            !detail::tryEvalInCache<Interp, D>(interpolateAt, spec, far, x, feet.data()))
           {
             for (int j = 0; j < Points; ++j)
             {
