@@ -5,6 +5,7 @@
 /// (Communicator::allToAllRecords): each rank's records counted first, then
 /// placed once (groupByRank: PointOwners.cxx, CloudThinning.cxx).
 
+#include <cassert>
 #include <cstdint>
 #include <vector>
 
@@ -28,11 +29,13 @@ inline std::vector<size_t> startsOf(const std::vector<std::int64_t>& counts)
 /// them (`counts`, one per rank), the second stores make(slot) at the record's slot in the
 /// buffer (make may note the slot elsewhere). The records for rank `kept` (when it is >= 0) go
 /// to `keptRecords` instead, slot the index there, and stay out of the exchange: counts[kept]
-/// is 0, so a share read near its own slab is not copied through the buffers.
+/// is 0, so the records a rank keeps (a share read near its own slab, the cells it averages)
+/// are not copied through the buffers.
 template <class Record, class Visit>
 std::vector<Record> groupByRank(size_t ranks, std::vector<std::int64_t>& counts, const Visit& visit, int kept = -1,
   std::vector<Record>* keptRecords = nullptr)
 {
+  assert(kept < 0 || (keptRecords && static_cast<size_t>(kept) < ranks));
   counts.assign(ranks, 0);
   visit([&](size_t r, const auto&) { ++counts[r]; });
   if (kept >= 0)

@@ -10,6 +10,8 @@
 /// lanes run as AVX2 when the processor has it (one run-time test), as SSE2
 /// pairs otherwise; elsewhere as the compiler vectorises them.
 
+#include "sltk/core/AlwaysInline.h"
+
 #include <cmath>
 #if defined(__GNUC__) && defined(__x86_64__)
 #include <emmintrin.h> // SSE2, part of every x86-64 processor
@@ -19,11 +21,7 @@ namespace sltk
 {
 namespace lanes
 {
-#if defined(__GNUC__)
-#define SLTK_LANES_INLINE inline __attribute__((always_inline))
-#else
-#define SLTK_LANES_INLINE inline
-#endif
+#define SLTK_LANES_INLINE SLTK_ALWAYS_INLINE
 
 // x86-64 only: on i386 the scalar code may keep x87 excess precision.
 #if defined(__GNUC__) && defined(__x86_64__)

@@ -232,7 +232,7 @@ void joinFarFeet(std::map<Index, ChunkFeet<D>>& farByChunk, FarFeet<D>& far)
 namespace detail
 {
 /// Whether every foot of a node, `x`, is finite and, on a slab window (`far`),
-/// inside it (StepLanes).
+/// inside it (StepLanes, tryEvalInCache).
 template <class Interp, int D, size_t P>
 bool feetInWindow(const GridSpec<D>& spec, const FarFeet<D>* far, const std::array<std::array<double, D>, P>& x)
 {
@@ -257,7 +257,8 @@ bool feetInWindow(const GridSpec<D>& spec, const FarFeet<D>* far, const std::arr
 /// (WENO3: Weno3Lanes.h; the least-squares Q1: LsqQ1Lanes.h, straight from phi;
 /// the values of the interpolator bit for bit): every foot finite and, on a slab
 /// window, inside it. tryEval() returns false otherwise, and for the other
-/// interpolators, and the step then takes the feet one by one.
+/// interpolators; the step then tries the cell cache's lanes (tryEvalInCache:
+/// CWENO), else takes the feet one by one.
 template <class Interp, int D>
 struct StepLanes
 {

@@ -70,14 +70,13 @@ constexpr double MaximumTimeSteps = 1e6;
 /// and the largest step (at most MaximumTimeSteps steps), then dt = span /
 /// slStepCount(span, maxDt). `solver`
 /// names the caller in the messages (e.g. "SL advection").
-inline Status planTimeSteps(
-  const char* solver, double start, double final, double maxDt, Index& steps, double& dt)
+inline Status planTimeSteps(const char* solver, double start, double final, double maxDt, Index& steps, double& dt)
 {
   const double span = final - start;
   if (!(span > 0.0) || !std::isfinite(span))
   {
-    return Status::invalidArgument(std::string(solver) + " needs FinalTime > StartTime, got [" +
-      std::to_string(start) + ", " + std::to_string(final) + "]");
+    return Status::invalidArgument(std::string(solver) + " needs FinalTime > StartTime, got [" + std::to_string(start) +
+      ", " + std::to_string(final) + "]");
   }
   if (!(maxDt > 0.0) || !std::isfinite(maxDt))
   {
@@ -116,13 +115,15 @@ inline void nextNode(const GridSpec<D>& spec, std::array<Index, std::size_t(D)>&
 /// One step (2.36) with a compile-time tableau; returns the number of
 /// non-finite values written to `next`.
 template <class Interp, int S, class Velocity, class Source>
-double linearSLKernel(const Context& ctx, const ButcherTableau<S>& tableau, const GridField<Interp::Dim, double>& current,
-  GridField<Interp::Dim, double>& next, double tNext, double dt, const Velocity& f, const Source& g)
+double linearSLKernel(const Context& ctx, const ButcherTableau<S>& tableau,
+  const GridField<Interp::Dim, double>& current, GridField<Interp::Dim, double>& next, double tNext, double dt,
+  const Velocity& f, const Source& g)
 {
   constexpr int D = Interp::Dim;
   const GridSpec<D>& spec = current.spec();
   // (3.8) with f_D = -f: the thesis's dynamics of the backward characteristic.
-  auto dynamics = [&f](double t, const std::array<double, D>& x, int) {
+  auto dynamics = [&f](double t, const std::array<double, D>& x, int)
+  {
     std::array<double, D> v = f(t, x);
     for (int a = 0; a < D; ++a)
     {
@@ -130,8 +131,10 @@ double linearSLKernel(const Context& ctx, const ButcherTableau<S>& tableau, cons
     }
     return v;
   };
-  auto body = [&](Index begin, Index end) -> double {
-    Interp interp(current); // one per chunk: interpolators hold per-cell scratch
+  const Interp prototype(current); // copied per chunk: CWENO's indicator forms are built once
+  auto body = [&](Index begin, Index end) -> double
+  {
+    Interp interp(prototype); // one per chunk: interpolators hold per-cell scratch
     CharacteristicStages<D, S> stages;
     double nonFinite = 0.0;
     std::array<Index, D> i = current.nodeIndex(begin); // then advanced x fastest, without divisions
@@ -144,11 +147,12 @@ double linearSLKernel(const Context& ctx, const ButcherTableau<S>& tableau, cons
         finiteFoot = finiteFoot && std::isfinite(stages.Foot[a]);
       }
       // A non-finite foot cannot be located: report it instead of reading memory.
-      double value = finiteFoot ? interpolate(interp, spec, stages.Foot.data()) : std::numeric_limits<double>::quiet_NaN();
+      double value =
+        finiteFoot ? interpolate(interp, spec, stages.Foot.data()) : std::numeric_limits<double>::quiet_NaN();
       if constexpr (!std::is_same_v<Source, NoSource>)
       {
-        value += stageQuadrature(tableau, stages, dt,
-          [&g](double t, const std::array<double, D>& x, int) { return g(t, x); });
+        value +=
+          stageQuadrature(tableau, stages, dt, [&g](double t, const std::array<double, D>& x, int) { return g(t, x); });
       }
       if (!std::isfinite(value))
       {
@@ -206,9 +210,8 @@ Status linearSLStep(const Context& ctx, RkOrder order, GridField<Interp::Dim, do
     next.resize(current.spec(), current.ghost());
   }
   current.fillGhosts();
-  const double nonFinite = withTableau(order, [&](const auto& tableau) {
-    return detail::linearSLKernel<Interp>(ctx, tableau, current, next, tNext, dt, f, g);
-  });
+  const double nonFinite = withTableau(order,
+    [&](const auto& tableau) { return detail::linearSLKernel<Interp>(ctx, tableau, current, next, tNext, dt, f, g); });
   if (nonFinite > 0.0)
   {
     return Status::numericalFailure(std::to_string(static_cast<Index>(nonFinite)) +
