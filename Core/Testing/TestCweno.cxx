@@ -14,8 +14,10 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <mutex>
 #include <random>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 namespace
@@ -596,6 +598,46 @@ TEST(Cweno, IndicatorMatricesMatchThesis1D)
   EXPECT_NEAR(m.entry(2, 2) * 0.01, 4.0, 1e-12);
   EXPECT_NEAR(m.entry(2, 3) * 0.01, 6.0, 1e-12);
   EXPECT_NEAR(m.entry(3, 3) * 0.01, 48.0, 1e-12);
+}
+
+TEST(Cweno, IndicatorFormsOfOneGridAreBuiltOnceAndShared)
+{
+  using Form = sltk::cweno::IndicatorForm<3, 4>;
+  const std::array<double, 3> h{ 0.1, 0.1, 0.2 };
+  const double delta = std::sqrt(0.06);
+  const Form first(h, delta);
+  const Form second(h, delta); // the same spacing and Delta: the first's entries
+  const Form copy(second);
+  const Form other({ 0.1, 0.1, 0.1 }, delta);
+  EXPECT_TRUE(first.sharesEntriesWith(second));
+  EXPECT_TRUE(first.sharesEntriesWith(copy));
+  EXPECT_FALSE(first.sharesEntriesWith(other));
+  EXPECT_NE(first.entry(63, 63), other.entry(63, 63));
+  // Forms built on several threads at once are one set of entries, and the values of one built alone.
+  std::vector<Form> built;
+  std::mutex guard;
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+  {
+    threads.emplace_back(
+      [&]
+      {
+        const Form f({ 0.3, 0.2, 0.1 }, 0.5);
+        const std::lock_guard<std::mutex> lock(guard);
+        built.push_back(f);
+      });
+  }
+  for (std::thread& t : threads)
+  {
+    t.join();
+  }
+  for (const Form& f : built)
+  {
+    EXPECT_TRUE(f.sharesEntriesWith(built.front()));
+  }
+  const double kept = built.front().entry(21, 42);
+  built.clear(); // no form holds them any more: the next is built again, to the same values
+  EXPECT_EQ(Form({ 0.3, 0.2, 0.1 }, 0.5).entry(21, 42), kept);
 }
 
 TEST(Cweno, IndicatorMatricesMatchThesisAppendix2D)

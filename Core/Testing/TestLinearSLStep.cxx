@@ -352,6 +352,47 @@ TEST(LinearSLStep, SerialAndThreadedResultsAreBitIdentical)
   expectSerialEqualsThreaded<sltk::CwenoInterpolator<2, sltk::CwenoVariant::CwenoZ>>();
 }
 
+/// One CWENO step (its feet interpolated through the cell cache, four nodes at
+/// a time) against the same step node by node with sltk::interpolate().
+template <class Interp>
+void expectCachedFeetAsNodeByNode(double courant)
+{
+  const auto g = sltk::uniformBox<2>(41, 0.0, 1.0);
+  auto init = [](const std::array<double, 2>& x) { return sltk::rotatingBump(x[0], x[1]); };
+  auto u = sltktest::sampleNodes(g, 2, init);
+  sltk::GridField<2> next;
+  const double dt = courant * g.Spacing[0];
+  const double tNext = 0.25 + dt;
+  ASSERT_TRUE(sltk::linearSLStep<Interp>(sltk::Context{}, sltk::RkOrder::Kutta3, u, next, tNext, dt, test1Velocity,
+    [](double t, const std::array<double, 2>& x) {
+      return t * x[0] - x[1];
+    }).isOk());
+  Interp interp(u);
+  sltk::CharacteristicStages<2, 3> stages;
+  const auto tableau = sltk::kutta3Tableau();
+  auto backward = [](double t, const std::array<double, 2>& x, int)
+  {
+    std::array<double, 2> v = test1Velocity(t, x);
+    return std::array<double, 2>{ -v[0], -v[1] };
+  };
+  size_t differing = 0;
+  for (sltk::Index k = 0; k < g.nodeCount(); ++k)
+  {
+    const auto i = u.nodeIndex(k);
+    sltk::traceCharacteristic(tableau, sltk::nodePoint(g, i), tNext, dt, backward, stages);
+    const double source = sltk::stageQuadrature(
+      tableau, stages, dt, [](double t, const std::array<double, 2>& x, int) { return t * x[0] - x[1]; });
+    differing += next(i) != sltk::interpolate(interp, g, stages.Foot.data()) + source ? 1 : 0;
+  }
+  EXPECT_EQ(differing, 0u);
+}
+
+TEST(LinearSLStep, CwenoFeetThroughTheCellCacheAreTheNodeByNodeValuesBitForBit)
+{
+  expectCachedFeetAsNodeByNode<sltk::CwenoInterpolator<2, sltk::CwenoVariant::Cweno>>(0.7);
+  expectCachedFeetAsNodeByNode<sltk::CwenoInterpolator<2, sltk::CwenoVariant::CwenoZ>>(3.0);
+}
+
 TEST(LinearSLStep, InterrupterAbortsBetweenSteps)
 {
   const auto g = sltk::uniformBox<2>(21, 0.0, 1.0);

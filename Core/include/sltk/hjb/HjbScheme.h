@@ -86,58 +86,6 @@ void hjbInitialize(const Problem& problem, GridField<Problem::Dim, double>& u)
 namespace detail
 {
 
-/// The nodes from index i (of `begin`) to `end` of hjbKernel() when the
-/// minimisation has one candidate (ControlMinimizer::onlyCandidate(), Test 1):
-/// trace(x, stages) traces the node's foot (false: it cannot be located),
-/// finish(i, x, stages, value, located) completes the node (value: I[U] at the
-/// foot if located). The feet of
-/// CellCache::PointLanes nodes are interpolated together (CellCache::evaluate():
-/// the CWENO cells missing are built together), the same values and counts as
-/// node after node. Returns the evaluations.
-template <class Cache, class Stages, class Trace, class Finish>
-double hjbOnlyCandidateNodes(Cache& cache, const GridSpec<Cache::Dim>& spec, std::array<Index, Cache::Dim> i,
-  Index begin, Index end, Trace&& trace, Finish&& finish)
-{
-  constexpr int D = Cache::Dim;
-  constexpr int L = Cache::PointLanes;
-  for (Index node = begin; node < end;)
-  {
-    const int count = static_cast<int>(std::min<Index>(L, end - node));
-    std::array<std::array<Index, D>, L> at;
-    std::array<std::array<double, D>, L> x;
-    std::array<Stages, L> stages;
-    std::array<double, L> value;
-    std::array<bool, L> ok;
-    const double* feet[L];
-    int lane[L];
-    int located = 0;
-    for (int l = 0; l < count; ++l, nextNode(spec, i))
-    {
-      at[l] = i;
-      x[l] = nodePoint(spec, i);
-      value[l] = std::numeric_limits<double>::infinity(); // cannot be located: not a candidate
-      ok[l] = trace(x[l], stages[l]);
-      if (ok[l])
-      {
-        feet[located] = stages[l].Foot.data();
-        lane[located++] = l;
-      }
-    }
-    double found[L];
-    cache.evaluate(located, feet, found);
-    for (int m = 0; m < located; ++m)
-    {
-      value[lane[m]] = found[m];
-    }
-    for (int l = 0; l < count; ++l)
-    {
-      finish(at[l], x[l], stages[l], value[l], ok[l]);
-    }
-    node += count;
-  }
-  return static_cast<double>(end - begin);
-}
-
 /// One step of (3.7) with compile-time stage count S and cache size K; fills
 /// `work` = {evaluations, builds, non-finite values}.
 template <class Interp, int K, int S, class Problem>
@@ -209,7 +157,7 @@ void hjbKernel(const Context& ctx, const ButcherTableau<S>& tableau, const Minim
     std::array<Index, D> i = current.nodeIndex(begin);
     if (only != nullptr)
     {
-      local[0] = hjbOnlyCandidateNodes<CellCache<Interp, K>, Stages>(
+      local[0] = oneFootNodes<CellCache<Interp, K>, Stages>(
         cache, spec, i, begin, end, [&](const Point& x, Stages& st) { return traceFoot(x, *only, st); },
         [&](const std::array<Index, D>& at, const Point& x, const Stages& st, double v, bool located)
         {
@@ -312,7 +260,7 @@ struct FixedRkOrder<Problem, std::void_t<decltype(Problem::FixedOrder)>>
 /// CellCacheSize 0: 4096 CWENO/CWENOZ polynomials (their builds are the
 /// expensive part), 256 for the others (an interpolator object per entry).
 template <class Interp>
-struct AutomaticCellCache : std::integral_constant<int, IsCwenoInterpolator<Interp>::value ? 4096 : 256>
+struct AutomaticCellCache : std::integral_constant<int, IsCwenoInterpolator<Interp>::value ? CwenoCellCacheSize : 256>
 {
 };
 

@@ -41,6 +41,10 @@ struct IsCwenoInterpolator<CwenoInterpolator<D, V>> : std::true_type
 {
 };
 
+/// The cache size for CWENO/CWENOZ when nothing else is asked: 4096 stored
+/// polynomials (their builds are the expensive part).
+constexpr int CwenoCellCacheSize = 4096;
+
 constexpr int log2Exact(int k)
 {
   int l = 0;
@@ -62,9 +66,8 @@ public:
   static constexpr bool Hashed = K > 8;
   static constexpr bool StoresPolynomials = Hashed && detail::IsCwenoInterpolator<Interp>::value;
 
-  /// K copies of an interpolator bound to the field (copying a prototype avoids
-  /// rebuilding per-grid constants such as the CWENO indicator forms, ~6% of a
-  /// Test 5 run when done per chunk).
+  /// K copies of an interpolator bound to the field (CWENO's copies share their
+  /// indicator forms: CwenoIndicator.h).
   CellCache(const Interp& prototype, const GridField<Dim, double>& field)
     : Spec(&field.spec())
     , Slots(StoresPolynomials ? 1 : K, prototype)

@@ -22,8 +22,12 @@
 #include "sltk/interp/CwenoPolynomial.h"
 #include "sltk/interp/Lanes.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
+#include <mutex>
+#include <utility>
 #include <vector>
 
 namespace sltk
@@ -62,7 +66,10 @@ constexpr int monomialDegree(int p)
 
 /// The quadratic form OSC = z^T M z of polynomials with N coefficients per axis
 /// (N = 4: the optimal polynomial, N = 3: the octant polynomials), for the given
-/// spacings and scaling length Delta. Built once per interpolator.
+/// spacings and scaling length Delta. Building M is O(N^(3D)) operations (about a
+/// millisecond in 3D), so the forms of one (spacing, Delta) are built once and
+/// shared by every interpolator of that grid alive at the time, whichever thread
+/// or chunk constructs them: a form is a pointer to read-only entries.
 template <int D, int N>
 class IndicatorForm
 {
@@ -70,8 +77,61 @@ public:
   static constexpr int Size = ipow(N, D);
 
   IndicatorForm(const std::array<double, D>& spacing, double delta)
-    : Matrix(static_cast<size_t>(Size) * Size, 0.0)
+    : Shared(sharedEntries(spacing, delta))
+    , Upper(Shared->Upper.data())
   {
+  }
+  IndicatorForm(const IndicatorForm& o)
+    : Shared(o.Shared)
+    , Upper(Shared->Upper.data())
+  {
+  }
+  IndicatorForm& operator=(const IndicatorForm& o)
+  {
+    this->Shared = o.Shared;
+    this->Upper = this->Shared->Upper.data();
+    return *this;
+  }
+
+private:
+  struct Entries
+  {
+    std::vector<double> Matrix; ///< dense M, row-major
+    std::vector<double> Upper;  ///< U: upper triangle of the active block, off-diagonal doubled, packed by columns
+  };
+
+  /// The entries of (spacing, delta): those of a live form with the same
+  /// values bit for bit, else built (and remembered while a form holds them).
+  static std::shared_ptr<const Entries> sharedEntries(const std::array<double, D>& spacing, double delta)
+  {
+    static std::mutex guard;
+    static std::vector<std::pair<std::array<double, D + 1>, std::weak_ptr<const Entries>>> known;
+    std::array<double, D + 1> key{};
+    std::copy(spacing.begin(), spacing.end(), key.begin());
+    key[D] = delta;
+    const std::lock_guard<std::mutex> lock(guard);
+    known.erase(
+      std::remove_if(known.begin(), known.end(), [](const auto& k) { return k.second.expired(); }), known.end());
+    for (const auto& k : known)
+    {
+      if (k.first == key)
+      {
+        if (std::shared_ptr<const Entries> live = k.second.lock())
+        {
+          return live;
+        }
+      }
+    }
+    std::shared_ptr<const Entries> built = build(spacing, delta);
+    known.emplace_back(key, built);
+    return built;
+  }
+
+  static std::shared_ptr<const Entries> build(const std::array<double, D>& spacing, double delta)
+  {
+    auto out = std::make_shared<Entries>();
+    std::vector<double>& matrix = out->Matrix;
+    matrix.assign(static_cast<size_t>(Size) * Size, 0.0);
     // c_alpha for every multi-index alpha with alpha_a <= N - 1 (alpha laid out like j).
     double weight[Size];
     for (int al = 0; al < Size; ++al)
@@ -123,12 +183,21 @@ public:
           }
           m += term;
         }
-        this->Matrix[static_cast<size_t>(p) * Size + q] = m;
+        matrix[static_cast<size_t>(p) * Size + q] = m;
       }
     }
-    this->pack();
+    constexpr std::array<int, ActiveCount> active = activeMonomials();
+    for (int j = 0; j < ActiveCount; ++j)
+    {
+      for (int i = 0; i <= j; ++i)
+      {
+        out->Upper.push_back((i == j ? 1.0 : 2.0) * matrix[static_cast<size_t>(active[i]) * Size + active[j]]);
+      }
+    }
+    return out;
   }
 
+public:
   /// Monomials of total degree >= 2: the rows of M that are not zero (the
   /// others have no derivative of order >= 2), in increasing index order.
   static constexpr int ActiveCount = []
@@ -183,7 +252,7 @@ public:
   template <int L, class T = double>
   SLTK_LANES_INLINE void ofActiveLanes(const T* y, T* osc) const
   {
-    const double* u = this->Upper.data();
+    const double* u = this->Upper;
     T r[ActiveCount][L] = {};
 #pragma GCC unroll 16
     for (int j = 0; j < ActiveCount; ++j)
@@ -213,25 +282,18 @@ public:
   /// M_pq (for tests and for printing the Appendix matrices).
   double entry(int p, int q) const
   {
-    return this->Matrix[static_cast<size_t>(p) * Size + q];
+    return this->Shared->Matrix[static_cast<size_t>(p) * Size + q];
+  }
+
+  /// Whether two forms read the same entries (built once: tests).
+  bool sharesEntriesWith(const IndicatorForm& o) const
+  {
+    return this->Shared == o.Shared;
   }
 
 private:
-  void pack()
-  {
-    constexpr std::array<int, ActiveCount> active = activeMonomials();
-    this->Upper.clear();
-    for (int j = 0; j < ActiveCount; ++j)
-    {
-      for (int i = 0; i <= j; ++i)
-      {
-        this->Upper.push_back((i == j ? 1.0 : 2.0) * this->entry(active[i], active[j]));
-      }
-    }
-  }
-
-  std::vector<double> Matrix; ///< dense M, row-major
-  std::vector<double> Upper;  ///< U: upper triangle of the active block, off-diagonal doubled, packed by columns
+  std::shared_ptr<const Entries> Shared;
+  const double* Upper; ///< Shared->Upper.data(), read by ofActiveLanes()
 };
 
 } // namespace cweno

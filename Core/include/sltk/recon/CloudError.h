@@ -37,13 +37,10 @@ double sumOverPoints(const GridField<D>& phi, const PointCloud<D>& cloud, const 
   Index endRow, Index rows, Term term)
 {
   const GridSpec<D>& g = phi.spec();
-  // Each chunk copies one interpolator: building one computes its per-grid constants
-  // (CWENO's indicator forms, O(4^(3D)) operations), copying only reads them.
-  const Interp prototype(phi);
   return ctx.parallelSum(0, cloud.size(),
     [&](Index b, Index e)
     {
-      Interp interp(prototype);
+      Interp interp(phi); // one per chunk: interpolators hold per-cell scratch
       double s = 0.0;
       for (Index k = b; k < e; ++k)
       {

@@ -18,9 +18,11 @@
 #include "sltk/core/Status.h"
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
+#include "sltk/interp/CellCache.h"
 #include "sltk/interp/Interpolator.h"
 #include "sltk/sl/Characteristics.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -112,6 +114,59 @@ inline void nextNode(const GridSpec<D>& spec, std::array<Index, std::size_t(D)>&
   }
 }
 
+/// The nodes from index i (of `begin`) to `end`, each with one foot: the
+/// linear SL step (2.36), and hjbKernel() when the minimisation has one
+/// candidate (ControlMinimizer::onlyCandidate(), Test 1). trace(x, stages)
+/// traces the node's foot (false: it cannot be located), finish(i, x, stages,
+/// value, located) completes the node (value: I[U] at the foot if located,
+/// else +infinity). The feet of CellCache::PointLanes nodes are interpolated
+/// together (CellCache::evaluate(): the CWENO cells missing are built
+/// together, Remarks 3.1-3.2), the same values and counts as node after node.
+/// Returns the evaluations.
+template <class Cache, class Stages, class Trace, class Finish>
+double oneFootNodes(Cache& cache, const GridSpec<Cache::Dim>& spec, std::array<Index, Cache::Dim> i, Index begin,
+  Index end, Trace&& trace, Finish&& finish)
+{
+  constexpr int D = Cache::Dim;
+  constexpr int L = Cache::PointLanes;
+  for (Index node = begin; node < end;)
+  {
+    const int count = static_cast<int>(std::min<Index>(L, end - node));
+    std::array<std::array<Index, D>, L> at;
+    std::array<std::array<double, D>, L> x;
+    std::array<Stages, L> stages;
+    std::array<double, L> value;
+    std::array<bool, L> ok;
+    const double* feet[L];
+    int lane[L];
+    int located = 0;
+    for (int l = 0; l < count; ++l, nextNode(spec, i))
+    {
+      at[l] = i;
+      x[l] = nodePoint(spec, i);
+      value[l] = std::numeric_limits<double>::infinity(); // cannot be located: not a candidate
+      ok[l] = trace(x[l], stages[l]);
+      if (ok[l])
+      {
+        feet[located] = stages[l].Foot.data();
+        lane[located++] = l;
+      }
+    }
+    double found[L];
+    cache.evaluate(located, feet, found);
+    for (int m = 0; m < located; ++m)
+    {
+      value[lane[m]] = found[m];
+    }
+    for (int l = 0; l < count; ++l)
+    {
+      finish(at[l], x[l], stages[l], value[l], ok[l]);
+    }
+    node += count;
+  }
+  return static_cast<double>(end - begin);
+}
+
 /// One step (2.36) with a compile-time tableau; returns the number of
 /// non-finite values written to `next`.
 template <class Interp, int S, class Velocity, class Source>
@@ -131,34 +186,55 @@ double linearSLKernel(const Context& ctx, const ButcherTableau<S>& tableau,
     }
     return v;
   };
-  const Interp prototype(current); // copied per chunk: CWENO's indicator forms are built once
+  // The foot (3.8) of node x; false when it is not finite (it cannot be located).
+  auto trace = [&](const std::array<double, D>& x, CharacteristicStages<D, S>& stages)
+  {
+    traceCharacteristic(tableau, x, tNext, dt, dynamics, stages);
+    bool finiteFoot = true;
+    for (int a = 0; a < D; ++a)
+    {
+      finiteFoot = finiteFoot && std::isfinite(stages.Foot[a]);
+    }
+    return finiteFoot;
+  };
+  // U^{n+1}_i of (2.36): I[U^n] at the foot (NaN, reported, where there is none) + G_i^n.
+  auto finish = [&](const std::array<Index, D>& i, const CharacteristicStages<D, S>& stages, double value, bool located,
+                  double& nonFinite)
+  {
+    value = located ? value : std::numeric_limits<double>::quiet_NaN();
+    if constexpr (!std::is_same_v<Source, NoSource>)
+    {
+      value +=
+        stageQuadrature(tableau, stages, dt, [&g](double t, const std::array<double, D>& x, int) { return g(t, x); });
+    }
+    if (!std::isfinite(value))
+    {
+      nonFinite += 1.0;
+    }
+    next(i) = value;
+  };
   auto body = [&](Index begin, Index end) -> double
   {
-    Interp interp(prototype); // one per chunk: interpolators hold per-cell scratch
-    CharacteristicStages<D, S> stages;
     double nonFinite = 0.0;
     std::array<Index, D> i = current.nodeIndex(begin); // then advanced x fastest, without divisions
-    for (Index k = begin; k < end; ++k, nextNode(spec, i))
+    if constexpr (IsCwenoInterpolator<Interp>::value)
     {
-      traceCharacteristic(tableau, nodePoint(spec, i), tNext, dt, dynamics, stages);
-      bool finiteFoot = true;
-      for (int a = 0; a < D; ++a)
+      // The cells' polynomials stored and built four at a time (Remarks 3.1-3.2): a
+      // node's foot falls in the cells of its neighbours' feet.
+      CellCache<Interp, CwenoCellCacheSize> cache(Interp(current), current);
+      oneFootNodes<decltype(cache), CharacteristicStages<D, S>>(cache, spec, i, begin, end, trace,
+        [&](const std::array<Index, D>& at, const std::array<double, D>&, const CharacteristicStages<D, S>& stages,
+          double value, bool located) { finish(at, stages, value, located, nonFinite); });
+    }
+    else
+    {
+      Interp interp(current); // one per chunk: interpolators hold per-cell scratch
+      CharacteristicStages<D, S> stages;
+      for (Index k = begin; k < end; ++k, nextNode(spec, i))
       {
-        finiteFoot = finiteFoot && std::isfinite(stages.Foot[a]);
+        const bool located = trace(nodePoint(spec, i), stages);
+        finish(i, stages, located ? interpolate(interp, spec, stages.Foot.data()) : 0.0, located, nonFinite);
       }
-      // A non-finite foot cannot be located: report it instead of reading memory.
-      double value =
-        finiteFoot ? interpolate(interp, spec, stages.Foot.data()) : std::numeric_limits<double>::quiet_NaN();
-      if constexpr (!std::is_same_v<Source, NoSource>)
-      {
-        value +=
-          stageQuadrature(tableau, stages, dt, [&g](double t, const std::array<double, D>& x, int) { return g(t, x); });
-      }
-      if (!std::isfinite(value))
-      {
-        nonFinite += 1.0;
-      }
-      next(i) = value;
     }
     return nonFinite;
   };
