@@ -607,13 +607,23 @@ TEST(Cweno, IndicatorFormsOfOneGridAreBuiltOnceAndShared)
   const double delta = std::sqrt(0.06);
   const Form first(h, delta);
   const Form second(h, delta); // the same spacing and Delta: the first's entries
-  const Form copy(second);
-  const Form other({ 0.1, 0.1, 0.1 }, delta);
+  Form assigned({ 0.1, 0.1, 0.1 }, delta);
+  const Form other(assigned);
+  assigned = second;
   EXPECT_TRUE(first.sharesEntriesWith(second));
-  EXPECT_TRUE(first.sharesEntriesWith(copy));
+  EXPECT_TRUE(first.sharesEntriesWith(assigned));
   EXPECT_FALSE(first.sharesEntriesWith(other));
+  EXPECT_FALSE(first.sharesEntriesWith(Form(h, 2.0 * delta)));
   EXPECT_NE(first.entry(63, 63), other.entry(63, 63));
-  // Forms built on several threads at once are one set of entries, and the values of one built alone.
+  double y[Form::ActiveCount];
+  for (int i = 0; i < Form::ActiveCount; ++i)
+  {
+    y[i] = std::sin(1.0 + i);
+  }
+  EXPECT_EQ(assigned.ofActive(y), first.ofActive(y)); // the assigned form reads the new entries
+  EXPECT_NE(other.ofActive(y), first.ofActive(y));
+
+  // Forms built on several threads at once are one set of entries.
   std::vector<Form> built;
   std::mutex guard;
   std::vector<std::thread> threads;
@@ -635,9 +645,30 @@ TEST(Cweno, IndicatorFormsOfOneGridAreBuiltOnceAndShared)
   {
     EXPECT_TRUE(f.sharesEntriesWith(built.front()));
   }
+  // Kept while no form holds them: chunks one after the other build them once.
   const double kept = built.front().entry(21, 42);
-  built.clear(); // no form holds them any more: the next is built again, to the same values
-  EXPECT_EQ(Form({ 0.3, 0.2, 0.1 }, 0.5).entry(21, 42), kept);
+  built.clear();
+  const std::uint64_t before = Form::builds();
+  for (int chunk = 0; chunk < 3; ++chunk)
+  {
+    EXPECT_EQ(Form({ 0.3, 0.2, 0.1 }, 0.5).entry(21, 42), kept);
+  }
+  EXPECT_EQ(Form::builds(), before);
+  // Past the KeptGrids most recent grids, a grid's forms are built again, to the same values.
+  for (size_t g = 0; g < Form::KeptGrids; ++g)
+  {
+    const Form f({ 0.3, 0.2, 0.1 }, 1.0 + static_cast<double>(g));
+  }
+  const Form again(h, delta);
+  EXPECT_FALSE(again.sharesEntriesWith(first));
+  EXPECT_EQ(Form::builds(), before + Form::KeptGrids + 1);
+  for (int p = 0; p < Form::Size; p += 7)
+  {
+    for (int q = 0; q < Form::Size; q += 5)
+    {
+      EXPECT_EQ(again.entry(p, q), first.entry(p, q));
+    }
+  }
 }
 
 TEST(Cweno, IndicatorMatricesMatchThesisAppendix2D)

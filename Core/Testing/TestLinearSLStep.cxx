@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include "sltk/exec/ThreadPool.h"
 #include "sltk/hjb/InitialData.h"
 #include "sltk/interp/Cweno.h"
 #include "sltk/interp/Q1.h"
@@ -11,6 +12,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <vector>
 
 namespace
@@ -353,44 +355,77 @@ TEST(LinearSLStep, SerialAndThreadedResultsAreBitIdentical)
 }
 
 /// One CWENO step (its feet interpolated through the cell cache, four nodes at
-/// a time) against the same step node by node with sltk::interpolate().
+/// a time, on two threads) against the same step node by node with
+/// sltk::interpolate(): the same finite values bit for bit, NaN where a foot is
+/// not finite (the velocity is NaN beyond x_0 = 0.8), and the same count of
+/// non-finite values in the status.
 template <class Interp>
-void expectCachedFeetAsNodeByNode(double courant)
+void expectCachedFeetAsNodeByNode(sltk::Index n, double courant)
 {
-  const auto g = sltk::uniformBox<2>(41, 0.0, 1.0);
-  auto init = [](const std::array<double, 2>& x) { return sltk::rotatingBump(x[0], x[1]); };
+  constexpr int D = Interp::Dim;
+  using Point = std::array<double, D>;
+  const auto g = sltk::uniformBox<D>(n, 0.0, 1.0);
+  auto init = [](const Point& x) { return sltk::rotatingBump(x[0], x[1]) + (D == 3 ? 0.3 * x[D - 1] : 0.0); };
   auto u = sltktest::sampleNodes(g, 2, init);
-  sltk::GridField<2> next;
+  auto velocity = [](double t, const Point& x)
+  {
+    Point v{};
+    const std::array<double, 2> r = test1Velocity(t, { x[0], x[1] });
+    v[0] = x[0] > 0.8 ? std::numeric_limits<double>::quiet_NaN() : r[0];
+    v[1] = r[1];
+    return v;
+  };
+  auto source = [](double t, const Point& x) { return t * x[0] - x[1]; };
+  sltk::ThreadPool two(2);
+  sltk::Context threaded;
+  threaded.Executor = &two;
+  sltk::GridField<D> next;
   const double dt = courant * g.Spacing[0];
   const double tNext = 0.25 + dt;
-  ASSERT_TRUE(sltk::linearSLStep<Interp>(sltk::Context{}, sltk::RkOrder::Kutta3, u, next, tNext, dt, test1Velocity,
-    [](double t, const std::array<double, 2>& x) {
-      return t * x[0] - x[1];
-    }).isOk());
+  const sltk::Status status =
+    sltk::linearSLStep<Interp>(threaded, sltk::RkOrder::Kutta3, u, next, tNext, dt, velocity, source);
   Interp interp(u);
-  sltk::CharacteristicStages<2, 3> stages;
+  sltk::CharacteristicStages<D, 3> stages;
   const auto tableau = sltk::kutta3Tableau();
-  auto backward = [](double t, const std::array<double, 2>& x, int)
+  auto backward = [&](double t, const Point& x, int)
   {
-    std::array<double, 2> v = test1Velocity(t, x);
-    return std::array<double, 2>{ -v[0], -v[1] };
+    Point v = velocity(t, x);
+    for (double& c : v)
+    {
+      c = -c;
+    }
+    return v;
   };
   size_t differing = 0;
+  sltk::Index nonFinite = 0;
   for (sltk::Index k = 0; k < g.nodeCount(); ++k)
   {
     const auto i = u.nodeIndex(k);
     sltk::traceCharacteristic(tableau, sltk::nodePoint(g, i), tNext, dt, backward, stages);
-    const double source = sltk::stageQuadrature(
-      tableau, stages, dt, [](double t, const std::array<double, 2>& x, int) { return t * x[0] - x[1]; });
-    differing += next(i) != sltk::interpolate(interp, g, stages.Foot.data()) + source ? 1 : 0;
+    bool located = true;
+    for (double c : stages.Foot)
+    {
+      located = located && std::isfinite(c);
+    }
+    const double expected = located ? sltk::interpolate(interp, g, stages.Foot.data()) +
+        sltk::stageQuadrature(tableau, stages, dt, [&](double t, const Point& x, int) { return source(t, x); })
+                                    : std::numeric_limits<double>::quiet_NaN();
+    nonFinite += std::isfinite(expected) ? 0 : 1;
+    const bool same = std::isnan(expected) ? std::isnan(next(i)) : next(i) == expected;
+    differing += same ? 0 : 1;
   }
   EXPECT_EQ(differing, 0u);
+  ASSERT_GT(nonFinite, 0);
+  ASSERT_LT(nonFinite, g.nodeCount() / 2);
+  EXPECT_EQ(status.code(), sltk::StatusCode::NumericalFailure);
+  EXPECT_EQ(status.message().rfind(std::to_string(nonFinite) + " non-finite values", 0), 0u) << status.message();
 }
 
 TEST(LinearSLStep, CwenoFeetThroughTheCellCacheAreTheNodeByNodeValuesBitForBit)
 {
-  expectCachedFeetAsNodeByNode<sltk::CwenoInterpolator<2, sltk::CwenoVariant::Cweno>>(0.7);
-  expectCachedFeetAsNodeByNode<sltk::CwenoInterpolator<2, sltk::CwenoVariant::CwenoZ>>(3.0);
+  expectCachedFeetAsNodeByNode<sltk::CwenoInterpolator<2, sltk::CwenoVariant::Cweno>>(41, 0.7);
+  expectCachedFeetAsNodeByNode<sltk::CwenoInterpolator<2, sltk::CwenoVariant::CwenoZ>>(41, 3.0);
+  expectCachedFeetAsNodeByNode<sltk::CwenoInterpolator<3, sltk::CwenoVariant::Cweno>>(13, 1.5);
 }
 
 TEST(LinearSLStep, InterrupterAbortsBetweenSteps)

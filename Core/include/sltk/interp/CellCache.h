@@ -66,8 +66,9 @@ public:
   static constexpr bool Hashed = K > 8;
   static constexpr bool StoresPolynomials = Hashed && detail::IsCwenoInterpolator<Interp>::value;
 
-  /// K copies of an interpolator bound to the field (CWENO's copies share their
-  /// indicator forms: CwenoIndicator.h).
+  /// Copies of an interpolator bound to the field: K, or one that builds the
+  /// stored CWENO polynomials (CWENO's copies share their indicator forms:
+  /// CwenoIndicator.h).
   CellCache(const Interp& prototype, const GridField<Dim, double>& field)
     : Spec(&field.spec())
     , Slots(StoresPolynomials ? 1 : K, prototype)

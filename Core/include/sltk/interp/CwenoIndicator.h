@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <utility>
@@ -68,8 +69,8 @@ constexpr int monomialDegree(int p)
 /// (N = 4: the optimal polynomial, N = 3: the octant polynomials), for the given
 /// spacings and scaling length Delta. Building M is O(N^(3D)) operations (about a
 /// millisecond in 3D), so the forms of one (spacing, Delta) are built once and
-/// shared by every interpolator of that grid alive at the time, whichever thread
-/// or chunk constructs them: a form is a pointer to read-only entries.
+/// shared by every interpolator of that grid, whichever thread or chunk
+/// constructs them: a form is a pointer to read-only entries.
 template <int D, int N>
 class IndicatorForm
 {
@@ -81,17 +82,11 @@ public:
     , Upper(Shared->Upper.data())
   {
   }
-  IndicatorForm(const IndicatorForm& o)
-    : Shared(o.Shared)
-    , Upper(Shared->Upper.data())
-  {
-  }
-  IndicatorForm& operator=(const IndicatorForm& o)
-  {
-    this->Shared = o.Shared;
-    this->Upper = this->Shared->Upper.data();
-    return *this;
-  }
+
+  /// The forms of the last KeptGrids (spacing, Delta) asked for are kept even
+  /// while no form holds them: chunks that run one after the other (one thread,
+  /// an MPI rank of one thread) find them built.
+  static constexpr size_t KeptGrids = 8;
 
 private:
   struct Entries
@@ -100,31 +95,37 @@ private:
     std::vector<double> Upper;  ///< U: upper triangle of the active block, off-diagonal doubled, packed by columns
   };
 
-  /// The entries of (spacing, delta): those of a live form with the same
-  /// values bit for bit, else built (and remembered while a form holds them).
+  /// The entries of (spacing, delta): those already built for the same values
+  /// (equal doubles), else built now. Kept for the KeptGrids most recent keys.
   static std::shared_ptr<const Entries> sharedEntries(const std::array<double, D>& spacing, double delta)
   {
-    static std::mutex guard;
-    static std::vector<std::pair<std::array<double, D + 1>, std::weak_ptr<const Entries>>> known;
-    std::array<double, D + 1> key{};
+    using Key = std::array<double, D + 1>;
+    // Never destroyed: a form may still be built while the process's statics are destroyed.
+    static std::mutex& guard = *new std::mutex;
+    static auto& recent = *new std::vector<std::pair<Key, std::shared_ptr<const Entries>>>; // most recent first
+    Key key{};
     std::copy(spacing.begin(), spacing.end(), key.begin());
     key[D] = delta;
     const std::lock_guard<std::mutex> lock(guard);
-    known.erase(
-      std::remove_if(known.begin(), known.end(), [](const auto& k) { return k.second.expired(); }), known.end());
-    for (const auto& k : known)
+    auto found = std::find_if(recent.begin(), recent.end(), [&](const auto& k) { return k.first == key; });
+    if (found == recent.end())
     {
-      if (k.first == key)
+      ++builtCount();
+      recent.emplace(recent.begin(), key, build(spacing, delta));
+      if (recent.size() > KeptGrids)
       {
-        if (std::shared_ptr<const Entries> live = k.second.lock())
-        {
-          return live;
-        }
+        recent.pop_back();
       }
+      return recent.front().second;
     }
-    std::shared_ptr<const Entries> built = build(spacing, delta);
-    known.emplace_back(key, built);
-    return built;
+    std::rotate(recent.begin(), found, found + 1); // to the front
+    return recent.front().second;
+  }
+
+  static std::uint64_t& builtCount()
+  {
+    static std::uint64_t& count = *new std::uint64_t(0); // under sharedEntries()'s lock
+    return count;
   }
 
   static std::shared_ptr<const Entries> build(const std::array<double, D>& spacing, double delta)
@@ -286,6 +287,13 @@ public:
   }
 
   /// Whether two forms read the same entries (built once: tests).
+  /// Forms built so far for this D and N, over the process (tests).
+  static std::uint64_t builds()
+  {
+    // Read when no form is being built (the count changes under sharedEntries()'s lock).
+    return builtCount();
+  }
+
   bool sharesEntriesWith(const IndicatorForm& o) const
   {
     return this->Shared == o.Shared;

@@ -198,10 +198,9 @@ double linearSLKernel(const Context& ctx, const ButcherTableau<S>& tableau,
     return finiteFoot;
   };
   // U^{n+1}_i of (2.36): I[U^n] at the foot (NaN, reported, where there is none) + G_i^n.
-  auto finish = [&](const std::array<Index, D>& i, const CharacteristicStages<D, S>& stages, double value, bool located,
-                  double& nonFinite)
+  auto finish =
+    [&](const std::array<Index, D>& i, const CharacteristicStages<D, S>& stages, double value, double& nonFinite)
   {
-    value = located ? value : std::numeric_limits<double>::quiet_NaN();
     if constexpr (!std::is_same_v<Source, NoSource>)
     {
       value +=
@@ -213,6 +212,7 @@ double linearSLKernel(const Context& ctx, const ButcherTableau<S>& tableau,
     }
     next(i) = value;
   };
+  constexpr double noFoot = std::numeric_limits<double>::quiet_NaN();
   auto body = [&](Index begin, Index end) -> double
   {
     double nonFinite = 0.0;
@@ -224,7 +224,7 @@ double linearSLKernel(const Context& ctx, const ButcherTableau<S>& tableau,
       CellCache<Interp, CwenoCellCacheSize> cache(Interp(current), current);
       oneFootNodes<decltype(cache), CharacteristicStages<D, S>>(cache, spec, i, begin, end, trace,
         [&](const std::array<Index, D>& at, const std::array<double, D>&, const CharacteristicStages<D, S>& stages,
-          double value, bool located) { finish(at, stages, value, located, nonFinite); });
+          double value, bool located) { finish(at, stages, located ? value : noFoot, nonFinite); });
     }
     else
     {
@@ -233,7 +233,7 @@ double linearSLKernel(const Context& ctx, const ButcherTableau<S>& tableau,
       for (Index k = begin; k < end; ++k, nextNode(spec, i))
       {
         const bool located = trace(nodePoint(spec, i), stages);
-        finish(i, stages, located ? interpolate(interp, spec, stages.Foot.data()) : 0.0, located, nonFinite);
+        finish(i, stages, located ? interpolate(interp, spec, stages.Foot.data()) : noFoot, nonFinite);
       }
     }
     return nonFinite;
