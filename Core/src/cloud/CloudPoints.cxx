@@ -1,12 +1,72 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/cloud/CloudPoints.h"
 
+#include "sltk/cloud/LocalSpacing.h"
+
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace sltk
 {
+
+namespace
+{
+/// A value of the point with global index Id.
+template <class Value>
+struct Indexed
+{
+  std::int64_t Id;
+  Value V;
+};
+
+/// valueOf(j) of every point this rank owns, with its global index.
+template <class Value, int D, class ValueOf>
+std::vector<Indexed<Value>> ownedValues(const OwnedPoints<D>& owned, ValueOf&& valueOf)
+{
+  std::vector<Indexed<Value>> mine;
+  mine.reserve(static_cast<size_t>(owned.Owned));
+  for (size_t j = 0; j < owned.Cloud.Points.size(); ++j)
+  {
+    if (owned.Mine[j])
+    {
+      mine.push_back({ owned.Ids[j], valueOf(j) });
+    }
+  }
+  return mine;
+}
+
+/// Every rank's `mine` (ownedValues()) gathered into `out` at the global
+/// indices, which must number 0 .. total - 1 once each (checked: the same
+/// gather, so the same verdict, on every rank); `mine` is freed first. Collective.
+template <class Value>
+Status gatherByIndex(
+  std::vector<Indexed<Value>>&& mine, std::int64_t total, const Communicator& comm, std::vector<Value>& out)
+{
+  const std::vector<Indexed<Value>> all = comm.allGatherV(mine);
+  mine = {};
+  out.assign(static_cast<size_t>(total), Value{});
+  std::vector<bool> placed(static_cast<size_t>(total), false);
+  bool whole = static_cast<std::int64_t>(all.size()) == total;
+  for (const Indexed<Value>& p : all)
+  {
+    const bool inRange = p.Id >= 0 && p.Id < total;
+    whole = whole && inRange && !placed[static_cast<size_t>(p.Id)];
+    if (whole)
+    {
+      placed[static_cast<size_t>(p.Id)] = true;
+      out[static_cast<size_t>(p.Id)] = p.V;
+    }
+  }
+  if (!whole)
+  {
+    out.clear();
+    return Status::invalidArgument("the ranks' points do not number the cloud's " + std::to_string(total) +
+      " points once each (points to their owners)");
+  }
+  return Status::ok();
+}
+} // namespace
 
 template <int D>
 WholeCloud<D>::WholeCloud(PointCloud<D>& cloud, double pointsPerBucket)
@@ -83,6 +143,12 @@ Status WholeCloud<D>::thin(double cell)
   SLTK_RETURN_IF_ERROR(thinCloud(this->Cloud, cell, thinned));
   this->Cloud = std::move(thinned);
   return Status::ok();
+}
+
+template <int D>
+Status WholeCloud<D>::sparsity(int k, const Context& ctx, std::vector<double>& factors) const
+{
+  return sparsityFactors(this->locator(), k, ctx, factors);
 }
 
 template <int D>
@@ -199,46 +265,22 @@ Status OwnedCloud<D>::release(
       std::to_string(MaximumIndexedPoints) +
       " every rank holds and indexes for the runs: thin it (--thin F) or reconstruct it in parts");
   }
-  struct Placed
-  {
-    std::int64_t Id;
-    std::array<double, D> X;
-  };
-  std::vector<Placed> mine;
-  mine.reserve(static_cast<size_t>(this->Owned.Owned));
-  for (size_t j = 0; j < this->Owned.Cloud.Points.size(); ++j)
-  {
-    if (this->Owned.Mine[j])
-    {
-      mine.push_back({ this->Owned.Ids[j], this->Owned.Cloud.Points[j] });
-    }
-  }
+  auto mine = ownedValues<std::array<double, D>>(this->Owned, [&](size_t j) { return this->Owned.Cloud.Points[j]; });
   this->Owned = OwnedPoints<D>(); // the whole cloud replaces the shares
-  const std::vector<Placed> all = this->Comm.allGatherV(mine);
-  mine = {};
   locator.reset();
-  cloud.Points.assign(static_cast<size_t>(this->Total), std::array<double, D>{});
-  std::vector<bool> placed(static_cast<size_t>(this->Total), false);
-  bool whole = static_cast<std::int64_t>(all.size()) == this->Total;
-  for (const Placed& p : all)
-  {
-    const bool inRange = p.Id >= 0 && p.Id < this->Total;
-    whole = whole && inRange && !placed[static_cast<size_t>(p.Id)];
-    if (whole)
-    {
-      placed[static_cast<size_t>(p.Id)] = true;
-      cloud.Points[static_cast<size_t>(p.Id)] = p.X;
-    }
-  }
-  if (!whole) // the same gather on every rank: every rank fails alike
-  {
-    cloud.Points.clear();
-    return Status::invalidArgument("the ranks' points do not number the cloud's " + std::to_string(this->Total) +
-      " points once each (points to their owners)");
-  }
+  SLTK_RETURN_IF_ERROR(gatherByIndex(std::move(mine), this->Total, this->Comm, cloud.Points));
   this->HeldMax = std::max(this->HeldMax, cloud.size());
   locator = std::make_unique<const PointLocator<D>>(cloud, pointsPerBucket);
   return Status::ok();
+}
+
+template <int D>
+Status OwnedCloud<D>::sparsity(int k, const Context& ctx, std::vector<double>& factors) const
+{
+  std::vector<double> held; // a factor per held point, the owned ones the one-rank values
+  SLTK_RETURN_IF_ERROR(sparsityFactorsOnRanks(this->Owned, k, this->Comm, ctx, held));
+  return gatherByIndex(
+    ownedValues<double>(this->Owned, [&](size_t j) { return held[j]; }), this->Total, this->Comm, factors);
 }
 
 template <int D>

@@ -6,9 +6,34 @@
 #include "sltk/exec/OrderStatistics.h"
 
 #include <algorithm>
+#include <memory>
 
 namespace sltk
 {
+
+namespace
+{
+/// answerOnOwners()'s query of the density spacing s(Q): Q's k nearest, and how far they reach.
+template <int D>
+auto densityQuery(int k)
+{
+  return [k](const PointLocator<D>& locator, std::int64_t i, std::vector<typename PointLocator<D>::Hit>& hits)
+  {
+    const bool enough = locator.cloud().size() > k;
+    hits.clear(); // too few points held: no neighbours, asked again on the ranks
+    if (enough)
+    {
+      locator.nearest(locator.cloud().Points[static_cast<size_t>(i)], k, i, hits);
+    }
+    const double reach = enough ? hits.back().Distance : std::numeric_limits<double>::infinity();
+    return OwnedAnswer{ enough ? densitySpacing<D>(reach, k) : 0.0, reach };
+  };
+}
+
+/// The owned points whose smoothing (their neighbours' s from the owners) runs
+/// at once: their neighbours are held as candidates, 40 bytes each (21 MB at k = 16).
+constexpr std::int64_t SmoothingBatch = 32768;
+} // namespace
 
 template <int D>
 Status densitySpacings(const PointLocator<D>& locator, int k, const Context& ctx, std::vector<double>& spacing,
@@ -135,20 +160,7 @@ Status densitySpacingsOnRanks(const OwnedPoints<D>& points, int k, const Communi
     }
   }
   // Each owned point's k nearest, exactly as on one rank (answerOnOwners).
-  return answerOnOwners(
-    points, own, k, comm, ctx,
-    [k](const PointLocator<D>& locator, std::int64_t i, std::vector<typename PointLocator<D>::Hit>& hits)
-    {
-      const bool enough = locator.cloud().size() > k;
-      hits.clear(); // too few points held: no neighbours, asked again on the ranks
-      if (enough)
-      {
-        locator.nearest(locator.cloud().Points[static_cast<size_t>(i)], k, i, hits);
-      }
-      const double reach = enough ? hits.back().Distance : std::numeric_limits<double>::infinity();
-      return OwnedAnswer{ enough ? densitySpacing<D>(reach, k) : 0.0, reach };
-    },
-    spacing, remote, neighbours);
+  return answerOnOwners(points, own, k, comm, ctx, densityQuery<D>(k), spacing, remote, neighbours);
 }
 
 template <int D>
@@ -171,9 +183,8 @@ Status sparsityFactorsOnRanks(const OwnedPoints<D>& points, int k, const Communi
   }
   std::vector<std::int64_t> own;
   std::vector<double> spacing;
-  std::vector<NeighbourCandidate<D>> neighbours;
   std::int64_t asked = 0;
-  SLTK_RETURN_IF_ERROR(densitySpacingsOnRanks(points, k, comm, ctx, own, spacing, asked, &neighbours));
+  SLTK_RETURN_IF_ERROR(densitySpacingsOnRanks(points, k, comm, ctx, own, spacing, asked));
   if (remote)
   {
     *remote = asked;
@@ -183,20 +194,39 @@ Status sparsityFactorsOnRanks(const OwnedPoints<D>& points, int k, const Communi
   {
     held[static_cast<size_t>(own[s])] = spacing[s];
   }
-  std::vector<double> theirs; // the neighbours' s, from their owners
-  SLTK_RETURN_IF_ERROR(valuesFromOwners(points, held, neighbours, comm, theirs));
+  // The smoothing in batches of owned points (the same number of batches on every rank: the
+  // steps are collective): a batch's k nearest found again (answerOnOwners, the same
+  // neighbours), their s from their owners (valuesFromOwners), so the candidates of one batch
+  // only are held.
+  const auto count = static_cast<std::int64_t>(own.size());
+  const std::int64_t batches = comm.allReduce((count + SmoothingBatch - 1) / SmoothingBatch, ReduceOp::Max);
   std::vector<double> smoothed(own.size());
-  ctx.parallelFor(0, static_cast<Index>(own.size()),
-    [&](Index b, Index e)
-    {
-      std::vector<double> local(static_cast<size_t>(k + 1));
-      for (Index s = b; s < e; ++s)
+  const std::unique_ptr<const PointLocator<D>> locator =
+    own.empty() ? nullptr : std::make_unique<const PointLocator<D>>(points.Cloud); // for every batch
+  for (std::int64_t batch = 0; batch < batches; ++batch)
+  {
+    const std::int64_t first = std::min(count, batch * SmoothingBatch);
+    const std::int64_t last = std::min(count, first + SmoothingBatch);
+    const std::vector<std::int64_t> locals(own.begin() + first, own.begin() + last);
+    std::vector<double> again;
+    std::vector<NeighbourCandidate<D>> neighbours;
+    std::int64_t askedAgain = 0;
+    SLTK_RETURN_IF_ERROR(
+      answerOnOwners(points, locals, k, comm, ctx, densityQuery<D>(k), again, askedAgain, &neighbours, locator.get()));
+    std::vector<double> theirs; // the neighbours' s, from their owners
+    SLTK_RETURN_IF_ERROR(valuesFromOwners(points, held, neighbours, comm, theirs));
+    ctx.parallelFor(first, last,
+      [&](Index b, Index e)
       {
-        local[0] = spacing[static_cast<size_t>(s)];
-        std::copy_n(theirs.begin() + s * k, k, local.begin() + 1);
-        smoothed[static_cast<size_t>(s)] = smoothedSpacing(local, k);
-      }
-    });
+        std::vector<double> local(static_cast<size_t>(k + 1));
+        for (Index s = b; s < e; ++s)
+        {
+          local[0] = spacing[static_cast<size_t>(s)];
+          std::copy_n(theirs.begin() + (s - first) * k, k, local.begin() + 1);
+          smoothed[static_cast<size_t>(s)] = smoothedSpacing(local, k);
+        }
+      });
+  }
   std::vector<double> owned;
   factorsOf(smoothed, kthSmallestOverRanks(smoothed, n / 2, comm), owned); // medianOf's middle
   for (size_t s = 0; s < own.size(); ++s)

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -105,11 +106,12 @@ OwnedAnswer answerAmongCandidates(const NeighbourRequest<D>& request, const Neig
 /// (nearestOwnedOnRanks); `remote` counts those over every rank. With `found`,
 /// also the `neighbours` nearest hits each query left (nearest first, the
 /// point itself excluded by the query): `neighbours` candidates a point, their
-/// Request its position in `locals`. Collective.
+/// Request its position in `locals`. `heldLocator`: one already built on
+/// points.Cloud (else one is built here). Collective.
 template <int D, class Query>
 Status answerOnOwners(const OwnedPoints<D>& points, const std::vector<std::int64_t>& locals, int neighbours,
   const Communicator& comm, const Context& ctx, Query query, std::vector<double>& values, std::int64_t& remote,
-  std::vector<NeighbourCandidate<D>>* found = nullptr)
+  std::vector<NeighbourCandidate<D>>* found = nullptr, const PointLocator<D>* heldLocator = nullptr)
 {
   values.assign(locals.size(), 0.0);
   std::vector<double> reach(locals.size(), 0.0);
@@ -128,7 +130,12 @@ Status answerOnOwners(const OwnedPoints<D>& points, const std::vector<std::int64
   };
   if (!locals.empty())
   {
-    const PointLocator<D> locator(points.Cloud);
+    std::unique_ptr<const PointLocator<D>> own;
+    if (!heldLocator)
+    {
+      own = std::make_unique<const PointLocator<D>>(points.Cloud);
+    }
+    const PointLocator<D>& locator = heldLocator ? *heldLocator : *own;
     ctx.parallelFor(0, static_cast<Index>(locals.size()),
       [&](Index b, Index e)
       {

@@ -368,7 +368,7 @@ void resetPlan(const ReconstructionOptions& options, ReconstructionPlan<D>& plan
 
 /// Steps 1-5 on `points` up to the automatic C_dx and thinning: what reads the
 /// cloud before the whole of it is needed (the validation, the cleaning, the
-/// unit box, h_P, the noise, the density spacing), on the whole cloud or on
+/// unit box, h_P, the noise, the density spacing, the local offset's rho), on the whole cloud or on
 /// its owners alike; then the cloud and its locator in the plan. `options`: as
 /// given (plan.Options takes the automatic choices).
 template <int D>
@@ -403,6 +403,11 @@ Status prepareCloud(CloudPoints<D>& points, const ReconstructionOptions& options
       SLTK_RETURN_IF_ERROR(thinIfDenserThanGrid(points, plan, po, ctx));
     }
   }
+  if (options.LocalOffset && options.Guess == InitialGuess::OutsideMarking)
+  {
+    // rho of the local offset (LocalOffset.h), on the owners when the cloud is spread over the ranks.
+    SLTK_RETURN_IF_ERROR(points.sparsity(options.Cleaning.DensityNeighbours, ctx, plan.Sparsity));
+  }
   return points.release(plan.Cloud, ReconstructionPointsPerBucket, plan.Locator);
 }
 
@@ -420,10 +425,6 @@ Status planOnWholeCloud(
   }
   const double dx1 = plan.Options.CellSizeFactor * plan.CloudSpacing; // run 1 (4.36)
   const Box<D> bounds = boundingBox(plan.Cloud);
-  if (options.LocalOffset && options.Guess == InitialGuess::OutsideMarking)
-  {
-    SLTK_RETURN_IF_ERROR(sparsityFactors(*plan.Locator, options.Cleaning.DensityNeighbours, ctx, plan.Sparsity));
-  }
   const double sparsest = plan.Sparsity.empty() ? 1.0 : *std::max_element(plan.Sparsity.begin(), plan.Sparsity.end());
   double roomFactor = plan.Options.OutsideThresholdFactor;
   if (!(options.OutsideThresholdFactor > 0.0))

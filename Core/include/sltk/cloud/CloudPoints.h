@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace sltk
 {
@@ -52,6 +53,9 @@ public:
   virtual Status noise(double cloudSpacing, const Context& ctx, double& noise) const = 0;
   /// thinCloud() (CloudThinning.h): the cloud becomes the cell means, in cell order.
   virtual Status thin(double cell) = 0;
+  /// sparsityFactors() (LocalSpacing.h: rho of the local offset, LocalOffset.h)
+  /// of every point with k neighbours, in the cloud's order, on every rank. Collective.
+  virtual Status sparsity(int k, const Context& ctx, std::vector<double>& factors) const = 0;
   /// The whole cloud, in its order, in `cloud` on every rank, and a locator on
   /// it with `pointsPerBucket` (the cloud must then stay where it is). Collective.
   virtual Status release(
@@ -77,6 +81,7 @@ public:
   Status spacing(const Context& ctx, const CloudSpacingOptions& options, double& spacing) const override;
   Status noise(double cloudSpacing, const Context& ctx, double& noise) const override;
   Status thin(double cell) override;
+  Status sparsity(int k, const Context& ctx, std::vector<double>& factors) const override;
   Status release(
     PointCloud<D>& cloud, double pointsPerBucket, std::unique_ptr<const PointLocator<D>>& locator) override;
   std::int64_t heldMax() const override { return this->Cloud.size(); }
@@ -112,6 +117,7 @@ public:
   Status spacing(const Context& ctx, const CloudSpacingOptions& options, double& spacing) const override;
   Status noise(double cloudSpacing, const Context& ctx, double& noise) const override;
   Status thin(double cell) override;
+  Status sparsity(int k, const Context& ctx, std::vector<double>& factors) const override;
   Status release(
     PointCloud<D>& cloud, double pointsPerBucket, std::unique_ptr<const PointLocator<D>>& locator) override;
   std::int64_t heldMax() const override;
