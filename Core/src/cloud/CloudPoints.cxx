@@ -259,12 +259,7 @@ template <int D>
 Status OwnedCloud<D>::release(
   PointCloud<D>& cloud, double pointsPerBucket, std::unique_ptr<const PointLocator<D>>& locator)
 {
-  if (this->Total > MaximumIndexedPoints) // the same on every rank
-  {
-    return Status::outOfMemory("the cleaned cloud has " + std::to_string(this->Total) + " points, more than the " +
-      std::to_string(MaximumIndexedPoints) +
-      " every rank holds and indexes for the runs: thin it (--thin F) or reconstruct it in parts");
-  }
+  SLTK_RETURN_IF_ERROR(this->indexable());
   auto mine = ownedValues<std::array<double, D>>(this->Owned, [&](size_t j) { return this->Owned.Cloud.Points[j]; });
   this->Owned = OwnedPoints<D>(); // the whole cloud replaces the shares
   locator.reset();
@@ -275,9 +270,22 @@ Status OwnedCloud<D>::release(
 }
 
 template <int D>
+Status OwnedCloud<D>::indexable() const
+{
+  if (this->Total > MaximumIndexedPoints) // the same on every rank
+  {
+    return Status::outOfMemory("the cleaned cloud has " + std::to_string(this->Total) + " points, more than the " +
+      std::to_string(MaximumIndexedPoints) +
+      " every rank holds and indexes for the runs: thin it (--thin F) or reconstruct it in parts");
+  }
+  return Status::ok();
+}
+
+template <int D>
 Status OwnedCloud<D>::sparsity(int k, const Context& ctx, std::vector<double>& factors) const
 {
-  std::vector<double> held; // a factor per held point, the owned ones the one-rank values
+  SLTK_RETURN_IF_ERROR(this->indexable()); // before a factor a point is gathered
+  std::vector<double> held;                // a factor per held point, the owned ones the one-rank values
   SLTK_RETURN_IF_ERROR(sparsityFactorsOnRanks(this->Owned, k, this->Comm, ctx, held));
   return gatherByIndex(
     ownedValues<double>(this->Owned, [&](size_t j) { return held[j]; }), this->Total, this->Comm, factors);

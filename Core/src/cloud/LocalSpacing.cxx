@@ -30,9 +30,6 @@ auto densityQuery(int k)
   };
 }
 
-/// The owned points whose smoothing (their neighbours' s from the owners) runs
-/// at once: their neighbours are held as candidates, 40 bytes each (21 MB at k = 16).
-constexpr std::int64_t SmoothingBatch = 32768;
 } // namespace
 
 template <int D>
@@ -165,16 +162,16 @@ Status densitySpacingsOnRanks(const OwnedPoints<D>& points, int k, const Communi
 
 template <int D>
 Status sparsityFactorsOnRanks(const OwnedPoints<D>& points, int k, const Communicator& comm, const Context& ctx,
-  std::vector<double>& factors, std::int64_t* remote)
+  std::vector<double>& factors, std::int64_t* remote, std::int64_t batch)
 {
   factors.assign(static_cast<size_t>(points.held()), 1.0);
   if (remote)
   {
     *remote = 0;
   }
-  if (k < 1)
+  if (k < 1 || batch < 1)
   {
-    return Status::invalidArgument("the sparsity factors need k >= 1 neighbours");
+    return Status::invalidArgument("the sparsity factors need k >= 1 neighbours and batches of at least a point");
   }
   const std::int64_t n = comm.allReduce(points.Owned, ReduceOp::Sum);
   if (n <= k)
@@ -199,14 +196,14 @@ Status sparsityFactorsOnRanks(const OwnedPoints<D>& points, int k, const Communi
   // neighbours), their s from their owners (valuesFromOwners), so the candidates of one batch
   // only are held.
   const auto count = static_cast<std::int64_t>(own.size());
-  const std::int64_t batches = comm.allReduce((count + SmoothingBatch - 1) / SmoothingBatch, ReduceOp::Max);
+  const std::int64_t batches = comm.allReduce((count + batch - 1) / batch, ReduceOp::Max);
   std::vector<double> smoothed(own.size());
   const std::unique_ptr<const PointLocator<D>> locator =
     own.empty() ? nullptr : std::make_unique<const PointLocator<D>>(points.Cloud); // for every batch
-  for (std::int64_t batch = 0; batch < batches; ++batch)
+  for (std::int64_t round = 0; round < batches; ++round)
   {
-    const std::int64_t first = std::min(count, batch * SmoothingBatch);
-    const std::int64_t last = std::min(count, first + SmoothingBatch);
+    const std::int64_t first = std::min(count, round * batch);
+    const std::int64_t last = std::min(count, first + batch);
     const std::vector<std::int64_t> locals(own.begin() + first, own.begin() + last);
     std::vector<double> again;
     std::vector<NeighbourCandidate<D>> neighbours;
@@ -247,8 +244,8 @@ template Status densitySpacingsOnRanks(const OwnedPoints<2>&, int, const Communi
 template Status densitySpacingsOnRanks(const OwnedPoints<3>&, int, const Communicator&, const Context&,
   std::vector<std::int64_t>&, std::vector<double>&, std::int64_t&, std::vector<NeighbourCandidate<3>>*);
 template Status sparsityFactorsOnRanks(
-  const OwnedPoints<2>&, int, const Communicator&, const Context&, std::vector<double>&, std::int64_t*);
+  const OwnedPoints<2>&, int, const Communicator&, const Context&, std::vector<double>&, std::int64_t*, std::int64_t);
 template Status sparsityFactorsOnRanks(
-  const OwnedPoints<3>&, int, const Communicator&, const Context&, std::vector<double>&, std::int64_t*);
+  const OwnedPoints<3>&, int, const Communicator&, const Context&, std::vector<double>&, std::int64_t*, std::int64_t);
 
 } // namespace sltk

@@ -2,7 +2,8 @@
 /// \file ReconstructionPlan.cxx
 /// The plan of a reconstruction (ReconstructionPlan.h): the options checked,
 /// the cloud steps (validation, cleaning, unit box, h_P, noise, the automatic
-/// interpolator, C_dx and thinning, on the whole cloud or on its owners), K_P
+/// interpolator, C_dx and thinning, the local offset's rho, on the whole cloud or
+/// on its owners), K_P
 /// and run 1's surface; the grids against the memory are RunGridMemory.cxx's.
 #include "sltk/recon/ReconstructionPlan.h"
 
@@ -364,6 +365,7 @@ void resetPlan(const ReconstructionOptions& options, ReconstructionPlan<D>& plan
   plan.Enclosure.reset();
   plan.PointsHeldMax = 0;
   plan.Traffic = CommTraffic{};
+  plan.Sparsity.clear();
 }
 
 /// Steps 1-5 on `points` up to the automatic C_dx and thinning: what reads the

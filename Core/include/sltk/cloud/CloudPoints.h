@@ -3,7 +3,7 @@
 /// \file CloudPoints.h
 /// The cloud the steps before the first grid read: the validation, the
 /// cleaning (CloudCleaning.h), the unit box (4.5), h_P (4.36), the noise, the
-/// density spacing and the thinning (recon/ReconstructionPlan.h). Held whole on
+/// density spacing, the thinning and the local offset's rho (recon/ReconstructionPlan.h). Held whole on
 /// one rank (WholeCloud) or spread over the ranks by owners (OwnedCloud,
 /// PointOwners.h), each step gives the same value on both, bit for bit, so one
 /// implementation of the steps serves both (Documentation/Distributed.md,
@@ -125,6 +125,8 @@ public:
 private:
   /// This rank's own points sent again to their owners under new balanced cuts.
   Status reown();
+  /// Refuses a cloud of more than MaximumIndexedPoints, before it is gathered.
+  Status indexable() const;
 
   const Communicator& Comm;
   OwnedPoints<D> Owned;

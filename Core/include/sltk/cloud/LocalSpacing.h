@@ -63,10 +63,12 @@ Status densitySpacingsOnRanks(const OwnedPoints<D>& points, int k, const Communi
 /// k nearest (asking the ranks a ball reaches when it leaves the halo, counted
 /// in `remote` over every rank), gets the neighbours' s from their owners and
 /// takes the median of the smoothed s as an exact order statistic over the
-/// ranks, so every owned point gets the one-rank factor bit for bit. Collective.
+/// ranks, so every owned point gets the one-rank factor bit for bit. The
+/// smoothing runs `batch` owned points at a time (their neighbours found again
+/// and held as candidates, 40 bytes each, only for the batch). Collective.
 template <int D>
 Status sparsityFactorsOnRanks(const OwnedPoints<D>& points, int k, const Communicator& comm, const Context& ctx,
-  std::vector<double>& factors, std::int64_t* remote = nullptr);
+  std::vector<double>& factors, std::int64_t* remote = nullptr, std::int64_t batch = 32768);
 
 extern template Status densitySpacings(
   const PointLocator<2>&, int, const Context&, std::vector<double>&, std::vector<std::int64_t>*);
@@ -79,8 +81,8 @@ extern template Status densitySpacingsOnRanks(const OwnedPoints<2>&, int, const 
 extern template Status densitySpacingsOnRanks(const OwnedPoints<3>&, int, const Communicator&, const Context&,
   std::vector<std::int64_t>&, std::vector<double>&, std::int64_t&, std::vector<NeighbourCandidate<3>>*);
 extern template Status sparsityFactorsOnRanks(
-  const OwnedPoints<2>&, int, const Communicator&, const Context&, std::vector<double>&, std::int64_t*);
+  const OwnedPoints<2>&, int, const Communicator&, const Context&, std::vector<double>&, std::int64_t*, std::int64_t);
 extern template Status sparsityFactorsOnRanks(
-  const OwnedPoints<3>&, int, const Communicator&, const Context&, std::vector<double>&, std::int64_t*);
+  const OwnedPoints<3>&, int, const Communicator&, const Context&, std::vector<double>&, std::int64_t*, std::int64_t);
 
 } // namespace sltk

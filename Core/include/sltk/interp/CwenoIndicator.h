@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -122,9 +123,9 @@ private:
     return recent.front().second;
   }
 
-  static std::uint64_t& builtCount()
+  static std::atomic<std::uint64_t>& builtCount()
   {
-    static std::uint64_t& count = *new std::uint64_t(0); // under sharedEntries()'s lock
+    static std::atomic<std::uint64_t>& count = *new std::atomic<std::uint64_t>(0); // never destroyed
     return count;
   }
 
@@ -286,14 +287,13 @@ public:
     return this->Shared->Matrix[static_cast<size_t>(p) * Size + q];
   }
 
-  /// Whether two forms read the same entries (built once: tests).
   /// Forms built so far for this D and N, over the process (tests).
   static std::uint64_t builds()
   {
-    // Read when no form is being built (the count changes under sharedEntries()'s lock).
-    return builtCount();
+    return builtCount().load();
   }
 
+  /// Whether two forms read the same entries (built once: tests).
   bool sharesEntriesWith(const IndicatorForm& o) const
   {
     return this->Shared == o.Shared;

@@ -83,10 +83,10 @@ struct ReconstructionPlan
 /// planReconstruction() of the cloud whose shares the ranks hold (`share`, moved
 /// in and freed once its points are at their owners: this rank's points, global indices firstId, firstId + 1, ...: a
 /// parallel read's, consecutive in rank order), the same plan on every rank as one rank makes from the whole cloud, bit
-/// for bit: the validation, the cleaning, the unit box, h_P, the noise, the automatic C_dx and thinning run on the
-/// points' owners (CloudPoints.h, OwnedCloud); the cleaned and thinned cloud is then gathered whole on every rank for
-/// the remaining steps (K_P, the windows, the grids) and the runs (Documentation/Distributed.md, "Still whole on every
-/// rank"). Collective; fails on every rank alike.
+/// for bit: the validation, the cleaning, the unit box, h_P, the noise, the automatic C_dx and thinning and the local
+/// offset's rho run on the points' owners (CloudPoints.h, OwnedCloud); the cleaned and thinned cloud is then gathered
+/// whole on every rank for the remaining steps (K_P, the windows, the grids) and the runs
+/// (Documentation/Distributed.md, "Still whole on every rank"). Collective; fails on every rank alike.
 template <int D>
 Status planReconstructionOnRanks(PointCloud<D> share, std::int64_t firstId, const ReconstructionOptions& options,
   const Context& ctx, const Communicator& comm, ReconstructionPlan<D>& plan);
