@@ -140,7 +140,7 @@ Status sparsityFactors(const PointLocator<D>& locator, int k, const Context& ctx
 template <int D>
 Status densitySpacingsOnRanks(const OwnedPoints<D>& points, int k, const Communicator& comm, const Context& ctx,
   std::vector<std::int64_t>& own, std::vector<double>& spacing, std::int64_t& remote,
-  std::vector<NeighbourCandidate<D>>* neighbours)
+  const PointLocator<D>* heldLocator)
 {
   own.clear();
   spacing.clear();
@@ -157,7 +157,8 @@ Status densitySpacingsOnRanks(const OwnedPoints<D>& points, int k, const Communi
     }
   }
   // Each owned point's k nearest, exactly as on one rank (answerOnOwners).
-  return answerOnOwners(points, own, k, comm, ctx, densityQuery<D>(k), spacing, remote, neighbours);
+  return answerOnOwners(points, own, k, comm, ctx, densityQuery<D>(k), spacing, remote,
+    static_cast<std::vector<NeighbourCandidate<D>>*>(nullptr), heldLocator);
 }
 
 template <int D>
@@ -178,10 +179,13 @@ Status sparsityFactorsOnRanks(const OwnedPoints<D>& points, int k, const Communi
   {
     return Status::ok();
   }
+  // One locator on the held points for the spacings and every batch below.
+  const std::unique_ptr<const PointLocator<D>> locator =
+    points.Owned > 0 ? std::make_unique<const PointLocator<D>>(points.Cloud) : nullptr;
   std::vector<std::int64_t> own;
   std::vector<double> spacing;
   std::int64_t asked = 0;
-  SLTK_RETURN_IF_ERROR(densitySpacingsOnRanks(points, k, comm, ctx, own, spacing, asked));
+  SLTK_RETURN_IF_ERROR(densitySpacingsOnRanks(points, k, comm, ctx, own, spacing, asked, locator.get()));
   if (remote)
   {
     *remote = asked;
@@ -198,8 +202,6 @@ Status sparsityFactorsOnRanks(const OwnedPoints<D>& points, int k, const Communi
   const auto count = static_cast<std::int64_t>(own.size());
   const std::int64_t batches = comm.allReduce((count + batch - 1) / batch, ReduceOp::Max);
   std::vector<double> smoothed(own.size());
-  const std::unique_ptr<const PointLocator<D>> locator =
-    own.empty() ? nullptr : std::make_unique<const PointLocator<D>>(points.Cloud); // for every batch
   for (std::int64_t round = 0; round < batches; ++round)
   {
     const std::int64_t first = std::min(count, round * batch);
@@ -240,9 +242,9 @@ template Status densitySpacings(
 template Status sparsityFactors(const PointLocator<2>&, int, const Context&, std::vector<double>&);
 template Status sparsityFactors(const PointLocator<3>&, int, const Context&, std::vector<double>&);
 template Status densitySpacingsOnRanks(const OwnedPoints<2>&, int, const Communicator&, const Context&,
-  std::vector<std::int64_t>&, std::vector<double>&, std::int64_t&, std::vector<NeighbourCandidate<2>>*);
+  std::vector<std::int64_t>&, std::vector<double>&, std::int64_t&, const PointLocator<2>*);
 template Status densitySpacingsOnRanks(const OwnedPoints<3>&, int, const Communicator&, const Context&,
-  std::vector<std::int64_t>&, std::vector<double>&, std::int64_t&, std::vector<NeighbourCandidate<3>>*);
+  std::vector<std::int64_t>&, std::vector<double>&, std::int64_t&, const PointLocator<3>*);
 template Status sparsityFactorsOnRanks(
   const OwnedPoints<2>&, int, const Communicator&, const Context&, std::vector<double>&, std::int64_t*, std::int64_t);
 template Status sparsityFactorsOnRanks(

@@ -50,13 +50,13 @@ Status sparsityFactors(const PointLocator<D>& locator, int k, const Context& ctx
 /// `spacing` holds s(Q) of this rank's own points, `own` their places in
 /// points.Cloud (ascending), bit for bit the one-rank values; a query that read
 /// beyond the halo is asked again of the ranks its ball reaches (`remote`
-/// counts those over every rank). `neighbours`, when given, gets each one's k
-/// nearest as candidates (k a point, nearest first). Fails on every rank, as
+/// counts those over every rank). `heldLocator`: one already built on
+/// points.Cloud (else one is built here). Fails on every rank, as
 /// densitySpacings does, for k < 1 or a cloud of at most k points. Collective.
 template <int D>
 Status densitySpacingsOnRanks(const OwnedPoints<D>& points, int k, const Communicator& comm, const Context& ctx,
   std::vector<std::int64_t>& own, std::vector<double>& spacing, std::int64_t& remote,
-  std::vector<NeighbourCandidate<D>>* neighbours = nullptr);
+  const PointLocator<D>* heldLocator = nullptr);
 
 /// sparsityFactors() of a cloud spread over the ranks by owners (PointOwners.h),
 /// one factor per held point (1 at the halo's): each owner finds its points'
@@ -77,9 +77,9 @@ extern template Status densitySpacings(
 extern template Status sparsityFactors(const PointLocator<2>&, int, const Context&, std::vector<double>&);
 extern template Status sparsityFactors(const PointLocator<3>&, int, const Context&, std::vector<double>&);
 extern template Status densitySpacingsOnRanks(const OwnedPoints<2>&, int, const Communicator&, const Context&,
-  std::vector<std::int64_t>&, std::vector<double>&, std::int64_t&, std::vector<NeighbourCandidate<2>>*);
+  std::vector<std::int64_t>&, std::vector<double>&, std::int64_t&, const PointLocator<2>*);
 extern template Status densitySpacingsOnRanks(const OwnedPoints<3>&, int, const Communicator&, const Context&,
-  std::vector<std::int64_t>&, std::vector<double>&, std::int64_t&, std::vector<NeighbourCandidate<3>>*);
+  std::vector<std::int64_t>&, std::vector<double>&, std::int64_t&, const PointLocator<3>*);
 extern template Status sparsityFactorsOnRanks(
   const OwnedPoints<2>&, int, const Communicator&, const Context&, std::vector<double>&, std::int64_t*, std::int64_t);
 extern template Status sparsityFactorsOnRanks(
