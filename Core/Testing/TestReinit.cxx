@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iterator>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -945,4 +946,91 @@ TEST(Reinit, ReportsAbortAndNonFiniteValues)
   EXPECT_EQ(sltk::reinitialise<2>(phi, band, options(ReinitMethod::Plain), sltk::Context(), &report).code(),
     sltk::StatusCode::NumericalFailure);
   EXPECT_EQ(report.Iterations, 1);
+}
+
+TEST(Reinit, SkewedStepsAreThePlainStepsBitForBit)
+{
+  // One process steps a large band in skewed rounds (SkewedSteps.h): step t of a plane runs
+  // after step t - 1 of its neighbouring planes, not after the whole band's. The values, the
+  // steps done, the last largest change and the convergence must be the plain steps' bit for
+  // bit: with rounds of 10 steps, with a tolerance stop inside a round (its steps again from
+  // the kept band), on one thread and on three, in 2D and 3D, and when a band out of order
+  // or a periodic slowest axis sends the call to the plain steps.
+  sltk::ThreadPool pool(3);
+  sltk::Context threaded;
+  threaded.Executor = &pool;
+  const auto compare = [&](auto initial, const std::vector<Index>& band, ReinitOptions o, const char* what)
+  {
+    for (const bool onThreads : { true, false })
+    {
+      const sltk::Context context = onThreads ? threaded : sltk::Context();
+      auto plain = initial;
+      auto skewed = initial;
+      sltk::ReinitWorkspace plainArrays, skewedArrays;
+      plainArrays.SkewedBandNodes = std::numeric_limits<Index>::max();
+      skewedArrays.SkewedBandNodes = 0;
+      sltk::ReinitReport a, b;
+      const Index n = static_cast<Index>(band.size());
+      ASSERT_TRUE(sltk::reinitialise(plain, band.data(), n, o, context, &a, {}, &plainArrays).isOk()) << what;
+      ASSERT_TRUE(sltk::reinitialise(skewed, band.data(), n, o, context, &b, {}, &skewedArrays).isOk()) << what;
+      EXPECT_EQ(a.Iterations, b.Iterations) << what;
+      EXPECT_EQ(a.Converged, b.Converged) << what;
+      EXPECT_EQ(a.InterfaceNodes, b.InterfaceNodes) << what;
+      EXPECT_EQ(std::memcmp(&a.MaxChange, &b.MaxChange, sizeof(double)), 0) << what;
+      EXPECT_EQ(
+        std::memcmp(plain.storage().data(), skewed.storage().data(), plain.storage().size() * sizeof(double)), 0)
+        << what << (onThreads ? ", three threads" : ", one thread");
+    }
+  };
+  const auto g3 = sltk::uniformBox<3>(49, -1.0, 1.0);
+  const GridField<3> sphere = distortedSphere<3>(g3);
+  const auto band3 = sphereBand<3>(sphere, BandCells);
+  ReinitOptions o = options(ReinitMethod::Constrained);
+  o.MaxIterations = 10;
+  compare(sphere, band3, o, "10 steps, one round");
+  o.MaxIterations = 23;
+  compare(sphere, band3, o, "23 steps, rounds of 10, 10 and 3");
+  // The plain steps stop on the tolerance after some 25-60 steps: inside a round.
+  o = options(ReinitMethod::Constrained);
+  o.Tolerance = 1e-3;
+  GridField<3> probe = sphere;
+  sltk::ReinitReport stop;
+  ASSERT_TRUE(sltk::reinitialise<3>(probe, band3, o, sltk::Context(), &stop).isOk());
+  ASSERT_TRUE(stop.Converged);
+  ASSERT_GT(stop.Iterations, 11);
+  compare(sphere, band3, o, "a tolerance stop");
+  o.Method = ReinitMethod::Plain;
+  o.MaxIterations = 17;
+  compare(sphere, band3, o, "plain method, 17 steps");
+
+  const auto g2 = sltk::uniformBox<2>(801, -1.0, 1.0);
+  const GridField<2> circle = distortedSphere<2>(g2);
+  const auto band2 = sphereBand<2>(circle, BandCells);
+  o = options(ReinitMethod::Constrained);
+  o.MaxIterations = 30;
+  compare(circle, band2, o, "2D, 30 steps");
+  o.Tolerance = 1e-3;
+  compare(circle, band2, o, "2D, a tolerance stop");
+
+  // Out of order, or periodic along the slowest axis: the plain steps (the same values anyway).
+  std::vector<Index> reversed(band3.rbegin(), band3.rend());
+  o = options(ReinitMethod::Constrained);
+  o.MaxIterations = 12;
+  compare(sphere, reversed, o, "a band in reverse order");
+  GridSpec<3> periodic = g3;
+  periodic.Bounds[2] = sltk::Boundary::Periodic;
+  // Two fronts at |z| = 0.85 whose band reaches both ends of z: its steps read across them.
+  const auto slab = [](const double* x) { return distortion<3>(x) * (0.85 - std::fabs(x[2])); };
+  GridField<3> wrapped = sltk::sampleField(periodic, 1, slab);
+  std::vector<Index> across;
+  for (Index k = 0; k < periodic.nodeCount(); ++k)
+  {
+    const auto x = sltktest::nodeCoordinates<3>(periodic, wrapped.nodeIndex(k));
+    if (std::fabs(0.85 - std::fabs(x[2])) < BandCells * periodic.Spacing[2])
+    {
+      across.push_back(k);
+    }
+  }
+  ASSERT_EQ(across.front(), 0);
+  compare(wrapped, across, o, "periodic along z");
 }

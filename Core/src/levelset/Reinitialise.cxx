@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "sltk/levelset/Reinitialise.h"
 
+#include "SkewedSteps.h"
 #include "sltk/core/ResizeForOverwrite.h"
 #include "sltk/exec/ThreadPool.h"
 #include "sltk/levelset/ReinitInterface.h"
@@ -35,6 +36,12 @@ constexpr std::uint8_t RoleBoundary = 4; // the 3^D block leaves the interior: R
 
 // Fixed chunk size: the per-chunk maxima are indexed by chunk.
 constexpr Index Grain = 2048;
+// Skewed rounds of pseudo-time steps (SkewedSteps.h; on bands of at least
+// ReinitWorkspace::SkewedBandNodes nodes): MinimumSkewedRound to
+// MaximumSkewedRound steps, tasks of at least SkewedTaskNodes nodes.
+constexpr int MinimumSkewedRound = 3;
+constexpr int MaximumSkewedRound = 10;
+constexpr Index SkewedTaskNodes = 1024;
 // Band positions between a prefetch and its use in the pseudo-time step.
 constexpr Index PrefetchDistance = 16;
 
@@ -42,6 +49,23 @@ constexpr Index PrefetchDistance = 16;
 inline double maxOrNaN(double a, double b)
 {
   return b > a || std::isnan(b) ? b : a;
+}
+
+/// The steps of the next skewed round, `left` at most: MaximumSkewedRound, or
+/// once two steps are done (their largest changes `before`, `latest`) as many
+/// as their ratio says the largest change needs to fall below `tolerance` (and
+/// one more), since the steps beyond the tolerance stop are done in vain. A
+/// round shorter than MinimumSkewedRound is one plain step.
+inline int skewedRound(double before, double latest, int left, double tolerance)
+{
+  int round = MaximumSkewedRound;
+  if (latest > 0.0 && latest < before) // a geometric fall: latest (latest / before)^n < tolerance
+  {
+    const double needed = std::log(tolerance / latest) / std::log(latest / before);
+    round = needed < MaximumSkewedRound ? std::max(1, static_cast<int>(std::ceil(needed)) + 1) : MaximumSkewedRound;
+  }
+  round = std::min(round, left);
+  return round < MinimumSkewedRound ? 1 : round;
 }
 
 /// values[offset[l] + shift] for the L band nodes of a group, one per lane.
@@ -94,6 +118,7 @@ public:
     , Next(arrays.Next)
     , Role(arrays.Role)
     , ChunkChange(arrays.ChunkChange)
+    , Saved(arrays.Saved)
   {
     const GridSpec<D>& g = phi.spec();
     this->H = g.Spacing[0];
@@ -108,7 +133,8 @@ public:
 
   double spacing() const { return this->H; }
 
-  Status allocate()
+  /// `saving`: also the array of saveBand().
+  Status allocate(bool saving)
   {
     try
     {
@@ -120,6 +146,10 @@ public:
       resizeForOverwrite(this->Next, n);
       resizeForOverwrite(this->Role, n);
       resizeForOverwrite(this->ChunkChange, static_cast<size_t>(ThreadPool::chunkCount(0, this->Size, Grain)));
+      if (saving)
+      {
+        resizeForOverwrite(this->Saved, n);
+      }
     }
     catch (const std::bad_alloc&)
     {
@@ -171,42 +201,11 @@ public:
   /// One Jacobi pseudo-time step over the band; returns the largest |change|.
   double step()
   {
-    double* values = this->Phi.storage().data();
-    const Index* offset = this->Offset.data();
-    const std::uint8_t* role = this->Role.data();
-    const double* next = this->Next.data();
     double* chunkChange = this->ChunkChange.data();
     this->Ctx.parallelFor(
-      0, this->Size,
-      [&](Index b, Index e)
-      {
-        double change = 0.0;
-        Index p = b;
-#if defined(SLTK_LANES_AVX2)
-        p = lanes::hasAvx2() ? this->stepLanesAvx2(b, e, change) : this->stepLanes<2>(b, e, change);
-#else
-        p = this->stepLanes<2>(b, e, change);
-#endif
-        for (; p < e; ++p)
-        {
-          this->stepNode(p, change);
-        }
-        chunkChange[b / Grain] = change;
-      },
-      Grain);
+      0, this->Size, [&](Index b, Index e) { chunkChange[b / Grain] = this->stepRange(b, e); }, Grain);
     this->Ctx.parallelFor(
-      0, this->Size,
-      [&](Index b, Index e)
-      {
-        for (Index p = b; p < e; ++p)
-        {
-          if ((role[p] & RoleKind) != RoleFixed)
-          {
-            values[offset[p]] = next[p];
-          }
-        }
-      },
-      Grain);
+      0, this->Size, [&](Index b, Index e) { this->writeBack(b, e); }, Grain);
     double change = 0.0;
     for (double c : this->ChunkChange)
     {
@@ -215,7 +214,165 @@ public:
     return change;
   }
 
+  /// The band's positions by plane of the slowest axis: plane j (from the band's
+  /// first) holds positions start[j] .. start[j + 1] - 1. False (and `start`
+  /// empty) when the band is not in ascending order or the slowest axis is
+  /// periodic (a step would then read planes at the grid's other end): the
+  /// skewed steps need neither.
+  bool bandPlanes(std::vector<Index>& start) const
+  {
+    start.clear();
+    const GridSpec<D>& g = this->Phi.spec();
+    if (this->Size == 0 || g.Bounds[D - 1] == Boundary::Periodic)
+    {
+      return false;
+    }
+    const Index* band = this->Band;
+    const double unordered = this->Ctx.parallelSum(
+      1, this->Size,
+      [&](Index b, Index e)
+      {
+        double count = 0.0;
+        for (Index p = b; p < e; ++p)
+        {
+          count += band[p] <= band[p - 1] ? 1.0 : 0.0;
+        }
+        return count;
+      },
+      Grain);
+    if (unordered > 0.0)
+    {
+      return false;
+    }
+    const Index planeNodes = g.nodeCount() / g.Dims[D - 1];
+    const Index first = band[0] / planeNodes;
+    const Index planes = band[this->Size - 1] / planeNodes - first + 1;
+    start.resize(static_cast<size_t>(planes + 1));
+    for (Index j = 0; j <= planes; ++j)
+    {
+      start[static_cast<size_t>(j)] = std::lower_bound(band, band + this->Size, (first + j) * planeNodes) - band;
+    }
+    return true;
+  }
+
+  /// `steps` Jacobi steps, the values of step() called `steps` times bit for
+  /// bit, step t's largest |change| into changes[t]; in the skewed waves of
+  /// SkewedSteps.h over the planes of bandPlanes(), so that the steps share
+  /// each plane's trip through the caches. The waves' unit is a group of
+  /// consecutive planes (group g: planes group[g] .. group[g + 1] - 1), each
+  /// task at least SkewedTaskNodes nodes, so that a wave's threads work more
+  /// than they wait for each other.
+  void skewedSteps(const std::vector<Index>& start, Index steps, double* changes)
+  {
+    const Index planes = static_cast<Index>(start.size()) - 1;
+    std::vector<Index> group{ 0 };
+    for (Index z = 1; z <= planes; ++z)
+    {
+      if (z == planes || start[z] - start[group.back()] >= SkewedTaskNodes)
+      {
+        group.push_back(z);
+      }
+    }
+    const Index groups = static_cast<Index>(group.size()) - 1;
+    std::vector<double> groupChange(static_cast<size_t>(steps * groups));
+    detail::skewedWaves(groups, steps, this->Ctx,
+      [&](Index t, Index g)
+      {
+        double change = 0.0;
+        const Index stop = g < groups ? group[g + 1] : planes + 1;
+        for (Index z = group[g]; z < stop; ++z)
+        {
+          if (z < planes)
+          {
+            change = maxOrNaN(change, this->stepRange(start[z], start[z + 1]));
+          }
+          if (z > 0)
+          {
+            this->writeBack(start[z - 1], start[z]);
+          }
+        }
+        if (g < groups)
+        {
+          groupChange[static_cast<size_t>(t * groups + g)] = change;
+        }
+      });
+    for (Index t = 0; t < steps; ++t)
+    {
+      double change = 0.0;
+      for (Index g = 0; g < groups; ++g)
+      {
+        change = maxOrNaN(change, groupChange[static_cast<size_t>(t * groups + g)]);
+      }
+      changes[t] = change;
+    }
+  }
+
+  /// Keeps the band's values (before skewed steps that may overshoot the
+  /// tolerance stop) and puts them back.
+  void saveBand()
+  {
+    const double* values = this->Phi.storage().data();
+    this->Ctx.parallelFor(
+      0, this->Size,
+      [&](Index b, Index e)
+      {
+        for (Index p = b; p < e; ++p)
+        {
+          this->Saved[p] = values[this->Offset[p]];
+        }
+      },
+      Grain);
+  }
+
+  void restoreBand()
+  {
+    double* values = this->Phi.storage().data();
+    this->Ctx.parallelFor(
+      0, this->Size,
+      [&](Index b, Index e)
+      {
+        for (Index p = b; p < e; ++p)
+        {
+          values[this->Offset[p]] = this->Saved[p];
+        }
+      },
+      Grain);
+  }
+
 private:
+  /// The step of band positions [b, e) into Next; returns their largest |change|.
+  double stepRange(Index b, Index e)
+  {
+    double change = 0.0;
+    Index p = b;
+#if defined(SLTK_LANES_AVX2)
+    p = lanes::hasAvx2() ? this->stepLanesAvx2(b, e, change) : this->stepLanes<2>(b, e, change);
+#else
+    p = this->stepLanes<2>(b, e, change);
+#endif
+    for (; p < e; ++p)
+    {
+      this->stepNode(p, change);
+    }
+    return change;
+  }
+
+  /// Next back into phi on band positions [b, e) (a fixed node keeps its value).
+  void writeBack(Index b, Index e)
+  {
+    double* values = this->Phi.storage().data();
+    const Index* offset = this->Offset.data();
+    const std::uint8_t* role = this->Role.data();
+    const double* next = this->Next.data();
+    for (Index p = b; p < e; ++p)
+    {
+      if ((role[p] & RoleKind) != RoleFixed)
+      {
+        values[offset[p]] = next[p];
+      }
+    }
+  }
+
   bool classifyNode(Index p, double* block)
   {
     const std::array<Index, D> i = this->Stencil.node(this->Band[p]);
@@ -389,6 +546,7 @@ private:
   std::vector<double>& Next;
   std::vector<std::uint8_t>& Role; // Role* flags
   std::vector<double>& ChunkChange;
+  std::vector<double>& Saved; // the band's values before skewed steps
 };
 
 Status validateBand(const Index* band, Index size, Index nodes, const Context& ctx)
@@ -445,8 +603,15 @@ Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const 
     return finish(Status::ok());
   }
   ReinitWorkspace own;
-  BandSolver<D> solver(phi, band, bandSize, options, ctx, workspace ? *workspace : own);
-  SLTK_RETURN_IF_ERROR(finish(exchange.Agree ? exchange.Agree(solver.allocate()) : solver.allocate()));
+  ReinitWorkspace& arrays = workspace ? *workspace : own;
+  BandSolver<D> solver(phi, band, bandSize, options, ctx, arrays);
+  // One process and a band larger than the caches: the steps go in skewed rounds
+  // (SkewedSteps.h), each round's band kept first in case the tolerance stops
+  // within it. Distributed, every step exchanges ghost rows.
+  const bool skewing =
+    !distributed && options.MaxIterations >= MinimumSkewedRound && bandSize >= arrays.SkewedBandNodes;
+  const Status allocated = solver.allocate(skewing);
+  SLTK_RETURN_IF_ERROR(finish(exchange.Agree ? exchange.Agree(allocated) : allocated));
   result.InterfaceNodes = solver.classify();
   if (options.Method == ReinitMethod::Constrained)
   {
@@ -457,34 +622,68 @@ Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const 
     bool ignored = false;
     exchange.AfterStep(0.0, ignored); // the front's fixed values (1.37)/(1.44) reach the neighbours' ghost rows
   }
+  std::vector<Index> planeStart;
+  const bool skewed = skewing && solver.bandPlanes(planeStart);
 
   Interrupter& interrupter = ctx.interrupter();
+  const double tolerance = options.Tolerance * solver.spacing();
   result.Converged = options.MaxIterations == 0;
-  for (int iteration = 1; iteration <= options.MaxIterations; ++iteration)
+  double changes[MaximumSkewedRound];
+  double before = 0.0, latest = 0.0; // the last two steps' largest changes
+  int done = 0;
+  while (done < options.MaxIterations)
   {
-    result.MaxChange = solver.step();
-    result.Iterations = iteration;
-    bool interrupted = false;
-    if (distributed)
+    const int round = skewed ? skewedRound(before, latest, options.MaxIterations - done, tolerance) : 1;
+    if (round > 1)
     {
-      // Every rank takes the same decisions below: the largest change over the ranks, a stop on any rank.
-      interrupted = interrupter.wasInterrupted(static_cast<double>(iteration) / options.MaxIterations);
-      result.MaxChange = exchange.AfterStep(result.MaxChange, interrupted);
+      solver.saveBand();
+      solver.skewedSteps(planeStart, round, changes);
     }
-    if (!std::isfinite(result.MaxChange))
+    else
     {
-      return finish(Status::numericalFailure("reinitialisation produced a non-finite value at pseudo-time step " +
-        std::to_string(iteration) + " (is the level-set function finite in and around the band?)"));
+      changes[0] = solver.step();
     }
-    if (result.MaxChange < options.Tolerance * solver.spacing())
+    for (int j = 0; j < round; ++j)
     {
-      result.Converged = true;
-      break;
+      const int iteration = done + j + 1;
+      result.MaxChange = changes[j];
+      result.Iterations = iteration;
+      before = latest;
+      latest = changes[j];
+      bool interrupted = false;
+      if (distributed)
+      {
+        // Every rank takes the same decisions below: the largest change over the ranks, a stop on any rank.
+        interrupted = interrupter.wasInterrupted(static_cast<double>(iteration) / options.MaxIterations);
+        result.MaxChange = exchange.AfterStep(result.MaxChange, interrupted);
+      }
+      if (!std::isfinite(result.MaxChange))
+      {
+        return finish(Status::numericalFailure("reinitialisation produced a non-finite value at pseudo-time step " +
+          std::to_string(iteration) + " (is the level-set function finite in and around the band?)"));
+      }
+      if (result.MaxChange < tolerance)
+      {
+        if (j + 1 < round) // stopped within the round: its first j + 1 steps again
+        {
+          solver.restoreBand();
+          for (int k = 0; k <= j; ++k)
+          {
+            solver.step();
+          }
+        }
+        result.Converged = true;
+        return finish(Status::ok());
+      }
+      const bool last = j + 1 == round;
+      if (last &&
+        (distributed ? interrupted
+                     : interrupter.wasInterrupted(static_cast<double>(iteration) / options.MaxIterations)))
+      {
+        return finish(Status::aborted());
+      }
     }
-    if (distributed ? interrupted : interrupter.wasInterrupted(static_cast<double>(iteration) / options.MaxIterations))
-    {
-      return finish(Status::aborted());
-    }
+    done += round;
   }
   return finish(Status::ok());
 }

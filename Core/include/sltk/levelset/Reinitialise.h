@@ -16,7 +16,8 @@
 /// afterwards if they are needed.
 ///
 /// Jacobi updates into a buffer make the result bit-identical for any number of
-/// threads. Work and memory (25 bytes per band node) are proportional to the band.
+/// threads. Work and memory (25 bytes per band node, 33 when the steps are
+/// skewed) are proportional to the band.
 /// On Aborted (interrupter) phi holds the values of the last completed step.
 
 #include "sltk/exec/Context.h"
@@ -54,6 +55,10 @@ struct ReinitWorkspace
   std::vector<double> Next;        ///< Jacobi buffer
   std::vector<std::uint8_t> Role;  ///< each node's role
   std::vector<double> ChunkChange; ///< per-chunk largest |change|
+  std::vector<double> Saved;       ///< the band's values before a round of skewed steps
+  /// One process steps a band of at least this many nodes in skewed rounds (time skewing over
+  /// its planes, the same values bit for bit; smaller bands stay in the caches between steps).
+  Index SkewedBandNodes = Index(1) << 20;
 };
 
 /// `workspace`: the arrays to reuse (null: the call's own).
