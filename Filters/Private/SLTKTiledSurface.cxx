@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SLTKTiledSurface.h"
 
+#include "SLTKMergePoints.h"
+
 #include "sltk/octree/TiledReconstruction.h"
 
 #include <vtkAppendPolyData.h>
@@ -15,7 +17,6 @@
 #include <vtkPolyDataNormals.h>
 #include <vtkSMPTools.h>
 #include <vtkSmartPointer.h>
-#include <vtkStaticCleanPolyData.h>
 
 #include <algorithm>
 #include <array>
@@ -160,21 +161,18 @@ void tiledZeroLevelSet(const TiledField<D>& field, const UnitBox<D>& box, vtkPol
     surface->Initialize();
     return;
   }
-  vtkNew<vtkStaticCleanPolyData> merge; // points shared by neighbouring blocks are bitwise equal
-  merge->SetInputConnection(append->GetOutputPort());
-  merge->ToleranceIsAbsoluteOn();
-  merge->SetAbsoluteTolerance(0.0);
-  merge->ConvertLinesToPointsOff();
-  merge->ConvertPolysToLinesOff();
-  merge->ConvertStripsToPolysOff();
+  // Points shared by neighbouring blocks are bitwise equal: one point each, numbered by first use
+  // (SLTKMergePoints.h: vtkCleanPolyData's result from a hash, as the uniform grid's surface).
+  append->Update();
+  auto merged = vtkSmartPointer<vtkPolyData>::New();
+  mergeCoincidentPoints(append->GetOutput(), merged);
   if (D == 2)
   {
-    merge->Update();
-    surface->ShallowCopy(merge->GetOutput()); // a curve: no normals (as the uniform grid's, zeroLevelSet)
+    surface->ShallowCopy(merged); // a curve: no normals (as the uniform grid's, zeroLevelSet)
     return;
   }
   vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputConnection(merge->GetOutputPort());
+  normals->SetInputData(merged);
   normals->SplittingOff();
   // Flying edges orients every triangle by the signs of its cube (outward, to
   // phi > 0), so the triangles are consistent already; the consistency pass

@@ -99,6 +99,13 @@ SLTK_LANES_INLINE lanes::Mask<L> kindLanes(const std::uint8_t* role, std::uint8_
   return out;
 }
 
+/// The band's planes of the slowest axis and their groups (BandSolver::bandPlanes).
+struct BandPlanes
+{
+  std::vector<Index> Start;
+  std::vector<Index> Group;
+};
+
 /// One reinitialise() call on its band, with the per-node arrays of a
 /// ReinitWorkspace (25 bytes a node).
 template <int D>
@@ -133,7 +140,7 @@ public:
 
   double spacing() const { return this->H; }
 
-  /// `saving`: also the array of saveBand().
+  /// `saving`: also the array of keepBand().
   Status allocate(bool saving)
   {
     try
@@ -215,13 +222,13 @@ public:
   }
 
   /// The band's positions by plane of the slowest axis: plane j (from the band's
-  /// first) holds positions start[j] .. start[j + 1] - 1. False (and `start`
-  /// empty) when the band is not in ascending order or the slowest axis is
-  /// periodic (a step would then read planes at the grid's other end): the
-  /// skewed steps need neither.
-  bool bandPlanes(std::vector<Index>& start) const
+  /// first) holds positions Start[j] .. Start[j + 1] - 1, and the planes
+  /// Group[g] .. Group[g + 1] - 1 make the g-th group of skewedSteps(). False
+  /// when the band is not in ascending order or the slowest axis is periodic (a
+  /// step would then read planes at the grid's other end): the skewed steps
+  /// need neither.
+  bool bandPlanes(BandPlanes& planes) const
   {
-    start.clear();
     const GridSpec<D>& g = this->Phi.spec();
     if (this->Size == 0 || g.Bounds[D - 1] == Boundary::Periodic)
     {
@@ -246,43 +253,44 @@ public:
     }
     const Index planeNodes = g.nodeCount() / g.Dims[D - 1];
     const Index first = band[0] / planeNodes;
-    const Index planes = band[this->Size - 1] / planeNodes - first + 1;
-    start.resize(static_cast<size_t>(planes + 1));
-    for (Index j = 0; j <= planes; ++j)
+    const Index count = band[this->Size - 1] / planeNodes - first + 1;
+    planes.Start.resize(static_cast<size_t>(count + 1));
+    for (Index j = 0; j <= count; ++j)
     {
-      start[static_cast<size_t>(j)] = std::lower_bound(band, band + this->Size, (first + j) * planeNodes) - band;
+      planes.Start[static_cast<size_t>(j)] = std::lower_bound(band, band + this->Size, (first + j) * planeNodes) - band;
+    }
+    // Groups of at least SkewedTaskNodes nodes, so that a wave's threads work more than they
+    // wait for each other.
+    planes.Group.assign(1, 0);
+    for (Index z = 1; z <= count; ++z)
+    {
+      if (z == count || planes.Start[z] - planes.Start[planes.Group.back()] >= SkewedTaskNodes)
+      {
+        planes.Group.push_back(z);
+      }
     }
     return true;
   }
 
   /// `steps` Jacobi steps, the values of step() called `steps` times bit for
   /// bit, step t's largest |change| into changes[t]; in the skewed waves of
-  /// SkewedSteps.h over the planes of bandPlanes(), so that the steps share
-  /// each plane's trip through the caches. The waves' unit is a group of
-  /// consecutive planes (group g: planes group[g] .. group[g + 1] - 1), each
-  /// task at least SkewedTaskNodes nodes, so that a wave's threads work more
-  /// than they wait for each other.
-  void skewedSteps(const std::vector<Index>& start, Index steps, double* changes)
+  /// SkewedSteps.h over the groups of planes of bandPlanes(), so that the steps
+  /// share each plane's trip through the caches.
+  void skewedSteps(const BandPlanes& planes, Index steps, double* changes)
   {
-    const Index planes = static_cast<Index>(start.size()) - 1;
-    std::vector<Index> group{ 0 };
-    for (Index z = 1; z <= planes; ++z)
-    {
-      if (z == planes || start[z] - start[group.back()] >= SkewedTaskNodes)
-      {
-        group.push_back(z);
-      }
-    }
+    const std::vector<Index>& start = planes.Start;
+    const std::vector<Index>& group = planes.Group;
+    const Index last = static_cast<Index>(start.size()) - 1; // one past the last plane
     const Index groups = static_cast<Index>(group.size()) - 1;
     std::vector<double> groupChange(static_cast<size_t>(steps * groups));
     detail::skewedWaves(groups, steps, this->Ctx,
       [&](Index t, Index g)
       {
         double change = 0.0;
-        const Index stop = g < groups ? group[g + 1] : planes + 1;
+        const Index stop = g < groups ? group[g + 1] : last + 1;
         for (Index z = group[g]; z < stop; ++z)
         {
-          if (z < planes)
+          if (z < last)
           {
             change = maxOrNaN(change, this->stepRange(start[z], start[z + 1]));
           }
@@ -307,24 +315,9 @@ public:
     }
   }
 
-  /// Keeps the band's values (before skewed steps that may overshoot the
-  /// tolerance stop) and puts them back.
-  void saveBand()
-  {
-    const double* values = this->Phi.storage().data();
-    this->Ctx.parallelFor(
-      0, this->Size,
-      [&](Index b, Index e)
-      {
-        for (Index p = b; p < e; ++p)
-        {
-          this->Saved[p] = values[this->Offset[p]];
-        }
-      },
-      Grain);
-  }
-
-  void restoreBand()
+  /// Keeps the band's values (`keep`: before skewed steps that may overshoot a
+  /// stop) or puts the kept ones back.
+  void keepBand(bool keep)
   {
     double* values = this->Phi.storage().data();
     this->Ctx.parallelFor(
@@ -333,7 +326,15 @@ public:
       {
         for (Index p = b; p < e; ++p)
         {
-          values[this->Offset[p]] = this->Saved[p];
+          double& value = values[this->Offset[p]];
+          if (keep)
+          {
+            this->Saved[p] = value;
+          }
+          else
+          {
+            value = this->Saved[p];
+          }
         }
       },
       Grain);
@@ -606,11 +607,13 @@ Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const 
   ReinitWorkspace& arrays = workspace ? *workspace : own;
   BandSolver<D> solver(phi, band, bandSize, options, ctx, arrays);
   // One process and a band larger than the caches: the steps go in skewed rounds
-  // (SkewedSteps.h), each round's band kept first in case the tolerance stops
-  // within it. Distributed, every step exchanges ghost rows.
-  const bool skewing =
+  // (SkewedSteps.h), each round's band kept first in case a stop falls within it.
+  // Distributed, every step exchanges ghost rows.
+  const bool skewable =
     !distributed && options.MaxIterations >= MinimumSkewedRound && bandSize >= arrays.SkewedBandNodes;
-  const Status allocated = solver.allocate(skewing);
+  BandPlanes planes;
+  const bool skewed = skewable && solver.bandPlanes(planes);
+  const Status allocated = solver.allocate(skewed);
   SLTK_RETURN_IF_ERROR(finish(exchange.Agree ? exchange.Agree(allocated) : allocated));
   result.InterfaceNodes = solver.classify();
   if (options.Method == ReinitMethod::Constrained)
@@ -622,8 +625,6 @@ Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const 
     bool ignored = false;
     exchange.AfterStep(0.0, ignored); // the front's fixed values (1.37)/(1.44) reach the neighbours' ghost rows
   }
-  std::vector<Index> planeStart;
-  const bool skewed = skewing && solver.bandPlanes(planeStart);
 
   Interrupter& interrupter = ctx.interrupter();
   const double tolerance = options.Tolerance * solver.spacing();
@@ -636,13 +637,25 @@ Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const 
     const int round = skewed ? skewedRound(before, latest, options.MaxIterations - done, tolerance) : 1;
     if (round > 1)
     {
-      solver.saveBand();
-      solver.skewedSteps(planeStart, round, changes);
+      solver.keepBand(true);
+      solver.skewedSteps(planes, round, changes);
     }
     else
     {
       changes[0] = solver.step();
     }
+    // A stop at the round's step j: phi goes back to that step's values.
+    const auto stopAt = [&](int j)
+    {
+      if (j + 1 < round)
+      {
+        solver.keepBand(false);
+        for (int k = 0; k <= j; ++k)
+        {
+          solver.step();
+        }
+      }
+    };
     for (int j = 0; j < round; ++j)
     {
       const int iteration = done + j + 1;
@@ -659,19 +672,13 @@ Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const 
       }
       if (!std::isfinite(result.MaxChange))
       {
+        stopAt(j);
         return finish(Status::numericalFailure("reinitialisation produced a non-finite value at pseudo-time step " +
           std::to_string(iteration) + " (is the level-set function finite in and around the band?)"));
       }
       if (result.MaxChange < tolerance)
       {
-        if (j + 1 < round) // stopped within the round: its first j + 1 steps again
-        {
-          solver.restoreBand();
-          for (int k = 0; k <= j; ++k)
-          {
-            solver.step();
-          }
-        }
+        stopAt(j);
         result.Converged = true;
         return finish(Status::ok());
       }

@@ -7,14 +7,18 @@
 /// "The pseudo-time steps in skewed waves").
 ///
 /// A step of plane z reads the previous step's values on planes z - 1, z and
-/// z + 1 (the seven-point stencils of (1.32)/(1.35)) and writes its own values
+/// z + 1 (the 1 + 2D-point stencils (1.33) of (1.32)/(1.35)) and writes its own values
 /// into a buffer; once step t of plane z is done, nothing reads step t - 1 of
 /// plane z - 1 any more, and step t of plane z - 1 goes back into phi. Step t
 /// of plane z runs in wave z + SkewLag t. With a lag of 3 planes a step, every
 /// value a task reads was written back in an earlier wave and no task of a wave
 /// reads or writes a plane another one writes, so the tasks of one wave run in
 /// parallel and each node gets the values of the plain step after step, bit
-/// for bit, on any number of threads.
+/// for bit, on any number of threads. The same holds for groups of consecutive
+/// planes in place of planes (a task steps its planes in order, each followed
+/// by the write back of the one before): a group reads only the planes next to
+/// it of the groups beside it, and with a lag of 3 groups the tasks of a wave
+/// are at least one plane apart (a lag of 2 races when a group is one plane).
 
 #include "sltk/core/Index.h"
 #include "sltk/exec/Context.h"
@@ -29,18 +33,18 @@ namespace detail
 /// Planes between the tasks of consecutive steps in one wave.
 constexpr Index SkewLag = 3;
 
-/// Calls task(t, z) for every step t in [0, steps) and plane z in [0, planes]
-/// in the skewed waves above; task(t, planes) has no plane to step, only the
-/// write-back of plane planes - 1. The tasks of a wave run in parallel, the
-/// waves one after the other.
+/// Calls task(t, g) for every step t in [0, steps) and group of planes g in
+/// [0, groups] in the skewed waves above; task(t, groups) has no plane to
+/// step, only the write-back of the last plane. The tasks of a wave run in
+/// parallel, the waves one after the other.
 template <class Task>
-void skewedWaves(Index planes, Index steps, const Context& ctx, Task&& task)
+void skewedWaves(Index groups, Index steps, const Context& ctx, Task&& task)
 {
-  const Index waves = planes + 1 + SkewLag * (steps - 1);
+  const Index waves = groups + 1 + SkewLag * (steps - 1);
   for (Index w = 0; w < waves; ++w)
   {
-    // The steps t of this wave: 0 <= w - SkewLag t <= planes.
-    const Index first = w > planes ? (w - planes + SkewLag - 1) / SkewLag : 0;
+    // The steps t of this wave: 0 <= w - SkewLag t <= groups.
+    const Index first = w > groups ? (w - groups + SkewLag - 1) / SkewLag : 0;
     const Index last = std::min(steps - 1, w / SkewLag);
     ctx.parallelFor(
       first, last + 1,

@@ -18,7 +18,11 @@
 /// Jacobi updates into a buffer make the result bit-identical for any number of
 /// threads. Work and memory (25 bytes per band node, 33 when the steps are
 /// skewed) are proportional to the band.
-/// On Aborted (interrupter) phi holds the values of the last completed step.
+/// One process steps a band of ReinitWorkspace::SkewedBandNodes nodes or more in
+/// skewed rounds of up to 10 steps (Documentation/Profile.md, "The pseudo-time
+/// steps in skewed waves"): the same values bit for bit; the interrupter is
+/// then asked once a round. On Aborted (interrupter) phi holds the values of the
+/// last completed step; on a non-finite value, those of the step that made it.
 
 #include "sltk/exec/Context.h"
 #include "sltk/grid/GridField.h"
@@ -44,7 +48,8 @@ struct ReinitStepExchange
   std::function<double(double localChange, bool& interrupted)> AfterStep;
 };
 
-/// The per-band-node arrays of reinitialise() (25 bytes a node). A caller that
+/// The per-band-node arrays of reinitialise() (25 bytes a node, 33 with skewed
+/// steps). A caller that
 /// reinitialises again and again (the iterations of a run) keeps one, so that the
 /// arrays' pages are allocated and faulted in once, not at every call
 /// (Documentation/Profile.md, "Page faults of the per-iteration arrays").

@@ -4,7 +4,8 @@
 /// The narrow-band reinitialisation (Reinitialise.h, thesis 1.5 and 4.4.5) on
 /// the slabs of a distributed grid (grid/Slabs.h): each rank steps the band
 /// nodes of its owned rows; after the explicit step on the front and after
-/// every pseudo-time step the ghost rows are exchanged (SlabExchange.h), and
+/// every pseudo-time step the ghost rows are exchanged (SlabExchange.h; on one
+/// rank there are none, and the steps are one process's, Reinitialise.h), and
 /// the largest change (the stopping test) and a stop on any rank are reduced
 /// over the ranks, so every rank stops at the same step. A Jacobi step reads
 /// its neighbours' previous values only, so with the ghost rows current the
