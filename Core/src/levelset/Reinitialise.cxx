@@ -36,12 +36,6 @@ constexpr std::uint8_t RoleBoundary = 4; // the 3^D block leaves the interior: R
 
 // Fixed chunk size: the per-chunk maxima are indexed by chunk.
 constexpr Index Grain = 2048;
-// Skewed rounds of pseudo-time steps (SkewedSteps.h; on bands of at least
-// ReinitWorkspace::SkewedBandNodes nodes): MinimumSkewedRound to
-// MaximumSkewedRound steps, tasks of at least SkewedTaskNodes nodes.
-constexpr int MinimumSkewedRound = 3;
-constexpr int MaximumSkewedRound = 10;
-constexpr Index SkewedTaskNodes = 1024;
 // Band positions between a prefetch and its use in the pseudo-time step.
 constexpr Index PrefetchDistance = 16;
 
@@ -49,23 +43,6 @@ constexpr Index PrefetchDistance = 16;
 inline double maxOrNaN(double a, double b)
 {
   return b > a || std::isnan(b) ? b : a;
-}
-
-/// The steps of the next skewed round, `left` at most: MaximumSkewedRound, or
-/// once two steps are done (their largest changes `before`, `latest`) as many
-/// as their ratio says the largest change needs to fall below `tolerance` (and
-/// one more), since the steps beyond the tolerance stop are done in vain. A
-/// round shorter than MinimumSkewedRound is one plain step.
-inline int skewedRound(double before, double latest, int left, double tolerance)
-{
-  int round = MaximumSkewedRound;
-  if (latest > 0.0 && latest < before) // a geometric fall: latest (latest / before)^n < tolerance
-  {
-    const double needed = std::log(tolerance / latest) / std::log(latest / before);
-    round = needed < MaximumSkewedRound ? std::max(1, static_cast<int>(std::ceil(needed)) + 1) : MaximumSkewedRound;
-  }
-  round = std::min(round, left);
-  return round < MinimumSkewedRound ? 1 : round;
 }
 
 /// values[offset[l] + shift] for the L band nodes of a group, one per lane.
@@ -259,12 +236,12 @@ public:
     {
       planes.Start[static_cast<size_t>(j)] = std::lower_bound(band, band + this->Size, (first + j) * planeNodes) - band;
     }
-    // Groups of at least SkewedTaskNodes nodes, so that a wave's threads work more than they
+    // Groups of at least detail::SkewedTaskNodes nodes, so that a wave's threads work more than they
     // wait for each other.
     planes.Group.assign(1, 0);
     for (Index z = 1; z <= count; ++z)
     {
-      if (z == count || planes.Start[z] - planes.Start[planes.Group.back()] >= SkewedTaskNodes)
+      if (z == count || planes.Start[z] - planes.Start[planes.Group.back()] >= detail::SkewedTaskNodes)
       {
         planes.Group.push_back(z);
       }
@@ -610,7 +587,7 @@ Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const 
   // (SkewedSteps.h), each round's band kept first in case a stop falls within it.
   // Distributed, every step exchanges ghost rows.
   const bool skewable =
-    !distributed && options.MaxIterations >= MinimumSkewedRound && bandSize >= arrays.SkewedBandNodes;
+    !distributed && options.MaxIterations >= detail::MinimumSkewedRound && bandSize >= arrays.SkewedBandNodes;
   BandPlanes planes;
   const bool skewed = skewable && solver.bandPlanes(planes);
   const Status allocated = solver.allocate(skewed);
@@ -629,12 +606,12 @@ Status reinitialise(GridField<D>& phi, const Index* band, Index bandSize, const 
   Interrupter& interrupter = ctx.interrupter();
   const double tolerance = options.Tolerance * solver.spacing();
   result.Converged = options.MaxIterations == 0;
-  double changes[MaximumSkewedRound];
+  double changes[detail::MaximumSkewedRound];
   double before = 0.0, latest = 0.0; // the last two steps' largest changes
   int done = 0;
   while (done < options.MaxIterations)
   {
-    const int round = skewed ? skewedRound(before, latest, options.MaxIterations - done, tolerance) : 1;
+    const int round = skewed ? detail::skewedRound(before, latest, options.MaxIterations - done, tolerance) : 1;
     if (round > 1)
     {
       solver.keepBand(true);

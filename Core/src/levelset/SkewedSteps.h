@@ -24,6 +24,7 @@
 #include "sltk/exec/Context.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace sltk
 {
@@ -32,6 +33,29 @@ namespace detail
 
 /// Planes between the tasks of consecutive steps in one wave.
 constexpr Index SkewLag = 3;
+/// A round takes MinimumSkewedRound to MaximumSkewedRound steps; a task at
+/// least SkewedTaskNodes nodes (a group of planes), so that a wave's threads
+/// work more than they wait for each other.
+constexpr int MinimumSkewedRound = 3;
+constexpr int MaximumSkewedRound = 10;
+constexpr Index SkewedTaskNodes = 1024;
+
+/// The steps of the next skewed round, `left` at most: MaximumSkewedRound, or
+/// once two steps are done (their largest changes `before`, `latest`) as many
+/// as their ratio says the largest change needs to fall below `tolerance` (and
+/// one more), since the steps beyond the tolerance stop are done in vain. A
+/// round shorter than MinimumSkewedRound is one plain step.
+inline int skewedRound(double before, double latest, int left, double tolerance)
+{
+  int round = MaximumSkewedRound;
+  if (latest > 0.0 && latest < before) // a geometric fall: latest (latest / before)^n < tolerance
+  {
+    const double needed = std::log(tolerance / latest) / std::log(latest / before);
+    round = needed < MaximumSkewedRound ? std::max(1, static_cast<int>(std::ceil(needed)) + 1) : MaximumSkewedRound;
+  }
+  round = std::min(round, left);
+  return round < MinimumSkewedRound ? 1 : round;
+}
 
 /// Calls task(t, g) for every step t in [0, steps) and group of planes g in
 /// [0, groups] in the skewed waves above; task(t, groups) has no plane to
