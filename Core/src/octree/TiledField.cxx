@@ -93,28 +93,6 @@ void TiledField<D>::removeTiles(const std::vector<std::uint8_t>& remove)
   this->Chunks.resize(static_cast<size_t>((kept + ChunkTiles - 1) / ChunkTiles)); // the emptied chunks freed
 }
 
-template <int D>
-double TiledField<D>::value(const std::array<Index, D>& i) const
-{
-  std::array<Index, D> t{};
-  Index local = 0;
-  for (int a = 0; a < D; ++a)
-  {
-    if (i[a] < 0 || i[a] >= this->SlotDims[a] * TileEdge)
-    {
-      return this->Gamma;
-    }
-    t[a] = i[a] >> TileBits;
-    local |= (i[a] & (TileEdge - 1)) << (TileBits * a);
-  }
-  const std::int32_t entry = this->Slots[static_cast<size_t>(this->slotIndex(t))];
-  if (entry >= 0)
-  {
-    return this->phi(entry)[local];
-  }
-  return entry == Remote ? std::numeric_limits<double>::quiet_NaN() : (entry == Inside ? -this->Gamma : this->Gamma);
-}
-
 namespace
 {
 /// A tile row's `count` (<= TileEdge) values without a library call: a whole

@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -156,7 +157,26 @@ public:
   }
 
   /// phi at grid index i (any integers: beyond the slots, +gamma; NaN in a Remote slot).
-  double value(const std::array<Index, D>& i) const;
+  double value(const std::array<Index, D>& i) const
+  {
+    std::array<Index, D> t{};
+    Index local = 0;
+    for (int a = 0; a < D; ++a)
+    {
+      if (i[a] < 0 || i[a] >= this->SlotDims[a] * TileEdge)
+      {
+        return this->Gamma;
+      }
+      t[a] = i[a] >> TileBits;
+      local |= (i[a] & (TileEdge - 1)) << (TileBits * a);
+    }
+    const std::int32_t entry = this->Slots[static_cast<size_t>(this->slotIndex(t))];
+    if (entry >= 0)
+    {
+      return this->phi(entry)[local];
+    }
+    return entry == Remote ? std::numeric_limits<double>::quiet_NaN() : (entry == Inside ? -this->Gamma : this->Gamma);
+  }
 
   /// Tile `id` and `halo` nodes around it as a uniform field with `ghost`
   /// ghost layers filled by the grid's boundary policy: phi, and d when
