@@ -45,6 +45,17 @@ inline double maxOrNaN(double a, double b)
   return b > a || std::isnan(b) ? b : a;
 }
 
+/// The largest of `count` changes from `first`, in order (maxOrNaN: a NaN wins).
+inline double largestOf(const double* first, Index count)
+{
+  double change = 0.0;
+  for (Index i = 0; i < count; ++i)
+  {
+    change = maxOrNaN(change, first[i]);
+  }
+  return change;
+}
+
 /// values[offset[l] + shift] for the L band nodes of a group, one per lane.
 template <int L>
 SLTK_LANES_INLINE lanes::Lanes<L> gatherLanes(const double* values, const Index* offset, Index shift)
@@ -190,12 +201,7 @@ public:
       0, this->Size, [&](Index b, Index e) { chunkChange[b / Grain] = this->stepRange(b, e); }, Grain);
     this->Ctx.parallelFor(
       0, this->Size, [&](Index b, Index e) { this->writeBack(b, e); }, Grain);
-    double change = 0.0;
-    for (double c : this->ChunkChange)
-    {
-      change = maxOrNaN(change, c);
-    }
-    return change;
+    return largestOf(this->ChunkChange.data(), static_cast<Index>(this->ChunkChange.size()));
   }
 
   /// The band's positions by plane of the slowest axis: plane j (from the band's
@@ -283,12 +289,7 @@ public:
       });
     for (Index t = 0; t < steps; ++t)
     {
-      double change = 0.0;
-      for (Index g = 0; g < groups; ++g)
-      {
-        change = maxOrNaN(change, groupChange[static_cast<size_t>(t * groups + g)]);
-      }
-      changes[t] = change;
+      changes[t] = largestOf(groupChange.data() + t * groups, groups);
     }
   }
 
